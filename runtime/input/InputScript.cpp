@@ -1,0 +1,213 @@
+#include "input/InputScript.h"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "input/KeyCodes.h"
+
+namespace toyhost {
+
+namespace {
+
+using nlohmann::json;
+
+// "time" events may fire this much early so that iTime = frame / fps, computed with rounding,
+// still reaches a time written as that same fraction.
+constexpr double kTimeTolerance = 1e-6;
+
+std::string inQuotes(std::string_view s) { return "\"" + std::string(s) + "\""; }
+
+std::string describe(const json& value) {
+    if (value.is_number_integer() || value.is_number_float()) return value.dump();
+    if (value.is_string()) return "string " + value.dump();
+    return value.type_name();
+}
+
+// Builds the messages of one event: "<source>: event <index>: <what>".
+class EventContext {
+public:
+    EventContext(std::string_view source, std::size_t index)
+        : prefix_(std::string(source) + ": event " + std::to_string(index) + ": ") {}
+    Error error(const std::string& what) const { return Error{prefix_ + what}; }
+
+private:
+    std::string prefix_;
+};
+
+Result<json> parseArray(std::string_view text, std::string_view source) {
+    json doc;
+    try {
+        doc = json::parse(text);
+    } catch (const json::parse_error& e) {
+        return Error{std::string(source) + ": invalid JSON: " + e.what()};
+    }
+    if (!doc.is_array())
+        return Error{std::string(source) + ": expected a JSON array of events, got " +
+                     doc.type_name()};
+    return doc;
+}
+
+// Checks that `event` is an object holding only known fields.
+Status checkFields(const json& event, std::initializer_list<std::string_view> allowed,
+                   const EventContext& ctx) {
+    if (!event.is_object()) return ctx.error("expected an object, got " + describe(event));
+    for (const auto& item : event.items()) {
+        const std::string& key = item.key();
+        if (key == "frame" || key == "time" || key == "type" || key == "comment") continue;
+        if (std::ranges::find(allowed, std::string_view(key)) == allowed.end())
+            return ctx.error("unknown field " + inQuotes(key));
+    }
+    if (event.contains("comment") && !event["comment"].is_string())
+        return ctx.error("\"comment\" must be a string, got " + describe(event["comment"]));
+    return okStatus();
+}
+
+Result<ScriptMoment> readMoment(const json& event, const EventContext& ctx) {
+    bool hasFrame = event.contains("frame"), hasTime = event.contains("time");
+    if (hasFrame && hasTime) return ctx.error("give one of \"frame\" and \"time\", not both");
+    if (!hasFrame && !hasTime) return ctx.error("\"frame\" or \"time\" is missing");
+    if (hasFrame) {
+        const json& v = event["frame"];
+        // nlohmann stores every non-negative integer literal as unsigned.
+        constexpr auto kMaxFrame = std::uint64_t(std::numeric_limits<std::int64_t>::max());
+        if (v.is_number_unsigned() && v.get<std::uint64_t>() <= kMaxFrame)
+            return ScriptMoment::atFrame(v.get<std::int64_t>());
+        return ctx.error("\"frame\" must be an integer >= 0, got " + describe(v));
+    }
+    const json& v = event["time"];
+    if (v.is_number() && std::isfinite(v.get<double>()) && v.get<double>() >= 0.0)
+        return ScriptMoment::atTime(v.get<double>());
+    return ctx.error("\"time\" must be a number of seconds >= 0, got " + describe(v));
+}
+
+Result<std::string> readType(const json& event, const EventContext& ctx) {
+    if (!event.contains("type")) return ctx.error("\"type\" is missing");
+    const json& v = event["type"];
+    if (!v.is_string()) return ctx.error("\"type\" must be a string, got " + describe(v));
+    return v.get<std::string>();
+}
+
+Result<float> readCoordinate(const json& event, const char* field, const EventContext& ctx) {
+    if (!event.contains(field)) return ctx.error(inQuotes(field) + " is missing");
+    const json& v = event[field];
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+        return ctx.error(inQuotes(field) + " must be a number, got " + describe(v));
+    return v.get<float>();
+}
+
+Result<glm::vec2> readPosition(const json& event, const EventContext& ctx) {
+    auto x = readCoordinate(event, "x", ctx);
+    if (!x) return x.error();
+    auto y = readCoordinate(event, "y", ctx);
+    if (!y) return y.error();
+    return glm::vec2(*x, *y);
+}
+
+Result<int> readKey(const json& event, const EventContext& ctx) {
+    if (!event.contains("key")) return ctx.error("\"key\" is missing");
+    const json& v = event["key"];
+    if (v.is_number_integer()) {
+        if (v.is_number_unsigned() && v.get<std::uint64_t>() <= 255) return v.get<int>();
+        return ctx.error("key code " + v.dump() + " is out of range 0..255");
+    }
+    if (!v.is_string())
+        return ctx.error("\"key\" must be a key name or a keyCode, got " + describe(v));
+    auto code = keyCodeFromName(v.get<std::string>());
+    if (!code) return ctx.error(code.error().message);
+    return *code;
+}
+
+Result<MouseScriptEvent> readMouseEvent(const json& event, const EventContext& ctx) {
+    if (auto s = checkFields(event, {"x", "y"}, ctx); !s) return s.error();
+    auto at = readMoment(event, ctx);
+    if (!at) return at.error();
+    auto type = readType(event, ctx);
+    if (!type) return type.error();
+
+    using Type = MouseScriptEvent::Type;
+    MouseScriptEvent out;
+    out.at = *at;
+    if (*type == "down") out.type = Type::Down;
+    else if (*type == "move") out.type = Type::Move;
+    else if (*type == "up") out.type = Type::Up;
+    else if (*type == "click") out.type = Type::Click;
+    else return ctx.error("unknown type " + inQuotes(*type) + " (expected down, move, up, click)");
+
+    bool positionOptional = out.type == Type::Up && !event.contains("x") && !event.contains("y");
+    if (!positionOptional) {
+        auto pos = readPosition(event, ctx);
+        if (!pos) return pos.error();
+        out.position = *pos;
+    }
+    return out;
+}
+
+Result<KeyScriptEvent> readKeyEvent(const json& event, const EventContext& ctx) {
+    if (auto s = checkFields(event, {"key"}, ctx); !s) return s.error();
+    auto at = readMoment(event, ctx);
+    if (!at) return at.error();
+    auto type = readType(event, ctx);
+    if (!type) return type.error();
+
+    using Type = KeyScriptEvent::Type;
+    KeyScriptEvent out;
+    out.at = *at;
+    if (*type == "down") out.type = Type::Down;
+    else if (*type == "up") out.type = Type::Up;
+    else if (*type == "tap") out.type = Type::Tap;
+    else return ctx.error("unknown type " + inQuotes(*type) + " (expected down, up, tap)");
+
+    auto key = readKey(event, ctx);
+    if (!key) return key.error();
+    out.keyCode = *key;
+    return out;
+}
+
+template <class Script, class ReadEvent>
+Result<Script> parseScript(std::string_view text, std::string_view source, ReadEvent read) {
+    auto doc = parseArray(text, source);
+    if (!doc) return doc.error();
+    Script script;
+    for (std::size_t i = 0; i < doc->size(); ++i) {
+        auto event = read((*doc)[i], EventContext(source, i));
+        if (!event) return event.error();
+        script.events.push_back(*event);
+    }
+    using Event = typename decltype(script.events)::value_type;
+    std::ranges::stable_sort(script.events, firesEarlier, &Event::at);
+    return script;
+}
+
+}  // namespace
+
+bool ScriptMoment::dueBefore(std::int64_t frameNumber, double iTime) const {
+    return clock == Clock::Frame ? frameNumber >= frame : iTime + kTimeTolerance >= seconds;
+}
+
+bool firesEarlier(const ScriptMoment& a, const ScriptMoment& b) {
+    if (a.clock != b.clock) return a.clock == ScriptMoment::Clock::Frame;
+    return a.clock == ScriptMoment::Clock::Frame ? a.frame < b.frame : a.seconds < b.seconds;
+}
+
+Result<MouseScript> parseMouseScript(std::string_view jsonText, std::string_view sourceName) {
+    return parseScript<MouseScript>(jsonText, sourceName, readMouseEvent);
+}
+
+Result<KeyScript> parseKeyScript(std::string_view jsonText, std::string_view sourceName) {
+    return parseScript<KeyScript>(jsonText, sourceName, readKeyEvent);
+}
+
+MouseScript mouseHeldAt(float x, float y) {
+    MouseScriptEvent down;
+    down.at = ScriptMoment::atFrame(0);
+    down.type = MouseScriptEvent::Type::Down;
+    down.position = glm::vec2(x, y);
+    return MouseScript{{down}};
+}
+
+}  // namespace toyhost

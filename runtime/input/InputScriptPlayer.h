@@ -1,0 +1,62 @@
+// Replays a MouseScript into a MouseState and a KeyScript into a KeyboardState, frame by frame,
+// for headless runs. Pure logic, no GL context needed.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "input/InputScript.h"
+#include "input/KeyboardState.h"
+#include "input/MouseState.h"
+
+namespace toyhost {
+
+// Keeps the position in a sorted script: its "frame" events and its "time" events are two
+// sorted runs, each consumed from the front as frames advance.
+class ScriptCursor {
+public:
+    // `moments` of the events in script order (sorted by firesEarlier).
+    explicit ScriptCursor(std::vector<ScriptMoment> moments);
+
+    // Indices of the not yet fired events that are due before rendering `frame` (at `iTime`),
+    // in script order; marks them fired.
+    std::vector<std::size_t> takeDue(std::int64_t frame, double iTime);
+    bool finished() const { return nextFrame_ == timeBegin_ && nextTime_ == moments_.size(); }
+
+private:
+    std::vector<ScriptMoment> moments_;
+    std::size_t timeBegin_ = 0;  // first "time" event
+    std::size_t nextFrame_ = 0;  // next unfired "frame" event
+    std::size_t nextTime_ = 0;   // next unfired "time" event
+};
+
+// The script is sorted (stably, by firesEarlier) on construction, so hand-built scripts work too.
+// Call applyBeforeFrame(n, iTime) once per frame, with increasing n, before rendering frame n
+// and before reading mouse.uniform(). "click" presses and releases before the same frame.
+class MouseScriptPlayer {
+public:
+    explicit MouseScriptPlayer(MouseScript script);
+    void applyBeforeFrame(std::int64_t frame, double iTime, MouseState& mouse);
+    bool finished() const;
+
+private:
+    MouseScript script_;
+    ScriptCursor cursor_;
+};
+
+// Same contract for keys. A "tap" presses before its frame and leaves a release pending, which
+// is applied before the next frame's own events, so exactly one frame sees the key held.
+class KeyScriptPlayer {
+public:
+    explicit KeyScriptPlayer(KeyScript script);
+    void applyBeforeFrame(std::int64_t frame, double iTime, KeyboardState& keyboard);
+    bool finished() const;  // every event fired and no tap release pending
+
+private:
+    KeyScript script_;
+    ScriptCursor cursor_;
+    std::vector<int> pendingReleases_;
+};
+
+}  // namespace toyhost

@@ -1,0 +1,44 @@
+#include "manifest/ManifestDesc.h"
+
+namespace toyhost {
+
+const char* passName(PassId id) {
+    switch (id) {
+        case PassId::BufferA: return "Buffer A";
+        case PassId::BufferB: return "Buffer B";
+        case PassId::BufferC: return "Buffer C";
+        case PassId::BufferD: return "Buffer D";
+        case PassId::Image: return "Image";
+    }
+    return "?";
+}
+
+const char* filterName(Filter f) {
+    switch (f) {
+        case Filter::Nearest: return "nearest";
+        case Filter::Linear: return "linear";
+        case Filter::Mipmap: return "mipmap";
+    }
+    return "?";
+}
+
+const char* wrapName(Wrap w) { return w == Wrap::Clamp ? "clamp" : "repeat"; }
+
+const PassDesc* ManifestDesc::find(PassId id) const {
+    for (const PassDesc& pass : passes)
+        if (pass.id == id) return &pass;
+    return nullptr;
+}
+
+SamplerDesc defaultSampler(ChannelKind kind) {
+    switch (kind) {
+        case ChannelKind::ImageFile:
+        case ChannelKind::StockMedia: return {Filter::Mipmap, Wrap::Repeat, true};
+        case ChannelKind::Keyboard: return {Filter::Nearest, Wrap::Clamp, false};
+        case ChannelKind::Buffer:
+        case ChannelKind::None: break;
+    }
+    return {Filter::Linear, Wrap::Clamp, false};
+}
+
+}  // namespace toyhost

@@ -1,0 +1,69 @@
+// ManifestDesc: the validated, plain-data description of a shadertoy (passes, channels, sampler
+// settings, media overrides). Produced by loadManifest(); consumed by the pass graph and the
+// renderer, which never re-check it. No GL needed.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace toyhost {
+
+// Passes in the order Shadertoy renders them each frame: Buffer A, B, C, D, then Image.
+enum class PassId { BufferA = 0, BufferB = 1, BufferC = 2, BufferD = 3, Image = 4 };
+inline constexpr int kBufferCount = 4;
+inline constexpr int kChannelCount = 4;
+
+const char* passName(PassId id);            // "Buffer A" .. "Image"
+inline bool isBuffer(PassId id) { return id != PassId::Image; }
+inline int bufferIndex(PassId id) { return static_cast<int>(id); }  // only for buffers
+inline PassId bufferPass(int index) { return static_cast<PassId>(index); }
+
+enum class ChannelKind { None, Buffer, ImageFile, StockMedia, Keyboard };
+enum class Filter { Nearest, Linear, Mipmap };
+enum class Wrap { Clamp, Repeat };
+
+const char* filterName(Filter f);
+const char* wrapName(Wrap w);
+
+struct SamplerDesc {
+    Filter filter = Filter::Linear;
+    Wrap wrap = Wrap::Clamp;
+    bool vflip = false;  // only meaningful for image textures
+};
+
+struct ChannelDesc {
+    ChannelKind kind = ChannelKind::None;
+    int buffer = -1;                 // ChannelKind::Buffer: 0..3 = A..D
+    std::filesystem::path file;      // ChannelKind::ImageFile: absolute path
+    std::string media;               // ChannelKind::StockMedia: the id as written ("/media/a/<hash>.<ext>")
+    SamplerDesc sampler;
+};
+
+struct PassDesc {
+    PassId id = PassId::Image;
+    std::filesystem::path source;    // absolute path of the pass's GLSL file
+    std::string code;                // its text, read during loading
+    std::array<ChannelDesc, kChannelCount> channels;
+};
+
+struct ManifestDesc {
+    std::string name;
+    std::filesystem::path manifestPath;            // absolute
+    std::optional<std::filesystem::path> commonSource;
+    std::string commonCode;
+    std::vector<PassDesc> passes;                  // sorted in render order; Image is last
+    std::map<std::string, std::filesystem::path> mediaOverrides;  // stock id -> user file
+
+    const PassDesc* find(PassId id) const;
+    bool hasBuffer(int index) const { return find(bufferPass(index)) != nullptr; }
+};
+
+// Shadertoy's defaults for a channel kind (exports: textures mipmap/repeat/vflip, buffers
+// linear/clamp; the keyboard is nearest/clamp).
+SamplerDesc defaultSampler(ChannelKind kind);
+
+}  // namespace toyhost

@@ -1,0 +1,341 @@
+#include "manifest/ManifestLoader.h"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/AtomicFile.h"
+#include "media/StockMedia.h"
+
+namespace toyhost {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// Collects every problem with its location so the user sees them all in one run.
+class Problems {
+public:
+    explicit Problems(std::string file) : file_(std::move(file)) {}
+    void add(const std::string& where, const std::string& what) {
+        lines_.push_back(file_ + ": " + (where.empty() ? "" : where + ": ") + what);
+    }
+    bool empty() const { return lines_.empty(); }
+    Error toError() const {
+        std::string text;
+        for (size_t i = 0; i < lines_.size(); ++i) text += (i ? "\n" : "") + lines_[i];
+        return Error{text};
+    }
+
+private:
+    std::string file_;
+    std::vector<std::string> lines_;
+};
+
+std::string quote(const std::string& s) { return "\"" + s + "\""; }
+
+std::string typeName(const json& value) { return value.type_name(); }
+
+void rejectUnknownFields(const json& object, const std::set<std::string>& known,
+                         const std::string& where, Problems& problems) {
+    for (const auto& [key, _] : object.items()) {
+        if (known.count(key)) continue;
+        std::string list;
+        for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+        problems.add(where, "unknown field " + quote(key) + " (known: " + list + ")");
+    }
+}
+
+std::optional<PassId> passFromName(const std::string& name) {
+    static const std::pair<const char*, PassId> names[] = {
+        {"Buffer A", PassId::BufferA}, {"Buffer B", PassId::BufferB},
+        {"Buffer C", PassId::BufferC}, {"Buffer D", PassId::BufferD},
+        {"Image", PassId::Image}};
+    for (const auto& [text, id] : names)
+        if (name == text) return id;
+    return std::nullopt;
+}
+
+// "A", "Buffer A" -> 0
+std::optional<int> bufferFromName(const std::string& name) {
+    std::string letter = name;
+    if (letter.rfind("Buffer ", 0) == 0) letter = letter.substr(7);
+    if (letter.size() == 1 && letter[0] >= 'A' && letter[0] <= 'D') return letter[0] - 'A';
+    return std::nullopt;
+}
+
+class Loader {
+public:
+    Loader(const fs::path& manifestPath)
+        : path_(manifestPath), dir_(manifestPath.parent_path()), problems_(manifestPath.string()) {}
+
+    Result<ManifestDesc> load(std::string_view text) {
+        json root;
+        try {
+            root = json::parse(text);
+        } catch (const json::parse_error& e) {
+            return Error{path_.string() + ": invalid JSON: " + e.what()};
+        }
+        if (!root.is_object()) return Error{path_.string() + ": the manifest must be a JSON object"};
+
+        desc_.manifestPath = path_;
+        rejectUnknownFields(root, {"name", "common", "passes", "media"}, "", problems_);
+        readName(root);
+        readCommon(root);
+        readMedia(root);
+        readPasses(root);
+        if (!problems_.empty()) return problems_.toError();
+        std::sort(desc_.passes.begin(), desc_.passes.end(),
+                  [](const PassDesc& a, const PassDesc& b) { return a.id < b.id; });
+        return std::move(desc_);
+    }
+
+private:
+    fs::path resolve(const std::string& relative) const {
+        fs::path p(relative);
+        return (p.is_absolute() ? p : dir_ / p).lexically_normal();
+    }
+
+    std::optional<std::string> readString(const json& object, const char* key,
+                                          const std::string& where) {
+        auto it = object.find(key);
+        if (it == object.end()) return std::nullopt;
+        if (!it->is_string() || it->get<std::string>().empty()) {
+            problems_.add(where, quote(key) + " must be a non-empty string, not " + typeName(*it));
+            return std::nullopt;
+        }
+        return it->get<std::string>();
+    }
+
+    // Reads a GLSL file named by `key`; reports a missing field or unreadable file.
+    std::optional<std::pair<fs::path, std::string>> readSourceFile(const json& object, const char* key,
+                                                                   const std::string& where) {
+        auto name = readString(object, key, where);
+        if (!name) return std::nullopt;
+        fs::path file = resolve(*name);
+        Result<std::string> text = readTextFile(file);
+        if (!text) {
+            problems_.add(where, quote(key) + ": " + text.error().message);
+            return std::nullopt;
+        }
+        return std::make_pair(file, std::move(*text));
+    }
+
+    void readName(const json& root) {
+        if (auto name = readString(root, "name", "")) desc_.name = *name;
+        else desc_.name = dir_.filename().string();
+    }
+
+    void readCommon(const json& root) {
+        if (!root.contains("common")) return;
+        if (auto source = readSourceFile(root, "common", "")) {
+            desc_.commonSource = source->first;
+            desc_.commonCode = std::move(source->second);
+        }
+    }
+
+    void readMedia(const json& root) {
+        auto it = root.find("media");
+        if (it == root.end()) return;
+        if (!it->is_object()) {
+            problems_.add("media", "must be an object mapping stock media ids to files");
+            return;
+        }
+        for (const auto& [id, file] : it->items()) {
+            const std::string where = "media." + quote(id);
+            if (!findStockMedia(id)) problems_.add(where, "unknown stock media id");
+            if (!file.is_string()) {
+                problems_.add(where, "must be a file path string, not " + typeName(file));
+                continue;
+            }
+            fs::path resolved = resolve(file.get<std::string>());
+            std::error_code ec;
+            if (!fs::is_regular_file(resolved, ec))
+                problems_.add(where, resolved.string() + ": file not found");
+            desc_.mediaOverrides[id] = resolved;
+        }
+    }
+
+    void readPasses(const json& root) {
+        auto it = root.find("passes");
+        if (it == root.end() || !it->is_object() || it->empty()) {
+            problems_.add("passes", "must be an object with an \"Image\" pass and optionally "
+                                    "\"Buffer A\" .. \"Buffer D\"");
+            return;
+        }
+        for (const auto& [name, body] : it->items()) {
+            const std::string where = "passes." + quote(name);
+            std::optional<PassId> id = passFromName(name);
+            if (!id) {
+                problems_.add(where, "unknown pass (known: Buffer A, Buffer B, Buffer C, Buffer D, Image)");
+                continue;
+            }
+            if (!body.is_object()) {
+                problems_.add(where, "must be an object with \"source\" and \"channels\"");
+                continue;
+            }
+            readPass(*id, body, where);
+        }
+        if (!desc_.find(PassId::Image) && !it->contains("Image"))
+            problems_.add("passes", "the \"Image\" pass is missing");
+        // Buffer references can only be checked once every pass is known.
+        for (const auto& [pass, channel, buffer] : bufferRefs_) {
+            if (!it->contains(passName(bufferPass(buffer))))
+                problems_.add(channelWhere(pass, channel),
+                              std::string("reads ") + passName(bufferPass(buffer)) +
+                                  ", which this manifest does not define");
+        }
+    }
+
+    static std::string channelWhere(PassId pass, int channel) {
+        return "passes." + quote(passName(pass)) + ".channels.iChannel" + std::to_string(channel);
+    }
+
+    void readPass(PassId id, const json& body, const std::string& where) {
+        rejectUnknownFields(body, {"source", "channels"}, where, problems_);
+        PassDesc pass;
+        pass.id = id;
+        if (!body.contains("source")) problems_.add(where, "\"source\" is missing");
+        if (auto source = readSourceFile(body, "source", where)) {
+            pass.source = source->first;
+            pass.code = std::move(source->second);
+        }
+        auto channels = body.find("channels");
+        if (channels != body.end()) readChannels(pass, *channels, where + ".channels");
+        desc_.passes.push_back(std::move(pass));
+    }
+
+    // Channels are either an object {"iChannel0": {...}} or an array of up to four entries
+    // (null = nothing bound).
+    void readChannels(PassDesc& pass, const json& channels, const std::string& where) {
+        if (channels.is_array()) {
+            if (channels.size() > kChannelCount)
+                problems_.add(where, "at most 4 channels, got " + std::to_string(channels.size()));
+            for (size_t i = 0; i < channels.size() && i < kChannelCount; ++i)
+                readChannel(pass, static_cast<int>(i), channels[i]);
+            return;
+        }
+        if (!channels.is_object()) {
+            problems_.add(where, "must be an object keyed iChannel0..iChannel3 or an array");
+            return;
+        }
+        for (const auto& [key, value] : channels.items()) {
+            int index = -1;
+            if (key.size() == 9 && key.rfind("iChannel", 0) == 0 && key[8] >= '0' && key[8] <= '3')
+                index = key[8] - '0';
+            if (index < 0) {
+                problems_.add(where, "unknown channel " + quote(key) + " (known: iChannel0..iChannel3)");
+                continue;
+            }
+            readChannel(pass, index, value);
+        }
+    }
+
+    void readChannel(PassDesc& pass, int index, const json& value) {
+        const std::string where = channelWhere(pass.id, index);
+        ChannelDesc& channel = pass.channels[index];
+        if (value.is_null()) return;
+        if (!value.is_object()) {
+            problems_.add(where, "must be an object such as {\"buffer\": \"A\"}, or null");
+            return;
+        }
+        rejectUnknownFields(value, {"buffer", "texture", "media", "keyboard", "filter", "wrap", "vflip"},
+                            where, problems_);
+        int sources = 0;
+        for (const char* key : {"buffer", "texture", "media", "keyboard"}) sources += value.contains(key);
+        if (sources != 1) {
+            problems_.add(where, "needs exactly one of \"buffer\", \"texture\", \"media\", \"keyboard\"");
+            return;
+        }
+        if (auto buffer = readString(value, "buffer", where)) {
+            std::optional<int> index = bufferFromName(*buffer);
+            if (!index) {
+                problems_.add(where, "buffer " + quote(*buffer) + " does not exist (known: A, B, C, D)");
+                return;
+            }
+            channel.kind = ChannelKind::Buffer;
+            channel.buffer = *index;
+            bufferRefs_.push_back({pass.id, static_cast<int>(&channel - pass.channels.data()), *index});
+        } else if (auto texture = readString(value, "texture", where)) {
+            channel.kind = ChannelKind::ImageFile;
+            channel.file = resolve(*texture);
+            std::error_code ec;
+            if (!fs::is_regular_file(channel.file, ec))
+                problems_.add(where, "texture " + channel.file.string() + ": file not found");
+        } else if (auto media = readString(value, "media", where)) {
+            channel.kind = ChannelKind::StockMedia;
+            channel.media = *media;
+            if (!findStockMedia(*media) && !desc_.mediaOverrides.count(*media))
+                problems_.add(where, "unknown stock media id " + quote(*media) +
+                                         " (add it to \"media\" with a file to use it)");
+        } else if (value.contains("keyboard")) {
+            if (value["keyboard"] != true) {
+                problems_.add(where, "\"keyboard\" must be true");
+                return;
+            }
+            channel.kind = ChannelKind::Keyboard;
+        } else {
+            return;  // readString already reported the bad value
+        }
+        readSampler(channel, value, where);
+    }
+
+    void readSampler(ChannelDesc& channel, const json& value, const std::string& where) {
+        channel.sampler = defaultSampler(channel.kind);
+        const bool isTexture = channel.kind == ChannelKind::ImageFile || channel.kind == ChannelKind::StockMedia;
+        if (channel.kind == ChannelKind::Keyboard) {
+            for (const char* key : {"filter", "wrap", "vflip"})
+                if (value.contains(key))
+                    problems_.add(where, std::string("the keyboard texture takes no \"") + key +
+                                             "\" (it is always nearest/clamp)");
+            return;
+        }
+        if (auto filter = readString(value, "filter", where)) {
+            if (*filter == "nearest") channel.sampler.filter = Filter::Nearest;
+            else if (*filter == "linear") channel.sampler.filter = Filter::Linear;
+            else if (*filter == "mipmap") channel.sampler.filter = Filter::Mipmap;
+            else problems_.add(where, "filter " + quote(*filter) + " is not one of nearest, linear, mipmap");
+        }
+        if (auto wrap = readString(value, "wrap", where)) {
+            if (*wrap == "clamp") channel.sampler.wrap = Wrap::Clamp;
+            else if (*wrap == "repeat") channel.sampler.wrap = Wrap::Repeat;
+            else problems_.add(where, "wrap " + quote(*wrap) + " is not one of clamp, repeat");
+        }
+        if (auto vflip = value.find("vflip"); vflip != value.end()) {
+            if (!vflip->is_boolean()) problems_.add(where, "\"vflip\" must be true or false");
+            else if (!isTexture) problems_.add(where, "\"vflip\" applies only to image textures, not buffers");
+            else channel.sampler.vflip = vflip->get<bool>();
+        }
+    }
+
+    struct BufferRef {
+        PassId pass;
+        int channel;
+        int buffer;
+    };
+
+    fs::path path_;
+    fs::path dir_;
+    Problems problems_;
+    ManifestDesc desc_;
+    std::vector<BufferRef> bufferRefs_;
+};
+
+}  // namespace
+
+Result<ManifestDesc> parseManifest(std::string_view jsonText, const fs::path& manifestPath) {
+    return Loader(fs::absolute(manifestPath).lexically_normal()).load(jsonText);
+}
+
+Result<ManifestDesc> loadManifest(const fs::path& target) {
+    std::error_code ec;
+    fs::path file = fs::is_directory(target, ec) ? target / "manifest.json" : target;
+    Result<std::string> text = readTextFile(file);
+    if (!text) return text.error();
+    return parseManifest(*text, file);
+}
+
+}  // namespace toyhost

@@ -1,0 +1,96 @@
+#include "media/MediaResolver.h"
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+
+#include "media/ImageFile.h"
+#include "media/StockMedia.h"
+
+namespace toyhost {
+namespace fs = std::filesystem;
+
+namespace {
+std::string overrideKey(std::string_view ref) {
+    const StockMediaInfo* info = findStockMedia(ref);
+    return info ? std::string(info->hash) : std::string(ref);
+}
+
+bool hasImageExtension(const fs::path& file) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".png" || ext == ".jpg" || ext == ".jpeg";
+}
+
+// A stock texture by "<hash>.<ext>" first, then any image file whose name findStockMedia maps to
+// the same texture (hash with another extension, "Abstract 3.jpg", "abstract_3.png"). Candidates
+// are taken in file-name order so the choice does not depend on the directory's listing order.
+std::optional<fs::path> findStockFile(const fs::path& folder, const StockMediaInfo& info) {
+    std::error_code ec;
+    const fs::path exact = folder / (std::string(info.hash) + "." + std::string(info.extension));
+    if (fs::is_regular_file(exact, ec)) return exact;
+
+    std::vector<fs::path> matches;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        const fs::path& file = it->path();
+        if (it->is_regular_file(ec) && hasImageExtension(file) &&
+            findStockMedia(file.filename().string()) == &info)
+            matches.push_back(file);
+    }
+    if (matches.empty()) return std::nullopt;
+    return *std::min_element(matches.begin(), matches.end());
+}
+
+// Any other id ("/media/user/foo.png", "foo.png") by its file name.
+std::optional<fs::path> findPlainFile(const fs::path& folder, std::string_view ref) {
+    const fs::path name = fs::path(std::string(ref)).filename();
+    if (name.empty()) return std::nullopt;
+    std::error_code ec;
+    const fs::path candidate = folder / name;
+    if (fs::is_regular_file(candidate, ec)) return candidate;
+    return std::nullopt;
+}
+
+Result<ResolvedMedia> loadReal(const fs::path& file) {
+    Result<Image8> image = loadImageFile(file);
+    if (!image) return image.error();
+    return ResolvedMedia{std::move(image).value(), false, {}};
+}
+}  // namespace
+
+void MediaResolver::setOverride(std::string ref, fs::path file) {
+    overrides_[overrideKey(ref)] = std::move(file);
+}
+
+void MediaResolver::addSearchFolder(fs::path folder) { searchFolders_.push_back(std::move(folder)); }
+
+Result<ResolvedMedia> MediaResolver::resolve(std::string_view ref) const {
+    const StockMediaInfo* info = findStockMedia(ref);
+
+    if (const auto it = overrides_.find(overrideKey(ref)); it != overrides_.end()) {
+        Result<ResolvedMedia> loaded = loadReal(it->second);
+        if (!loaded) return withContext("media override for '" + std::string(ref) + "'", loaded.error());
+        return loaded;
+    }
+
+    for (const fs::path& folder : searchFolders_) {
+        const std::optional<fs::path> file = info ? findStockFile(folder, *info) : findPlainFile(folder, ref);
+        if (file) return loadReal(*file);
+    }
+
+    if (!info) {
+        return Error{"media '" + std::string(ref) +
+                     "' is not a Shadertoy stock texture and was found in no override or media folder"};
+    }
+
+    const std::string path = stockMediaPath(*info);
+    ResolvedMedia standIn{makeStandIn(*info), true, {}};
+    standIn.notice = "toyhost: stock texture '" + std::string(info->name) + "' (" + path + ", " +
+                     std::to_string(info->width) + "x" + std::to_string(info->height) +
+                     ") is not available; using a deterministic stand-in. Supply the real file with "
+                     "--media-file " + std::string(info->hash) + "=<path>.";
+    return standIn;
+}
+
+}  // namespace toyhost

@@ -1,0 +1,62 @@
+#include "render/ChannelTextures.h"
+
+#include <cstring>
+#include <vector>
+
+namespace toyhost {
+
+InputTexture uploadImage(const Image8& image, const SamplerDesc& sampler) {
+    InputTexture out{makeTexture(), image.width, image.height};
+    const size_t rowBytes = static_cast<size_t>(image.width) * 4;
+    // GL's first row is t = 0. A file's first row is its top, so uploading unchanged shows the
+    // image upside down; vflip (Shadertoy's default) reverses the rows to put the top at t = 1.
+    std::vector<std::uint8_t> flipped;
+    const std::uint8_t* pixels = image.rgba.data();
+    if (sampler.vflip) {
+        flipped.resize(image.rgba.size());
+        for (int y = 0; y < image.height; ++y)
+            std::memcpy(flipped.data() + rowBytes * y, image.rgba.data() + rowBytes * (image.height - 1 - y),
+                        rowBytes);
+        pixels = flipped.data();
+    }
+    glBindTexture(GL_TEXTURE_2D, out.texture.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+    if (sampler.filter == Filter::Mipmap) glGenerateMipmap(GL_TEXTURE_2D);
+    else glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return out;
+}
+
+KeyboardTexture::KeyboardTexture() : texture_(makeTexture()) {
+    const std::vector<std::uint8_t> zeros(kWidth * kHeight, 0);
+    glBindTexture(GL_TEXTURE_2D, texture_.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kWidth, kHeight, 0, GL_RED, GL_UNSIGNED_BYTE, zeros.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void KeyboardTexture::update(std::span<const std::uint8_t> texels) {
+    glBindTexture(GL_TEXTURE_2D, texture_.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, kHeight, GL_RED, GL_UNSIGNED_BYTE, texels.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+SamplerSet::SamplerSet() {
+    const GLenum minFilters[3] = {GL_NEAREST, GL_LINEAR, GL_LINEAR_MIPMAP_LINEAR};
+    const GLenum magFilters[3] = {GL_NEAREST, GL_LINEAR, GL_LINEAR};
+    const GLenum wraps[2] = {GL_CLAMP_TO_EDGE, GL_REPEAT};
+    for (int f = 0; f < 3; ++f)
+        for (int w = 0; w < 2; ++w) {
+            GlSampler& s = samplers_[f][w];
+            s = makeSampler();
+            glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, minFilters[f]);
+            glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, magFilters[f]);
+            glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, wraps[w]);
+            glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, wraps[w]);
+        }
+}
+
+}  // namespace toyhost

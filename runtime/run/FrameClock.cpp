@@ -1,0 +1,50 @@
+#include "run/FrameClock.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+
+namespace toyhost {
+
+FrameClock::FrameClock(double fps, double startTime, double wallClockStart)
+    : fps_(fps), startTime_(startTime), wallClockStart_(wallClockStart) {}
+
+glm::vec4 FrameClock::date(int frame) const {
+    const double now = wallClockStart_ + (time(frame) - startTime_);
+    const double whole = std::floor(now);
+    std::time_t seconds = static_cast<std::time_t>(whole);
+    std::tm fields{};
+    gmtime_r(&seconds, &fields);
+    const double sinceMidnight = fields.tm_hour * 3600.0 + fields.tm_min * 60.0 + fields.tm_sec + (now - whole);
+    return {float(fields.tm_year + 1900), float(fields.tm_mon), float(fields.tm_mday), float(sinceMidnight)};
+}
+
+double localWallClockNow() {
+    using namespace std::chrono;
+    const double utc = duration<double>(system_clock::now().time_since_epoch()).count();
+    std::time_t t = static_cast<std::time_t>(utc);
+    std::tm local{};
+    localtime_r(&t, &local);
+    return utc + static_cast<double>(local.tm_gmtoff);
+}
+
+Result<double> parseWallClock(const std::string& text) {
+    int year, month, day, hour = 0, minute = 0;
+    double second = 0;
+    char sep = 'T';
+    const int n = std::sscanf(text.c_str(), "%d-%d-%d%c%d:%d:%lf", &year, &month, &day, &sep, &hour, &minute, &second);
+    if (!(n == 3 || (n == 7 && (sep == 'T' || sep == ' '))) || month < 1 || month > 12 || day < 1 ||
+        day > 31 || hour < 0 || hour > 23 || minute < 0 || minute > 59 || second < 0 || second >= 61)
+        return Error{"date \"" + text + "\" is not YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS"};
+    std::tm fields{};
+    fields.tm_year = year - 1900;
+    fields.tm_mon = month - 1;
+    fields.tm_mday = day;
+    fields.tm_hour = hour;
+    fields.tm_min = minute;
+    const double whole = static_cast<double>(timegm(&fields));
+    return whole + second;
+}
+
+}  // namespace toyhost

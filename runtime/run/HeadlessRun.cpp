@@ -1,0 +1,211 @@
+#include "run/HeadlessRun.h"
+
+#include <chrono>
+#include <map>
+#include <memory>
+
+#include "capture/ImageWriters.h"
+#include "capture/OutputPattern.h"
+#include "core/AtomicFile.h"
+#include "gl/EglSurfacelessContext.h"
+#include "graph/PassGraph.h"
+#include "input/InputScript.h"
+#include "input/InputScriptPlayer.h"
+#include "input/KeyboardState.h"
+#include "input/MouseState.h"
+#include "manifest/ManifestLoader.h"
+#include "media/ImageFile.h"
+#include "media/MediaResolver.h"
+#include "render/Renderer.h"
+#include "run/FrameClock.h"
+
+namespace toyhost {
+namespace fs = std::filesystem;
+
+namespace {
+
+int countCaptured(int frames, int every) {
+    int n = 0;
+    for (int f = 0; f < frames; ++f) n += isCapturedFrame(f, frames, every);
+    return n;
+}
+
+// Everything a run needs that can be checked without GL.
+struct PreparedRun {
+    ManifestDesc manifest;
+    PassGraph graph;
+    std::optional<OutputPattern> output;
+    MouseScript mouse;
+    KeyScript keys;
+    MediaResolver media;
+};
+
+Result<PreparedRun> prepare(const RunOptions& o) {
+    if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
+        return Error{"--size must be between 1x1 and 16384x16384"};
+    if (o.frames < 1) return Error{"--frames must be at least 1"};
+    if (!(o.fps > 0)) return Error{"--fps must be positive"};
+    if (o.captureEvery < 1) return Error{"--capture-every must be at least 1"};
+    if (o.mouse && o.mouseScript) return Error{"--mouse and --mouse-script cannot be combined"};
+
+    Result<ManifestDesc> manifest = loadManifest(o.target);
+    if (!manifest) return manifest.error();
+    PreparedRun run{std::move(*manifest), {}, std::nullopt, {}, {}, {}};
+    run.graph = buildPassGraph(run.manifest);
+
+    if (!run.manifest.find(o.capturePass))
+        return Error{std::string("--capture-pass ") + passName(o.capturePass) + ": " +
+                     run.manifest.manifestPath.string() + " has no such pass"};
+    if (o.outPattern) {
+        Result<OutputPattern> pattern = OutputPattern::parse(*o.outPattern);
+        if (!pattern) return pattern.error();
+        if (!pattern->numbered() && countCaptured(o.frames, o.captureEvery) > 1)
+            return Error{"--out " + *o.outPattern + ": more than one frame is captured, so the "
+                         "pattern needs a frame number placeholder such as %04d"};
+        run.output = std::move(*pattern);
+    }
+    if (o.mouse) run.mouse = mouseHeldAt(o.mouse->x, o.mouse->y);
+    if (o.mouseScript) {
+        Result<std::string> text = readTextFile(*o.mouseScript);
+        if (!text) return withContext("--mouse-script", text.error());
+        Result<MouseScript> script = parseMouseScript(*text, o.mouseScript->string());
+        if (!script) return script.error();
+        run.mouse = std::move(*script);
+    }
+    if (o.keyScript) {
+        Result<std::string> text = readTextFile(*o.keyScript);
+        if (!text) return withContext("--key-script", text.error());
+        Result<KeyScript> script = parseKeyScript(*text, o.keyScript->string());
+        if (!script) return script.error();
+        run.keys = std::move(*script);
+    }
+    for (const auto& [id, file] : run.manifest.mediaOverrides) run.media.setOverride(id, file);
+    for (const auto& [id, file] : o.mediaFiles) {
+        std::error_code ec;
+        if (!fs::is_regular_file(file, ec)) return Error{"--media-file " + id + ": " + file.string() + ": file not found"};
+        run.media.setOverride(id, file);
+    }
+    for (const fs::path& folder : o.mediaFolders) run.media.addSearchFolder(folder);
+    return run;
+}
+
+// Loads each image file or stock id once, reporting stand-ins through the observer.
+class ChannelImages {
+public:
+    ChannelImages(const MediaResolver& media, RunObserver& observer) : media_(media), observer_(observer) {}
+
+    Result<Image8> operator()(const ChannelDesc& channel) {
+        const std::string key = channel.kind == ChannelKind::ImageFile ? channel.file.string() : channel.media;
+        if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+        Image8 image;
+        if (channel.kind == ChannelKind::ImageFile) {
+            Result<Image8> loaded = loadImageFile(channel.file);
+            if (!loaded) return loaded.error();
+            image = std::move(*loaded);
+        } else {
+            Result<ResolvedMedia> resolved = media_.resolve(channel.media);
+            if (!resolved) return resolved.error();
+            if (resolved->standIn) observer_.notice(resolved->notice);
+            image = std::move(resolved->image);
+        }
+        return cache_.emplace(key, std::move(image)).first->second;
+    }
+
+private:
+    const MediaResolver& media_;
+    RunObserver& observer_;
+    std::map<std::string, Image8> cache_;
+};
+
+Status capture(const Renderer& renderer, const OutputPattern& output, PassId pass, int frame,
+               std::vector<std::uint8_t>& bytes, std::vector<float>& floats, fs::path& written) {
+    written = output.pathFor(frame);
+    const int w = renderer.width(), h = renderer.height();
+    if (output.format() == OutputFormat::Exr) {
+        renderer.readRgba32f(pass, floats);
+        return writeExr(written, w, h, floats);
+    }
+    if (pass == PassId::Image) {
+        renderer.readImageRgba8(bytes);
+    } else {
+        // A buffer shown as 8 bits: clamp to [0, 1] and round, as a UNORM8 target would.
+        renderer.readRgba32f(pass, floats);
+        bytes.resize(floats.size());
+        for (size_t i = 0; i < floats.size(); ++i) {
+            float v = floats[i] < 0 ? 0 : (floats[i] > 1 ? 1 : floats[i]);
+            bytes[i] = static_cast<std::uint8_t>(v * 255.0f + 0.5f);
+        }
+    }
+    return writePng(written, w, h, bytes);
+}
+
+}  // namespace
+
+Result<RunReport> runHeadless(const RunOptions& o, RunObserver& observer) {
+    using Clock = std::chrono::steady_clock;
+    const auto started = Clock::now();
+    Result<PreparedRun> prepared = prepare(o);
+    if (!prepared) return prepared.error();
+    PreparedRun& run = *prepared;
+
+    Result<std::unique_ptr<GlContext>> context = createEglSurfacelessContext();
+    if (!context) return context.error();
+
+    RendererOptions renderOptions;
+    renderOptions.width = o.width;
+    renderOptions.height = o.height;
+    renderOptions.floatImageTarget =
+        run.output && run.output->format() == OutputFormat::Exr && o.capturePass == PassId::Image;
+    ChannelImages images(run.media, observer);
+    Result<std::unique_ptr<Renderer>> renderer =
+        Renderer::create(run.manifest, run.graph, renderOptions, std::ref(images));
+    if (!renderer) return renderer.error();
+
+    RunReport report;
+    report.manifestName = run.manifest.name;
+    report.context = (*context)->describe();
+
+    FrameClock clock(o.fps, o.startTime, o.wallClock ? *o.wallClock : localWallClockNow());
+    MouseState mouse;
+    KeyboardState keyboard;
+    MouseScriptPlayer mousePlayer(std::move(run.mouse));
+    KeyScriptPlayer keyPlayer(std::move(run.keys));
+    std::uint64_t uploadedKeyboard = keyboard.revision();
+    std::vector<std::uint8_t> bytes;
+    std::vector<float> floats;
+
+    const auto loopStart = Clock::now();
+    for (int frame = 0; frame < o.frames; ++frame) {
+        const double time = clock.time(frame);
+        mousePlayer.applyBeforeFrame(frame, time, mouse);
+        keyPlayer.applyBeforeFrame(frame, time, keyboard);
+        if (keyboard.revision() != uploadedKeyboard) {
+            (*renderer)->updateKeyboard(keyboard.texels());
+            uploadedKeyboard = keyboard.revision();
+        }
+        FrameUniforms uniforms;
+        uniforms.frame = frame;
+        uniforms.time = static_cast<float>(time);
+        uniforms.timeDelta = static_cast<float>(clock.timeDelta());
+        uniforms.frameRate = static_cast<float>(o.fps);
+        uniforms.mouse = mouse.uniform();
+        uniforms.date = clock.date(frame);
+        (*renderer)->renderFrame(uniforms);
+
+        if (run.output && isCapturedFrame(frame, o.frames, o.captureEvery)) {
+            fs::path written;
+            Status saved = capture(**renderer, *run.output, o.capturePass, frame, bytes, floats, written);
+            if (!saved) return saved.error();
+            report.files.push_back(written);
+        }
+        mouse.endFrame();
+        keyboard.endFrame();  // its change is uploaded before the next frame renders
+        if (frame == 0) report.firstFrameSeconds = std::chrono::duration<double>(Clock::now() - started).count();
+        report.framesRendered = frame + 1;
+        observer.frameDone(frame, o.frames);
+    }
+    report.seconds = std::chrono::duration<double>(Clock::now() - loopStart).count();
+    return report;
+}
+
+}  // namespace toyhost

@@ -1,0 +1,149 @@
+#include "shader/ShaderAssembly.h"
+
+#include <algorithm>
+#include <regex>
+#include <sstream>
+
+namespace toyhost {
+
+namespace {
+
+int countNewlines(std::string_view text) {
+    return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+const char* samplerKeyword(SamplerType type) {
+    switch (type) {
+        case SamplerType::SamplerCube: return "samplerCube";
+        case SamplerType::Sampler3D: return "sampler3D";
+        case SamplerType::Sampler2D: break;
+    }
+    return "sampler2D";
+}
+
+// The header shadertoy.com's player (WebGL2) prepends to a pass, in its order.
+std::string makeHeader(const ShaderInputs& in) {
+    const bool image = in.pass == PassId::Image;
+    std::ostringstream h;
+    h << "#version 300 es\n"
+         "precision highp float;\n"
+         "precision highp int;\n"
+         "precision mediump sampler3D;\n"
+         "#define HW_PERFORMANCE 1\n"
+         "uniform vec3      iResolution;\n"
+         "uniform float     iTime;\n"
+         "uniform float     iChannelTime[4];\n"
+         "uniform vec4      iMouse;\n"
+         "uniform vec4      iDate;\n"
+         "uniform float     iSampleRate;\n"
+         "uniform vec3      iChannelResolution[4];\n"
+         "uniform int       iFrame;\n"
+         "uniform float     iTimeDelta;\n"
+         "uniform float     iFrameRate;\n";
+    for (int i = 0; i < kChannelCount; ++i) {
+        const char* sampler = samplerKeyword(in.samplers[i]);
+        h << "uniform " << sampler << " iChannel" << i << ";\n";
+        if (image)  // the newer per-channel struct API exists only in the Image pass
+            h << "uniform struct {\n  " << sampler
+              << " sampler;\n  vec3  size;\n  float time;\n  int   loaded;\n}iCh" << i << ";\n";
+    }
+    h << "void mainImage( out vec4 c, in vec2 f );\n";
+    if (image) {
+        h << "void st_assert( bool cond );\n"
+             "void st_assert( bool cond, int v );\n"
+             "\nout vec4 shadertoy_out_color;\n"
+             "void st_assert( bool cond, int v ) {if(!cond){if(v==0)shadertoy_out_color.x=-1.0;"
+             "else if(v==1)shadertoy_out_color.y=-1.0;else if(v==2)shadertoy_out_color.z=-1.0;"
+             "else shadertoy_out_color.w=-1.0;}}\n"
+             "void st_assert( bool cond        ) {if(!cond)shadertoy_out_color.x=-1.0;}\n"
+             "void main( void ){"
+             "shadertoy_out_color = vec4(1.0,1.0,1.0,1.0);"
+             "vec4 color = vec4(0.0,0.0,0.0,1.0);"
+             "mainImage( color, gl_FragCoord.xy );"
+             "if(shadertoy_out_color.x<0.0) color=vec4(1.0,0.0,0.0,1.0);"
+             "if(shadertoy_out_color.y<0.0) color=vec4(0.0,1.0,0.0,1.0);"
+             "if(shadertoy_out_color.z<0.0) color=vec4(0.0,0.0,1.0,1.0);"
+             "if(shadertoy_out_color.w<0.0) color=vec4(1.0,1.0,0.0,1.0);"
+             "shadertoy_out_color = vec4(color.xyz,1.0);}\n";
+    } else {
+        // Buffers keep the alpha mainImage wrote.
+        h << "\nout vec4 outColor;\n"
+             "\nvoid main( void )\n"
+             "{vec4 color = vec4(0.0,0.0,0.0,1.0);mainImage( color, gl_FragCoord.xy );"
+             "outColor = color; }\n";
+    }
+    return h.str();
+}
+
+}  // namespace
+
+AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
+    AssembledShader out;
+    out.text = makeHeader(inputs);
+    out.headerLines = countNewlines(out.text);
+    out.passFirstLine = out.headerLines + 1;
+    if (inputs.common) {
+        // Common is pasted followed by a newline.
+        out.text += *inputs.common;
+        out.text += '\n';
+        out.commonLines = countNewlines(*inputs.common) + 1;
+        out.passFirstLine += out.commonLines;
+    }
+    out.text += inputs.code;
+    return out;
+}
+
+const char* fullscreenVertexShader() {
+    return "#version 300 es\n"
+           "void main() {\n"
+           "    vec2 corner = vec2(float((gl_VertexID & 1) << 2), float((gl_VertexID & 2) << 1));\n"
+           "    gl_Position = vec4(corner - 1.0, 0.0, 1.0);\n"
+           "}\n";
+}
+
+SourceLine mapGeneratedLine(const AssembledShader& shader, int line) {
+    if (line <= shader.headerLines) return {SourceLine::Part::Header, line};
+    if (line < shader.passFirstLine) return {SourceLine::Part::Common, line - shader.headerLines};
+    return {SourceLine::Part::Pass, line - shader.passFirstLine + 1};
+}
+
+std::string translateCompilerLog(const AssembledShader& shader, std::string_view log,
+                                 const std::string& commonFile, const std::string& passFile) {
+    // Mesa: "0:57(12): error: msg"; glslang/ANGLE: "ERROR: 0:57: msg"; NVIDIA: "0(57) : error C...".
+    static const std::regex mesa(R"(^\s*(\d+):(\d+)\((\d+)\):\s*(.*)$)");
+    static const std::regex angle(R"(^\s*(ERROR|WARNING):\s*(\d+):(\d+):\s*(.*)$)");
+    static const std::regex nvidia(R"(^\s*(\d+)\((\d+)\)\s*:\s*(.*)$)");
+
+    auto location = [&](int generatedLine, const std::string& column) {
+        SourceLine where = mapGeneratedLine(shader, generatedLine);
+        std::string file = where.part == SourceLine::Part::Pass     ? passFile
+                           : where.part == SourceLine::Part::Common ? commonFile
+                                                                    : std::string("<toyhost header>");
+        std::string text = file + ":" + std::to_string(where.line);
+        if (!column.empty()) text += ":" + column;
+        return text;
+    };
+
+    std::string out;
+    std::istringstream lines{std::string(log)};
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty()) continue;
+        std::smatch m;
+        std::string rewritten = line;
+        if (std::regex_match(line, m, mesa)) {
+            rewritten = location(std::stoi(m[2]), m[3]) + ": " + m[4].str();
+        } else if (std::regex_match(line, m, angle)) {
+            std::string kind = m[1] == "ERROR" ? "error" : "warning";
+            rewritten = location(std::stoi(m[3]), "") + ": " + kind + ": " + m[4].str();
+        } else if (std::regex_match(line, m, nvidia)) {
+            rewritten = location(std::stoi(m[2]), "") + ": " + m[3].str();
+        }
+        if (!out.empty()) out += '\n';
+        out += rewritten;
+    }
+    return out;
+}
+
+}  // namespace toyhost

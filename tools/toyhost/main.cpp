@@ -1,0 +1,127 @@
+// toyhost: the command-line interface. Parses arguments, runs the job, prints what the library
+// reports and chooses the exit code (0 success, 1 run failure, 2 bad usage or input).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <unistd.h>
+
+#include "run/FrameClock.h"
+#include "run/HeadlessRun.h"
+
+namespace {
+
+using namespace toyhost;
+
+class ConsoleObserver final : public RunObserver {
+public:
+    explicit ConsoleObserver(bool quiet) : quiet_(quiet), terminal_(isatty(STDERR_FILENO)) {}
+    void notice(const std::string& line) override { std::cerr << line << "\n"; }
+    void frameDone(int frame, int frames) override {
+        if (quiet_ || !terminal_) return;
+        if (frame + 1 == frames || (frame % 10) == 0)
+            std::cerr << "\rframe " << (frame + 1) << "/" << frames << std::flush;
+        if (frame + 1 == frames) std::cerr << "\r\033[K" << std::flush;
+    }
+
+private:
+    bool quiet_;
+    bool terminal_;
+};
+
+bool parseSize(const std::string& text, int& w, int& h) {
+    char x = 0, extra = 0;
+    return std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) == 3 && (x == 'x' || x == 'X');
+}
+
+std::optional<PassId> parsePass(const std::string& text) {
+    for (PassId id : {PassId::BufferA, PassId::BufferB, PassId::BufferC, PassId::BufferD, PassId::Image})
+        if (text == passName(id)) return id;
+    if (text.size() == 1 && text[0] >= 'A' && text[0] <= 'D') return bufferPass(text[0] - 'A');
+    return std::nullopt;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"toyhost: run Shadertoy shaders unmodified, headless or in a window"};
+    app.set_version_flag("--version", std::string("toyhost ") + TOYHOST_VERSION);
+    app.require_subcommand(1);
+
+    RunOptions options;
+    std::string target, size = "800x450", capturePass = "Image", mouse, date;
+    std::vector<std::string> mediaFiles;
+    bool headless = false, quiet = false;
+
+    CLI::App* run = app.add_subcommand("run", "Run a shadertoy described by a manifest");
+    run->add_option("target", target, "Folder holding manifest.json, or a manifest file")->required();
+    run->add_flag("--headless", headless, "Render without a window (EGL surfaceless; the only mode for now)");
+    run->add_option("--size", size, "Canvas size WxH")->capture_default_str();
+    run->add_option("--frames", options.frames, "Number of frames to render")->capture_default_str();
+    run->add_option("--fps", options.fps, "Fixed frame rate: frame n has iTime = start + n/fps")->capture_default_str();
+    run->add_option("--start-time", options.startTime, "iTime of frame 0, in seconds")->capture_default_str();
+    run->add_option("--out", options.outPattern,
+                    "Write captured frames, e.g. out/frame_%04d.png (8-bit, as shown) or .exr (32-bit float RGBA); "
+                    "numbered by iFrame");
+    run->add_option("--capture-every", options.captureEvery, "Capture frames n with n % K == 0, and the last frame")
+        ->capture_default_str();
+    run->add_option("--capture-pass", capturePass, "Pass to capture: Image, \"Buffer A\" .. \"Buffer D\" (or A..D)")
+        ->capture_default_str();
+    run->add_option("--mouse", mouse, "Press the button at pixel X,Y (origin bottom-left) on frame 0 and hold it");
+    run->add_option("--mouse-script", options.mouseScript, "JSON list of timed mouse events (see README)");
+    run->add_option("--key-script", options.keyScript, "JSON list of timed key events (see README)");
+    run->add_option("--media-file", mediaFiles, "Use FILE for a stock media id: ID=FILE (repeatable)");
+    run->add_option("--media", options.mediaFolders, "Folder with real stock media files, by hash or name (repeatable)");
+    run->add_option("--date", date, "iDate at frame 0, YYYY-MM-DDTHH:MM:SS (default: now, local time)");
+    run->add_flag("--quiet", quiet, "No progress line");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+
+    auto usage = [](const std::string& message) {
+        std::cerr << "toyhost: " << message << "\n";
+        return 2;
+    };
+    options.target = target;
+    if (!parseSize(size, options.width, options.height)) return usage("--size " + size + ": expected WxH, e.g. 800x450");
+    std::optional<PassId> pass = parsePass(capturePass);
+    if (!pass) return usage("--capture-pass " + capturePass + ": expected Image or \"Buffer A\" .. \"Buffer D\"");
+    options.capturePass = *pass;
+    if (!mouse.empty()) {
+        float x = 0, y = 0;
+        char comma = 0, extra = 0;
+        if (std::sscanf(mouse.c_str(), "%f%c%f%c", &x, &comma, &y, &extra) != 3 || comma != ',')
+            return usage("--mouse " + mouse + ": expected X,Y in pixels");
+        options.mouse = glm::vec2(x, y);
+    }
+    for (const std::string& entry : mediaFiles) {
+        const size_t eq = entry.find('=');
+        if (eq == std::string::npos || eq == 0 || eq + 1 == entry.size())
+            return usage("--media-file " + entry + ": expected ID=FILE");
+        options.mediaFiles.emplace_back(entry.substr(0, eq), entry.substr(eq + 1));
+    }
+    if (!date.empty()) {
+        Result<double> wallClock = parseWallClock(date);
+        if (!wallClock) return usage("--date: " + wallClock.error().message);
+        options.wallClock = *wallClock;
+    }
+    (void)headless;  // headless is the only mode until the window backend lands
+
+    ConsoleObserver observer(quiet);
+    Result<RunReport> report = runHeadless(options, observer);
+    if (!report) {
+        std::cerr << "toyhost: " << report.error().message << "\n";
+        return 1;
+    }
+    const double fps = report->seconds > 0 ? report->framesRendered / report->seconds : 0;
+    std::fprintf(stderr, "toyhost: %s: %d frames at %dx%d in %.2f s (%.1f frames/s) on %s\n",
+                 report->manifestName.c_str(), report->framesRendered, options.width, options.height,
+                 report->seconds, fps, report->context.c_str());
+    if (!report->files.empty())
+        std::fprintf(stderr, "toyhost: wrote %zu file(s): %s .. %s\n", report->files.size(),
+                     report->files.front().c_str(), report->files.back().c_str());
+    return 0;
+}
