@@ -87,6 +87,7 @@ public:
         readCommon(root);
         readMedia(root);
         readPasses(root);
+        checkMediaOverridesUsed();
         if (!problems_.empty()) return problems_.toError();
         std::sort(desc_.passes.begin(), desc_.passes.end(),
                   [](const PassDesc& a, const PassDesc& b) { return a.id < b.id; });
@@ -146,7 +147,6 @@ private:
         }
         for (const auto& [id, file] : it->items()) {
             const std::string where = "media." + quote(id);
-            if (!findStockMedia(id)) problems_.add(where, "unknown stock media id");
             if (!file.is_string()) {
                 problems_.add(where, "must be a file path string, not " + typeName(file));
                 continue;
@@ -157,6 +157,14 @@ private:
                 problems_.add(where, resolved.string() + ": file not found");
             desc_.mediaOverrides[id] = resolved;
         }
+    }
+
+    // A key may be a stock id or the user's own media id (channels may then name it), so only a
+    // key that is neither a stock id nor used by any channel is an error (most likely a typo).
+    void checkMediaOverridesUsed() {
+        for (const auto& [id, file] : desc_.mediaOverrides)
+            if (!findStockMedia(id) && !mediaRefs_.count(id))
+                problems_.add("media." + quote(id), "not a stock media id, and no channel uses it");
     }
 
     void readPasses(const json& root) {
@@ -268,6 +276,7 @@ private:
         } else if (auto media = readString(value, "media", where)) {
             channel.kind = ChannelKind::StockMedia;
             channel.media = *media;
+            mediaRefs_.insert(*media);
             if (!findStockMedia(*media) && !desc_.mediaOverrides.count(*media))
                 problems_.add(where, "unknown stock media id " + quote(*media) +
                                          " (add it to \"media\" with a file to use it)");
@@ -322,6 +331,7 @@ private:
     Problems problems_;
     ManifestDesc desc_;
     std::vector<BufferRef> bufferRefs_;
+    std::set<std::string> mediaRefs_;
 };
 
 }  // namespace

@@ -191,38 +191,52 @@ Image8 whiteNoise(const StockMediaInfo& info) {
     return image;
 }
 
+// One axis of a lattice with `cells` cells over `size` pixels: for each pixel the two lattice
+// indices it lies between (wrapping, so the texture tiles) and the smoothstep weight in 1/65536.
+struct LatticeAxis {
+    std::vector<std::size_t> lower, upper;
+    std::vector<std::int64_t> weight;
+    LatticeAxis(int size, int cells) {
+        for (int p = 0; p < size; ++p) {
+            const int cell = p * cells / size;
+            const std::int64_t t = static_cast<std::int64_t>(p * cells % size) * 65536 / size;
+            lower.push_back(static_cast<std::size_t>(cell));
+            upper.push_back(static_cast<std::size_t>((cell + 1) % cells));
+            weight.push_back((t * t * (3 * 65536 - 2 * t)) >> 32);
+        }
+    }
+};
+
 // Tileable value noise summed over octaves from 4 cells across down to 2-pixel cells, so every mip
-// level keeps some detail. Fixed point: weights in 1/65536, result 0..255.
+// level keeps some detail. Fixed point throughout; the result is 0..255.
 Bytes valueNoise(int width, int height, std::uint64_t seed) {
-    std::vector<std::int64_t> sum(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
+    const std::size_t w = static_cast<std::size_t>(width), h = static_cast<std::size_t>(height);
+    std::vector<std::int64_t> sum(w * h, 0);
     std::int64_t amplitude = 1024, amplitudeSum = 0;
-    auto smooth = [](std::int64_t t) { return (t * t * (3 * 65536 - 2 * t)) >> 32; };
-    for (int cells = 4; cells * 2 <= std::max(width, height); cells *= 2, amplitude = amplitude * 5 / 8) {
-        const int cellsX = std::max(1, cells * width / std::max(width, height));
-        const int cellsY = std::max(1, cells * height / std::max(width, height));
+    const int longest = std::max(width, height);
+    for (int cells = 4; cells * 2 <= longest; cells *= 2, amplitude = amplitude * 5 / 8) {
+        const int cellsX = std::max(1, cells * width / longest), cellsY = std::max(1, cells * height / longest);
         Bytes lattice(static_cast<std::size_t>(cellsX) * static_cast<std::size_t>(cellsY));
         ByteStream random(mix64(seed ^ static_cast<std::uint64_t>(cells)));
         for (auto& v : lattice) v = random.next();
-        auto at = [&](int x, int y) -> std::int64_t {
-            return lattice[static_cast<std::size_t>(y % cellsY) * static_cast<std::size_t>(cellsX) + static_cast<std::size_t>(x % cellsX)];
-        };
-        for (int y = 0; y < height; ++y) {
-            const int iy = y * cellsY / height;
-            const std::int64_t ty = smooth(static_cast<std::int64_t>(y * cellsY % height) * 65536 / height);
-            for (int x = 0; x < width; ++x) {
-                const int ix = x * cellsX / width;
-                const std::int64_t tx = smooth(static_cast<std::int64_t>(x * cellsX % width) * 65536 / width);
-                const std::int64_t top = at(ix, iy) * 65536 + (at(ix + 1, iy) - at(ix, iy)) * tx;
-                const std::int64_t bottom = at(ix, iy + 1) * 65536 + (at(ix + 1, iy + 1) - at(ix, iy + 1)) * tx;
-                const std::int64_t v = (top * 65536 + (bottom - top) * ty) >> 32;  // 0..255
-                sum[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] += v * amplitude;
+        const LatticeAxis ax(width, cellsX), ay(height, cellsY);
+        for (std::size_t y = 0; y < h; ++y) {
+            const std::uint8_t* row0 = &lattice[ay.lower[y] * static_cast<std::size_t>(cellsX)];
+            const std::uint8_t* row1 = &lattice[ay.upper[y] * static_cast<std::size_t>(cellsX)];
+            for (std::size_t x = 0; x < w; ++x) {
+                const std::int64_t a = row0[ax.lower[x]], b = row0[ax.upper[x]];
+                const std::int64_t c = row1[ax.lower[x]], d = row1[ax.upper[x]];
+                const std::int64_t top = a * 65536 + (b - a) * ax.weight[x];
+                const std::int64_t bottom = c * 65536 + (d - c) * ax.weight[x];
+                const std::int64_t v = (top * 65536 + (bottom - top) * ay.weight[y]) >> 32;  // 0..255
+                sum[y * w + x] += v * amplitude;
             }
         }
         amplitudeSum += amplitude;
     }
     Bytes out(sum.size());
     for (std::size_t i = 0; i < sum.size(); ++i) {
-        // Stretch the contrast (sums of octaves cluster around the middle).
+        // Stretch the contrast: sums of octaves cluster around the middle.
         const std::int64_t v = 128 + (sum[i] / std::max<std::int64_t>(amplitudeSum, 1) - 128) * 2;
         out[i] = static_cast<std::uint8_t>(std::clamp<std::int64_t>(v, 0, 255));
     }

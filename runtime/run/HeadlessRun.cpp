@@ -14,9 +14,9 @@
 #include "input/KeyboardState.h"
 #include "input/MouseState.h"
 #include "manifest/ManifestLoader.h"
-#include "media/ImageFile.h"
 #include "media/MediaResolver.h"
 #include "render/Renderer.h"
+#include "run/ChannelImages.h"
 #include "run/FrameClock.h"
 
 namespace toyhost {
@@ -89,34 +89,6 @@ Result<PreparedRun> prepare(const RunOptions& o) {
     return run;
 }
 
-// Loads each image file or stock id once, reporting stand-ins through the observer.
-class ChannelImages {
-public:
-    ChannelImages(const MediaResolver& media, RunObserver& observer) : media_(media), observer_(observer) {}
-
-    Result<Image8> operator()(const ChannelDesc& channel) {
-        const std::string key = channel.kind == ChannelKind::ImageFile ? channel.file.string() : channel.media;
-        if (auto it = cache_.find(key); it != cache_.end()) return it->second;
-        Image8 image;
-        if (channel.kind == ChannelKind::ImageFile) {
-            Result<Image8> loaded = loadImageFile(channel.file);
-            if (!loaded) return loaded.error();
-            image = std::move(*loaded);
-        } else {
-            Result<ResolvedMedia> resolved = media_.resolve(channel.media);
-            if (!resolved) return resolved.error();
-            if (resolved->standIn) observer_.notice(resolved->notice);
-            image = std::move(resolved->image);
-        }
-        return cache_.emplace(key, std::move(image)).first->second;
-    }
-
-private:
-    const MediaResolver& media_;
-    RunObserver& observer_;
-    std::map<std::string, Image8> cache_;
-};
-
 Status capture(const Renderer& renderer, const OutputPattern& output, PassId pass, int frame,
                std::vector<std::uint8_t>& bytes, std::vector<float>& floats, fs::path& written) {
     written = output.pathFor(frame);
@@ -156,7 +128,7 @@ Result<RunReport> runHeadless(const RunOptions& o, RunObserver& observer) {
     renderOptions.height = o.height;
     renderOptions.floatImageTarget =
         run.output && run.output->format() == OutputFormat::Exr && o.capturePass == PassId::Image;
-    ChannelImages images(run.media, observer);
+    ChannelImages images(run.media, [&](const std::string& line) { observer.notice(line); });
     Result<std::unique_ptr<Renderer>> renderer =
         Renderer::create(run.manifest, run.graph, renderOptions, std::ref(images));
     if (!renderer) return renderer.error();

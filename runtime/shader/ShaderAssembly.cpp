@@ -29,6 +29,12 @@ std::string makeHeader(const ShaderInputs& in) {
          "precision highp float;\n"
          "precision highp int;\n"
          "precision mediump sampler3D;\n"
+         // Desktop GPUs, where shadertoys are written and checked, compute lowp and mediump in
+         // 32 bits; Mesa (llvmpipe included) lowers them to 16 bits, which breaks simulations
+         // that read float buffers through the default lowp sampler2D. Promote them.
+         "precision highp sampler2D; precision highp samplerCube; precision highp sampler3D;\n"
+         "#define lowp highp\n"
+         "#define mediump highp\n"
          "#define HW_PERFORMANCE 1\n"
          "uniform vec3      iResolution;\n"
          "uniform float     iTime;\n"

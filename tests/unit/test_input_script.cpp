@@ -131,7 +131,8 @@ TEST(InputScriptParse, WrongTypesAreNamed) {
 }
 
 TEST(InputScriptParse, FrameAndTimeExactlyOne) {
-    EXPECT_EQ(mouseError(R"([{"frame": 0, "type": "up"}, {"frame": 1, "time": 0.5, "type": "up"}])"),
+    EXPECT_EQ(mouseError(R"([{"frame": 0, "type": "up"},
+                             {"frame": 1, "time": 0.5, "type": "up"}])"),
               "mouse.json: event 1: give one of \"frame\" and \"time\", not both");
     EXPECT_EQ(mouseError(R"([{"type": "up"}])"),
               "mouse.json: event 0: \"frame\" or \"time\" is missing");

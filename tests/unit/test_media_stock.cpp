@@ -3,10 +3,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <set>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "media/StockMedia.h"
 
@@ -147,22 +150,25 @@ TEST(StandIn, MatchesTheRealSizeAndChannelLayoutForEveryEntry) {
         ASSERT_EQ(image.width, info.width) << info.name;
         ASSERT_EQ(image.height, info.height) << info.name;
         ASSERT_EQ(image.rgba.size(), static_cast<std::size_t>(info.width * info.height * 4)) << info.name;
+        std::size_t notGrey = 0, notOpaque = 0;
         for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-            if (info.channels == 1) {
-                ASSERT_EQ(image.rgba[i + 1], image.rgba[i]) << info.name;
-                ASSERT_EQ(image.rgba[i + 2], image.rgba[i]) << info.name;
-            }
-            if (info.channels != 4) ASSERT_EQ(image.rgba[i + 3], 255) << info.name;
+            notGrey += image.rgba[i + 1] != image.rgba[i] || image.rgba[i + 2] != image.rgba[i];
+            notOpaque += image.rgba[i + 3] != 255;
         }
+        if (info.channels == 1) EXPECT_EQ(notGrey, 0u) << info.name << ": grey files give R=G=B";
+        if (info.channels != 4) EXPECT_EQ(notOpaque, 0u) << info.name << ": no alpha in the file gives A=255";
     }
 }
 
 TEST(StandIn, IsDeterministicAndPinnedForTheSmallNoise) {
-    for (const StockMediaInfo& info : stockMediaTable())
-        EXPECT_EQ(fnv1a(makeStandIn(info).rgba), fnv1a(makeStandIn(info).rgba)) << info.name;
-    // Pinned values: a change here changes what every shader using these textures renders.
-    EXPECT_EQ(fnv1a(makeStandIn(stock("Gray Noise Small")).rgba), 0x0ULL);
-    EXPECT_EQ(fnv1a(makeStandIn(stock("RGBA Noise Small")).rgba), 0x0ULL);
+    for (const char* name : {"Gray Noise Small", "RGBA Noise Medium", "London", "Pebbles", "Bayer", "Font 1",
+                             "Nyancat", "Blue Noise"}) {
+        EXPECT_EQ(fnv1a(makeStandIn(stock(name)).rgba), fnv1a(makeStandIn(stock(name)).rgba)) << name;
+    }
+    // Pinned values: a change here changes what every shader using these textures renders. The
+    // generator is integer-only, so these hold on every compiler and CPU.
+    EXPECT_EQ(fnv1a(makeStandIn(stock("Gray Noise Small")).rgba), 0x57c7f064e89ca7a2ULL);
+    EXPECT_EQ(fnv1a(makeStandIn(stock("RGBA Noise Small")).rgba), 0xd5da97d9ca6e3457ULL);
 }
 
 TEST(StandIn, GrayNoiseIsUniformBytes) {

@@ -1,0 +1,61 @@
+// Shadertoy's ping-pong rule and frame-0 clearing, proven value by value on float buffers with
+// shadertoys/pingpong-probe (expected values are listed in its common.glsl).
+#include "GlTestSupport.h"
+
+#include "capture/ImageWriters.h"
+
+namespace toyhost::testing {
+namespace {
+
+class PingPong : public GlTest {};
+
+void expectEveryPixel(const std::vector<float>& rgba, float r, float g, float b, float a, const char* what,
+                      int frame) {
+    for (size_t i = 0; i < rgba.size(); i += 4) {
+        ASSERT_EQ(rgba[i + 0], r) << what << " .x, frame " << frame << ", pixel " << i / 4;
+        ASSERT_EQ(rgba[i + 1], g) << what << " .y, frame " << frame << ", pixel " << i / 4;
+        ASSERT_EQ(rgba[i + 2], b) << what << " .z, frame " << frame << ", pixel " << i / 4;
+        ASSERT_EQ(rgba[i + 3], a) << what << " .w, frame " << frame << ", pixel " << i / 4;
+    }
+}
+
+TEST_F(PingPong, BuffersFollowThisFramePreviousFrameRuleFromClearedStart) {
+    auto toy = loadShadertoy(sourceDir() / "shadertoys/pingpong-probe", 16, 8, /*floatImage=*/true);
+    ASSERT_TRUE(toy);
+    std::vector<float> a, b, image;
+    for (int n = 0; n < 6; ++n) {
+        toy->renderer->renderFrame(toy->uniforms(n));
+        toy->renderer->readRgba32f(PassId::BufferA, a);
+        toy->renderer->readRgba32f(PassId::BufferB, b);
+        toy->renderer->readRgba32f(PassId::Image, image);
+        const float f = static_cast<float>(n);
+        // A reads itself and the later B: previous frame's values, zero at frame 0.
+        expectEveryPixel(a, f + 1, f, 10 * f, 0.25f, "Buffer A", n);
+        // B reads the earlier A: this frame's; itself: the previous frame's. Alpha is kept.
+        expectEveryPixel(b, 10 * (f + 1), (f + 1) * (f + 2) / 2, f, 0.5f, "Buffer B", n);
+        // Image sees this frame's A and B and has its alpha forced to 1.
+        ASSERT_FLOAT_EQ(image[0], (f + 1) / 100.0f) << "frame " << n;
+        ASSERT_FLOAT_EQ(image[1], 10 * (f + 1) / 1000.0f) << "frame " << n;
+        ASSERT_FLOAT_EQ(image[2], (f + 1) * (f + 2) / 2 / 1000.0f) << "frame " << n;
+        ASSERT_EQ(image[3], 1.0f) << "frame " << n;
+    }
+}
+
+TEST_F(PingPong, CliExportsBufferAsRawFloatExr) {
+    const auto dir = freshOutputDir("pingpong-exr");
+    CommandResult run = runToyhost("run '" + (sourceDir() / "shadertoys/pingpong-probe").string() +
+                                   "' --size 8x4 --frames 4 --capture-pass 'Buffer B' --out '" +
+                                   (dir / "b_%02d.exr").string() + "' --quiet");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    for (int n = 0; n < 4; ++n) {
+        auto exr = readExr(dir / ("b_0" + std::to_string(n) + ".exr"));
+        ASSERT_TRUE(exr.ok()) << exr.error().message;
+        ASSERT_EQ(exr->width, 8);
+        ASSERT_EQ(exr->height, 4);
+        const float f = static_cast<float>(n);
+        expectEveryPixel(exr->rgba, 10 * (f + 1), (f + 1) * (f + 2) / 2, f, 0.5f, "Buffer B (EXR)", n);
+    }
+}
+
+}  // namespace
+}  // namespace toyhost::testing

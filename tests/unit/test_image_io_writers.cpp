@@ -1,0 +1,190 @@
+// ImageWriters: PNG/EXR round trips, row order, and atomic writes that leave nothing behind.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "capture/ImageWriters.h"
+
+using namespace toyhost;
+namespace fs = std::filesystem;
+
+namespace {
+struct TempFolder {
+    fs::path path;
+    TempFolder() {
+        static int counter = 0;
+        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        path = fs::temp_directory_path() /
+               ("toyhost_imageio_" + std::to_string(::getpid()) + "_" + test->test_suite_name() + "_" + test->name() +
+                "_" + std::to_string(counter++));
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempFolder() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+    // Every file left in the folder, recursively (to catch .partial leftovers).
+    std::vector<std::string> files() const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::recursive_directory_iterator(path))
+            if (!entry.is_directory()) names.push_back(entry.path().filename().string());
+        return names;
+    }
+};
+
+// Bottom-up RGBA8 where every pixel is distinct and the bottom row differs from the top row.
+std::vector<std::uint8_t> gradient8(int width, int height) {
+    std::vector<std::uint8_t> rgba;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int value : {x * 40, y * 50, x * 7 + y * 13, 255 - y * 30})
+                rgba.push_back(static_cast<std::uint8_t>(value));
+    return rgba;
+}
+
+std::vector<char> fileBytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::ptrdiff_t findFloat(const std::vector<char>& bytes, float value) {
+    char pattern[sizeof value];
+    std::memcpy(pattern, &value, sizeof value);
+    const auto it = std::search(bytes.begin(), bytes.end(), std::begin(pattern), std::end(pattern));
+    return it == bytes.end() ? -1 : it - bytes.begin();
+}
+}  // namespace
+
+TEST(ImageIo, FlipRowsReversesRowOrder) {
+    const std::vector<int> rows = {1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3};  // three 1-pixel rows
+    EXPECT_EQ(flipRows(std::span<const int>(rows), 1, 3), (std::vector<int>{3, 3, 3, 3, 2, 2, 2, 2, 1, 1, 1, 1}));
+}
+
+TEST(ImageIo, PngRoundTripKeepsPixelsAndPutsTheTopRowFirst) {
+    TempFolder folder;
+    const int width = 5, height = 4;
+    const std::vector<std::uint8_t> bottomUp = gradient8(width, height);
+    for (int level : {0, 1, 9}) {
+        const fs::path file = folder.path / ("frame" + std::to_string(level) + ".png");
+        const Status written = writePng(file, width, height, bottomUp, level);
+        ASSERT_TRUE(written.ok()) << written.error().message;
+        const Result<Image8> read = readPng(file);
+        ASSERT_TRUE(read.ok()) << read.error().message;
+        ASSERT_EQ(read->width, width);
+        ASSERT_EQ(read->height, height);
+        // File row 0 (the first the reader returns) is the input's last row: the top of the image.
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width * 4; ++x)
+                ASSERT_EQ(read->rgba[static_cast<std::size_t>(y * width * 4 + x)],
+                          bottomUp[static_cast<std::size_t>((height - 1 - y) * width * 4 + x)])
+                    << "level " << level << " row " << y;
+    }
+    EXPECT_EQ(folder.files().size(), 3u);
+}
+
+TEST(ImageIo, ExrRoundTripIsBitExactIn32BitFloat) {
+    TempFolder folder;
+    const int width = 3, height = 2;
+    std::vector<float> bottomUp = {
+        // bottom row
+        0.0f, -3.5f, 1e10f, 1.0f, 0.125f, 1.0f / 3.0f, 65504.5f, 0.5f, 1e-30f, 2.0f, -0.0f, 0.25f,
+        // top row
+        12345.5f, 7.0f, 8.0f, 0.0f, std::numeric_limits<float>::infinity(), 0.1f, 0.2f, 0.3f, 4.0f, 5.0f, 6.0f, 1.0f};
+    const fs::path file = folder.path / "buffer.exr";
+    const Status written = writeExr(file, width, height, bottomUp);
+    ASSERT_TRUE(written.ok()) << written.error().message;
+
+    const Result<ImageF32> read = readExr(file);
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    ASSERT_EQ(read->width, width);
+    ASSERT_EQ(read->height, height);
+    ASSERT_EQ(read->rgba.size(), bottomUp.size());
+    EXPECT_EQ(std::memcmp(read->rgba.data(), bottomUp.data(), bottomUp.size() * sizeof(float)), 0)
+        << "values must survive unchanged (32-bit FLOAT channels, not half)";
+
+    // In the file the top row is scanline 0, so its R value (12345.5) comes before the bottom
+    // row's distinctive G value (-3.5). Uncompressed, so the raw floats are visible.
+    const std::vector<char> bytes = fileBytes(file);
+    const std::ptrdiff_t top = findFloat(bytes, 12345.5f), bottom = findFloat(bytes, -3.5f);
+    ASSERT_GE(top, 0);
+    ASSERT_GE(bottom, 0);
+    EXPECT_LT(top, bottom);
+}
+
+TEST(ImageIo, RejectsBuffersThatDoNotMatchTheSize) {
+    TempFolder folder;
+    const std::vector<std::uint8_t> bytes(10);
+    const Status png = writePng(folder.path / "a.png", 2, 2, bytes);
+    ASSERT_FALSE(png.ok());
+    EXPECT_NE(png.error().message.find("a.png"), std::string::npos);
+    const std::vector<float> floats(15);
+    EXPECT_FALSE(writeExr(folder.path / "a.exr", 2, 2, floats).ok());
+    EXPECT_FALSE(writePng(folder.path / "b.png", 0, 0, {}).ok());
+    EXPECT_FALSE(writePng(folder.path / "c.png", 1, 1, gradient8(1, 1), 10).ok());
+    EXPECT_EQ(folder.files(), std::vector<std::string>{});
+}
+
+TEST(ImageIo, LibpngErrorLeavesNoFileAndNoPartial) {
+    TempFolder folder;
+    // libpng refuses widths over its 1,000,000 default user limit from inside png_set_IHDR, so
+    // this exercises the longjmp error path after the temporary file was opened.
+    const int width = 1'000'001;
+    const std::vector<std::uint8_t> row(static_cast<std::size_t>(width) * 4, 128);
+    const Status written = writePng(folder.path / "wide.png", width, 1, row);
+    ASSERT_FALSE(written.ok());
+    EXPECT_NE(written.error().message.find("PNG encoding failed"), std::string::npos) << written.error().message;
+    EXPECT_EQ(folder.files(), std::vector<std::string>{});
+}
+
+TEST(ImageIo, FailedRenameLeavesNoPartialAndKeepsTheTarget) {
+    TempFolder folder;
+    // The target is an existing folder: the data is written to a temporary file, the rename over
+    // the folder fails, and the temporary file must be removed.
+    const fs::path target = folder.path / "taken";
+    fs::create_directories(target / "inside");
+    std::ofstream(target / "inside" / "keep.txt") << "keep";
+    const Status png = writePng(target, 2, 2, gradient8(2, 2));
+    EXPECT_FALSE(png.ok());
+    const std::vector<float> floats(2 * 2 * 4, 1.0f);
+    EXPECT_FALSE(writeExr(target, 2, 2, floats).ok());
+    EXPECT_EQ(folder.files(), std::vector<std::string>{"keep.txt"});
+}
+
+TEST(ImageIo, UncreatableFolderLeavesNothing) {
+    TempFolder folder;
+    std::ofstream(folder.path / "plainfile") << "x";
+    const Status png = writePng(folder.path / "plainfile" / "sub" / "frame.png", 2, 2, gradient8(2, 2));
+    ASSERT_FALSE(png.ok());
+    const std::vector<float> floats(2 * 2 * 4, 1.0f);
+    EXPECT_FALSE(writeExr(folder.path / "plainfile" / "frame.exr", 2, 2, floats).ok());
+    EXPECT_EQ(folder.files(), std::vector<std::string>{"plainfile"});
+}
+
+TEST(ImageIo, ReadingMissingFilesNamesThePath) {
+    TempFolder folder;
+    const Result<ImageF32> exr = readExr(folder.path / "none.exr");
+    ASSERT_FALSE(exr.ok());
+    EXPECT_NE(exr.error().message.find("none.exr"), std::string::npos);
+    EXPECT_NE(exr.error().message.find("file not found"), std::string::npos);
+    const Result<Image8> png = readPng(folder.path / "none.png");
+    ASSERT_FALSE(png.ok());
+    EXPECT_NE(png.error().message.find("none.png"), std::string::npos);
+}
+
+TEST(ImageIo, ReadingAFileThatIsNotExrIsAnError) {
+    TempFolder folder;
+    std::ofstream(folder.path / "fake.exr") << "not an exr file";
+    const Result<ImageF32> exr = readExr(folder.path / "fake.exr");
+    ASSERT_FALSE(exr.ok());
+    EXPECT_NE(exr.error().message.find("fake.exr"), std::string::npos);
+}
