@@ -29,11 +29,14 @@ constexpr const char* kExrChannels[4] = {"R", "G", "B", "A"};
 
 Status checkSize(const fs::path& path, int width, int height, std::size_t values) {
     if (width <= 0 || height <= 0)
-        return Error{path.string() + ": invalid image size " + std::to_string(width) + "x" + std::to_string(height)};
-    const std::size_t expected = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4;
+        return Error{path.string() + ": invalid image size " + std::to_string(width) + "x" +
+                     std::to_string(height)};
+    const std::size_t expected =
+        static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4;
     if (values != expected)
-        return Error{path.string() + ": pixel buffer holds " + std::to_string(values) + " values, " +
-                     std::to_string(width) + "x" + std::to_string(height) + " RGBA needs " + std::to_string(expected)};
+        return Error{path.string() + ": pixel buffer holds " + std::to_string(values) +
+                     " values, " + std::to_string(width) + "x" + std::to_string(height) +
+                     " RGBA needs " + std::to_string(expected)};
     return okStatus();
 }
 
@@ -54,7 +57,8 @@ void onPngWarning(png_structp, png_const_charp) {}  // library code does not pri
 
 bool encodePng(std::FILE* file, png_bytep* rows, png_uint_32 width, png_uint_32 height, int level,
                PngError* error) {
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, error, onPngError, onPngWarning);
+    png_structp png =
+        png_create_write_struct(PNG_LIBPNG_VER_STRING, error, onPngError, onPngWarning);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
         png_destroy_write_struct(&png, nullptr);
@@ -81,11 +85,12 @@ struct FileCloser {
 };
 }  // namespace
 
-Status writePng(const fs::path& path, int width, int height, std::span<const std::uint8_t> rgbaBottomUp,
-                int compressionLevel) {
+Status writePng(const fs::path& path, int width, int height,
+                std::span<const std::uint8_t> rgbaBottomUp, int compressionLevel) {
     if (Status size = checkSize(path, width, height, rgbaBottomUp.size()); !size) return size;
     if (compressionLevel < 0 || compressionLevel > 9)
-        return Error{path.string() + ": PNG compression level must be 0..9, got " + std::to_string(compressionLevel)};
+        return Error{path.string() + ": PNG compression level must be 0..9, got " +
+                     std::to_string(compressionLevel)};
 
     // PNG stores the top row first: row i of the file is row (height-1-i) of the input.
     const std::size_t stride = static_cast<std::size_t>(width) * 4;
@@ -95,7 +100,8 @@ Status writePng(const fs::path& path, int width, int height, std::span<const std
 
     return writeFileAtomically(path, [&](const fs::path& temp) -> Status {
         std::unique_ptr<std::FILE, FileCloser> file(std::fopen(temp.c_str(), "wb"));
-        if (!file) return Error{path.string() + ": cannot open for writing: " + std::strerror(errno)};
+        if (!file)
+            return Error{path.string() + ": cannot open for writing: " + std::strerror(errno)};
         PngError error{};
         if (!encodePng(file.get(), rows.data(), static_cast<png_uint_32>(width),
                        static_cast<png_uint_32>(height), compressionLevel, &error))
@@ -115,7 +121,8 @@ Status writeExr(const fs::path& path, int width, int height, std::span<const flo
 
     return writeFileAtomically(path, [&](const fs::path& temp) -> Status {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) return Error{path.string() + ": cannot open for writing: " + std::strerror(errno)};
+        if (!out)
+            return Error{path.string() + ": cannot open for writing: " + std::strerror(errno)};
         try {
             Imf::Header header(width, height);
             header.compression() = Imf::NO_COMPRESSION;
@@ -125,8 +132,8 @@ Status writeExr(const fs::path& path, int width, int height, std::span<const flo
             for (int c = 0; c < 4; ++c) {
                 header.channels().insert(kExrChannels[c], Imf::Channel(Imf::FLOAT));
                 frame.insert(kExrChannels[c],
-                             Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(topFirst.data() + c), pixelBytes,
-                                        pixelBytes * static_cast<std::size_t>(width)));
+                             Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(topFirst.data() + c),
+                                        pixelBytes, pixelBytes * static_cast<std::size_t>(width)));
             }
             Imf::StdOFStream stream(out, temp.c_str());
             Imf::OutputFile file(stream, header);
@@ -149,13 +156,15 @@ Result<ImageF32> readExr(const fs::path& path) {
         const Imath::Box2i window = file.header().dataWindow();
         const int width = window.max.x - window.min.x + 1;
         const int height = window.max.y - window.min.y + 1;
-        std::vector<float> topFirst(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+        std::vector<float> topFirst(static_cast<std::size_t>(width) *
+                                    static_cast<std::size_t>(height) * 4);
         Imf::FrameBuffer frame;
         const std::size_t pixelBytes = 4 * sizeof(float);
         for (int c = 0; c < 4; ++c) {
             frame.insert(kExrChannels[c],
                          Imf::Slice::Make(Imf::FLOAT, topFirst.data() + c, window, pixelBytes,
-                                          pixelBytes * static_cast<std::size_t>(width), 1, 1, c == 3 ? 1.0 : 0.0));
+                                          pixelBytes * static_cast<std::size_t>(width), 1, 1,
+                                          c == 3 ? 1.0 : 0.0));
         }
         file.setFrameBuffer(frame);
         file.readPixels(window.min.y, window.max.y);

@@ -34,8 +34,9 @@ std::vector<T> flipRows(std::span<const T> rgba, int width, int height) {
     for (int y = 0; y < height; ++y) {
         const auto source =
             rgba.subspan(static_cast<std::size_t>(height - 1 - y) * rowLength, rowLength);
-        std::copy(source.begin(), source.end(),
-                  flipped.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * rowLength));
+        std::copy(
+            source.begin(), source.end(),
+            flipped.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * rowLength));
     }
     return flipped;
 }

@@ -37,7 +37,8 @@ Result<Image8> loadImageFile(const fs::path& path) {
         stbi_load_from_file(file.get(), &width, &height, &channelsInFile, STBI_rgb_alpha));
     if (!pixels) {
         const char* reason = stbi_failure_reason();
-        return Error{path.string() + ": cannot decode image: " + (reason ? reason : "unknown error")};
+        return Error{path.string() +
+                     ": cannot decode image: " + (reason ? reason : "unknown error")};
     }
 
     Image8 image;

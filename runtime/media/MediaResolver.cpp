@@ -63,33 +63,40 @@ void MediaResolver::setOverride(std::string ref, fs::path file) {
     overrides_[overrideKey(ref)] = std::move(file);
 }
 
-void MediaResolver::addSearchFolder(fs::path folder) { searchFolders_.push_back(std::move(folder)); }
+void MediaResolver::addSearchFolder(fs::path folder) {
+    searchFolders_.push_back(std::move(folder));
+}
 
 Result<ResolvedMedia> MediaResolver::resolve(std::string_view ref) const {
     const StockMediaInfo* info = findStockMedia(ref);
 
     if (const auto it = overrides_.find(overrideKey(ref)); it != overrides_.end()) {
         Result<ResolvedMedia> loaded = loadReal(it->second);
-        if (!loaded) return withContext("media override for '" + std::string(ref) + "'", loaded.error());
+        if (!loaded)
+            return withContext("media override for '" + std::string(ref) + "'", loaded.error());
         return loaded;
     }
 
     for (const fs::path& folder : searchFolders_) {
-        const std::optional<fs::path> file = info ? findStockFile(folder, *info) : findPlainFile(folder, ref);
+        const std::optional<fs::path> file =
+            info ? findStockFile(folder, *info) : findPlainFile(folder, ref);
         if (file) return loadReal(*file);
     }
 
     if (!info) {
-        return Error{"media '" + std::string(ref) +
-                     "' is not a Shadertoy stock texture and was found in no override or media folder"};
+        return Error{
+            "media '" + std::string(ref) +
+            "' is not a Shadertoy stock texture and was found in no override or media folder"};
     }
 
     const std::string path = stockMediaPath(*info);
     ResolvedMedia standIn{makeStandIn(*info), true, {}};
-    standIn.notice = "toyhost: stock texture '" + std::string(info->name) + "' (" + path + ", " +
-                     std::to_string(info->width) + "x" + std::to_string(info->height) +
-                     ") is not available; using a deterministic stand-in. Supply the real file with "
-                     "--media-file " + std::string(info->hash) + "=<path>.";
+    standIn.notice =
+        "toyhost: stock texture '" + std::string(info->name) + "' (" + path + ", " +
+        std::to_string(info->width) + "x" + std::to_string(info->height) +
+        ") is not available; using a deterministic stand-in. Supply the real file with "
+        "--media-file " +
+        std::string(info->hash) + "=<path>.";
     return standIn;
 }
 

@@ -15,7 +15,7 @@
 namespace toyhost {
 
 struct ResolvedMedia {
-    Image8 image;         // RGBA8, rows top row first
+    Image8 image;          // RGBA8, rows top row first
     bool standIn = false;  // true when the real file was not available
     // One line, empty unless standIn, e.g. "toyhost: stock texture 'Abstract 3'
     // (/media/a/8979...jpg, 1024x1024) is not available; using a deterministic stand-in. ..."

@@ -61,7 +61,7 @@ constexpr std::array<StockMediaInfo, 22> kStockMedia{{
     // [DS][QT] 256x32; [DS] 4 ch, [QT] says rgb, [NYAN] shows the alpha is used: 4.
     {"cbcbb5a6cfb55c36f8f021fbb0e3f69ac96339a39fa85cd96f2017a2192821b5",
      "png", "Nyancat", 256, 32, 4, Other},
-    // [DS][QT] 1024x1024 rgb
+    // Organic 1-4: [DS][QT] 1024x1024 rgb
     {"cd4c518bc6ef165c39d4405b347b51ba40f8d7a065ab0e8d2e4f422cbc1e8a43",
      "jpg", "Organic 1", 1024, 1024, 3, Photo},
     {"92d7758c402f0927011ca8d0a7e40251439fba3a1dac26f5b8b62026323501aa",
@@ -79,7 +79,7 @@ constexpr std::array<StockMediaInfo, 22> kStockMedia{{
     // [DS][QT][LEN] 64x64 rgba
     {"3083c722c0c738cad0f468383167a0d246f91af2bfa373e9c5c094fb8c8413e0",
      "png", "RGBA Noise Small", 64, 64, 4, Noise},
-    // [DS][QT] 512x512 rgb
+    // Rock Tiles, Rusty Metal, Stars: [DS][QT] 512x512 rgb
     {"10eb4fe0ac8a7dc348a2cc282ca5df1759ab8bf680117e4047728100969e7b43",
      "jpg", "Rock Tiles", 512, 512, 3, Photo},
     {"95b90082f799f48677b4f206d856ad572f1d178c676269eac6347631d4447258",
@@ -100,8 +100,8 @@ char lowerAscii(char c) { return static_cast<char>(std::tolower(static_cast<unsi
 // Case-insensitive, with '_' and '-' read as spaces, so file stems like "abstract_3" match too.
 bool sameName(std::string_view a, std::string_view b) {
     auto fold = [](char c) { return (c == '_' || c == '-') ? ' ' : lowerAscii(c); };
-    return a.size() == b.size() &&
-           std::equal(a.begin(), a.end(), b.begin(), [&](char x, char y) { return fold(x) == fold(y); });
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
+                                              [&](char x, char y) { return fold(x) == fold(y); });
 }
 
 bool isImageExtension(std::string_view ext) {
@@ -111,8 +111,10 @@ bool isImageExtension(std::string_view ext) {
 
 const StockMediaInfo* findStockMedia(std::string_view ref) {
     // "/media/a/<hash>.<ext>" and "<hash>.<ext>" reduce to "<hash>"; "Abstract 3.jpg" to the name.
-    if (const auto slash = ref.rfind('/'); slash != std::string_view::npos) ref.remove_prefix(slash + 1);
-    if (const auto dot = ref.rfind('.'); dot != std::string_view::npos && isImageExtension(ref.substr(dot + 1)))
+    if (const auto slash = ref.rfind('/'); slash != std::string_view::npos)
+        ref.remove_prefix(slash + 1);
+    if (const auto dot = ref.rfind('.');
+        dot != std::string_view::npos && isImageExtension(ref.substr(dot + 1)))
         ref.remove_suffix(ref.size() - dot);
     for (const StockMediaInfo& info : kStockMedia)
         if (sameName(ref, info.hash) || sameName(ref, info.name)) return &info;
@@ -163,12 +165,18 @@ std::uint64_t seedFrom(std::string_view text, std::uint64_t salt = 0) {
 
 Image8 blank(const StockMediaInfo& info) {
     Image8 image{info.width, info.height, {}};
-    image.rgba.assign(static_cast<std::size_t>(info.width) * static_cast<std::size_t>(info.height) * 4, 0);
+    image.rgba.assign(
+        static_cast<std::size_t>(info.width) * static_cast<std::size_t>(info.height) * 4, 0);
     return image;
 }
 
+std::size_t pixelIndex(int width, int x, int y) {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+           static_cast<std::size_t>(x);
+}
+
 void putPixel(Image8& image, int x, int y, int r, int g, int b, int a) {
-    auto* p = &image.rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x)) * 4];
+    std::uint8_t* p = &image.rgba[pixelIndex(image.width, x, y) * 4];
     p[0] = static_cast<std::uint8_t>(r);
     p[1] = static_cast<std::uint8_t>(g);
     p[2] = static_cast<std::uint8_t>(b);
@@ -215,7 +223,8 @@ Bytes valueNoise(int width, int height, std::uint64_t seed) {
     std::int64_t amplitude = 1024, amplitudeSum = 0;
     const int longest = std::max(width, height);
     for (int cells = 4; cells * 2 <= longest; cells *= 2, amplitude = amplitude * 5 / 8) {
-        const int cellsX = std::max(1, cells * width / longest), cellsY = std::max(1, cells * height / longest);
+        const int cellsX = std::max(1, cells * width / longest),
+                  cellsY = std::max(1, cells * height / longest);
         Bytes lattice(static_cast<std::size_t>(cellsX) * static_cast<std::size_t>(cellsY));
         ByteStream random(mix64(seed ^ static_cast<std::uint64_t>(cells)));
         for (auto& v : lattice) v = random.next();
@@ -228,7 +237,8 @@ Bytes valueNoise(int width, int height, std::uint64_t seed) {
                 const std::int64_t c = row1[ax.lower[x]], d = row1[ax.upper[x]];
                 const std::int64_t top = a * 65536 + (b - a) * ax.weight[x];
                 const std::int64_t bottom = c * 65536 + (d - c) * ax.weight[x];
-                const std::int64_t v = (top * 65536 + (bottom - top) * ay.weight[y]) >> 32;  // 0..255
+                const std::int64_t v =
+                    (top * 65536 + (bottom - top) * ay.weight[y]) >> 32;  // 0..255
                 sum[y * w + x] += v * amplitude;
             }
         }
@@ -254,17 +264,20 @@ Image8 photo(const StockMediaInfo& info) {
     for (int i = 0; i < 9; ++i) ramp[i] = (i / 3) * 80 + random.next() % 96;
     for (int y = 0; y < info.height; ++y)
         for (int x = 0; x < info.width; ++x) {
-            const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(info.width) + static_cast<std::size_t>(x);
+            const std::size_t i = pixelIndex(info.width, x, y);
             const int v = shade[i], lo = v < 128 ? 0 : 3, t = v < 128 ? v * 2 : (v - 128) * 2;
             std::array<int, 3> rgb{};
-            for (int c = 0; c < 3; ++c) rgb[c] = lerp8(ramp[lo + c], ramp[lo + 3 + c], std::min(t, 255)) * (160 + tint[i] * 95 / 255) / 255;
+            for (int c = 0; c < 3; ++c)
+                rgb[c] = lerp8(ramp[lo + c], ramp[lo + 3 + c], std::min(t, 255)) *
+                         (160 + tint[i] * 95 / 255) / 255;
             if (info.channels == 1) rgb[0] = v;
             putPixel(image, x, y, rgb[0], rgb[1], rgb[2], 255);
         }
     return image;
 }
 
-// The 8x8 ordered-dither matrix: low coordinate bits give the high value bits.
+// The 8x8 ordered-dither (Bayer) matrix, built from the 2x2 one: low coordinate bits give the
+// high value bits. How the real file scales the 0..63 index is not known; it is spread to 0..255.
 Image8 bayer(const StockMediaInfo& info) {
     Image8 image = blank(info);
     for (int y = 0; y < info.height; ++y)
@@ -289,8 +302,10 @@ Image8 glyphAtlas(const StockMediaInfo& info) {
             const int code = (y / cellH) * 16 + x / cellW;
             if (code < 32) continue;  // control characters stay empty
             const std::uint64_t h = mix64(static_cast<std::uint64_t>(code));
-            const int halfW = cellW / 8 + static_cast<int>(h % static_cast<std::uint64_t>(cellW / 4));
-            const int halfH = cellH / 8 + static_cast<int>((h >> 16) % static_cast<std::uint64_t>(cellH / 4));
+            const int halfW =
+                cellW / 8 + static_cast<int>(h % static_cast<std::uint64_t>(cellW / 4));
+            const int halfH =
+                cellH / 8 + static_cast<int>((h >> 16) % static_cast<std::uint64_t>(cellH / 4));
             const int dx = std::abs(x % cellW - cellW / 2), dy = std::abs(y % cellH - cellH / 2);
             const int distance = std::max(dx - halfW, dy - halfH);  // < 0 inside the glyph box
             const int mask = distance < 0 ? 255 : 0;
@@ -308,14 +323,17 @@ Image8 spriteSheet(const StockMediaInfo& info) {
             const int fx = x % kFrameWidth, bob = (x / kFrameWidth / 2) % 2, fy = y - bob;
             const bool body = fx >= 6 && fx < 28 && fy >= 8 && fy < 24;
             const bool head = fx >= 24 && fx < 36 && fy >= 12 && fy < 24;
-            if (head) putPixel(image, x, y, 153, 153, 153, 255);
-            else if (body) putPixel(image, x, y, 255, 153, 255, 255);
+            if (head)
+                putPixel(image, x, y, 153, 153, 153, 255);
+            else if (body)
+                putPixel(image, x, y, 255, 153, 255, 255);
         }
     return image;
 }
 
-// High-passed white noise (value minus its 3x3 neighbourhood mean, wrapping), rank-mapped back to
-// a flat histogram: every byte value equally often, little low-frequency energy.
+// High-passed white noise (each value minus its 3x3 neighbourhood mean, wrapping so it tiles),
+// rank-mapped back to a flat histogram: every byte value equally often, little low-frequency
+// energy. A cheap approximation; real blue noise (void-and-cluster) is not reproduced.
 Image8 blueNoise(const StockMediaInfo& info) {
     Image8 image = blank(info);
     const int w = info.width, h = info.height;
@@ -323,22 +341,27 @@ Image8 blueNoise(const StockMediaInfo& info) {
     for (int c = 0; c < 4; ++c) {
         Bytes white(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
         for (auto& v : white) v = random.next();
-        auto at = [&](int x, int y) -> int { return white[static_cast<std::size_t>((y + h) % h) * static_cast<std::size_t>(w) + static_cast<std::size_t>((x + w) % w)]; };
+        auto at = [&](int x, int y) -> int {
+            return white[pixelIndex(w, (x + w) % w, (y + h) % h)];
+        };
         constexpr int kOffset = 8 * 255;  // high-pass values lie in [-8*255, 8*255]
         std::vector<int> key(white.size()), bucketStart(16 * 255 + 2, 0);
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
                 int neighbours = 0;
                 for (int dy = -1; dy <= 1; ++dy)
-                    for (int dx = -1; dx <= 1; ++dx) neighbours += (dx || dy) ? at(x + dx, y + dy) : 0;
+                    for (int dx = -1; dx <= 1; ++dx)
+                        neighbours += (dx || dy) ? at(x + dx, y + dy) : 0;
                 const int k = 8 * at(x, y) - neighbours + kOffset;
-                key[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)] = k;
+                key[pixelIndex(w, x, y)] = k;
                 ++bucketStart[static_cast<std::size_t>(k) + 1];
             }
         for (std::size_t k = 1; k < bucketStart.size(); ++k) bucketStart[k] += bucketStart[k - 1];
         for (std::size_t i = 0; i < key.size(); ++i) {  // counting sort: ties ranked by position
-            const auto rank = static_cast<std::size_t>(bucketStart[static_cast<std::size_t>(key[i])]++);
-            image.rgba[i * 4 + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(rank * 256 / key.size());
+            const auto rank =
+                static_cast<std::size_t>(bucketStart[static_cast<std::size_t>(key[i])]++);
+            image.rgba[i * 4 + static_cast<std::size_t>(c)] =
+                static_cast<std::uint8_t>(rank * 256 / key.size());
         }
     }
     return image;
@@ -347,12 +370,18 @@ Image8 blueNoise(const StockMediaInfo& info) {
 
 Image8 makeStandIn(const StockMediaInfo& info) {
     Image8 image;
-    if (info.kind == StockMediaKind::Noise) image = whiteNoise(info);
-    else if (info.name == "Bayer") image = bayer(info);
-    else if (info.name == "Font 1") image = glyphAtlas(info);
-    else if (info.name == "Nyancat") image = spriteSheet(info);
-    else if (info.name == "Blue Noise") image = blueNoise(info);
-    else image = photo(info);
+    if (info.kind == StockMediaKind::Noise)
+        image = whiteNoise(info);
+    else if (info.name == "Bayer")
+        image = bayer(info);
+    else if (info.name == "Font 1")
+        image = glyphAtlas(info);
+    else if (info.name == "Nyancat")
+        image = spriteSheet(info);
+    else if (info.name == "Blue Noise")
+        image = blueNoise(info);
+    else
+        image = photo(info);
     conformToChannels(image, info.channels);
     return image;
 }

@@ -24,8 +24,8 @@ struct TempFolder {
         static int counter = 0;
         const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
         path = fs::temp_directory_path() /
-               ("toyhost_imageio_" + std::to_string(::getpid()) + "_" + test->test_suite_name() + "_" + test->name() +
-                "_" + std::to_string(counter++));
+               ("toyhost_imageio_" + std::to_string(::getpid()) + "_" + test->test_suite_name() +
+                "_" + test->name() + "_" + std::to_string(counter++));
         fs::remove_all(path);
         fs::create_directories(path);
     }
@@ -67,7 +67,8 @@ std::ptrdiff_t findFloat(const std::vector<char>& bytes, float value) {
 
 TEST(ImageIo, FlipRowsReversesRowOrder) {
     const std::vector<int> rows = {1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3};  // three 1-pixel rows
-    EXPECT_EQ(flipRows(std::span<const int>(rows), 1, 3), (std::vector<int>{3, 3, 3, 3, 2, 2, 2, 2, 1, 1, 1, 1}));
+    EXPECT_EQ(flipRows(std::span<const int>(rows), 1, 3),
+              (std::vector<int>{3, 3, 3, 3, 2, 2, 2, 2, 1, 1, 1, 1}));
 }
 
 TEST(ImageIo, PngRoundTripKeepsPixelsAndPutsTheTopRowFirst) {
@@ -99,7 +100,8 @@ TEST(ImageIo, ExrRoundTripIsBitExactIn32BitFloat) {
         // bottom row
         0.0f, -3.5f, 1e10f, 1.0f, 0.125f, 1.0f / 3.0f, 65504.5f, 0.5f, 1e-30f, 2.0f, -0.0f, 0.25f,
         // top row
-        12345.5f, 7.0f, 8.0f, 0.0f, std::numeric_limits<float>::infinity(), 0.1f, 0.2f, 0.3f, 4.0f, 5.0f, 6.0f, 1.0f};
+        12345.5f, 7.0f, 8.0f, 0.0f, std::numeric_limits<float>::infinity(), 0.1f, 0.2f, 0.3f, 4.0f,
+        5.0f, 6.0f, 1.0f};
     const fs::path file = folder.path / "buffer.exr";
     const Status written = writeExr(file, width, height, bottomUp);
     ASSERT_TRUE(written.ok()) << written.error().message;
@@ -142,7 +144,8 @@ TEST(ImageIo, LibpngErrorLeavesNoFileAndNoPartial) {
     const std::vector<std::uint8_t> row(static_cast<std::size_t>(width) * 4, 128);
     const Status written = writePng(folder.path / "wide.png", width, 1, row);
     ASSERT_FALSE(written.ok());
-    EXPECT_NE(written.error().message.find("PNG encoding failed"), std::string::npos) << written.error().message;
+    EXPECT_NE(written.error().message.find("PNG encoding failed"), std::string::npos)
+        << written.error().message;
     EXPECT_EQ(folder.files(), std::vector<std::string>{});
 }
 
@@ -163,7 +166,8 @@ TEST(ImageIo, FailedRenameLeavesNoPartialAndKeepsTheTarget) {
 TEST(ImageIo, UncreatableFolderLeavesNothing) {
     TempFolder folder;
     std::ofstream(folder.path / "plainfile") << "x";
-    const Status png = writePng(folder.path / "plainfile" / "sub" / "frame.png", 2, 2, gradient8(2, 2));
+    const Status png =
+        writePng(folder.path / "plainfile" / "sub" / "frame.png", 2, 2, gradient8(2, 2));
     ASSERT_FALSE(png.ok());
     const std::vector<float> floats(2 * 2 * 4, 1.0f);
     EXPECT_FALSE(writeExr(folder.path / "plainfile" / "frame.exr", 2, 2, floats).ok());

@@ -31,7 +31,8 @@ const StockMediaInfo& stock(std::string_view name) {
 // Channel c of every pixel.
 std::vector<int> channel(const Image8& image, int c) {
     std::vector<int> values;
-    for (std::size_t i = static_cast<std::size_t>(c); i < image.rgba.size(); i += 4) values.push_back(image.rgba[i]);
+    for (std::size_t i = static_cast<std::size_t>(c); i < image.rgba.size(); i += 4)
+        values.push_back(image.rgba[i]);
     return values;
 }
 
@@ -53,16 +54,20 @@ double stddev(const std::vector<double>& v) {
 constexpr std::array<std::pair<const char*, const char*>, 15> kCorpusMedia{{
     {"/media/a/8de3a3924cb95bd0e95a443fff0326c869f9d4979cd1d5b6e94e2a01f5be53e9.jpg", "London"},
     {"/media/a/cb49c003b454385aa9975733aff4571c62182ccdda480aaba9a8d250014f00ec.png", "Blue Noise"},
-    {"/media/a/0c7bf5fe9462d5bffbd11126e82908e39be3ce56220d900f633d58fb432e56f5.png", "Gray Noise Medium"},
+    {"/media/a/0c7bf5fe9462d5bffbd11126e82908e39be3ce56220d900f633d58fb432e56f5.png",
+     "Gray Noise Medium"},
     {"/media/a/52d2a8f514c4fd2d9866587f4d7b2a5bfa1a11a0e772077d7682deb8b3b517e5.jpg", "Abstract 1"},
     {"/media/a/08b42b43ae9d3c0605da11d0eac86618ea888e62cdd9518ee8b9097488b31560.png", "Font 1"},
-    {"/media/a/f735bee5b64ef98879dc618b016ecf7939a5756040c2cde21ccb15e69a6e1cfb.png", "RGBA Noise Medium"},
+    {"/media/a/f735bee5b64ef98879dc618b016ecf7939a5756040c2cde21ccb15e69a6e1cfb.png",
+     "RGBA Noise Medium"},
     {"/media/a/fb918796edc3d2221218db0811e240e72e340350008338b0c07a52bd353666a6.jpg", "Lichen"},
     {"/media/a/10eb4fe0ac8a7dc348a2cc282ca5df1759ab8bf680117e4047728100969e7b43.jpg", "Rock Tiles"},
-    {"/media/a/3083c722c0c738cad0f468383167a0d246f91af2bfa373e9c5c094fb8c8413e0.png", "RGBA Noise Small"},
+    {"/media/a/3083c722c0c738cad0f468383167a0d246f91af2bfa373e9c5c094fb8c8413e0.png",
+     "RGBA Noise Small"},
     {"/media/a/3871e838723dd6b166e490664eead8ec60aedd6b8d95bc8e2fe3f882f0fd90f0.jpg", "Organic 4"},
     {"/media/a/85a6d68622b36995ccb98a89bbb119edf167c914660e4450d313de049320005c.png", "Bayer"},
-    {"/media/a/95b90082f799f48677b4f206d856ad572f1d178c676269eac6347631d4447258.jpg", "Rusty Metal"},
+    {"/media/a/95b90082f799f48677b4f206d856ad572f1d178c676269eac6347631d4447258.jpg",
+     "Rusty Metal"},
     {"/media/a/ad56fba948dfba9ae698198c109e71f118a54d209c0ea50d77ea546abad89c57.png", "Pebbles"},
     {"/media/a/cbcbb5a6cfb55c36f8f021fbb0e3f69ac96339a39fa85cd96f2017a2192821b5.png", "Nyancat"},
     {"/media/a/e6e5631ce1237ae4c05b3563eda686400a401df4548d0f9fad40ecac1659c46c.jpg", "Stars"},
@@ -79,7 +84,11 @@ TEST(MediaStockTable, HoldsEveryCorpusTextureUnderItsPathAndName) {
 }
 
 TEST(MediaStockTable, KnowsTheSizesAndChannelsTheHostDependsOn) {
-    struct Expected { const char* name; int width, height, channels; StockMediaKind kind; };
+    struct Expected {
+        const char* name;
+        int width, height, channels;
+        StockMediaKind kind;
+    };
     const Expected expected[] = {
         {"Gray Noise Small", 64, 64, 1, StockMediaKind::Noise},
         {"Gray Noise Medium", 256, 256, 1, StockMediaKind::Noise},
@@ -99,7 +108,8 @@ TEST(MediaStockTable, KnowsTheSizesAndChannelsTheHostDependsOn) {
         EXPECT_EQ(info.channels, e.channels) << e.name;
         EXPECT_EQ(info.kind, e.kind) << e.name;
     }
-    EXPECT_EQ(stock("Abstract 3").hash, "8979352a182bde7c3c651ba2b2f4e0615de819585cc37b7175bcefbca15a6683");
+    EXPECT_EQ(stock("Abstract 3").hash,
+              "8979352a182bde7c3c651ba2b2f4e0615de819585cc37b7175bcefbca15a6683");
     EXPECT_EQ(stock("Abstract 3").extension, "jpg");
 }
 
@@ -107,9 +117,9 @@ TEST(MediaStockTable, EntriesAreWellFormedAndUnique) {
     std::set<std::string_view> hashes, names;
     for (const StockMediaInfo& info : stockMediaTable()) {
         EXPECT_EQ(info.hash.size(), 64u) << info.name;
-        EXPECT_TRUE(std::all_of(info.hash.begin(), info.hash.end(),
-                                [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); }))
-            << info.name;
+        EXPECT_TRUE(std::all_of(info.hash.begin(), info.hash.end(), [](char c) {
+            return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+        })) << info.name;
         EXPECT_TRUE(info.extension == "png" || info.extension == "jpg") << info.name;
         EXPECT_TRUE(info.channels == 1 || info.channels == 3 || info.channels == 4) << info.name;
         EXPECT_GT(info.width, 0);
@@ -131,15 +141,19 @@ TEST(MediaStockLookup, AcceptsEveryReferenceForm) {
     EXPECT_EQ(findStockMedia("abstract_3"), expected);
     EXPECT_EQ(findStockMedia("Abstract 3.jpg"), expected);
     std::string upperHash = hash;
-    std::transform(upperHash.begin(), upperHash.end(), upperHash.begin(), [](char c) { return static_cast<char>(std::toupper(c)); });
+    std::transform(upperHash.begin(), upperHash.end(), upperHash.begin(),
+                   [](char c) { return static_cast<char>(std::toupper(c)); });
     EXPECT_EQ(findStockMedia(upperHash), expected);
 }
 
 TEST(MediaStockLookup, RejectsWhatIsNotStock) {
     EXPECT_EQ(findStockMedia(""), nullptr);
     EXPECT_EQ(findStockMedia("Abstract 9"), nullptr);
-    EXPECT_EQ(findStockMedia("/media/a/0000000000000000000000000000000000000000000000000000000000000000.png"), nullptr);
-    EXPECT_EQ(findStockMedia("8979352a182bde7c3c651ba2b2f4e0615de819585cc37b7175bcefbca15a668"), nullptr);  // one short
+    EXPECT_EQ(findStockMedia(
+                  "/media/a/0000000000000000000000000000000000000000000000000000000000000000.png"),
+              nullptr);
+    EXPECT_EQ(findStockMedia("8979352a182bde7c3c651ba2b2f4e0615de819585cc37b7175bcefbca15a668"),
+              nullptr);  // one short
     EXPECT_EQ(findStockMedia("/media/previz/buffer00.png"), nullptr);
     EXPECT_EQ(findStockMedia("Abstract 3.txt"), nullptr);
 }
@@ -149,21 +163,27 @@ TEST(StandIn, MatchesTheRealSizeAndChannelLayoutForEveryEntry) {
         const Image8 image = makeStandIn(info);
         ASSERT_EQ(image.width, info.width) << info.name;
         ASSERT_EQ(image.height, info.height) << info.name;
-        ASSERT_EQ(image.rgba.size(), static_cast<std::size_t>(info.width * info.height * 4)) << info.name;
+        ASSERT_EQ(image.rgba.size(), static_cast<std::size_t>(info.width * info.height * 4))
+            << info.name;
         std::size_t notGrey = 0, notOpaque = 0;
         for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
             notGrey += image.rgba[i + 1] != image.rgba[i] || image.rgba[i + 2] != image.rgba[i];
             notOpaque += image.rgba[i + 3] != 255;
         }
-        if (info.channels == 1) EXPECT_EQ(notGrey, 0u) << info.name << ": grey files give R=G=B";
-        if (info.channels != 4) EXPECT_EQ(notOpaque, 0u) << info.name << ": no alpha in the file gives A=255";
+        if (info.channels == 1) {
+            EXPECT_EQ(notGrey, 0u) << info.name << ": grey files give R=G=B";
+        }
+        if (info.channels != 4) {
+            EXPECT_EQ(notOpaque, 0u) << info.name << ": no alpha in the file gives A=255";
+        }
     }
 }
 
 TEST(StandIn, IsDeterministicAndPinnedForTheSmallNoise) {
-    for (const char* name : {"Gray Noise Small", "RGBA Noise Medium", "London", "Pebbles", "Bayer", "Font 1",
-                             "Nyancat", "Blue Noise"}) {
-        EXPECT_EQ(fnv1a(makeStandIn(stock(name)).rgba), fnv1a(makeStandIn(stock(name)).rgba)) << name;
+    for (const char* name : {"Gray Noise Small", "RGBA Noise Medium", "London", "Pebbles", "Bayer",
+                             "Font 1", "Nyancat", "Blue Noise"}) {
+        EXPECT_EQ(fnv1a(makeStandIn(stock(name)).rgba), fnv1a(makeStandIn(stock(name)).rgba))
+            << name;
     }
     // Pinned values: a change here changes what every shader using these textures renders. The
     // generator is integer-only, so these hold on every compiler and CPU.
@@ -205,9 +225,13 @@ TEST(StandIn, PhotoHasDetailAtEveryMipLevel) {
         std::vector<double> next(static_cast<std::size_t>(size / 2 * size / 2));
         for (int y = 0; y < size / 2; ++y)
             for (int x = 0; x < size / 2; ++x) {
-                auto at = [&](int xx, int yy) { return level[static_cast<std::size_t>(yy * size + xx)]; };
+                auto at = [&](int xx, int yy) {
+                    return level[static_cast<std::size_t>(yy * size + xx)];
+                };
                 next[static_cast<std::size_t>(y * (size / 2) + x)] =
-                    (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) + at(2 * x + 1, 2 * y + 1)) / 4;
+                    (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) +
+                     at(2 * x + 1, 2 * y + 1)) /
+                    4;
             }
         level = std::move(next);
     }
@@ -220,14 +244,16 @@ TEST(StandIn, OtherTexturesHaveTheirOwnPatterns) {
     EXPECT_EQ(bayer[0], 0);
 
     const std::vector<int> alpha = channel(makeStandIn(stock("Nyancat")), 3);
-    EXPECT_TRUE(std::count(alpha.begin(), alpha.end(), 0) > 0 && std::count(alpha.begin(), alpha.end(), 255) > 0);
+    EXPECT_TRUE(std::count(alpha.begin(), alpha.end(), 0) > 0 &&
+                std::count(alpha.begin(), alpha.end(), 255) > 0);
 
     // Blue noise: a flat histogram, and neighbours anti-correlated (white noise would give ~0).
     const Image8 blue = makeStandIn(stock("Blue Noise"));
     const std::vector<int> values = channel(blue, 0);
     std::vector<int> histogram(256, 0);
     for (int v : values) ++histogram[static_cast<std::size_t>(v)];
-    EXPECT_EQ(*std::min_element(histogram.begin(), histogram.end()), static_cast<int>(values.size() / 256));
+    EXPECT_EQ(*std::min_element(histogram.begin(), histogram.end()),
+              static_cast<int>(values.size() / 256));
     double m = mean(values), covariance = 0, variance = 0;
     for (std::size_t i = 0; i + 1 < values.size(); ++i) {
         covariance += (values[i] - m) * (values[i + 1] - m);

@@ -1,0 +1,75 @@
+// ImageCompare: error measures between two 8-bit RGBA images (PSNR, mean and max absolute error)
+// and a visible diff image, for tests that compare renders. Plain CPU code, no GL needed.
+// Every measure looks at R, G and B only: the Image pass forces alpha to 1.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+
+#include "media/Image.h"
+
+namespace toyhost::testing {
+
+inline bool sameSize(const Image8& a, const Image8& b) {
+    return a.width == b.width && a.height == b.height &&
+           a.rgba.size() == static_cast<std::size_t>(a.width) * a.height * 4 && a.rgba.size() == b.rgba.size();
+}
+
+// Peak signal-to-noise ratio over RGB in dB, peak 255. +infinity when the images are identical,
+// NaN when their sizes differ (so any `>=` threshold check fails).
+inline double psnrRgb(const Image8& a, const Image8& b) {
+    if (!sameSize(a, b)) return std::numeric_limits<double>::quiet_NaN();
+    double sumSquares = 0.0;
+    std::size_t samples = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4)
+        for (std::size_t c = 0; c < 3; ++c, ++samples) {
+            const double d = double(a.rgba[i + c]) - double(b.rgba[i + c]);
+            sumSquares += d * d;
+        }
+    if (sumSquares == 0.0) return std::numeric_limits<double>::infinity();
+    const double meanSquare = sumSquares / double(samples);
+    return 10.0 * std::log10(255.0 * 255.0 / meanSquare);
+}
+
+// Mean of |a - b| over every RGB sample, in 8-bit steps. NaN when the sizes differ.
+inline double meanAbsError(const Image8& a, const Image8& b) {
+    if (!sameSize(a, b)) return std::numeric_limits<double>::quiet_NaN();
+    if (a.rgba.empty()) return 0.0;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4)
+        for (std::size_t c = 0; c < 3; ++c) sum += std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c]));
+    return sum / (double(a.rgba.size() / 4) * 3.0);
+}
+
+// Largest |a - b| over every RGB sample, 0..255. -1 when the sizes differ.
+inline int maxAbsError(const Image8& a, const Image8& b) {
+    if (!sameSize(a, b)) return -1;
+    int largest = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4)
+        for (std::size_t c = 0; c < 3; ++c)
+            largest = std::max(largest, std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c])));
+    return largest;
+}
+
+// |a - b| * gain per RGB channel (clamped to 255), alpha 255, rows top first like the inputs.
+// Empty image when the sizes differ.
+inline Image8 makeDiffImage(const Image8& a, const Image8& b, int gain) {
+    Image8 diff;
+    if (!sameSize(a, b)) return diff;
+    diff.width = a.width;
+    diff.height = a.height;
+    diff.rgba.resize(a.rgba.size());
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
+        for (std::size_t c = 0; c < 3; ++c)
+            diff.rgba[i + c] = static_cast<std::uint8_t>(
+                std::min(255, std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c])) * gain));
+        diff.rgba[i + 3] = 255;
+    }
+    return diff;
+}
+
+}  // namespace toyhost::testing
