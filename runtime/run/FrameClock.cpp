@@ -33,10 +33,16 @@ Result<double> parseWallClock(const std::string& text) {
     int year, month, day, hour = 0, minute = 0;
     double second = 0;
     char sep = 'T';
-    const int n = std::sscanf(text.c_str(), "%d-%d-%d%c%d:%d:%lf", &year, &month, &day, &sep, &hour, &minute, &second);
-    if (!(n == 3 || (n == 7 && (sep == 'T' || sep == ' '))) || month < 1 || month > 12 || day < 1 ||
-        day > 31 || hour < 0 || hour > 23 || minute < 0 || minute > 59 || second < 0 || second >= 61)
-        return Error{"date \"" + text + "\" is not YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS"};
+    int dateEnd = -1, fullEnd = -1;  // characters consumed, to reject trailing text
+    const int n = std::sscanf(text.c_str(), "%d-%d-%d%n%c%d:%d:%lf%n", &year, &month, &day, &dateEnd, &sep, &hour,
+                              &minute, &second, &fullEnd);
+    const int length = static_cast<int>(text.size());
+    const Error bad{"date \"" + text + "\" is not YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS"};
+    // `!(second >= 0 && ...)` also rejects the NaN that %lf reads from "nan".
+    if (!((n == 3 && dateEnd == length) || (n == 7 && fullEnd == length && (sep == 'T' || sep == ' '))) ||
+        month < 1 || month > 12 || day < 1 || day > 31 || hour < 0 || hour > 23 || minute < 0 || minute > 59 ||
+        !(second >= 0 && second < 61))
+        return bad;
     std::tm fields{};
     fields.tm_year = year - 1900;
     fields.tm_mon = month - 1;
@@ -44,6 +50,8 @@ Result<double> parseWallClock(const std::string& text) {
     fields.tm_hour = hour;
     fields.tm_min = minute;
     const double whole = static_cast<double>(timegm(&fields));
+    // timegm normalises out-of-range days (Feb 30 -> Mar 1); such a date does not exist.
+    if (fields.tm_mon != month - 1 || fields.tm_mday != day) return bad;
     return whole + second;
 }
 

@@ -162,9 +162,12 @@ Result<RunReport> runHeadless(const RunOptions& o, RunObserver& observer) {
         uniforms.frameRate = static_cast<float>(o.fps);
         uniforms.mouse = mouse.uniform();
         uniforms.date = clock.date(frame);
-        (*renderer)->renderFrame(uniforms);
+        const bool captured = run.output && isCapturedFrame(frame, o.frames, o.captureEvery);
+        // Nothing reads the Image pass, so a headless run renders it only when it is captured:
+        // long simulations captured every K frames run at buffer speed.
+        (*renderer)->renderFrame(uniforms, captured && o.capturePass == PassId::Image);
 
-        if (run.output && isCapturedFrame(frame, o.frames, o.captureEvery)) {
+        if (captured) {
             fs::path written;
             Status saved = capture(**renderer, *run.output, o.capturePass, frame, bytes, floats, written);
             if (!saved) return saved.error();

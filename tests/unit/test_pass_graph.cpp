@@ -89,7 +89,9 @@ TEST(PassGraph, AgeIsCurrentExactlyWhenTheBufferRunsEarlier) {
                 EXPECT_EQ(ch.buffer, b);
                 EXPECT_EQ(ch.age, expected) << describe(reader.id, b) << " (buffer mask " << mask
                                             << "): got " << ageName(ch.age);
-                if (reader.id == bufferPass(b)) EXPECT_EQ(ch.age, FrameAge::Previous) << "self-read";
+                if (reader.id == bufferPass(b)) {
+                    EXPECT_EQ(ch.age, FrameAge::Previous) << "self-read";
+                }
                 ++checked;
             }
         }
@@ -278,7 +280,9 @@ TEST(PassGraph, MountainsAndLakesWiring) {
         const PassPlan* p = plan(g, row.pass);
         ASSERT_NE(p, nullptr);
         EXPECT_EQ(p->channels[0].age, row.ch0) << passName(row.pass) << " iChannel0";
-        if (row.pass != PassId::Image) EXPECT_EQ(p->channels[1].age, row.ch1) << passName(row.pass) << " iChannel1";
+        if (row.pass != PassId::Image) {
+            EXPECT_EQ(p->channels[1].age, row.ch1) << passName(row.pass) << " iChannel1";
+        }
     }
     EXPECT_EQ(plan(g, PassId::Image)->channels[1].kind, ChannelKind::StockMedia);
     EXPECT_EQ(plan(g, PassId::Image)->channels[1].sampler.filter, Filter::Mipmap);

@@ -272,6 +272,10 @@ int main(int argc, char** argv) {
     const GLint frameRateLocation = glGetUniformLocation(program, "iFrameRate");
     const GLint frameLocation = glGetUniformLocation(program, "iFrame");
 
+    // Without --finish-each-frame the draws queue up and llvmpipe may skip work: a draw whose
+    // opaque shader covers a whole tile (with no depth buffer) discards the queued commands of that
+    // tile, so frames overwritten before any sync are never shaded. ms_per_frame then understates
+    // the shading cost; use --finish-each-frame (or compare against a host that also syncs).
     double firstFrameMs = 0.0;
     const Clock::time_point loopStart = Clock::now();
     for (int n = 0; n < o.frames; ++n) {

@@ -6,6 +6,8 @@
 #include <string>
 #include <unistd.h>
 
+#include "capture/ImageStats.h"
+#include "capture/ImageWriters.h"
 #include "run/FrameClock.h"
 #include "run/HeadlessRun.h"
 
@@ -39,6 +41,30 @@ std::optional<PassId> parsePass(const std::string& text) {
         if (text == passName(id)) return id;
     if (text.size() == 1 && text[0] >= 'A' && text[0] <= 'D') return bufferPass(text[0] - 'A');
     return std::nullopt;
+}
+
+// `toyhost inspect`: one line per channel and file, for checking invariants of buffer dumps.
+int inspectFilesCommand(const std::vector<std::string>& files, const Region& region) {
+    for (const std::string& file : files) {
+        Result<ImageF32> image = readExr(file);
+        if (!image) {
+            std::cerr << "toyhost: " << image.error().message << "\n";
+            return 1;
+        }
+        Result<std::array<ChannelStats, 4>> stats = channelStats(*image, region);
+        if (!stats) {
+            std::cerr << "toyhost: " << file << ": " << stats.error().message << "\n";
+            return 1;
+        }
+        std::printf("%s (%dx%d)\n", file.c_str(), image->width, image->height);
+        const char* names = "RGBA";
+        for (int c = 0; c < 4; ++c) {
+            const ChannelStats& s = (*stats)[c];
+            std::printf("  %c: sum %.9g mean %.9g min %.9g max %.9g nan %zu inf %zu\n", names[c], s.sum, s.mean, s.min,
+                        s.max, s.nan, s.inf);
+        }
+    }
+    return 0;
 }
 
 }  // namespace
@@ -75,6 +101,12 @@ int main(int argc, char** argv) {
     run->add_option("--date", date, "iDate at frame 0, YYYY-MM-DDTHH:MM:SS (default: now, local time)");
     run->add_flag("--quiet", quiet, "No progress line");
 
+    std::vector<std::string> inspectFiles;
+    std::string regionText;
+    CLI::App* inspect = app.add_subcommand("inspect", "Print per-channel statistics of EXR buffer dumps");
+    inspect->add_option("files", inspectFiles, "EXR files written by --out ... .exr")->required();
+    inspect->add_option("--region", regionText, "X,Y,W,H in pixels, origin bottom-left (default: whole image)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -85,6 +117,16 @@ int main(int argc, char** argv) {
         std::cerr << "toyhost: " << message << "\n";
         return 2;
     };
+    if (inspect->parsed()) {
+        Region region;
+        if (!regionText.empty()) {
+            char extra = 0;
+            if (std::sscanf(regionText.c_str(), "%d,%d,%d,%d%c", &region.x, &region.y, &region.width, &region.height,
+                            &extra) != 4)
+                return usage("--region " + regionText + ": expected X,Y,W,H");
+        }
+        return inspectFilesCommand(inspectFiles, region);
+    }
     options.target = target;
     if (!parseSize(size, options.width, options.height)) return usage("--size " + size + ": expected WxH, e.g. 800x450");
     std::optional<PassId> pass = parsePass(capturePass);

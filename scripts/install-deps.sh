@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian packages toyhost needs to build and test, only those that are missing.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ pkg-config
+  libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri   # EGL + OpenGL ES 3 (Mesa llvmpipe)
+  libglfw3-dev libglm-dev nlohmann-json3-dev libcli11-dev
+  libstb-dev libpng-dev libopenexr-dev                  # image I/O: PNG/JPEG in, PNG and EXR out
+  libgtest-dev                                           # tests
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "ok installed"; then
+    missing+=("$package")
+  fi
+done
+
+if ((${#missing[@]})); then
+  echo "toyhost: installing ${missing[*]}" >&2
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
