@@ -59,3 +59,33 @@ TEST_F(PingPong, CliExportsBufferAsRawFloatExr) {
 
 }  // namespace
 }  // namespace toyhost::testing
+
+namespace toyhost::testing {
+namespace {
+
+// Resize: new textures at the new size hold the old content in their bottom-left
+// min(old, new) region (both slots), the rest is zero, and the frame count goes on.
+TEST_F(PingPong, ResizeKeepsBufferContentBottomLeftInBothSlots) {
+    auto toy = loadShadertoy(sourceDir() / "shadertoys/pingpong-probe", 16, 8);
+    ASSERT_TRUE(toy);
+    for (int n = 0; n < 3; ++n) toy->renderer->renderFrame(toy->uniforms(n));
+    ASSERT_TRUE(toy->renderer->resize(8, 12).ok());
+    EXPECT_EQ(toy->renderer->width(), 8);
+    std::vector<float> a;
+    toy->renderer->readRgba32f(PassId::BufferA, a);
+    ASSERT_EQ(a.size(), 8u * 12u * 4u);
+    for (int y = 0; y < 12; ++y) {
+        const float expected = y < 8 ? 3.0f : 0.0f;  // frame 2 wrote A.x = 3
+        EXPECT_EQ(a[(y * 8 + 5) * 4], expected) << "row " << y;
+    }
+    // Frame 3 reads the other slot (frame 2's output survived there too): A.x = 4 where the old
+    // content was copied, 1 in the new rows.
+    toy->renderer->renderFrame(toy->uniforms(3));
+    toy->renderer->readRgba32f(PassId::BufferA, a);
+    EXPECT_EQ(a[(2 * 8 + 1) * 4], 4.0f);
+    EXPECT_EQ(a[(10 * 8 + 1) * 4], 1.0f);
+    EXPECT_EQ(a[(10 * 8 + 1) * 4 + 1], 3.0f) << "iFrame is not reset";
+}
+
+}  // namespace
+}  // namespace toyhost::testing
