@@ -163,9 +163,10 @@ Result<RunReport> runHeadless(const RunOptions& o, RunObserver& observer) {
         uniforms.mouse = mouse.uniform();
         uniforms.date = clock.date(frame);
         const bool captured = run.output && isCapturedFrame(frame, o.frames, o.captureEvery);
-        // Nothing reads the Image pass, so a headless run renders it only when it is captured:
-        // long simulations captured every K frames run at buffer speed.
-        (*renderer)->renderFrame(uniforms, captured && o.capturePass == PassId::Image);
+        // Nothing reads the Image pass, so a run that captures renders it only on the frames it
+        // captures: long simulations captured every K frames run at buffer speed. A run without
+        // --out renders every pass of every frame (a dry run, and the render-only benchmark).
+        (*renderer)->renderFrame(uniforms, !run.output || (captured && o.capturePass == PassId::Image));
 
         if (captured) {
             fs::path written;
