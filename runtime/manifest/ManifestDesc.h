@@ -45,7 +45,8 @@ struct ChannelDesc {
 
 struct PassDesc {
     PassId id = PassId::Image;
-    std::filesystem::path source;    // absolute path of the pass's GLSL file
+    std::filesystem::path source;    // absolute path of the file holding the pass's code
+    std::string sourceName;          // how messages name it: the path, or "export.json [Buffer A]"
     std::string code;                // its text, read during loading
     std::array<ChannelDesc, kChannelCount> channels;
 };
@@ -53,10 +54,12 @@ struct PassDesc {
 struct ManifestDesc {
     std::string name;
     std::filesystem::path manifestPath;            // absolute
-    std::optional<std::filesystem::path> commonSource;
+    std::optional<std::filesystem::path> commonSource;  // set when the shadertoy has Common
+    std::string commonName;                        // how messages name Common's file
     std::string commonCode;
     std::vector<PassDesc> passes;                  // sorted in render order; Image is last
     std::map<std::string, std::filesystem::path> mediaOverrides;  // stock id -> user file
+    std::vector<std::string> notices;              // things the user should know (lenient imports)
 
     const PassDesc* find(PassId id) const;
     bool hasBuffer(int index) const { return find(bufferPass(index)) != nullptr; }

@@ -134,6 +134,7 @@ private:
         if (!root.contains("common")) return;
         if (auto source = readSourceFile(root, "common", "")) {
             desc_.commonSource = source->first;
+            desc_.commonName = source->first.string();
             desc_.commonCode = std::move(source->second);
         }
     }
@@ -209,6 +210,7 @@ private:
         if (!body.contains("source")) problems_.add(where, "\"source\" is missing");
         if (auto source = readSourceFile(body, "source", where)) {
             pass.source = source->first;
+            pass.sourceName = source->first.string();
             pass.code = std::move(source->second);
         }
         auto channels = body.find("channels");

@@ -83,6 +83,18 @@ Result<ResolvedMedia> MediaResolver::resolve(std::string_view ref) const {
         if (file) return loadReal(*file);
     }
 
+    if (!info && ref.rfind("/media/a/", 0) == 0) {
+        // A stock texture the table does not know: its size is unknown, so the stand-in is a
+        // 512x512 RGB photo-like image (the most common stock size), flagged in the notice.
+        const std::string hash(ref.substr(9, ref.find('.', 9) == std::string_view::npos ? std::string_view::npos
+                                                                                         : ref.find('.', 9) - 9));
+        const StockMediaInfo unknown{hash, "", "unknown stock texture", 512, 512, 3, StockMediaKind::Photo};
+        ResolvedMedia standIn{makeStandIn(unknown), true, {}};
+        standIn.notice = "toyhost: stock texture " + std::string(ref) +
+                         " is not in toyhost's table (its size is unknown); using a 512x512 stand-in. Supply "
+                         "the real file with --media-file " + hash + "=<path> or --media DIR.";
+        return standIn;
+    }
     if (!info) {
         return Error{
             "media '" + std::string(ref) +

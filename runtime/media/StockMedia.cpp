@@ -266,11 +266,14 @@ Image8 photo(const StockMediaInfo& info) {
         for (int x = 0; x < info.width; ++x) {
             const std::size_t i = pixelIndex(info.width, x, y);
             const int v = shade[i], lo = v < 128 ? 0 : 3, t = v < 128 ? v * 2 : (v - 128) * 2;
+            // Photos have hard object boundaries, not just smooth shading: contour bands of the
+            // tint noise alternate bright and dark, so edge detectors and thresholds find edges.
+            const int band = tint[i] * 6 / 256, edge = band % 2 ? 24 : 255;
             std::array<int, 3> rgb{};
             for (int c = 0; c < 3; ++c)
                 rgb[c] = lerp8(ramp[lo + c], ramp[lo + 3 + c], std::min(t, 255)) *
-                         (160 + tint[i] * 95 / 255) / 255;
-            if (info.channels == 1) rgb[0] = v;
+                         (160 + tint[i] * 95 / 255) / 255 * edge / 255;
+            if (info.channels == 1) rgb[0] = v * edge / 255;
             putPixel(image, x, y, rgb[0], rgb[1], rgb[2], 255);
         }
     return image;

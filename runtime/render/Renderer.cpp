@@ -129,8 +129,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
         shaderInputs.common = manifest.commonSource ? &manifest.commonCode : nullptr;
         shaderInputs.code = desc.code;
         AssembledShader fragment = assembleFragmentShader(shaderInputs);
-        ProgramSources names{passName(plan.id), desc.source.string(),
-                             manifest.commonSource ? manifest.commonSource->string() : std::string()};
+        ProgramSources names{passName(plan.id), desc.sourceName, manifest.commonName};
         Result<GlProgram> program = buildProgram(fragment, names);
         if (!program) return program.error();
 
@@ -240,6 +239,10 @@ Status Renderer::resize(int width, int height) {
     height_ = height;
     return okStatus();
 }
+
+void Renderer::finish() { glFinish(); }
+
+bool Renderer::outputIsFloat(PassId pass) const { return pass != PassId::Image || impl_->floatImage; }
 
 unsigned int Renderer::outputFramebuffer(PassId pass) const {
     if (pass == PassId::Image) return impl_->imageTarget.framebuffer.id();

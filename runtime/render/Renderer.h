@@ -59,6 +59,14 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
 
+    // Waits until the GPU has executed everything submitted (glFinish). Runs call it once at the
+    // end so that their measured time includes the GPU's work; never per frame.
+    void finish();
+
+    // True when a pass's output texture holds floats (buffers, and the Image target when it was
+    // created with floatImageTarget); false for the RGBA8 Image target.
+    bool outputIsFloat(PassId pass) const;
+
     // Synchronous readbacks of the last rendered frame, rows bottom first.
     void readImageRgba8(std::vector<std::uint8_t>& out) const;
     // A buffer's last rendered texture, or the Image target, as float RGBA.

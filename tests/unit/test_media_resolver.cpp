@@ -194,7 +194,22 @@ TEST(MediaResolver, FallsBackToAStandInWithAOneLineNotice) {
 
 TEST(MediaResolver, UnknownIdIsAnErrorNamingIt) {
     MediaResolver resolver;
-    const Result<ResolvedMedia> media = resolver.resolve("/media/a/not-a-stock-texture.png");
+    const Result<ResolvedMedia> media = resolver.resolve("textures/not-anywhere.png");
     ASSERT_FALSE(media.ok());
-    EXPECT_NE(media.error().message.find("/media/a/not-a-stock-texture.png"), std::string::npos);
+    EXPECT_NE(media.error().message.find("textures/not-anywhere.png"), std::string::npos);
+}
+
+// Exports can name stock textures the table does not know: they get a flagged 512x512
+// stand-in rather than failing the whole shader.
+TEST(MediaResolver, UnknownStockPathGetsAFlaggedStandIn) {
+    MediaResolver resolver;
+    const Result<ResolvedMedia> media = resolver.resolve("/media/a/0123abcd.png");
+    ASSERT_TRUE(media.ok()) << media.error().message;
+    EXPECT_TRUE(media->standIn);
+    EXPECT_EQ(media->image.width, 512);
+    EXPECT_EQ(media->image.height, 512);
+    EXPECT_NE(media->notice.find("/media/a/0123abcd.png"), std::string::npos);
+    EXPECT_NE(media->notice.find("size is unknown"), std::string::npos);
+    const Result<ResolvedMedia> again = resolver.resolve("/media/a/0123abcd.png");
+    EXPECT_EQ(again->image.rgba, media->image.rgba) << "deterministic";
 }

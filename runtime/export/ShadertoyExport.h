@@ -1,0 +1,28 @@
+// Reads shadertoy.com JSON exports (the API form {"Shader": {...}} and the older site form with
+// string ids and type/filepath fields) into the same ManifestDesc a manifest gives, so the rest
+// of the host cannot tell them apart. No GL needed.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json_fwd.hpp>
+#include <string_view>
+
+#include "core/Result.h"
+#include "manifest/ManifestDesc.h"
+
+namespace toyhost {
+
+// True for a document shaped like an export: {"Shader": {...}}, {"renderpass": [...]}, or a
+// one-element array of those (as the site's own export button writes).
+bool isShadertoyExport(const nlohmann::json& document);
+
+// Converts an export. Inputs the host cannot provide (video, music, webcam, microphone,
+// cubemaps, volumes) and reads of buffers the shader does not define are bound to nothing, each
+// with a line in `notices`; a Sound pass is skipped with a notice; a Cube A pass is an error.
+Result<ManifestDesc> parseShadertoyExport(std::string_view jsonText, const std::filesystem::path& exportPath);
+
+// Shadertoy's ids for buffer outputs and inputs: 257..260 (API) or "4dXGR8", "XsXGR8",
+// "4sXGR8", "XdfGR8" (site form) for Buffer A..D; -1 for anything else.
+int bufferIndexFromExportId(const nlohmann::json& id);
+
+}  // namespace toyhost

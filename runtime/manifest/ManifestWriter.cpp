@@ -1,0 +1,75 @@
+#include "manifest/ManifestWriter.h"
+
+#include <nlohmann/json.hpp>
+
+#include "core/AtomicFile.h"
+
+namespace toyhost {
+namespace fs = std::filesystem;
+using nlohmann::ordered_json;
+
+std::string passFileName(PassId id) {
+    if (id == PassId::Image) return "image.glsl";
+    return std::string("buffer_") + static_cast<char>('a' + bufferIndex(id)) + ".glsl";
+}
+
+namespace {
+
+ordered_json channelJson(const ChannelDesc& channel) {
+    ordered_json out;
+    switch (channel.kind) {
+        case ChannelKind::None: return nullptr;
+        case ChannelKind::Keyboard: out["keyboard"] = true; return out;
+        case ChannelKind::Buffer: out["buffer"] = std::string(1, static_cast<char>('A' + channel.buffer)); break;
+        case ChannelKind::ImageFile: out["texture"] = channel.file.string(); break;
+        case ChannelKind::StockMedia: out["media"] = channel.media; break;
+    }
+    out["filter"] = filterName(channel.sampler.filter);
+    out["wrap"] = wrapName(channel.sampler.wrap);
+    if (channel.kind != ChannelKind::Buffer) out["vflip"] = channel.sampler.vflip;
+    return out;
+}
+
+Status writeText(const fs::path& path, const std::string& text) {
+    return writeBytesAtomically(path, std::as_bytes(std::span(text.data(), text.size())));
+}
+
+}  // namespace
+
+std::string manifestJson(const ManifestDesc& desc) {
+    ordered_json root;
+    root["name"] = desc.name;
+    if (desc.commonSource) root["common"] = "common.glsl";
+    ordered_json passes = ordered_json::object();
+    for (const PassDesc& pass : desc.passes) {
+        ordered_json body;
+        body["source"] = passFileName(pass.id);
+        ordered_json channels = ordered_json::object();
+        for (int c = 0; c < kChannelCount; ++c)
+            if (pass.channels[c].kind != ChannelKind::None)
+                channels["iChannel" + std::to_string(c)] = channelJson(pass.channels[c]);
+        if (!channels.empty()) body["channels"] = channels;
+        passes[passName(pass.id)] = body;
+    }
+    root["passes"] = passes;
+    if (!desc.mediaOverrides.empty()) {
+        ordered_json media = ordered_json::object();
+        for (const auto& [id, file] : desc.mediaOverrides) media[id] = file.string();
+        root["media"] = media;
+    }
+    return root.dump(2) + "\n";
+}
+
+Status writeManifestFolder(const ManifestDesc& desc, const fs::path& dir, bool overwrite) {
+    std::error_code ec;
+    if (!overwrite && fs::exists(dir / "manifest.json", ec))
+        return Error{(dir / "manifest.json").string() + " already exists (use --force to overwrite)"};
+    if (desc.commonSource)
+        if (Status s = writeText(dir / "common.glsl", desc.commonCode); !s) return s;
+    for (const PassDesc& pass : desc.passes)
+        if (Status s = writeText(dir / passFileName(pass.id), pass.code); !s) return s;
+    // The manifest last: a folder with a manifest.json is a complete import.
+    return writeText(dir / "manifest.json", manifestJson(desc));
+}
+
+}  // namespace toyhost

@@ -1,0 +1,49 @@
+// One compatibility probe: load a Shadertoy export, compile it, render a few frames headless
+// and judge the output (uniform colour, NaN/Inf in buffers), collecting stand-ins and notices.
+// Creates and uses its own EGL context; run it in a child process so a hang can be killed.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace toyhost::compat {
+
+struct ProbeSettings {
+    int width = 160;
+    int height = 90;
+    int frames = 10;
+    // A frame that is still one colour after `frames` frames may be a fade-in or a shader waiting
+    // for input: keep rendering (and dragging) until iTime reaches this or the budget runs out.
+    double patienceSeconds = 5.0;
+    double wallBudgetSeconds = 20.0;
+    std::vector<std::filesystem::path> mediaFolders;
+};
+
+struct ProbeResult {
+    std::string file;                      // file name of the export
+    std::string id, name;
+    int passes = 0;
+    bool loaded = false;                   // the export parsed
+    bool compiled = false;                 // every pass compiled and linked
+    int framesRendered = 0;
+    double msPerFrame = 0;
+    double firstNonUniformTime = -1;       // iTime when a uniform Image first changed, if it did later
+    bool uniformImage = false;             // every Image pixel has the same colour
+    std::vector<std::string> nonFiniteBuffers;  // "Buffer A: 12 NaN, 0 Inf"
+    std::vector<std::string> standIns;     // stock media names replaced by stand-ins
+    std::vector<std::string> notices;
+    std::string error;                     // why it did not load, compile or render
+
+    bool degenerate() const { return uniformImage || !nonFiniteBuffers.empty(); }
+    bool passed() const { return compiled && framesRendered > 0 && !degenerate(); }
+};
+
+ProbeResult runProbe(const std::filesystem::path& exportFile, const ProbeSettings& settings);
+
+nlohmann::json toJson(const ProbeResult& result);
+ProbeResult fromJson(const nlohmann::json& json);
+
+}  // namespace toyhost::compat
