@@ -207,8 +207,9 @@ int bufferIndexFromExportId(const json& id) {
         static const char* siteIds[] = {"4dXGR8", "XsXGR8", "4sXGR8", "XdfGR8"};
         for (int i = 0; i < 4; ++i)
             if (id == siteIds[i]) return i;
-        const std::string s = id.get<std::string>();
-        if (s == "257" || s == "258" || s == "259" || s == "260") return s[2] - '7';
+        static const char* numericIds[] = {"257", "258", "259", "260"};
+        for (int i = 0; i < 4; ++i)
+            if (id == numericIds[i]) return i;
     }
     return -1;
 }

@@ -279,9 +279,13 @@ private:
             channel.kind = ChannelKind::StockMedia;
             channel.media = *media;
             mediaRefs_.insert(*media);
-            if (!findStockMedia(*media) && !desc_.mediaOverrides.count(*media))
-                problems_.add(where, "unknown stock media id " + quote(*media) +
-                                         " (add it to \"media\" with a file to use it)");
+            // Any Shadertoy media path is accepted (one the table does not know runs with a flagged
+            // stand-in, as imported exports do); other names must be known or given a file.
+            const bool mediaPath = media->rfind("/media/a/", 0) == 0 && media->size() > 9;
+            if (!mediaPath && !findStockMedia(*media) && !desc_.mediaOverrides.count(*media))
+                problems_.add(where, "unknown stock media " + quote(*media) +
+                                         " (use a /media/a/<hash>.<ext> id, a stock name such as \"Abstract 3\", "
+                                         "or add it to \"media\" with a file)");
         } else if (value.contains("keyboard")) {
             if (value["keyboard"] != true) {
                 problems_.add(where, "\"keyboard\" must be true");
