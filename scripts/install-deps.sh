@@ -8,6 +8,7 @@ packages=(
   libglfw3-dev libglm-dev nlohmann-json3-dev libcli11-dev
   libstb-dev libpng-dev libopenexr-dev                  # image I/O: PNG/JPEG in, PNG and EXR out
   libgtest-dev                                           # tests
+  ffmpeg                                                 # video output (--out x.mp4); ffprobe for its tests
 )
 
 missing=()

@@ -71,6 +71,9 @@ bool encodePng(std::FILE* file, png_bytep* rows, png_uint_32 width, png_uint_32 
     }
     png_init_io(png, file);
     png_set_compression_level(png, level);
+    // libpng's adaptive row filters cost about as much as zlib's fastest level itself; at the
+    // fast levels (capture) they are skipped, which on rendered frames costs little size.
+    if (level <= 2) png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
     png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB_ALPHA, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);

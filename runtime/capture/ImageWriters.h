@@ -14,7 +14,8 @@ namespace toyhost {
 
 // `rgbaBottomUp` holds width * height * 4 bytes, bottom row first as glReadPixels returns them;
 // the file gets the top row first. `compressionLevel` is zlib's 0 (none) .. 9 (smallest); the
-// default 1 favours speed when capturing frames.
+// default 1 favours speed when capturing frames. Levels 0-2 write rows unfiltered, 3-9 use
+// libpng's adaptive filters (smaller, about twice the time).
 Status writePng(const std::filesystem::path& path, int width, int height,
                 std::span<const std::uint8_t> rgbaBottomUp, int compressionLevel = 1);
 

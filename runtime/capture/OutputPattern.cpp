@@ -8,6 +8,11 @@ namespace toyhost {
 Result<OutputPattern> OutputPattern::parse(const std::string& pattern) {
     OutputPattern out;
     out.pattern_ = pattern;
+    if (pattern == "-") {
+        out.prefix_ = pattern;
+        out.format_ = OutputFormat::RawStream;
+        return out;
+    }
     auto bad = [&](const std::string& why) { return Error{"--out " + pattern + ": " + why}; };
     std::string* part = &out.prefix_;
     for (size_t i = 0; i < pattern.size(); ++i) {
@@ -36,9 +41,13 @@ Result<OutputPattern> OutputPattern::parse(const std::string& pattern) {
     const size_t dot = name.rfind('.');
     std::string ext = dot == std::string::npos || name.find('/', dot) != std::string::npos ? "" : name.substr(dot);
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    out.extension_ = ext;
     if (ext == ".png") out.format_ = OutputFormat::Png;
     else if (ext == ".exr") out.format_ = OutputFormat::Exr;
-    else return bad("unsupported format \"" + ext + "\" (use .png or .exr)");
+    else if (ext == ".mp4" || ext == ".webm" || ext == ".mov" || ext == ".mkv") out.format_ = OutputFormat::Video;
+    else return bad("unsupported format \"" + ext + "\" (use .png, .exr, a video .mp4/.webm/.mov/.mkv, or - for raw RGBA on stdout)");
+    if (out.format_ == OutputFormat::Video && out.numbered())
+        return bad("a video is one file: remove the frame number placeholder");
     return out;
 }
 

@@ -11,7 +11,6 @@
 namespace toyhost {
 namespace fs = std::filesystem;
 
-namespace {
 fs::path temporarySibling(const fs::path& path) {
     static std::atomic<unsigned> counter{0};
     // Starts with a dot and ends in .partial so a glob for the final pattern never matches it.
@@ -19,7 +18,6 @@ fs::path temporarySibling(const fs::path& path) {
                        std::to_string(counter++) + ".partial";
     return path.parent_path() / name;
 }
-}  // namespace
 
 Status writeFileAtomically(const fs::path& path,
                            const std::function<Status(const fs::path&)>& write) {

@@ -16,6 +16,11 @@ namespace toyhost {
 Status writeFileAtomically(const std::filesystem::path& path,
                            const std::function<Status(const std::filesystem::path&)>& write);
 
+// A unique hidden name beside `path` (".name.PID.N.partial") for output that is renamed into
+// place when complete, by writers that cannot use writeFileAtomically (a file an ffmpeg process
+// writes over a whole run).
+std::filesystem::path temporarySibling(const std::filesystem::path& path);
+
 // Convenience for in-memory bytes.
 Status writeBytesAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
 

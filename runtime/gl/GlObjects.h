@@ -1,4 +1,5 @@
-// RAII owners for GL objects (textures, framebuffers, samplers, programs, vertex arrays).
+// RAII owners for GL objects (textures, framebuffers, samplers, programs, vertex arrays, buffers,
+// fences).
 // Constructing or destroying one needs the context that owns it to be current.
 #pragma once
 
@@ -52,6 +53,34 @@ using GlVertexArray = GlObject<gl_detail::deleteVertexArray>;
 using GlBuffer = GlObject<gl_detail::deleteBuffer>;
 using GlProgram = GlObject<gl_detail::deleteProgram>;
 using GlShader = GlObject<gl_detail::deleteShader>;
+
+// A fence sync object (glFenceSync), deleted with its owner.
+class GlFence {
+public:
+    GlFence() = default;
+    explicit GlFence(GLsync sync) : sync_(sync) {}
+    ~GlFence() { reset(); }
+    GlFence(GlFence&& other) noexcept : sync_(std::exchange(other.sync_, nullptr)) {}
+    GlFence& operator=(GlFence&& other) noexcept {
+        if (this != &other) {
+            reset();
+            sync_ = std::exchange(other.sync_, nullptr);
+        }
+        return *this;
+    }
+    GlFence(const GlFence&) = delete;
+    GlFence& operator=(const GlFence&) = delete;
+
+    GLsync get() const { return sync_; }
+    explicit operator bool() const { return sync_ != nullptr; }
+    void reset() {
+        if (sync_) glDeleteSync(sync_);
+        sync_ = nullptr;
+    }
+
+private:
+    GLsync sync_ = nullptr;
+};
 
 inline GlTexture makeTexture() { GLuint id = 0; glGenTextures(1, &id); return GlTexture(id); }
 inline GlFramebuffer makeFramebuffer() { GLuint id = 0; glGenFramebuffers(1, &id); return GlFramebuffer(id); }

@@ -4,19 +4,20 @@
 #include <map>
 #include <memory>
 
-#include "capture/ImageWriters.h"
 #include "capture/OutputPattern.h"
 #include "core/AtomicFile.h"
+#include "core/ChildProcess.h"
 #include "gl/EglSurfacelessContext.h"
 #include "graph/PassGraph.h"
 #include "input/InputScript.h"
 #include "input/InputScriptPlayer.h"
 #include "input/KeyboardState.h"
 #include "input/MouseState.h"
-#include "manifest/ManifestLoader.h"
+#include "export/LoadShadertoy.h"
 #include "media/MediaResolver.h"
 #include "render/Renderer.h"
 #include "run/ChannelImages.h"
+#include "run/FrameCapture.h"
 #include "run/FrameClock.h"
 
 namespace toyhost {
@@ -47,8 +48,13 @@ Result<PreparedRun> prepare(const RunOptions& o) {
     if (!(o.fps > 0)) return Error{"--fps must be positive"};
     if (o.captureEvery < 1) return Error{"--capture-every must be at least 1"};
     if (o.mouse && o.mouseScript) return Error{"--mouse and --mouse-script cannot be combined"};
+    if (o.pngLevel < 0 || o.pngLevel > 9) return Error{"--png-level must be 0..9"};
+    if (o.encoderThreads < 0) return Error{"--encoder-threads must be 0 (automatic) or more"};
+    if (o.captureMemoryBytes == 0) return Error{"--capture-memory must be positive"};
+    if (o.video.quality && (*o.video.quality < 0 || *o.video.quality > 63))
+        return Error{"--video-quality must be 0..63 (a constant rate factor; lower is better)"};
 
-    Result<ManifestDesc> manifest = loadManifest(o.target);
+    Result<ManifestDesc> manifest = loadShadertoy(o.target);
     if (!manifest) return manifest.error();
     PreparedRun run{std::move(*manifest), {}, std::nullopt, {}, {}, {}};
     run.graph = buildPassGraph(run.manifest);
@@ -59,11 +65,16 @@ Result<PreparedRun> prepare(const RunOptions& o) {
     if (o.outPattern) {
         Result<OutputPattern> pattern = OutputPattern::parse(*o.outPattern);
         if (!pattern) return pattern.error();
-        if (!pattern->numbered() && countCaptured(o.frames, o.captureEvery) > 1)
+        if (!pattern->numbered() && !pattern->streamed() && countCaptured(o.frames, o.captureEvery) > 1)
             return Error{"--out " + *o.outPattern + ": more than one frame is captured, so the "
                          "pattern needs a frame number placeholder such as %04d"};
+        if (pattern->format() == OutputFormat::Video && !findExecutable("ffmpeg"))
+            return Error{"--out " + *o.outPattern + ": video needs ffmpeg, which is not in PATH "
+                         "(Debian: apt-get install ffmpeg)"};
         run.output = std::move(*pattern);
     }
+    if ((o.video.codec || o.video.quality) && (!run.output || run.output->format() != OutputFormat::Video))
+        return Error{"--codec and --video-quality apply only to a video --out (.mp4, .webm, .mov, .mkv)"};
     if (o.mouse) run.mouse = mouseHeldAt(o.mouse->x, o.mouse->y);
     if (o.mouseScript) {
         Result<std::string> text = readTextFile(*o.mouseScript);
@@ -89,28 +100,6 @@ Result<PreparedRun> prepare(const RunOptions& o) {
     return run;
 }
 
-Status capture(const Renderer& renderer, const OutputPattern& output, PassId pass, int frame,
-               std::vector<std::uint8_t>& bytes, std::vector<float>& floats, fs::path& written) {
-    written = output.pathFor(frame);
-    const int w = renderer.width(), h = renderer.height();
-    if (output.format() == OutputFormat::Exr) {
-        renderer.readRgba32f(pass, floats);
-        return writeExr(written, w, h, floats);
-    }
-    if (pass == PassId::Image) {
-        renderer.readImageRgba8(bytes);
-    } else {
-        // A buffer shown as 8 bits: clamp to [0, 1] and round, as a UNORM8 target would.
-        renderer.readRgba32f(pass, floats);
-        bytes.resize(floats.size());
-        for (size_t i = 0; i < floats.size(); ++i) {
-            float v = floats[i] < 0 ? 0 : (floats[i] > 1 ? 1 : floats[i]);
-            bytes[i] = static_cast<std::uint8_t>(v * 255.0f + 0.5f);
-        }
-    }
-    return writePng(written, w, h, bytes);
-}
-
 }  // namespace
 
 Result<RunReport> runHeadless(const RunOptions& o, RunObserver& observer) {
@@ -119,6 +108,7 @@ Result<RunReport> runHeadless(const RunOptions& o, RunObserver& observer) {
     Result<PreparedRun> prepared = prepare(o);
     if (!prepared) return prepared.error();
     PreparedRun& run = *prepared;
+    for (const std::string& line : run.manifest.notices) observer.notice("toyhost: " + line);
 
     Result<std::unique_ptr<GlContext>> context = createEglSurfacelessContext();
     if (!context) return context.error();
@@ -133,6 +123,23 @@ Result<RunReport> runHeadless(const RunOptions& o, RunObserver& observer) {
         Renderer::create(run.manifest, run.graph, renderOptions, std::ref(images));
     if (!renderer) return renderer.error();
 
+    std::unique_ptr<FrameCapture> capture;
+    if (run.output) {
+        CaptureSettings settings;
+        settings.output = *run.output;
+        settings.pass = o.capturePass;
+        settings.synchronous = o.syncCapture;
+        settings.pngLevel = o.pngLevel;
+        settings.encoderThreads = o.encoderThreads;
+        settings.memoryCapBytes = o.captureMemoryBytes;
+        settings.video = o.video;
+        settings.fps = o.fps;
+        settings.rawStreamFd = o.rawStreamFd;
+        Result<std::unique_ptr<FrameCapture>> made = FrameCapture::create(settings, **renderer);
+        if (!made) return made.error();
+        capture = std::move(*made);
+    }
+
     RunReport report;
     report.manifestName = run.manifest.name;
     report.context = (*context)->describe();
@@ -143,8 +150,8 @@ Result<RunReport> runHeadless(const RunOptions& o, RunObserver& observer) {
     MouseScriptPlayer mousePlayer(std::move(run.mouse));
     KeyScriptPlayer keyPlayer(std::move(run.keys));
     std::uint64_t uploadedKeyboard = keyboard.revision();
-    std::vector<std::uint8_t> bytes;
-    std::vector<float> floats;
+    RunProgress progress;
+    progress.frames = o.frames;
 
     const auto loopStart = Clock::now();
     for (int frame = 0; frame < o.frames; ++frame) {
@@ -169,18 +176,35 @@ Result<RunReport> runHeadless(const RunOptions& o, RunObserver& observer) {
         (*renderer)->renderFrame(uniforms, !run.output || (captured && o.capturePass == PassId::Image));
 
         if (captured) {
-            fs::path written;
-            Status saved = capture(**renderer, *run.output, o.capturePass, frame, bytes, floats, written);
-            if (!saved) return saved.error();
-            report.files.push_back(written);
+            if (Status saved = capture->capture(**renderer, frame); !saved) return saved.error();
+        } else if (capture) {
+            if (Status polled = capture->poll(); !polled) return polled.error();
         }
         mouse.endFrame();
         keyboard.endFrame();  // its change is uploaded before the next frame renders
+        // Frame 0 waits for the GPU once so that the time to the first frame is real.
+        if (o.finishEachFrame || frame == 0) (*renderer)->finish();
         if (frame == 0) report.firstFrameSeconds = std::chrono::duration<double>(Clock::now() - started).count();
         report.framesRendered = frame + 1;
-        observer.frameDone(frame, o.frames);
+        progress.framesDone = frame + 1;
+        progress.seconds = std::chrono::duration<double>(Clock::now() - loopStart).count();
+        progress.bytesWritten = capture ? capture->bytesWritten() : 0;
+        observer.progress(progress);
     }
+    if (capture) {
+        if (Status finished = capture->finish(); !finished) return finished.error();
+        report.bytesWritten = capture->bytesWritten();
+        report.encoderThreads = capture->encoderThreads();
+    }
+    (*renderer)->finish();  // the reported time includes the GPU's work
     report.seconds = std::chrono::duration<double>(Clock::now() - loopStart).count();
+    if (run.output && run.output->format() != OutputFormat::RawStream) {
+        for (int frame = 0; frame < o.frames; ++frame) {
+            if (!isCapturedFrame(frame, o.frames, o.captureEvery)) continue;
+            report.files.push_back(run.output->pathFor(frame));
+            if (run.output->streamed()) break;
+        }
+    }
     return report;
 }
 

@@ -1,8 +1,11 @@
 // HeadlessRun: the `toyhost run --headless` job. Validates everything (manifest, output
-// pattern, input scripts) before any GL call, then renders frames with a fixed time step on an
-// EGL surfaceless context and hands captured frames to image files. Creates its own context.
+// pattern, input scripts, ffmpeg for videos) before any GL call, then renders frames with a fixed
+// time step on an EGL surfaceless context and hands captured frames to FrameCapture (async
+// readback, encoder threads). Creates its own context.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -11,6 +14,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "capture/VideoSink.h"
 #include "core/Result.h"
 #include "manifest/ManifestDesc.h"
 
@@ -32,6 +36,18 @@ struct RunOptions {
     std::vector<std::pair<std::string, std::filesystem::path>> mediaFiles;  // id -> file
     std::vector<std::filesystem::path> mediaFolders;
     std::optional<double> wallClock;       // iDate at frame 0 (FrameClock form); default: now
+
+    // Capture pipeline (runtime/capture).
+    int pngLevel = 1;                      // zlib level of PNG files, 0..9; 1 is fast
+    bool syncCapture = false;              // read back and encode on the render thread (reference path)
+    int encoderThreads = 0;                // 0: defaultEncoderThreads()
+    std::size_t captureMemoryBytes = std::size_t(256) << 20;  // cap on frames waiting for encoders
+    VideoSettings video;                   // codec and quality of --out x.mp4|.webm|.mov|.mkv
+    int rawStreamFd = 1;                   // where --out - writes
+    // glFinish after every frame. For benchmarks: llvmpipe drops queued work that a later draw
+    // fully overwrites before anything reads it, so an unsynchronised render-only loop does not
+    // measure the shading cost.
+    bool finishEachFrame = false;
 };
 
 // Frames n with n % captureEvery == 0, and the last frame.
@@ -44,8 +60,18 @@ struct RunReport {
     std::string context;                   // GL backend description
     int framesRendered = 0;
     std::vector<std::filesystem::path> files;
-    double seconds = 0;                    // wall time of the frame loop
+    double seconds = 0;                    // wall time of the frame loop, GPU and encoders included
     double firstFrameSeconds = 0;          // from start of run() to the first frame finished
+    std::uint64_t bytesWritten = 0;        // by the capture (file sizes; the video's size)
+    int encoderThreads = 0;                // encoder threads the capture used (0: synchronous)
+};
+
+// Where a run stands, reported after every frame.
+struct RunProgress {
+    int framesDone = 0;
+    int frames = 0;
+    double seconds = 0;                    // since the frame loop started
+    std::uint64_t bytesWritten = 0;        // so far (encoders run behind the render loop)
 };
 
 // Receives what a run has to say while it runs; the CLI decides how to show it.
@@ -53,7 +79,8 @@ class RunObserver {
 public:
     virtual ~RunObserver() = default;
     virtual void notice(const std::string& line) = 0;
-    virtual void frameDone(int frame, int frames) { (void)frame, (void)frames; }
+    // Called on the render thread after every frame; keep it cheap.
+    virtual void progress(const RunProgress& progress) { (void)progress; }
 };
 
 Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer);

@@ -22,6 +22,7 @@ std::string errorOf(const std::string& text) {
     return p.ok() ? std::string("<accepted>") : p.error().message;
 }
 
+const std::string kFormats = "(use .png, .exr, a video .mp4/.webm/.mov/.mkv, or - for raw RGBA on stdout)";
 const std::string kPlaceholderError = "only %d or %0Nd (N <= 12) may stand for the frame number";
 
 }  // namespace
@@ -100,13 +101,13 @@ TEST(OutputPattern, OnlyDAndZeroPaddedDAreAccepted) {
 }
 
 TEST(OutputPattern, UnsupportedExtension) {
-    EXPECT_EQ(errorOf("frame_%04d.jpg"), "--out frame_%04d.jpg: unsupported format \".jpg\" (use .png or .exr)");
-    EXPECT_EQ(errorOf("frame.tiff"), "--out frame.tiff: unsupported format \".tiff\" (use .png or .exr)");
-    EXPECT_EQ(errorOf("frame"), "--out frame: unsupported format \"\" (use .png or .exr)");
-    EXPECT_EQ(errorOf("frame_%04d"), "--out frame_%04d: unsupported format \"\" (use .png or .exr)");
-    EXPECT_EQ(errorOf("frame.png.bak"), "--out frame.png.bak: unsupported format \".bak\" (use .png or .exr)");
+    EXPECT_EQ(errorOf("frame_%04d.jpg"), "--out frame_%04d.jpg: unsupported format \".jpg\" " + kFormats);
+    EXPECT_EQ(errorOf("frame.tiff"), "--out frame.tiff: unsupported format \".tiff\" " + kFormats);
+    EXPECT_EQ(errorOf("frame"), "--out frame: unsupported format \"\" " + kFormats);
+    EXPECT_EQ(errorOf("frame_%04d"), "--out frame_%04d: unsupported format \"\" " + kFormats);
+    EXPECT_EQ(errorOf("frame.png.bak"), "--out frame.png.bak: unsupported format \".bak\" " + kFormats);
     // The extension belongs to the part after the placeholder: one before it does not count.
-    EXPECT_EQ(errorOf("frame.png%d"), "--out frame.png%d: unsupported format \"\" (use .png or .exr)");
+    EXPECT_EQ(errorOf("frame.png%d"), "--out frame.png%d: unsupported format \"\" " + kFormats);
 }
 
 TEST(OutputPattern, ExtensionWhenThePlaceholderIsInTheDirectory) {
@@ -115,8 +116,25 @@ TEST(OutputPattern, ExtensionWhenThePlaceholderIsInTheDirectory) {
     EXPECT_EQ(p.format(), OutputFormat::Exr);
     EXPECT_EQ(p.pathFor(12), "run_012/frame.exr");
     // A dot in a directory is not an extension.
-    EXPECT_EQ(errorOf("run_%d.png/frame"), "--out run_%d.png/frame: unsupported format \"\" (use .png or .exr)");
-    EXPECT_EQ(errorOf("out.png/frame"), "--out out.png/frame: unsupported format \"\" (use .png or .exr)");
-    EXPECT_EQ(errorOf("out.png/%d"), "--out out.png/%d: unsupported format \"\" (use .png or .exr)");
+    EXPECT_EQ(errorOf("run_%d.png/frame"), "--out run_%d.png/frame: unsupported format \"\" " + kFormats);
+    EXPECT_EQ(errorOf("out.png/frame"), "--out out.png/frame: unsupported format \"\" " + kFormats);
+    EXPECT_EQ(errorOf("out.png/%d"), "--out out.png/%d: unsupported format \"\" " + kFormats);
     EXPECT_EQ(parseOk("out.d/%d.png").pathFor(1), "out.d/1.png");
+}
+
+TEST(OutputPattern, VideoAndRawStream) {
+    const OutputPattern mp4 = parseOk("out/movie.MP4");
+    EXPECT_EQ(mp4.format(), OutputFormat::Video);
+    EXPECT_TRUE(mp4.streamed());
+    EXPECT_EQ(mp4.extension(), ".mp4");
+    EXPECT_EQ(mp4.pathFor(7), "out/movie.MP4");
+    EXPECT_EQ(parseOk("a.webm").format(), OutputFormat::Video);
+    EXPECT_EQ(parseOk("a.mov").format(), OutputFormat::Video);
+    EXPECT_EQ(parseOk("a.mkv").format(), OutputFormat::Video);
+    EXPECT_EQ(errorOf("movie_%04d.mp4"), "--out movie_%04d.mp4: a video is one file: remove the frame number placeholder");
+    const OutputPattern raw = parseOk("-");
+    EXPECT_EQ(raw.format(), OutputFormat::RawStream);
+    EXPECT_TRUE(raw.streamed());
+    EXPECT_FALSE(raw.numbered());
+    EXPECT_FALSE(parseOk("a.png").streamed());
 }

@@ -1,0 +1,97 @@
+#include "capture/EncoderPool.h"
+
+#include <algorithm>
+#include <csignal>
+#include <pthread.h>
+
+namespace toyhost {
+
+int defaultEncoderThreads() {
+    const int hardware = static_cast<int>(std::thread::hardware_concurrency());
+    return std::max(1, hardware - 1);
+}
+
+EncoderPool::EncoderPool(FrameSink& sink, int threads, std::size_t memoryCapBytes)
+    : sink_(sink), queue_(memoryCapBytes) {
+    const int count = threads <= 0 ? 0 : (sink.ordered() ? 1 : threads);
+    workers_.reserve(count);
+    for (int i = 0; i < count; ++i) workers_.emplace_back([this] { work(); });
+}
+
+EncoderPool::~EncoderPool() {
+    if (!finished_) {
+        queue_.abort();
+        stop();
+        sink_.discard();
+    }
+}
+
+void EncoderPool::work() {
+    // A sink writing into a pipe whose reader died must see EPIPE, not kill the process with
+    // SIGPIPE; the signal is thread-directed, so blocking it here is enough.
+    sigset_t pipeSignal;
+    sigemptyset(&pipeSignal);
+    sigaddset(&pipeSignal, SIGPIPE);
+    pthread_sigmask(SIG_BLOCK, &pipeSignal, nullptr);
+
+    EncodeScratch scratch;
+    while (std::optional<CapturedFrame> frame = queue_.pop()) {
+        Status written = sink_.write(*frame, scratch);
+        queue_.recycle(std::move(frame->pixels));
+        if (!written) {
+            fail(written.error());
+            return;
+        }
+    }
+}
+
+void EncoderPool::fail(Error error) {
+    {
+        std::lock_guard lock(errorMutex_);
+        if (!error_) error_ = std::move(error);
+    }
+    queue_.abort();  // wakes a producer blocked in acquire() so that it sees the error
+}
+
+std::optional<Error> EncoderPool::firstError() const {
+    std::lock_guard lock(errorMutex_);
+    return error_;
+}
+
+Result<std::vector<std::byte>> EncoderPool::acquire(std::size_t bytes) {
+    std::optional<std::vector<std::byte>> buffer = queue_.acquire(bytes);
+    if (!buffer) {
+        if (std::optional<Error> error = firstError()) return *error;
+        return Error{"capture: the encoder queue was stopped"};
+    }
+    return std::move(*buffer);
+}
+
+Status EncoderPool::submit(CapturedFrame frame) {
+    if (std::optional<Error> error = firstError()) return *error;
+    if (workers_.empty()) {
+        Status written = sink_.write(frame, inlineScratch_);
+        queue_.recycle(std::move(frame.pixels));
+        if (!written) fail(written.error());
+        return written;
+    }
+    queue_.push(std::move(frame));
+    return okStatus();
+}
+
+void EncoderPool::stop() {
+    for (std::thread& worker : workers_)
+        if (worker.joinable()) worker.join();
+}
+
+Status EncoderPool::finish() {
+    queue_.close();
+    stop();
+    if (std::optional<Error> error = firstError()) return *error;  // the destructor discards
+    Status closed = sink_.close();
+    if (!closed) return closed;
+    finished_ = true;
+    return okStatus();
+}
+
+}  // namespace toyhost

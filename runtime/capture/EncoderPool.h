@@ -1,0 +1,60 @@
+// EncoderPool: moves captured frames off the render thread. A FrameQueue (bounded in bytes)
+// feeds N encoder threads that hand each frame to a FrameSink; an ordered sink gets exactly one
+// thread, so its frames stay in frame order. With 0 threads every frame is written on the
+// caller's thread (the synchronous path). The first error from any thread stops the pool and is
+// returned to the producer at its next call. No GL needed.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "capture/FrameQueue.h"
+#include "capture/FrameSink.h"
+
+namespace toyhost {
+
+// max(1, hardware threads - 1): on a machine whose renderer is the CPU (llvmpipe) the encoders
+// and the rasterizer share the cores, and one core left to the render thread keeps it fed.
+int defaultEncoderThreads();
+
+class EncoderPool {
+public:
+    // `threads` 0: synchronous. An ordered sink uses one thread whatever `threads` says (> 0).
+    EncoderPool(FrameSink& sink, int threads, std::size_t memoryCapBytes);
+    // Stops the threads; if finish() was not called (or failed) the sink's output is discarded.
+    ~EncoderPool();
+    EncoderPool(const EncoderPool&) = delete;
+    EncoderPool& operator=(const EncoderPool&) = delete;
+
+    // A pixel buffer for the next frame; blocks while the queue holds its memory cap
+    // (back-pressure). Fails with the first encoder error once one happened.
+    Result<std::vector<std::byte>> acquire(std::size_t bytes);
+    // Queues a frame whose pixels came from acquire(); synchronous pools write it right away.
+    Status submit(CapturedFrame frame);
+    // Writes everything queued, stops the threads and closes the sink; the first error wins.
+    Status finish();
+
+    int threads() const { return static_cast<int>(workers_.size()); }
+    std::uint64_t bytesWritten() const { return sink_.bytesWritten(); }
+    const FrameQueue& queue() const { return queue_; }
+
+private:
+    void work();
+    void fail(Error error);
+    std::optional<Error> firstError() const;
+    void stop();
+
+    FrameSink& sink_;
+    FrameQueue queue_;
+    EncodeScratch inlineScratch_;
+    std::vector<std::thread> workers_;
+    mutable std::mutex errorMutex_;
+    std::optional<Error> error_;
+    bool finished_ = false;
+};
+
+}  // namespace toyhost

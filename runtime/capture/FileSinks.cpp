@@ -1,0 +1,37 @@
+#include "capture/FileSinks.h"
+
+#include <filesystem>
+
+#include "capture/ImageWriters.h"
+#include "capture/PixelConversion.h"
+#include "core/FileDescriptor.h"
+
+namespace toyhost {
+
+Status ImageSequenceSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
+    const std::filesystem::path path = pattern_.pathFor(frame.frame);
+    Status written = okStatus();
+    if (pattern_.format() == OutputFormat::Exr) {
+        if (frame.format != PixelFormat::Rgba32f)
+            return Error{path.string() + ": EXR capture needs a float readback"};
+        written = writeExr(path, frame.width, frame.height, frame.rgba32f());
+    } else {
+        written = writePng(path, frame.width, frame.height, rgba8BottomUp(frame, scratch.bytes), pngLevel_);
+    }
+    if (!written) return written;
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (!ec) addBytesWritten(size);
+    return okStatus();
+}
+
+Status RawStreamSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
+    const std::span<const std::uint8_t> topFirst =
+        rowsTopFirst(rgba8BottomUp(frame, scratch.bytes), frame.width, frame.height, scratch.rows);
+    Status written = writeAll(fd_, std::as_bytes(topFirst), name_);
+    if (!written) return written;
+    addBytesWritten(topFirst.size());
+    return okStatus();
+}
+
+}  // namespace toyhost

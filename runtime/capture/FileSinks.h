@@ -1,0 +1,37 @@
+// The sinks that need no helper process: one image file per frame (PNG or EXR, written in
+// parallel, each complete or absent) and the raw RGBA8 stream on a file descriptor (stdout).
+// CPU only, no GL needed.
+#pragma once
+
+#include "capture/FrameSink.h"
+#include "capture/OutputPattern.h"
+
+namespace toyhost {
+
+class ImageSequenceSink final : public FrameSink {
+public:
+    // `pngLevel`: zlib level 0..9 for PNG files.
+    ImageSequenceSink(OutputPattern pattern, int pngLevel) : pattern_(std::move(pattern)), pngLevel_(pngLevel) {}
+    bool ordered() const override { return false; }
+    Status write(const CapturedFrame& frame, EncodeScratch& scratch) override;
+
+private:
+    OutputPattern pattern_;
+    int pngLevel_;
+};
+
+// The raw stream format: per frame width * height * 4 bytes, RGBA8, rows top first (like image
+// files), no header and nothing between frames; a buffer capture is clamped to 8 bits.
+class RawStreamSink final : public FrameSink {
+public:
+    // Does not own `fd`. `name` says what it is in error messages ("stdout").
+    RawStreamSink(int fd, std::string name) : fd_(fd), name_(std::move(name)) {}
+    bool ordered() const override { return true; }
+    Status write(const CapturedFrame& frame, EncodeScratch& scratch) override;
+
+private:
+    int fd_;
+    std::string name_;
+};
+
+}  // namespace toyhost

@@ -1,0 +1,143 @@
+#include "capture/VideoSink.h"
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+#include <sys/stat.h>
+
+#include "capture/PixelConversion.h"
+#include "core/AtomicFile.h"
+
+namespace toyhost {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string formatNumber(double value) {
+    std::ostringstream text;
+    text.precision(10);
+    text << value;
+    return text.str();
+}
+
+std::string lowerExtension(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
+// The last lines ffmpeg printed, which name the problem ("Unknown encoder", "No space left").
+std::string logTail(const fs::path& log) {
+    Result<std::string> text = readTextFile(log);
+    if (!text || text->empty()) return {};
+    std::string tail = *text;
+    while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
+    if (tail.size() > 1500) tail = "..." + tail.substr(tail.size() - 1500);
+    return tail;
+}
+
+}  // namespace
+
+std::vector<std::string> ffmpegArguments(const VideoRequest& r) {
+    std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-nostats", "-loglevel", "error", "-y",
+                                     "-f", "rawvideo", "-pix_fmt", "rgba",
+                                     "-video_size", std::to_string(r.width) + "x" + std::to_string(r.height),
+                                     "-framerate", formatNumber(r.fps), "-i", "pipe:0", "-an"};
+    const bool webm = r.container == ".webm";
+    const std::string defaultCodec = webm ? "libvpx-vp9" : "libx264";
+    const std::string codec = r.settings.codec.value_or(defaultCodec);
+    args.insert(args.end(), {"-c:v", codec});
+    if (codec == "libx264") {
+        const bool even = r.width % 2 == 0 && r.height % 2 == 0;
+        args.insert(args.end(), {"-preset", "medium", "-crf", std::to_string(r.settings.quality.value_or(18)),
+                                 "-pix_fmt", even ? "yuv420p" : "yuv444p"});
+    } else if (codec == "libvpx-vp9") {
+        // VP9's "good" deadline at cpu-used 4 encodes several times faster than the default with
+        // little loss; -b:v 0 makes -crf a pure quality target.
+        args.insert(args.end(), {"-crf", std::to_string(r.settings.quality.value_or(31)), "-b:v", "0",
+                                 "-deadline", "good", "-cpu-used", "4", "-row-mt", "1", "-pix_fmt", "yuv420p"});
+    } else if (r.settings.quality) {
+        args.insert(args.end(), {"-crf", std::to_string(*r.settings.quality)});
+    }
+    // The output is a temporary name without the real extension, so the container is explicit.
+    if (r.container == ".mp4") args.insert(args.end(), {"-movflags", "+faststart", "-f", "mp4"});
+    else if (r.container == ".mov") args.insert(args.end(), {"-f", "mov"});
+    else if (r.container == ".mkv") args.insert(args.end(), {"-f", "matroska"});
+    else args.insert(args.end(), {"-f", "webm"});
+    args.push_back(r.output.string());
+    return args;
+}
+
+Result<std::unique_ptr<VideoSink>> VideoSink::start(const fs::path& path, int width, int height, double fps,
+                                                    const VideoSettings& settings) {
+    std::unique_ptr<VideoSink> sink(new VideoSink());
+    sink->path_ = path;
+    std::error_code ec;
+    if (path.has_parent_path()) {
+        fs::create_directories(path.parent_path(), ec);
+        if (ec) return Error{path.parent_path().string() + ": cannot create folder: " + ec.message()};
+    }
+    sink->temp_ = temporarySibling(path);
+    sink->log_ = temporarySibling(path.string() + ".ffmpeg-log");
+    VideoRequest request{sink->temp_, lowerExtension(path), width, height, fps, settings};
+    Result<ChildProcess> ffmpeg = ChildProcess::spawn(ffmpegArguments(request), sink->log_);
+    if (!ffmpeg) {
+        fs::remove(sink->log_, ec);
+        return withContext(path.string(), ffmpeg.error());
+    }
+    sink->ffmpeg_.emplace(std::move(*ffmpeg));
+    return sink;
+}
+
+VideoSink::~VideoSink() {
+    if (!closed_) discard();
+}
+
+Error VideoSink::ffmpegFailed(const std::string& what) const {
+    std::string message = path_.string() + ": " + what;
+    if (std::string tail = logTail(log_); !tail.empty()) message += "\nffmpeg said:\n" + tail;
+    return Error{message};
+}
+
+Status VideoSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
+    const std::span<const std::uint8_t> topFirst =
+        rowsTopFirst(rgba8BottomUp(frame, scratch.bytes), frame.width, frame.height, scratch.rows);
+    Status written = ffmpeg_->write(std::as_bytes(topFirst));
+    if (!written) {
+        // ffmpeg stopped reading: it failed; wait for it so its log is complete.
+        (void)ffmpeg_->closeAndWait();
+        return ffmpegFailed("ffmpeg stopped reading frames");
+    }
+    // The encoded file's size so far, for the progress line (a stat, cheap beside encoding).
+    struct stat info {};
+    if (::stat(temp_.c_str(), &info) == 0) {
+        const std::uint64_t size = static_cast<std::uint64_t>(info.st_size);
+        const std::uint64_t before = bytesWritten();
+        if (size > before) addBytesWritten(size - before);
+    }
+    return okStatus();
+}
+
+Status VideoSink::close() {
+    Result<int> exit = ffmpeg_->closeAndWait();
+    if (!exit) return ffmpegFailed(exit.error().message);
+    if (*exit != 0) return ffmpegFailed("ffmpeg failed (exit code " + std::to_string(*exit) + ")");
+    std::error_code ec;
+    fs::rename(temp_, path_, ec);
+    if (ec) return Error{path_.string() + ": cannot rename the finished video into place: " + ec.message()};
+    closed_ = true;
+    const std::uintmax_t size = fs::file_size(path_, ec);
+    if (!ec && size > bytesWritten()) addBytesWritten(size - bytesWritten());
+    fs::remove(log_, ec);
+    return okStatus();
+}
+
+void VideoSink::discard() {
+    if (ffmpeg_) ffmpeg_->kill();
+    std::error_code ec;
+    fs::remove(temp_, ec);
+    fs::remove(log_, ec);
+    closed_ = true;
+}
+
+}  // namespace toyhost

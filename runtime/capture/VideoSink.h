@@ -1,0 +1,60 @@
+// VideoSink: streams captured frames as raw RGBA8 into an ffmpeg process that encodes one video
+// file (.mp4/.mov/.mkv: H.264, .webm: VP9). ffmpeg writes to a hidden temporary name that is
+// renamed into place only when it exits cleanly, so the video is complete or absent. No GL needed.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "capture/FrameSink.h"
+#include "core/ChildProcess.h"
+
+namespace toyhost {
+
+struct VideoSettings {
+    std::optional<std::string> codec;  // an ffmpeg encoder name; default: by container
+    std::optional<int> quality;        // constant rate factor (lower is better); default: by codec
+};
+
+struct VideoRequest {
+    std::filesystem::path output;  // where ffmpeg writes (the temporary name)
+    std::string container;         // ".mp4", ".webm", ".mov" or ".mkv"
+    int width = 0;
+    int height = 0;
+    double fps = 60;
+    VideoSettings settings;
+};
+
+// The ffmpeg command line (argv, "ffmpeg" first) for a request: raw top-first RGBA8 frames on
+// stdin; H.264 (libx264, CRF 18, yuv420p, or yuv444p for odd sizes, which 4:2:0 H.264 cannot
+// hold) for .mp4/.mov/.mkv, VP9 (libvpx-vp9, CRF 31) for .webm.
+std::vector<std::string> ffmpegArguments(const VideoRequest& request);
+
+class VideoSink final : public FrameSink {
+public:
+    // Starts ffmpeg for `path` (its extension picks the container). Fails when ffmpeg is not
+    // installed.
+    static Result<std::unique_ptr<VideoSink>> start(const std::filesystem::path& path, int width, int height,
+                                                    double fps, const VideoSettings& settings);
+    ~VideoSink() override;
+
+    bool ordered() const override { return true; }
+    Status write(const CapturedFrame& frame, EncodeScratch& scratch) override;
+    Status close() override;
+    void discard() override;
+
+private:
+    VideoSink() = default;
+    Error ffmpegFailed(const std::string& what) const;
+
+    std::filesystem::path path_;
+    std::filesystem::path temp_;
+    std::filesystem::path log_;
+    std::optional<ChildProcess> ffmpeg_;
+    bool closed_ = false;
+};
+
+}  // namespace toyhost

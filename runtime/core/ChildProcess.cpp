@@ -1,0 +1,125 @@
+#include "core/ChildProcess.h"
+
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace toyhost {
+namespace fs = std::filesystem;
+
+std::optional<fs::path> findExecutable(const std::string& program) {
+    if (program.find('/') != std::string::npos) {
+        if (::access(program.c_str(), X_OK) == 0) return fs::path(program);
+        return std::nullopt;
+    }
+    const char* path = std::getenv("PATH");
+    std::string dirs = path ? path : "/usr/local/bin:/usr/bin:/bin";
+    size_t start = 0;
+    while (start <= dirs.size()) {
+        size_t end = dirs.find(':', start);
+        if (end == std::string::npos) end = dirs.size();
+        const std::string dir = dirs.substr(start, end - start);
+        const fs::path candidate = fs::path(dir.empty() ? "." : dir) / program;
+        if (::access(candidate.c_str(), X_OK) == 0) return candidate;
+        start = end + 1;
+    }
+    return std::nullopt;
+}
+
+Result<ChildProcess> ChildProcess::spawn(const std::vector<std::string>& argv, const fs::path& logFile) {
+    if (argv.empty()) return Error{"no program to run"};
+    const std::string name = argv[0];
+    std::optional<fs::path> program = findExecutable(name);
+    if (!program) return Error{name + ": program not found in PATH"};
+
+    // Both ends close on exec; the child gets the read end as its stdin through dup2 below.
+    int ends[2];
+    if (::pipe2(ends, O_CLOEXEC) != 0) return Error{name + ": cannot create a pipe: " + std::strerror(errno)};
+    FileDescriptor readEnd(ends[0]), writeEnd(ends[1]);
+    FileDescriptor log(::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
+    if (!log) return Error{logFile.string() + ": cannot create: " + std::strerror(errno)};
+
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, readEnd.get(), STDIN_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, log.get(), STDOUT_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, log.get(), STDERR_FILENO);
+    // The child starts with default signal handling whatever its parent set (SIGPIPE ignored by
+    // the CLI would otherwise be inherited).
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    sigset_t defaults, none;
+    sigemptyset(&defaults);
+    sigaddset(&defaults, SIGPIPE);
+    sigemptyset(&none);
+    posix_spawnattr_setsigdefault(&attributes, &defaults);
+    posix_spawnattr_setsigmask(&attributes, &none);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+
+    std::vector<char*> args;
+    for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
+    args.push_back(nullptr);
+    pid_t pid = -1;
+    const int spawned = ::posix_spawn(&pid, program->c_str(), &actions, &attributes, args.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    posix_spawnattr_destroy(&attributes);
+    if (spawned != 0) return Error{name + ": cannot start: " + std::strerror(spawned)};
+
+    ChildProcess child;
+    child.pid_ = pid;
+    child.input_ = std::move(writeEnd);
+    child.name_ = name;
+    return child;
+}
+
+ChildProcess::ChildProcess(ChildProcess&& other) noexcept
+    : pid_(std::exchange(other.pid_, -1)), input_(std::move(other.input_)), name_(std::move(other.name_)) {}
+
+ChildProcess& ChildProcess::operator=(ChildProcess&& other) noexcept {
+    if (this != &other) {
+        kill();
+        pid_ = std::exchange(other.pid_, -1);
+        input_ = std::move(other.input_);
+        name_ = std::move(other.name_);
+    }
+    return *this;
+}
+
+ChildProcess::~ChildProcess() { kill(); }
+
+Status ChildProcess::write(std::span<const std::byte> bytes) {
+    if (!input_) return Error{name_ + ": its input is already closed"};
+    return writeAll(input_.get(), bytes, name_ + "'s input");
+}
+
+Result<int> ChildProcess::closeAndWait() {
+    input_.reset();
+    if (pid_ < 0) return Error{name_ + ": not running"};
+    int status = 0;
+    pid_t waited;
+    do waited = ::waitpid(pid_, &status, 0);
+    while (waited < 0 && errno == EINTR);
+    pid_ = -1;
+    if (waited < 0) return Error{name_ + ": waitpid failed: " + std::strerror(errno)};
+    if (WIFSIGNALED(status)) return Error{name_ + ": killed by signal " + std::to_string(WTERMSIG(status))};
+    return WEXITSTATUS(status);
+}
+
+void ChildProcess::kill() {
+    input_.reset();
+    if (pid_ < 0) return;
+    ::kill(pid_, SIGKILL);
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+    pid_ = -1;
+}
+
+}  // namespace toyhost

@@ -1,0 +1,48 @@
+// ChildProcess: runs a program with a pipe to its standard input and its output sent to a file,
+// for feeding encoders such as ffmpeg. RAII: a child that is still running when its owner goes
+// away is killed and reaped, so no failure path leaves a process behind. No GL needed.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <sys/types.h>
+#include <vector>
+
+#include "core/FileDescriptor.h"
+#include "core/Result.h"
+
+namespace toyhost {
+
+// The absolute path of `program` found through $PATH, or std::nullopt.
+std::optional<std::filesystem::path> findExecutable(const std::string& program);
+
+class ChildProcess {
+public:
+    // Starts argv[0] (looked up in $PATH). Its stdout and stderr both go to `logFile` (created,
+    // truncated), which callers read back to explain a failure.
+    static Result<ChildProcess> spawn(const std::vector<std::string>& argv, const std::filesystem::path& logFile);
+
+    ChildProcess(ChildProcess&& other) noexcept;
+    ChildProcess& operator=(ChildProcess&& other) noexcept;
+    ~ChildProcess();
+
+    // Writes to the child's standard input.
+    Status write(std::span<const std::byte> bytes);
+    // Closes the child's standard input and waits for it; its exit code, or an error when a
+    // signal ended it.
+    Result<int> closeAndWait();
+    // Kills the child (SIGKILL) and reaps it; a no-op once it was waited for.
+    void kill();
+
+    const std::string& name() const { return name_; }
+
+private:
+    ChildProcess() = default;
+    pid_t pid_ = -1;
+    FileDescriptor input_;
+    std::string name_;
+};
+
+}  // namespace toyhost

@@ -1,0 +1,6 @@
+// A shader that costs almost nothing per pixel, so a benchmark on it measures the host's
+// per-frame overhead rather than shading.
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec2 uv = fragCoord / iResolution.xy;
+    fragColor = vec4(uv, 0.5 + 0.5 * sin(iTime), 1.0);
+}

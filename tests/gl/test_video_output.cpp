@@ -1,0 +1,91 @@
+// --out movie.mp4|.webm: ffmpeg receives every captured frame, and the video has the requested
+// frame count and size (checked with ffprobe). A failing ffmpeg fails the run with its message
+// and leaves no file. Skips when ffmpeg or ffprobe is not installed (CI installs both).
+#include "GlTestSupport.h"
+
+#include "core/ChildProcess.h"
+
+namespace toyhost::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+
+#define REQUIRE_FFMPEG()                                                                          \
+    do {                                                                                          \
+        if (!findExecutable("ffmpeg") || !findExecutable("ffprobe"))                              \
+            GTEST_SKIP() << "ffmpeg/ffprobe not installed (apt-get install ffmpeg)";              \
+    } while (0)
+
+// "frames,width,height" of the first video stream, counted by decoding.
+std::string probe(const fs::path& video) {
+    CommandResult result;
+    const std::string command = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                                "stream=nb_read_frames,width,height -of csv=p=0:nk=1 " + quoted(video) + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return "popen failed";
+    char chunk[512];
+    std::string out;
+    size_t n;
+    while ((n = fread(chunk, 1, sizeof chunk, pipe)) > 0) out.append(chunk, n);
+    pclose(pipe);
+    while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+    return out;
+}
+
+const fs::path kProbe = sourceDir() / "shadertoys/pingpong-probe";
+
+struct VideoCase {
+    const char* file;
+    const char* size;
+    int frames;
+    int every;
+    const char* expected;  // width,height,frames as ffprobe prints them
+};
+
+class VideoOutput : public ::testing::TestWithParam<VideoCase> {};
+
+TEST_P(VideoOutput, HasTheRequestedFrameCountAndSize) {
+    REQUIRE_FFMPEG();
+    const VideoCase& c = GetParam();
+    const fs::path dir = freshOutputDir(std::string("video/") + c.file);
+    auto result = runToyhost("run " + quoted(kProbe) + " --size " + c.size + " --frames " + std::to_string(c.frames) +
+                             " --capture-every " + std::to_string(c.every) + " --quiet --out " + quoted(dir / c.file));
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(probe(dir / c.file), c.expected);
+    for (const auto& entry : fs::directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename(), c.file) << "left behind: " << entry.path();
+}
+
+INSTANTIATE_TEST_SUITE_P(Containers, VideoOutput,
+                         ::testing::Values(VideoCase{"movie.mp4", "64x36", 12, 1, "64,36,12"},
+                                           VideoCase{"odd.mov", "33x17", 7, 1, "33,17,7"},
+                                           VideoCase{"every3.webm", "48x32", 10, 3, "48,32,4"}),
+                         [](const auto& info) {
+                             std::string name = info.param.file;
+                             for (char& ch : name) if (ch == '.') ch = '_';
+                             return name;
+                         });
+
+TEST(VideoOutputErrors, AFailingEncoderFailsTheRunAndLeavesNoFile) {
+    REQUIRE_FFMPEG();
+    const fs::path dir = freshOutputDir("video-error");
+    auto result = runToyhost("run " + quoted(kProbe) + " --size 32x16 --frames 3 --quiet --codec no-such-encoder --out " +
+                             quoted(dir / "bad.mp4"));
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("bad.mp4"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("no-such-encoder"), std::string::npos) << result.output;
+    EXPECT_TRUE(fs::is_empty(dir)) << "output or temporary files were left behind";
+}
+
+TEST(VideoOutputErrors, VideoOptionsNeedAVideoOutput) {
+    const fs::path dir = freshOutputDir("video-options");
+    auto result = runToyhost("run " + quoted(kProbe) + " --size 32x16 --quiet --video-quality 20 --out " +
+                             quoted(dir / "f.png"));
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("--video-quality"), std::string::npos) << result.output;
+}
+
+}  // namespace
+}  // namespace toyhost::testing
