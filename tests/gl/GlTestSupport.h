@@ -89,10 +89,10 @@ struct CommandResult {
     std::string output;  // stdout and stderr together
 };
 
-// Runs the toyhost CLI with `arguments` (already shell-quoted) and captures its output.
-inline CommandResult runToyhost(const std::string& arguments) {
+// Runs `binary` with `arguments` (already shell-quoted) and captures its output.
+inline CommandResult runCommand(const std::filesystem::path& binary, const std::string& arguments) {
     CommandResult result;
-    const std::string command = "'" + toyhostBinary().string() + "' " + arguments + " 2>&1";
+    const std::string command = "'" + binary.string() + "' " + arguments + " 2>&1";
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;
     char chunk[4096];
@@ -102,6 +102,9 @@ inline CommandResult runToyhost(const std::string& arguments) {
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
 }
+
+// Runs the toyhost CLI with `arguments` (already shell-quoted).
+inline CommandResult runToyhost(const std::string& arguments) { return runCommand(toyhostBinary(), arguments); }
 
 inline std::filesystem::path freshOutputDir(const std::string& name) {
     std::filesystem::path dir = testOutputDir() / name;

@@ -16,18 +16,7 @@ namespace {
 std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 // Runs floor_render with `arguments` (already shell-quoted), stdout and stderr together.
-CommandResult runFloor(const std::string& arguments) {
-    CommandResult result;
-    const std::string command = quoted(TOYHOST_FLOOR_BIN) + " " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return result;
-    char chunk[4096];
-    size_t n;
-    while ((n = fread(chunk, 1, sizeof chunk, pipe)) > 0) result.output.append(chunk, n);
-    const int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
+CommandResult runFloor(const std::string& arguments) { return runCommand(TOYHOST_FLOOR_BIN, arguments); }
 
 // Writes a top-first Image8 as PNG (writePng takes rows bottom first).
 void writeTopFirstPng(const std::filesystem::path& path, const Image8& image) {

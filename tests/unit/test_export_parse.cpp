@@ -14,6 +14,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "TestFolder.h"
 #include "export/LoadShadertoy.h"
 #include "export/ShadertoyExport.h"
 #include "manifest/ManifestWriter.h"
@@ -603,19 +604,7 @@ TEST(ExportCorpus, EveryPublicExportParsesWithItsPassesAndInputs) {
 // ---------------------------------------------------------------------------------------------
 // writeManifestFolder (toyhost import) and back through loadShadertoy
 
-struct TempFolder {
-    fs::path dir;
-    TempFolder() {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir = fs::temp_directory_path() /
-              ("toyhost_export_" + std::to_string(::getpid()) + "_" + test->test_suite_name() + "_" + test->name());
-        fs::remove_all(dir);
-    }
-    ~TempFolder() {
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-    }
-};
+using TempFolder = toyhost::testing::TestFolder;
 
 void expectSameChannels(const ManifestDesc& a, const ManifestDesc& b) {
     ASSERT_EQ(passIds(a), passIds(b));
@@ -671,24 +660,24 @@ TEST(ExportImport, WrittenFolderLoadsBackIdentically) {
     TempFolder temp;
     const ManifestDesc exported = parseOk(roundTripExport());
     ASSERT_EQ(passIds(exported), (std::vector<PassId>{PassId::BufferA, PassId::BufferC, PassId::Image}));
-    Status written = writeManifestFolder(exported, temp.dir / "toy", false);
+    Status written = writeManifestFolder(exported, temp.path / "toy", false);
     ASSERT_TRUE(written.ok()) << written.error().message;
 
     // The pass files hold the code byte for byte (CRLF and UTF-8 untouched).
-    EXPECT_EQ(readFile(temp.dir / "toy" / "common.glsl"), exported.commonCode);
-    EXPECT_EQ(readFile(temp.dir / "toy" / "buffer_a.glsl"), pass(exported, PassId::BufferA).code);
-    EXPECT_EQ(readFile(temp.dir / "toy" / "buffer_c.glsl"), pass(exported, PassId::BufferC).code);
-    EXPECT_EQ(readFile(temp.dir / "toy" / "image.glsl"), kImageCode);
-    EXPECT_FALSE(fs::exists(temp.dir / "toy" / "buffer_b.glsl"));
+    EXPECT_EQ(readFile(temp.path / "toy" / "common.glsl"), exported.commonCode);
+    EXPECT_EQ(readFile(temp.path / "toy" / "buffer_a.glsl"), pass(exported, PassId::BufferA).code);
+    EXPECT_EQ(readFile(temp.path / "toy" / "buffer_c.glsl"), pass(exported, PassId::BufferC).code);
+    EXPECT_EQ(readFile(temp.path / "toy" / "image.glsl"), kImageCode);
+    EXPECT_FALSE(fs::exists(temp.path / "toy" / "buffer_b.glsl"));
     EXPECT_NE(exported.commonCode.find("\r\n"), std::string::npos);
 
-    Result<ManifestDesc> loaded = loadShadertoy(temp.dir / "toy");
+    Result<ManifestDesc> loaded = loadShadertoy(temp.path / "toy");
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
     expectSameChannels(exported, *loaded);
     EXPECT_EQ(loaded->name, "Synthetic (tSt123 by tester)");
     EXPECT_EQ(loaded->commonCode, exported.commonCode);
-    EXPECT_EQ(loaded->manifestPath, temp.dir / "toy" / "manifest.json");
-    EXPECT_EQ(pass(*loaded, PassId::BufferC).source, temp.dir / "toy" / "buffer_c.glsl");
+    EXPECT_EQ(loaded->manifestPath, temp.path / "toy" / "manifest.json");
+    EXPECT_EQ(pass(*loaded, PassId::BufferC).source, temp.path / "toy" / "buffer_c.glsl");
     EXPECT_TRUE(loaded->notices.empty());
 
     // Spot checks against the export itself, so a symmetric mistake cannot hide.
@@ -723,7 +712,7 @@ TEST(ExportImport, ManifestJsonIsValidAndNamesThePassFiles) {
 
 TEST(ExportImport, RefusesToOverwriteAnExistingManifestUnlessAsked) {
     TempFolder temp;
-    const fs::path dir = temp.dir / "toy";
+    const fs::path dir = temp.path / "toy";
     ManifestDesc exported = parseOk(roundTripExport());
     ASSERT_TRUE(writeManifestFolder(exported, dir, false).ok());
     const std::string firstManifest = readFile(dir / "manifest.json");
@@ -761,7 +750,7 @@ TEST(ExportImport, EveryPublicExportRoundTripsThroughAFolder) {
         SCOPED_TRACE(file.filename().string());
         Result<ManifestDesc> exported = parseShadertoyExport(readFile(file), file);
         ASSERT_TRUE(exported.ok()) << exported.error().message;
-        const fs::path dir = temp.dir / file.stem();
+        const fs::path dir = temp.path / file.stem();
         Status written = writeManifestFolder(*exported, dir, false);
         ASSERT_TRUE(written.ok()) << written.error().message;
         Result<ManifestDesc> loaded = loadShadertoy(dir);

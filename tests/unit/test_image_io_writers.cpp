@@ -12,35 +12,14 @@
 #include <unistd.h>
 #include <vector>
 
+#include "TestFolder.h"
 #include "capture/ImageWriters.h"
 
 using namespace toyhost;
 namespace fs = std::filesystem;
 
 namespace {
-struct TempFolder {
-    fs::path path;
-    TempFolder() {
-        static int counter = 0;
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        path = fs::temp_directory_path() /
-               ("toyhost_imageio_" + std::to_string(::getpid()) + "_" + test->test_suite_name() +
-                "_" + test->name() + "_" + std::to_string(counter++));
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempFolder() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    // Every file left in the folder, recursively (to catch .partial leftovers).
-    std::vector<std::string> files() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::recursive_directory_iterator(path))
-            if (!entry.is_directory()) names.push_back(entry.path().filename().string());
-        return names;
-    }
-};
+using TempFolder = toyhost::testing::TestFolder;
 
 // Bottom-up RGBA8 where every pixel is distinct and the bottom row differs from the top row.
 std::vector<std::uint8_t> gradient8(int width, int height) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "TestFolder.h"
 #include "manifest/ManifestLoader.h"
 
 using namespace toyhost;
@@ -16,28 +17,16 @@ namespace {
 
 // A fresh folder per test holding image.glsl and buffer_a.glsl .. buffer_d.glsl; removed afterwards.
 struct ManifestFolder {
-    fs::path dir;
+    toyhost::testing::TestFolder root;
+    fs::path dir = root.path / "toy";
     ManifestFolder() {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir = fs::temp_directory_path() / ("toyhost_manifest_" + std::to_string(::getpid()) + "_" +
-                                           test->test_suite_name() + "_" + test->name()) /
-              "toy";
-        fs::remove_all(dir.parent_path());
-        fs::create_directories(dir);
         write("image.glsl", "void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0); }\n");
         for (const char* name : {"buffer_a.glsl", "buffer_b.glsl", "buffer_c.glsl", "buffer_d.glsl"})
             write(name, "void mainImage(out vec4 c, in vec2 f) { c = vec4(0.5); }\n");
         write("tex.png", "not decoded by the loader");
     }
-    ~ManifestFolder() {
-        std::error_code ec;
-        fs::remove_all(dir.parent_path(), ec);
-    }
     fs::path write(const std::string& relative, const std::string& text) const {
-        fs::path file = dir / relative;
-        fs::create_directories(file.parent_path());
-        std::ofstream(file, std::ios::binary) << text;
-        return file;
+        return root.write(fs::path("toy") / relative, text);
     }
     fs::path manifest() const { return dir / "manifest.json"; }
     Result<ManifestDesc> parse(const std::string& json) const { return parseManifest(json, manifest()); }

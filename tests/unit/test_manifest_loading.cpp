@@ -10,6 +10,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "TestFolder.h"
 #include "graph/PassGraph.h"
 #include "manifest/ManifestLoader.h"
 
@@ -20,24 +21,11 @@ namespace {
 
 // A fresh folder per test (named "toy" inside a unique parent); removed afterwards.
 struct ManifestFolder {
-    fs::path dir;
-    ManifestFolder() {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir = fs::temp_directory_path() / ("toyhost_manifest_" + std::to_string(::getpid()) + "_" +
-                                           test->test_suite_name() + "_" + test->name()) /
-              "toy";
-        fs::remove_all(dir.parent_path());
-        fs::create_directories(dir);
-    }
-    ~ManifestFolder() {
-        std::error_code ec;
-        fs::remove_all(dir.parent_path(), ec);
-    }
+    toyhost::testing::TestFolder root;
+    fs::path dir = root.path / "toy";
+    ManifestFolder() { fs::create_directories(dir); }
     fs::path write(const fs::path& relative, const std::string& text) const {
-        fs::path file = (dir / relative).lexically_normal();
-        fs::create_directories(file.parent_path());
-        std::ofstream(file, std::ios::binary) << text;
-        return file;
+        return root.write(fs::path("toy") / relative, text);
     }
     ManifestDesc parse(const std::string& json) const {
         Result<ManifestDesc> result = parseManifest(json, dir / "manifest.json");

@@ -9,6 +9,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "TestFolder.h"
 #include "capture/ImageWriters.h"
 #include "media/ImageFile.h"
 #include "media/MediaResolver.h"
@@ -18,23 +19,7 @@ using namespace toyhost;
 namespace fs = std::filesystem;
 
 namespace {
-// A fresh folder per test, removed afterwards.
-struct TempFolder {
-    fs::path path;
-    TempFolder() {
-        static int counter = 0;
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        path = fs::temp_directory_path() /
-               ("toyhost_media_" + std::to_string(::getpid()) + "_" + test->test_suite_name() +
-                "_" + test->name() + "_" + std::to_string(counter++));
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempFolder() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-};
+using TempFolder = toyhost::testing::TestFolder;
 
 // A width x height PNG whose every pixel is `value` (R=G=B=value, A=255).
 fs::path writeSolidPng(const fs::path& file, int width, int height, std::uint8_t value) {
