@@ -2,9 +2,45 @@
 
 #include <algorithm>
 #include <csignal>
+#include <ctime>
 #include <pthread.h>
+#include <system_error>
 
 namespace toyhost {
+
+namespace {
+
+// Blocks SIGPIPE on the calling thread while it lives, for the synchronous path, which writes on
+// a thread the pool does not own: a closed pipe must give EPIPE there too, not end the process.
+// A SIGPIPE raised meanwhile is consumed before the old mask comes back, so it is never delivered.
+class PipeSignalBlock {
+public:
+    PipeSignalBlock() {
+        sigemptyset(&pipe_);
+        sigaddset(&pipe_, SIGPIPE);
+        sigset_t pending;
+        sigpending(&pending);
+        wasPending_ = sigismember(&pending, SIGPIPE) == 1;
+        pthread_sigmask(SIG_BLOCK, &pipe_, &previous_);
+    }
+    ~PipeSignalBlock() {
+        sigset_t pending;
+        sigpending(&pending);
+        if (!wasPending_ && sigismember(&pending, SIGPIPE) == 1) {
+            const timespec now{};
+            sigtimedwait(&pipe_, nullptr, &now);
+        }
+        pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
+    }
+    PipeSignalBlock(const PipeSignalBlock&) = delete;
+    PipeSignalBlock& operator=(const PipeSignalBlock&) = delete;
+
+private:
+    sigset_t pipe_{}, previous_{};
+    bool wasPending_ = false;
+};
+
+}  // namespace
 
 int defaultEncoderThreads() {
     const int hardware = static_cast<int>(std::thread::hardware_concurrency());
@@ -15,7 +51,13 @@ EncoderPool::EncoderPool(FrameSink& sink, int threads, std::size_t memoryCapByte
     : sink_(sink), queue_(memoryCapBytes) {
     const int count = threads <= 0 ? 0 : (sink.ordered() ? 1 : threads);
     workers_.reserve(count);
-    for (int i = 0; i < count; ++i) workers_.emplace_back([this] { work(); });
+    // A thread that cannot be started (too many asked for, a process limit) must not escape as an
+    // exception past the ones already running (std::terminate): the pool keeps those, and with
+    // none it is synchronous. threads() says how many it got.
+    try {
+        for (int i = 0; i < count; ++i) workers_.emplace_back([this] { work(); });
+    } catch (const std::system_error&) {
+    }
 }
 
 EncoderPool::~EncoderPool() {
@@ -70,7 +112,10 @@ Result<std::vector<std::byte>> EncoderPool::acquire(std::size_t bytes) {
 Status EncoderPool::submit(CapturedFrame frame) {
     if (std::optional<Error> error = firstError()) return *error;
     if (workers_.empty()) {
-        Status written = sink_.write(frame, inlineScratch_);
+        Status written = [&] {
+            PipeSignalBlock noSigpipe;
+            return sink_.write(frame, inlineScratch_);
+        }();
         queue_.recycle(std::move(frame.pixels));
         if (!written) fail(written.error());
         return written;

@@ -24,6 +24,7 @@ int defaultEncoderThreads();
 class EncoderPool {
 public:
     // `threads` 0: synchronous. An ordered sink uses one thread whatever `threads` says (> 0).
+    // Threads the system refuses to start are done without (threads() counts those running).
     EncoderPool(FrameSink& sink, int threads, std::size_t memoryCapBytes);
     // Stops the threads; if finish() was not called (or failed) the sink's output is discarded.
     ~EncoderPool();

@@ -34,7 +34,8 @@ Status writeFileAtomically(const fs::path& path,
     }
     fs::rename(temp, path, ec);
     if (ec) {
-        fs::remove(temp, ec);
+        std::error_code ignored;  // `ec` carries the rename's reason into the message
+        fs::remove(temp, ignored);
         return Error{path.string() + ": cannot rename temporary file into place: " + ec.message()};
     }
     return okStatus();
@@ -52,6 +53,9 @@ Status writeBytesAtomically(const fs::path& path, std::span<const std::byte> byt
 }
 
 Result<std::string> readTextFile(const fs::path& path) {
+    std::error_code dirError;
+    // A folder opens like a file on Linux and then reads as "", which parsers report as empty input.
+    if (fs::is_directory(path, dirError)) return Error{path.string() + ": is a folder, not a file"};
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         std::error_code ec;

@@ -14,9 +14,17 @@ extern char** environ;
 namespace toyhost {
 namespace fs = std::filesystem;
 
+namespace {
+// access(X_OK) also holds for a searchable folder, which exec then refuses (EACCES).
+bool isExecutableFile(const fs::path& path) {
+    std::error_code ec;
+    return ::access(path.c_str(), X_OK) == 0 && fs::is_regular_file(path, ec);
+}
+}  // namespace
+
 std::optional<fs::path> findExecutable(const std::string& program) {
     if (program.find('/') != std::string::npos) {
-        if (::access(program.c_str(), X_OK) == 0) return fs::path(program);
+        if (isExecutableFile(program)) return fs::path(program);
         return std::nullopt;
     }
     const char* path = std::getenv("PATH");
@@ -27,7 +35,7 @@ std::optional<fs::path> findExecutable(const std::string& program) {
         if (end == std::string::npos) end = dirs.size();
         const std::string dir = dirs.substr(start, end - start);
         const fs::path candidate = fs::path(dir.empty() ? "." : dir) / program;
-        if (::access(candidate.c_str(), X_OK) == 0) return candidate;
+        if (isExecutableFile(candidate)) return candidate;
         start = end + 1;
     }
     return std::nullopt;

@@ -49,7 +49,8 @@ Result<PreparedRun> prepare(const RunOptions& o) {
     if (o.captureEvery < 1) return Error{"--capture-every must be at least 1"};
     if (o.mouse && o.mouseScript) return Error{"--mouse and --mouse-script cannot be combined"};
     if (o.pngLevel < 0 || o.pngLevel > 9) return Error{"--png-level must be 0..9"};
-    if (o.encoderThreads < 0) return Error{"--encoder-threads must be 0 (automatic) or more"};
+    if (o.encoderThreads < 0 || o.encoderThreads > 1024)
+        return Error{"--encoder-threads must be 0 (automatic) to 1024"};
     if (o.captureMemoryBytes == 0) return Error{"--capture-memory must be positive"};
     if (o.video.quality && (*o.video.quality < 0 || *o.video.quality > 63))
         return Error{"--video-quality must be 0..63 (a constant rate factor; lower is better)"};
