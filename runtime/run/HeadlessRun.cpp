@@ -156,6 +156,8 @@ Result<RunReport> runHeadless(const RunOptions& o, RunObserver& observer) {
 
     const auto loopStart = Clock::now();
     for (int frame = 0; frame < o.frames; ++frame) {
+        if (observer.stopRequested())
+            return Error{"interrupted after " + std::to_string(frame) + " of " + std::to_string(o.frames) + " frames"};
         const double time = clock.time(frame);
         mousePlayer.applyBeforeFrame(frame, time, mouse);
         keyPlayer.applyBeforeFrame(frame, time, keyboard);

@@ -81,6 +81,9 @@ public:
     virtual void notice(const std::string& line) = 0;
     // Called on the render thread after every frame; keep it cheap.
     virtual void progress(const RunProgress& progress) { (void)progress; }
+    // Polled before every frame; true ends the run with an "interrupted" error, cleanly (a video
+    // being encoded is discarded, image files already written stay).
+    virtual bool stopRequested() const { return false; }
 };
 
 Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer);

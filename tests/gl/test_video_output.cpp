@@ -89,3 +89,24 @@ TEST(VideoOutputErrors, VideoOptionsNeedAVideoOutput) {
 
 }  // namespace
 }  // namespace toyhost::testing
+
+namespace toyhost::testing {
+namespace {
+
+// Ctrl-C (SIGINT) stops the run before its next frame: exit 130, the video being encoded is
+// discarded with its temporary files, and nothing is left in the folder.
+TEST(VideoInterrupt, SigintDiscardsThePartialVideo) {
+    if (!findExecutable("ffmpeg") || !findExecutable("timeout")) GTEST_SKIP() << "needs ffmpeg and timeout";
+    const fs::path dir = freshOutputDir("video/interrupt");
+    // --foreground: the signal goes to toyhost only (ffmpeg must not see it first).
+    auto run = runCommand("timeout", "--foreground --preserve-status -s INT 2 '" + toyhostBinary().string() + "' run '" +
+                                         (sourceDir() / "shadertoys/pingpong-probe").string() +
+                                         "' --size 64x32 --frames 100000000 --finish-each-frame --quiet --out '" +
+                                         (dir / "long.mp4").string() + "'");
+    EXPECT_EQ(run.exitCode, 130) << run.output;
+    EXPECT_NE(run.output.find("interrupted after"), std::string::npos) << run.output;
+    EXPECT_TRUE(fs::is_empty(dir)) << "files were left behind";
+}
+
+}  // namespace
+}  // namespace toyhost::testing

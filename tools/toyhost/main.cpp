@@ -21,6 +21,14 @@ namespace {
 
 using namespace toyhost;
 
+// Set by SIGINT/SIGTERM: the run stops before its next frame and cleans up (a second signal
+// kills the process at once).
+volatile std::sig_atomic_t stopSignal = 0;
+extern "C" void onStopSignal(int signal) {
+    stopSignal = signal;
+    std::signal(signal, SIG_DFL);
+}
+
 // Everything goes to stderr: stdout may be carrying raw frames (--out -).
 class ConsoleObserver final : public RunObserver {
 public:
@@ -30,6 +38,7 @@ public:
         shown_ = false;
         std::cerr << line << "\n";
     }
+    bool stopRequested() const override { return stopSignal != 0; }
     void progress(const RunProgress& p) override {
         if (!show_) return;
         // At most five updates a second: a terminal write per frame would cost more than a fast
@@ -224,12 +233,14 @@ int main(int argc, char** argv) {
         return usage("--out -: stdout is a terminal; redirect the raw frames to a file or a pipe");
     // A closed stdout (`--out - | head -c ...`) must end the run with a message, not kill it.
     std::signal(SIGPIPE, SIG_IGN);
+    std::signal(SIGINT, onStopSignal);
+    std::signal(SIGTERM, onStopSignal);
 
     ConsoleObserver observer(quiet);
     Result<RunReport> report = runHeadless(options, observer);
     if (!report) {
         std::cerr << "toyhost: " << report.error().message << "\n";
-        return 1;
+        return stopSignal ? 128 + stopSignal : 1;  // the shell's convention for a signal
     }
     const double fps = report->seconds > 0 ? report->framesRendered / report->seconds : 0;
     std::fprintf(stderr, "toyhost: %s: %d frames at %dx%d in %.3f s (%.1f frames/s, first frame after %.0f ms) on %s\n",
