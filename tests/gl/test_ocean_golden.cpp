@@ -1,7 +1,8 @@
 // afl_ext's ocean (MdXyzX), verbatim from ../shared, against checked-in golden frames at
-// 320x180. Tolerance: PSNR >= 45 dB over RGB and mean absolute error <= 0.5 levels (llvmpipe is
+// 320x180. Tolerance: PSNR >= 40 dB over RGB and mean absolute error <= 1 level (llvmpipe is
 // deterministic on one machine; the margin absorbs LLVM code generation differences between
-// CPUs). On failure the actual frame and an 8x diff are written to
+// CPUs, such as fused multiply-adds, which move a few wave-crest pixels. A frame 0.05 s off
+// scores about 20 dB). On failure the actual frame and an 8x diff are written to
 // <build>/test-output/golden/. Refresh on purpose with TOYHOST_UPDATE_GOLDENS=1.
 #include "GlTestSupport.h"
 #include "ImageCompare.h"
@@ -44,13 +45,13 @@ TEST_P(OceanGolden, MatchesCheckedInFrame) {
     const double psnr = psnrRgb(*expected, *actual);
     const double mae = meanAbsError(*expected, *actual);
     std::printf("%s: PSNR %.2f dB, mean abs error %.4f, max %d\n", c.name, psnr, mae, maxAbsError(*expected, *actual));
-    if (psnr < 45.0 || mae > 0.5) {
+    if (psnr < 40.0 || mae > 1.0) {
         Image8 diff = makeDiffImage(*expected, *actual, 8);
         std::vector<std::uint8_t> bottomUp = flipRows<std::uint8_t>(diff.rgba, diff.width, diff.height);
         (void)writePng(dir / (std::string(c.name) + ".diff.png"), diff.width, diff.height, bottomUp);
         fs::copy_file(golden, dir / (std::string(c.name) + ".expected.png"), fs::copy_options::overwrite_existing);
-        ADD_FAILURE() << c.name << ": PSNR " << psnr << " dB (need >= 45), mean abs error " << mae
-                      << " (need <= 0.5); actual, expected and diff are in " << dir;
+        ADD_FAILURE() << c.name << ": PSNR " << psnr << " dB (need >= 40), mean abs error " << mae
+                      << " (need <= 1); actual, expected and diff are in " << dir;
     }
 }
 
