@@ -1,5 +1,5 @@
 // toyhost: the command-line interface. Parses arguments, runs the job, prints what the library
-// reports and chooses the exit code (0 success, 1 run failure, 2 bad usage or input).
+// reports and chooses the exit code (0 success, 1 run failure, 2 bad usage, 128+signal when interrupted).
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <csignal>
