@@ -114,6 +114,17 @@ std::string outputVerdict(const ProbeResult& r) {
     return problems.empty() ? "ok" : joined(problems);
 }
 
+// A first explanation for a failure nobody has looked at yet (known-issues entries replace it).
+std::string likelyReason(const ProbeResult& r) {
+    if (!r.nonFiniteBuffers.empty())
+        return "NaN/Inf in a buffer: a division by zero or similar that the site's GPU may produce as well";
+    if (r.uniformImage)
+        return "one colour through iTime 5 s with the mouse dragged: it may wait for keys" +
+               std::string(r.standIns.empty() ? "" : ", depend on the real stock textures (stand-ins used)") +
+               " or need more time";
+    return "";
+}
+
 std::string markdown(const std::vector<ProbeResult>& results, const ProbeSettings& s, const fs::path& dir,
                      const std::map<std::string, std::string>& known) {
     const auto passed = std::count_if(results.begin(), results.end(), [](const ProbeResult& r) { return r.passed(); });
@@ -131,6 +142,7 @@ std::string markdown(const std::vector<ProbeResult>& results, const ProbeSetting
     for (const ProbeResult& r : results) {
         std::string notes = r.error;
         if (auto it = known.find(r.id); it != known.end()) notes = it->second + (notes.empty() ? "" : " — " + notes);
+        else if (!r.passed() && notes.empty()) notes = likelyReason(r);
         char ms[32];
         std::snprintf(ms, sizeof ms, "%.1f", r.msPerFrame);
         md << "| " << r.id << " | " << cell(r.name) << " | " << r.passes << " | " << (r.compiled ? "yes" : "**no**") << " | "
