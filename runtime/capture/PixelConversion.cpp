@@ -8,10 +8,7 @@ std::span<const std::uint8_t> rgba8BottomUp(const CapturedFrame& frame, std::vec
     if (frame.format == PixelFormat::Rgba8) return frame.rgba8();
     const std::span<const float> floats = frame.rgba32f();
     scratch.resize(floats.size());
-    for (std::size_t i = 0; i < floats.size(); ++i) {
-        const float v = !(floats[i] > 0.0f) ? 0.0f : (floats[i] > 1.0f ? 1.0f : floats[i]);
-        scratch[i] = static_cast<std::uint8_t>(v * 255.0f + 0.5f);
-    }
+    for (std::size_t i = 0; i < floats.size(); ++i) scratch[i] = unorm8(floats[i]);
     return scratch;
 }
 

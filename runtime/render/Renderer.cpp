@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "capture/PixelConversion.h"
 #include "gl/GlContext.h"
 #include "gl/GlObjects.h"
 #include "gl/ShaderProgram.h"
@@ -258,10 +259,7 @@ void Renderer::readImageRgba8(std::vector<std::uint8_t>& out) const {
         // Convert as GL does when writing float colour to a UNORM8 target.
         std::vector<float> floats(out.size());
         glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, floats.data());
-        for (size_t i = 0; i < floats.size(); ++i) {
-            float v = floats[i] < 0 ? 0 : (floats[i] > 1 ? 1 : floats[i]);
-            out[i] = static_cast<std::uint8_t>(v * 255.0f + 0.5f);
-        }
+        for (size_t i = 0; i < floats.size(); ++i) out[i] = unorm8(floats[i]);
     } else {
         glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
     }
