@@ -246,8 +246,11 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "toyhost: %s: %d frames at %dx%d in %.3f s (%.1f frames/s, first frame after %.0f ms) on %s\n",
                  report->manifestName.c_str(), report->framesRendered, options.width, options.height,
                  report->seconds, fps, report->firstFrameSeconds * 1000.0, report->context.c_str());
-    if (!report->files.empty())
-        std::fprintf(stderr, "toyhost: wrote %zu file(s) (%s): %s .. %s\n", report->files.size(),
+    if (report->files.size() == 1)
+        std::fprintf(stderr, "toyhost: wrote %s (%s)\n", report->files.front().c_str(),
+                     formatBytes(report->bytesWritten).c_str());
+    else if (!report->files.empty())
+        std::fprintf(stderr, "toyhost: wrote %zu files (%s): %s .. %s\n", report->files.size(),
                      formatBytes(report->bytesWritten).c_str(), report->files.front().c_str(),
                      report->files.back().c_str());
     else if (options.outPattern && *options.outPattern == "-")
