@@ -20,7 +20,12 @@ using nlohmann::json;
 // still reaches a time written as that same fraction.
 constexpr double kTimeTolerance = 1e-6;
 
-std::string inQuotes(std::string_view s) { return "\"" + std::string(s) + "\""; }
+std::string inQuotes(std::string_view s) {
+    std::string quoted(1, '"');  // appended, not "\"" + s: GCC 12 warns falsely (-Wrestrict)
+    quoted += s;
+    quoted += '"';
+    return quoted;
+}
 
 std::string describe(const json& value) {
     if (value.is_number_integer() || value.is_number_float()) return value.dump();
