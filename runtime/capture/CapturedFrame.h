@@ -1,5 +1,5 @@
-// CapturedFrame: one read-back frame on its way from the GL thread to an encoder, and the two
-// pixel layouts a capture can have. Plain data; no GL needed.
+// CapturedFrame: one read-back frame on its way from the GL thread to an encoder (its pixel
+// layout is image/Image.h's PixelFormat). Plain data; no GL needed.
 #pragma once
 
 #include <cstddef>
@@ -7,17 +7,9 @@
 #include <span>
 #include <vector>
 
+#include "image/Image.h"
+
 namespace toyhost {
-
-// What glReadPixels returned: RGBA8 from the Image target, RGBA32F from buffers (and from the
-// Image target when it renders in float for EXR capture).
-enum class PixelFormat { Rgba8, Rgba32f };
-
-inline std::size_t bytesPerPixel(PixelFormat format) { return format == PixelFormat::Rgba8 ? 4 : 16; }
-
-inline std::size_t frameBytes(int width, int height, PixelFormat format) {
-    return static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * bytesPerPixel(format);
-}
 
 struct CapturedFrame {
     int frame = 0;                 // iFrame of the captured frame

@@ -4,6 +4,7 @@
 #include <csignal>
 #include <ctime>
 #include <pthread.h>
+#include <exception>
 #include <system_error>
 
 namespace toyhost {
@@ -63,6 +64,9 @@ EncoderPool::EncoderPool(FrameSink& sink, int threads, std::size_t memoryCapByte
 EncoderPool::~EncoderPool() {
     if (!finished_) {
         queue_.abort();
+        // A thread blocked inside the sink (a reader that stopped reading, a stalled ffmpeg) is
+        // released first, so joining it cannot hang the process.
+        sink_.cancel();
         stop();
         sink_.discard();
     }
@@ -78,12 +82,26 @@ void EncoderPool::work() {
 
     EncodeScratch scratch;
     while (std::optional<CapturedFrame> frame = queue_.pop()) {
-        Status written = sink_.write(*frame, scratch);
+        Status written = writeGuarded(*frame, scratch);
         queue_.recycle(std::move(frame->pixels));
         if (!written) {
             fail(written.error());
             return;
         }
+    }
+}
+
+Status EncoderPool::writeGuarded(const CapturedFrame& frame, EncodeScratch& scratch) {
+    // An exception (bad_alloc, a codec library's own) must become the run's error: escaping a
+    // thread it would call std::terminate and leave ffmpeg and temporary files behind.
+    try {
+        return sink_.write(frame, scratch);
+    } catch (const std::exception& e) {
+        return Error(std::string("capture: encoding frame ") + std::to_string(frame.frame) + " failed: " + e.what(),
+                     "capture.exception");
+    } catch (...) {
+        return Error("capture: encoding frame " + std::to_string(frame.frame) + " failed with an unknown exception",
+                     "capture.exception");
     }
 }
 
@@ -104,7 +122,7 @@ Result<std::vector<std::byte>> EncoderPool::acquire(std::size_t bytes) {
     std::optional<std::vector<std::byte>> buffer = queue_.acquire(bytes);
     if (!buffer) {
         if (std::optional<Error> error = firstError()) return *error;
-        return Error{"capture: the encoder queue was stopped"};
+        return Error("capture: the encoder queue was stopped", "capture.stopped");
     }
     return std::move(*buffer);
 }
@@ -114,7 +132,7 @@ Status EncoderPool::submit(CapturedFrame frame) {
     if (workers_.empty()) {
         Status written = [&] {
             PipeSignalBlock noSigpipe;
-            return sink_.write(frame, inlineScratch_);
+            return writeGuarded(frame, inlineScratch_);
         }();
         queue_.recycle(std::move(frame.pixels));
         if (!written) fail(written.error());

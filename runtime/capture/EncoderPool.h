@@ -45,6 +45,7 @@ public:
 
 private:
     void work();
+    Status writeGuarded(const CapturedFrame& frame, EncodeScratch& scratch);
     void fail(Error error);
     std::optional<Error> firstError() const;
     void stop();

@@ -2,9 +2,8 @@
 
 #include <filesystem>
 
-#include "capture/ImageWriters.h"
-#include "capture/PixelConversion.h"
-#include "core/FileDescriptor.h"
+#include "capture/FrameBytes.h"
+#include "image/ImageWriters.h"
 
 namespace toyhost {
 
@@ -13,10 +12,11 @@ Status ImageSequenceSink::write(const CapturedFrame& frame, EncodeScratch& scrat
     Status written = okStatus();
     if (pattern_.format() == OutputFormat::Exr) {
         if (frame.format != PixelFormat::Rgba32f)
-            return Error{path.string() + ": EXR capture needs a float readback"};
-        written = writeExr(path, frame.width, frame.height, frame.rgba32f());
+            return fileError(path.string(), "EXR capture needs a float readback", "capture.format");
+        written = writeExr(path, frame.width, frame.height, frame.rgba32f(), &scratch.image);
     } else {
-        written = writePng(path, frame.width, frame.height, rgba8BottomUp(frame, scratch.bytes), pngLevel_);
+        written = writePng(path, frame.width, frame.height, rgba8BottomUp(frame, scratch.bytes), pngLevel_,
+                           &scratch.image);
     }
     if (!written) return written;
     std::error_code ec;
@@ -28,7 +28,7 @@ Status ImageSequenceSink::write(const CapturedFrame& frame, EncodeScratch& scrat
 Status RawStreamSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
     const std::span<const std::uint8_t> topFirst =
         rowsTopFirst(rgba8BottomUp(frame, scratch.bytes), frame.width, frame.height, scratch.rows);
-    Status written = writeAll(fd_, std::as_bytes(topFirst), name_);
+    Status written = writeAll(fd_, std::as_bytes(topFirst), name_, &cancel_);
     if (!written) return written;
     addBytesWritten(topFirst.size());
     return okStatus();

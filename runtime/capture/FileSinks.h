@@ -5,6 +5,7 @@
 
 #include "capture/FrameSink.h"
 #include "capture/OutputPattern.h"
+#include "core/FileDescriptor.h"
 
 namespace toyhost {
 
@@ -28,10 +29,12 @@ public:
     RawStreamSink(int fd, std::string name) : fd_(fd), name_(std::move(name)) {}
     bool ordered() const override { return true; }
     Status write(const CapturedFrame& frame, EncodeScratch& scratch) override;
+    void cancel() override { cancel_.cancel(); }
 
 private:
     int fd_;
     std::string name_;
+    CancelSignal cancel_;
 };
 
 }  // namespace toyhost

@@ -28,7 +28,9 @@ std::optional<std::vector<std::byte>> FrameQueue::acquire(std::size_t bytes) {
             lock.unlock();
             return std::vector<std::byte>(bytes);
         }
+        ++blockedProducers_;
         bufferFreed_.wait(lock);
+        --blockedProducers_;
     }
 }
 
@@ -43,7 +45,9 @@ void FrameQueue::push(CapturedFrame frame) {
 
 std::optional<CapturedFrame> FrameQueue::pop() {
     std::unique_lock lock(mutex_);
+    ++blockedConsumers_;
     frameQueued_.wait(lock, [&] { return aborted_ || closed_ || !frames_.empty(); });
+    --blockedConsumers_;
     if (aborted_ || frames_.empty()) return std::nullopt;
     CapturedFrame frame = std::move(frames_.front());
     frames_.pop_front();
@@ -84,6 +88,16 @@ void FrameQueue::abort() {
 std::size_t FrameQueue::allocatedBytes() const {
     std::lock_guard lock(mutex_);
     return allocated_;
+}
+
+std::size_t FrameQueue::blockedProducers() const {
+    std::lock_guard lock(mutex_);
+    return blockedProducers_;
+}
+
+std::size_t FrameQueue::blockedConsumers() const {
+    std::lock_guard lock(mutex_);
+    return blockedConsumers_;
 }
 
 std::size_t FrameQueue::peakAllocatedBytes() const {

@@ -42,6 +42,10 @@ public:
     // that ever were: both stay <= capBytes() unless a single frame is larger than the cap.
     std::size_t allocatedBytes() const;
     std::size_t peakAllocatedBytes() const;
+    // Threads blocked right now in acquire() (waiting for memory) and in pop() (waiting for a
+    // frame): lets tests wait for "blocked" instead of sleeping and hoping.
+    std::size_t blockedProducers() const;
+    std::size_t blockedConsumers() const;
 
 private:
     const std::size_t cap_;
@@ -52,6 +56,8 @@ private:
     std::vector<std::vector<std::byte>> pool_;
     std::size_t allocated_ = 0;
     std::size_t peak_ = 0;
+    std::size_t blockedProducers_ = 0;
+    std::size_t blockedConsumers_ = 0;
     bool closed_ = false;
     bool aborted_ = false;
 };

@@ -9,14 +9,17 @@
 
 #include "capture/CapturedFrame.h"
 #include "core/Result.h"
+#include "image/ImageWriters.h"
 
 namespace toyhost {
 
-// Per-thread working memory for conversions (float to 8 bit, row flips), kept between frames so
-// that encoding allocates nothing once the first frame has been written.
+// Per-thread working memory for conversions (float to 8 bit, row flips, PNG row tables, EXR
+// rows), kept between frames so that encoding allocates no pixel-sized buffer once the first frame
+// has been written. (File names and the codec libraries' own state are still made per file.)
 struct EncodeScratch {
     std::vector<std::uint8_t> bytes;
     std::vector<std::uint8_t> rows;
+    ImageScratch image;
 };
 
 class FrameSink {
@@ -32,6 +35,10 @@ public:
     virtual Status close() { return okStatus(); }
     // After a failure: removes whatever output is incomplete. Files already complete are kept.
     virtual void discard() {}
+    // Called from another thread to make a write() that is blocked (a reader that stopped
+    // reading, a stalled encoder process) return soon with an error. Afterwards the sink is only
+    // discarded.
+    virtual void cancel() {}
 
     // Bytes written so far; read from any thread (progress display).
     std::uint64_t bytesWritten() const { return bytesWritten_.load(std::memory_order_relaxed); }

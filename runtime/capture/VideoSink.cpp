@@ -5,7 +5,7 @@
 #include <sstream>
 #include <sys/stat.h>
 
-#include "capture/PixelConversion.h"
+#include "capture/FrameBytes.h"
 #include "core/AtomicFile.h"
 
 namespace toyhost {
@@ -33,7 +33,14 @@ std::string logTail(const fs::path& log) {
     std::string tail = *text;
     while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
     if (tail.size() > 1500) tail = "..." + tail.substr(tail.size() - 1500);
-    return tail;
+    // One diagnostic is one line.
+    std::string joined;
+    for (char c : tail) {
+        if (c == '\r') continue;
+        if (c == '\n') joined += " | ";
+        else joined += c;
+    }
+    return joined;
 }
 
 }  // namespace
@@ -75,7 +82,7 @@ Result<std::unique_ptr<VideoSink>> VideoSink::start(const fs::path& path, int wi
     std::error_code ec;
     if (path.has_parent_path()) {
         fs::create_directories(path.parent_path(), ec);
-        if (ec) return Error{path.parent_path().string() + ": cannot create folder: " + ec.message()};
+        if (ec) return fileError(path.parent_path().string(), "cannot create folder: " + ec.message(), "io.write");
     }
     sink->temp_ = temporarySibling(path);
     sink->log_ = temporarySibling(path.string() + ".ffmpeg-log");
@@ -83,7 +90,7 @@ Result<std::unique_ptr<VideoSink>> VideoSink::start(const fs::path& path, int wi
     Result<ChildProcess> ffmpeg = ChildProcess::spawn(ffmpegArguments(request), sink->log_);
     if (!ffmpeg) {
         fs::remove(sink->log_, ec);
-        return withContext(path.string(), ffmpeg.error());
+        return inFile(path.string(), ffmpeg.error());
     }
     sink->ffmpeg_.emplace(std::move(*ffmpeg));
     return sink;
@@ -94,9 +101,10 @@ VideoSink::~VideoSink() {
 }
 
 Error VideoSink::ffmpegFailed(const std::string& what) const {
-    std::string message = path_.string() + ": " + what;
-    if (std::string tail = logTail(log_); !tail.empty()) message += "\nffmpeg said:\n" + tail;
-    return Error{message};
+    std::string message = what;
+    if (std::string tail = logTail(log_); !tail.empty()) message += "; ffmpeg said: " + tail;
+    return fileError(path_.string(), message,
+                     message.find("No space left") != std::string::npos ? "io.no-space" : "capture.ffmpeg");
 }
 
 Status VideoSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
@@ -120,16 +128,20 @@ Status VideoSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
 
 Status VideoSink::close() {
     Result<int> exit = ffmpeg_->closeAndWait();
-    if (!exit) return ffmpegFailed(exit.error().message);
+    if (!exit) return ffmpegFailed(exit.error().first().message);
     if (*exit != 0) return ffmpegFailed("ffmpeg failed (exit code " + std::to_string(*exit) + ")");
     std::error_code ec;
     fs::rename(temp_, path_, ec);
-    if (ec) return Error{path_.string() + ": cannot rename the finished video into place: " + ec.message()};
+    if (ec) return fileError(path_.string(), "cannot rename the finished video into place: " + ec.message(), "io.write");
     closed_ = true;
     const std::uintmax_t size = fs::file_size(path_, ec);
     if (!ec && size > bytesWritten()) addBytesWritten(size - bytesWritten());
     fs::remove(log_, ec);
     return okStatus();
+}
+
+void VideoSink::cancel() {
+    if (ffmpeg_) ffmpeg_->killFromAnyThread();
 }
 
 void VideoSink::discard() {

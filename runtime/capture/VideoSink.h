@@ -45,6 +45,7 @@ public:
     Status write(const CapturedFrame& frame, EncodeScratch& scratch) override;
     Status close() override;
     void discard() override;
+    void cancel() override;
 
 private:
     VideoSink() = default;

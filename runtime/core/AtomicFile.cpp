@@ -4,9 +4,13 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <sstream>
+#include <algorithm>
 #include <string>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include "core/FileDescriptor.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -15,13 +19,23 @@ fs::path temporarySibling(const fs::path& path) {
     static std::atomic<unsigned> counter{0};
     // Starts with a dot and ends in .partial so a glob for the final pattern never matches it.
     // Built by appending: GCC 12 reports a false -Wrestrict for "." + std::string here.
-    std::string name(".");
-    name += path.filename().string();
+    std::string suffix;
     for (const std::string& part : {std::to_string(::getpid()), std::to_string(counter++)}) {
-        name += '.';
-        name += part;
+        suffix += '.';
+        suffix += part;
     }
-    name += ".partial";
+    suffix += ".partial";
+    std::string stem = path.filename().string();
+    // File names are limited to 255 bytes (NAME_MAX); a long legal output name keeps its first
+    // characters and gets a hash of the whole name, so two long names still differ.
+    constexpr std::size_t kNameMax = 255;
+    if (1 + stem.size() + suffix.size() > kNameMax) {
+        const std::string hash = std::to_string(std::hash<std::string>{}(stem));
+        stem = stem.substr(0, kNameMax - 1 - suffix.size() - hash.size() - 1) + "~" + hash;
+    }
+    std::string name(".");
+    name += stem;
+    name += suffix;
     return path.parent_path() / name;
 }
 
@@ -30,7 +44,7 @@ Status writeFileAtomically(const fs::path& path,
     std::error_code ec;
     if (path.has_parent_path()) {
         fs::create_directories(path.parent_path(), ec);
-        if (ec) return Error{path.parent_path().string() + ": cannot create folder: " + ec.message()};
+        if (ec) return fileError(path.parent_path().string(), "cannot create folder: " + ec.message(), "io.write");
     }
     const fs::path temp = temporarySibling(path);
     Status written = write(temp);
@@ -42,7 +56,7 @@ Status writeFileAtomically(const fs::path& path,
     if (ec) {
         std::error_code ignored;  // `ec` carries the rename's reason into the message
         fs::remove(temp, ignored);
-        return Error{path.string() + ": cannot rename temporary file into place: " + ec.message()};
+        return fileError(path.string(), "cannot rename the temporary file into place: " + ec.message(), "io.write");
     }
     return okStatus();
 }
@@ -50,27 +64,57 @@ Status writeFileAtomically(const fs::path& path,
 Status writeBytesAtomically(const fs::path& path, std::span<const std::byte> bytes) {
     return writeFileAtomically(path, [&](const fs::path& temp) -> Status {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) return Error{path.string() + ": cannot open for writing: " + std::strerror(errno)};
+        if (!out) return fileError(path.string(), std::string("cannot open for writing: ") + std::strerror(errno), "io.write");
         out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
         out.close();
-        if (!out) return Error{path.string() + ": write failed: " + std::strerror(errno)};
+        if (!out)
+            return fileError(path.string(), std::string("write failed: ") + std::strerror(errno),
+                             errno == ENOSPC ? "io.no-space" : "io.write");
         return okStatus();
     });
 }
 
-Result<std::string> readTextFile(const fs::path& path) {
-    std::error_code dirError;
-    // A folder opens like a file on Linux and then reads as "", which parsers report as empty input.
-    if (fs::is_directory(path, dirError)) return Error{path.string() + ": is a folder, not a file"};
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        std::error_code ec;
-        if (!fs::exists(path, ec)) return Error{path.string() + ": file not found"};
-        return Error{path.string() + ": cannot open: " + std::strerror(errno)};
+Result<std::string> readTextFile(const fs::path& path, std::size_t limitBytes) {
+    const std::string name = path.string();
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) {
+        const int cause = errno;
+        if (cause == ENOENT) return fileError(name, "file not found", "io.not-found");
+        if (cause == ELOOP) return fileError(name, "too many levels of symbolic links (a link loop)", "io.read");
+        return fileError(name, std::string("cannot read: ") + std::strerror(cause), "io.read");
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    // A folder opens like a file on Linux and reads as ""; a device or FIFO may never end.
+    if (S_ISDIR(info.st_mode)) return fileError(name, "is a folder, not a file", "io.not-a-file");
+    if (!S_ISREG(info.st_mode)) return fileError(name, "is not a regular file", "io.not-a-file");
+    if (static_cast<std::uintmax_t>(info.st_size) > limitBytes)
+        return fileError(name,
+                         "is " + std::to_string(info.st_size) + " bytes, more than the limit of " +
+                             std::to_string(limitBytes) + " bytes",
+                         "io.too-large");
+    FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    if (!fd) return fileError(name, std::string("cannot open: ") + std::strerror(errno), "io.read");
+    std::string text;
+    text.resize(static_cast<std::size_t>(info.st_size));
+    std::size_t done = 0;
+    // Read until end of file, not just st_size bytes: the file may grow while it is read; it must
+    // still stay under the limit.
+    for (;;) {
+        if (done == text.size()) {
+            if (text.size() >= limitBytes + 1) break;
+            text.resize(std::min(limitBytes + 1, std::max<std::size_t>(4096, text.size() * 2)));
+        }
+        const ssize_t n = ::read(fd.get(), text.data() + done, text.size() - done);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return fileError(name, std::string("read failed: ") + std::strerror(errno), "io.read");
+        }
+        if (n == 0) break;
+        done += static_cast<std::size_t>(n);
+    }
+    if (done > limitBytes)
+        return fileError(name, "is more than the limit of " + std::to_string(limitBytes) + " bytes", "io.too-large");
+    text.resize(done);
+    return text;
 }
 
 }  // namespace toyhost

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <span>
+#include <string>
 
 #include "core/Result.h"
 
@@ -16,7 +17,8 @@ namespace toyhost {
 Status writeFileAtomically(const std::filesystem::path& path,
                            const std::function<Status(const std::filesystem::path&)>& write);
 
-// A unique hidden name beside `path` (".name.PID.N.partial") for output that is renamed into
+// A unique hidden name beside `path` (".name.PID.N.partial"; a name too long for that gets a
+// shortened form with a hash, so any legal output name works) for output that is renamed into
 // place when complete, by writers that cannot use writeFileAtomically (a file an ffmpeg process
 // writes over a whole run).
 std::filesystem::path temporarySibling(const std::filesystem::path& path);
@@ -24,7 +26,12 @@ std::filesystem::path temporarySibling(const std::filesystem::path& path);
 // Convenience for in-memory bytes.
 Status writeBytesAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
 
-// Reads a whole text file; the error names the path.
-Result<std::string> readTextFile(const std::filesystem::path& path);
+// The most readTextFile reads unless told otherwise: manifests, exports, scripts and shader
+// sources are far smaller; a larger file is refused instead of filling memory.
+inline constexpr std::size_t kDefaultReadLimitBytes = std::size_t(64) << 20;
+
+// Reads a whole regular file (a folder, a device such as /dev/zero or a FIFO is refused, so is a
+// file over `limitBytes`); errors name the path and the cause.
+Result<std::string> readTextFile(const std::filesystem::path& path, std::size_t limitBytes = kDefaultReadLimitBytes);
 
 }  // namespace toyhost

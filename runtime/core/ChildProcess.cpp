@@ -6,6 +6,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -42,17 +43,17 @@ std::optional<fs::path> findExecutable(const std::string& program) {
 }
 
 Result<ChildProcess> ChildProcess::spawn(const std::vector<std::string>& argv, const fs::path& logFile) {
-    if (argv.empty()) return Error{"no program to run"};
+    if (argv.empty()) return Error("no program to run", "process");
     const std::string name = argv[0];
     std::optional<fs::path> program = findExecutable(name);
-    if (!program) return Error{name + ": program not found in PATH"};
+    if (!program) return Error(name + ": program not found in PATH", "process");
 
     // Both ends close on exec; the child gets the read end as its stdin through dup2 below.
     int ends[2];
-    if (::pipe2(ends, O_CLOEXEC) != 0) return Error{name + ": cannot create a pipe: " + std::strerror(errno)};
+    if (::pipe2(ends, O_CLOEXEC) != 0) return Error(name + ": cannot create a pipe: " + std::strerror(errno), "process");
     FileDescriptor readEnd(ends[0]), writeEnd(ends[1]);
     FileDescriptor log(::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
-    if (!log) return Error{logFile.string() + ": cannot create: " + std::strerror(errno)};
+    if (!log) return Error(logFile.string() + ": cannot create: " + std::strerror(errno), "process");
 
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
@@ -78,22 +79,27 @@ Result<ChildProcess> ChildProcess::spawn(const std::vector<std::string>& argv, c
     const int spawned = ::posix_spawn(&pid, program->c_str(), &actions, &attributes, args.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     posix_spawnattr_destroy(&attributes);
-    if (spawned != 0) return Error{name + ": cannot start: " + std::strerror(spawned)};
+    if (spawned != 0) return Error(name + ": cannot start: " + std::strerror(spawned), "process");
 
     ChildProcess child;
     child.pid_ = pid;
+    child.pidfd_ = FileDescriptor(static_cast<int>(::syscall(SYS_pidfd_open, pid, 0)));
     child.input_ = std::move(writeEnd);
     child.name_ = name;
     return child;
 }
 
 ChildProcess::ChildProcess(ChildProcess&& other) noexcept
-    : pid_(std::exchange(other.pid_, -1)), input_(std::move(other.input_)), name_(std::move(other.name_)) {}
+    : pid_(std::exchange(other.pid_, -1)),
+      pidfd_(std::move(other.pidfd_)),
+      input_(std::move(other.input_)),
+      name_(std::move(other.name_)) {}
 
 ChildProcess& ChildProcess::operator=(ChildProcess&& other) noexcept {
     if (this != &other) {
         kill();
         pid_ = std::exchange(other.pid_, -1);
+        pidfd_ = std::move(other.pidfd_);
         input_ = std::move(other.input_);
         name_ = std::move(other.name_);
     }
@@ -103,21 +109,25 @@ ChildProcess& ChildProcess::operator=(ChildProcess&& other) noexcept {
 ChildProcess::~ChildProcess() { kill(); }
 
 Status ChildProcess::write(std::span<const std::byte> bytes) {
-    if (!input_) return Error{name_ + ": its input is already closed"};
+    if (!input_) return Error(name_ + ": its input is already closed", "process");
     return writeAll(input_.get(), bytes, name_ + "'s input");
 }
 
 Result<int> ChildProcess::closeAndWait() {
     input_.reset();
-    if (pid_ < 0) return Error{name_ + ": not running"};
+    if (pid_ < 0) return Error(name_ + ": not running", "process");
     int status = 0;
     pid_t waited;
     do waited = ::waitpid(pid_, &status, 0);
     while (waited < 0 && errno == EINTR);
     pid_ = -1;
-    if (waited < 0) return Error{name_ + ": waitpid failed: " + std::strerror(errno)};
-    if (WIFSIGNALED(status)) return Error{name_ + ": killed by signal " + std::to_string(WTERMSIG(status))};
+    if (waited < 0) return Error(name_ + ": waitpid failed: " + std::strerror(errno), "process");
+    if (WIFSIGNALED(status)) return Error(name_ + ": killed by signal " + std::to_string(WTERMSIG(status)), "process");
     return WEXITSTATUS(status);
+}
+
+void ChildProcess::killFromAnyThread() const {
+    if (pidfd_) ::syscall(SYS_pidfd_send_signal, pidfd_.get(), SIGKILL, nullptr, 0);
 }
 
 void ChildProcess::kill() {

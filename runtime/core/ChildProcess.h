@@ -35,12 +35,17 @@ public:
     Result<int> closeAndWait();
     // Kills the child (SIGKILL) and reaps it; a no-op once it was waited for.
     void kill();
+    // Sends SIGKILL without reaping or touching the pipe: safe to call from another thread while
+    // this one writes to the child or waits for it (both then return). Uses a pidfd, so it can
+    // never hit another process that reused the pid.
+    void killFromAnyThread() const;
 
     const std::string& name() const { return name_; }
 
 private:
     ChildProcess() = default;
     pid_t pid_ = -1;
+    FileDescriptor pidfd_;  // refers to this child for as long as the object lives
     FileDescriptor input_;
     std::string name_;
 };

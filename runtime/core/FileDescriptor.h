@@ -36,8 +36,25 @@ private:
     int fd_ = -1;
 };
 
+// A one-way "stop now" flag that another thread can wait on with poll(): cancel() wakes every
+// writeAll() waiting on a pipe that nobody reads, so a stalled reader cannot hold a thread
+// forever. Thread-safe.
+class CancelSignal {
+public:
+    CancelSignal();
+    void cancel();
+    bool cancelled() const;
+    int pollFd() const { return fd_.get(); }  // readable once cancelled
+
+private:
+    FileDescriptor fd_;  // an eventfd
+};
+
 // Writes every byte, retrying partial writes and EINTR. `what` names the destination in errors
-// ("stdout", "ffmpeg's input"). A closed pipe gives EPIPE (the caller blocks SIGPIPE).
-Status writeAll(int fd, std::span<const std::byte> bytes, const std::string& what);
+// ("stdout", "ffmpeg's input"). A closed pipe gives EPIPE (the caller blocks SIGPIPE). With a
+// `cancel` signal, writes to a pipe never block past a cancel(): they wait in poll() and write
+// only what the pipe can take, and end with a "cancelled" error.
+Status writeAll(int fd, std::span<const std::byte> bytes, const std::string& what,
+                const CancelSignal* cancel = nullptr);
 
 }  // namespace toyhost

@@ -1,16 +1,60 @@
-// Result<T>: a value or an Error with a human message. Library code returns these instead of
-// printing or exiting; the CLI decides what to print. No GL needed.
+// Result<T>: a value or an Error. An Error is a list of Diagnostics (what, where, a short code):
+// library code returns these instead of printing or exiting; the CLI decides what to print.
+// No GL needed.
 #pragma once
 
 #include <string>
 #include <utility>
 #include <variant>
+#include <vector>
+
+#include "core/Diagnostic.h"
 
 namespace toyhost {
 
 struct Error {
-    std::string message;
+    std::vector<Diagnostic> diagnostics;  // at least one
+
+    // A problem with no particular place; `code` says what kind it is.
+    explicit Error(std::string message, std::string code = "error") {
+        Diagnostic d;
+        d.code = std::move(code);
+        d.message = std::move(message);
+        diagnostics.push_back(std::move(d));
+    }
+    Error(Diagnostic diagnostic) { diagnostics.push_back(std::move(diagnostic)); }
+    explicit Error(std::vector<Diagnostic> all) : diagnostics(std::move(all)) {}
+
+    // Every diagnostic, one formatted line each (no prefix).
+    std::string text() const { return formatDiagnostics(diagnostics); }
+    const Diagnostic& first() const { return diagnostics.front(); }
 };
+
+// A problem with one file (its path as the user named it).
+inline Error fileError(const std::string& file, std::string message, std::string code) {
+    Diagnostic d;
+    d.code = std::move(code);
+    d.file = file;
+    d.message = std::move(message);
+    return Error(std::move(d));
+}
+
+// An Error about a file: `file` is set on every diagnostic that names no file yet.
+inline Error inFile(const std::string& file, Error error) {
+    for (Diagnostic& d : error.diagnostics)
+        if (d.file.empty()) d.file = file;
+    return error;
+}
+
+// An Error about a pass (and optionally one of its channels), set where not set yet.
+inline Error inPass(const std::string& pass, Error error, int channel = -1) {
+    for (Diagnostic& d : error.diagnostics)
+        if (d.pass.empty()) {
+            d.pass = pass;
+            if (d.channel < 0) d.channel = channel;
+        }
+    return error;
+}
 
 template <class T>
 class [[nodiscard]] Result {
@@ -38,10 +82,5 @@ private:
 // For operations that produce nothing but can fail.
 using Status = Result<std::monostate>;
 inline Status okStatus() { return Status(std::monostate{}); }
-
-// Prefixes an error with context ("Buffer A: " + inner message).
-inline Error withContext(const std::string& context, const Error& inner) {
-    return Error{context + ": " + inner.message};
-}
 
 }  // namespace toyhost

@@ -57,8 +57,8 @@ public:
 
         const json& passes = shader["renderpass"];
         for (size_t i = 0; i < passes.size(); ++i) readPass(passes[i], i);
-        if (!problems_.empty()) return joinProblems();
-        if (!desc_.find(PassId::Image)) return Error{label_ + ": the export has no image pass"};
+        if (!problems_.empty()) return Error(problems_);
+        if (!desc_.find(PassId::Image)) return fileError(label_, "the export has no image pass", "export.missing");
         std::sort(desc_.passes.begin(), desc_.passes.end(),
                   [](const PassDesc& a, const PassDesc& b) { return a.id < b.id; });
         unbindMissingBuffers();
@@ -66,14 +66,29 @@ public:
     }
 
 private:
-    Error joinProblems() const {
-        std::string all;
-        for (const std::string& p : problems_) all += (all.empty() ? "" : "\n") + p;
-        return Error{all};
+    // `field` is the place in the export (renderpass[3].inputs[1].channel).
+    void problem(const std::string& field, const std::string& what, const char* code = "export.value",
+                 std::optional<PassId> pass = std::nullopt, int channel = -1) {
+        Diagnostic d;
+        d.code = code;
+        d.file = label_;
+        d.field = field;
+        d.message = what;
+        if (pass) d.pass = passName(*pass);
+        d.channel = channel;
+        problems_.push_back(std::move(d));
     }
 
-    void problem(const std::string& where, const std::string& what) {
-        problems_.push_back(label_ + ": " + where + ": " + what);
+    void notice(const std::string& what, const char* code, std::optional<PassId> pass = std::nullopt,
+                int channel = -1) {
+        Diagnostic d;
+        d.severity = Severity::Notice;
+        d.code = code;
+        d.file = label_;
+        d.message = what;
+        if (pass) d.pass = passName(*pass);
+        d.channel = channel;
+        desc_.notices.push_back(std::move(d));
     }
 
     std::optional<PassId> passIdentity(const json& pass, const std::string& type, const std::string& where) {
@@ -86,57 +101,63 @@ private:
         const std::string name = text(pass, "name");
         if (name.size() == 8 && name.rfind("Buffer ", 0) == 0 && name[7] >= 'A' && name[7] <= 'D')
             return bufferPass(name[7] - 'A');
-        problem(where, "buffer pass without a Buffer A..D output id");
+        problem(where + ".outputs", "buffer pass without a Buffer A..D output id", "export.missing");
         return std::nullopt;
     }
 
     void readPass(const json& pass, size_t index) {
         const std::string where = "renderpass[" + std::to_string(index) + "]";
-        if (!pass.is_object()) return problem(where, "is not an object");
+        if (!pass.is_object()) return problem(where, "is not an object", "export.type");
         const std::string type = text(pass, "type");
         const std::string name = text(pass, "name");
-        const std::string place = where + (name.empty() ? "" : " \"" + name + "\"");
-        if (!pass.contains("code") || !pass["code"].is_string()) return problem(place, "has no \"code\" string");
+        const std::string place = where;
+        if (!pass.contains("code") || !pass["code"].is_string())
+            return problem(place + ".code", "is missing or not a string", "export.missing");
         const std::string code = pass["code"].get<std::string>();
 
         if (type == "common") {
-            if (desc_.commonSource) return problem(place, "a second common pass");
+            if (desc_.commonSource) return problem(place, "a second common pass", "export.duplicate");
             desc_.commonSource = path_;
             desc_.commonName = label_ + " [Common]";
             desc_.commonCode = code;
             return;
         }
         if (type == "sound") {
-            desc_.notices.push_back(label_ + ": the Sound pass is skipped (toyhost renders no audio)");
+            notice("the Sound pass is skipped (toyhost renders no audio)", "export.sound-skipped");
             return;
         }
-        if (type == "cubemap") return problem(place, "Cube A passes are not supported yet");
-        if (type != "image" && type != "buffer") return problem(place, "unknown pass type \"" + type + "\"");
+        if (type == "cubemap") return problem(place + ".type", "Cube A passes are not supported yet", "export.unsupported");
+        if (type != "image" && type != "buffer")
+            return problem(place + ".type", "unknown pass type \"" + type + "\"", "export.value");
 
         std::optional<PassId> id = passIdentity(pass, type, place);
         if (!id) return;
-        if (desc_.find(*id)) return problem(place, std::string("a second ") + passName(*id) + " pass");
+        if (desc_.find(*id)) return problem(place, std::string("a second ") + passName(*id) + " pass", "export.duplicate", *id);
         PassDesc out;
         out.id = *id;
         out.source = path_;
         out.sourceName = label_ + " [" + passName(*id) + "]";
         out.code = code;
         if (auto inputs = pass.find("inputs"); inputs != pass.end() && inputs->is_array())
-            for (const json& input : *inputs) readInput(out, input, place);
+            for (size_t k = 0; k < inputs->size(); ++k)
+                readInput(out, (*inputs)[k], place + ".inputs[" + std::to_string(k) + "]");
         desc_.passes.push_back(std::move(out));
     }
 
     void readInput(PassDesc& pass, const json& input, const std::string& place) {
-        if (!input.is_object()) return problem(place, "an input is not an object");
+        if (!input.is_object()) return problem(place, "is not an object", "export.type", pass.id);
         auto channelIt = input.find("channel");
-        if (channelIt == input.end() || !channelIt->is_number_integer() || *channelIt < 0 || *channelIt > 3)
-            return problem(place, "an input has no channel 0..3");
+        if (channelIt == input.end()) return problem(place + ".channel", "is missing", "export.missing", pass.id);
+        if (!channelIt->is_number_integer() || *channelIt < 0 || *channelIt > 3)
+            return problem(place + ".channel", channelIt->dump() + " is not 0..3", "export.value", pass.id);
         const int c = channelIt->get<int>();
-        const std::string where = std::string(passName(pass.id)) + " / iChannel" + std::to_string(c);
+        const std::string& where = place;
         const std::string kind = input.contains("ctype") ? text(input, "ctype") : text(input, "type");
         const std::string src = input.contains("src") ? text(input, "src") : text(input, "filepath");
         ChannelDesc& channel = pass.channels[c];
-        if (channel.kind != ChannelKind::None) return problem(where, "bound twice");
+        if (channel.kind != ChannelKind::None)
+            return problem(where + ".channel", "iChannel" + std::to_string(c) + " is bound twice", "export.duplicate",
+                           pass.id, c);
 
         if (kind == "buffer") {
             int buffer = bufferIndexFromExportId(input.contains("id") ? input["id"] : json());
@@ -146,18 +167,20 @@ private:
                 if (at != std::string::npos && at + 21 < src.size() && src[at + 21] >= '0' && src[at + 21] <= '3')
                     buffer = src[at + 21] - '0';
             }
-            if (buffer < 0) return problem(where, "buffer input with an unknown id " + text(input, "id"));
+            if (buffer < 0)
+                return problem(where + ".id", "buffer input with an unknown id " + text(input, "id"), "export.value",
+                               pass.id, c);
             channel.kind = ChannelKind::Buffer;
             channel.buffer = buffer;
         } else if (kind == "keyboard") {
             channel.kind = ChannelKind::Keyboard;
         } else if (kind == "texture") {
-            if (src.empty()) return problem(where, "texture input without a src");
+            if (src.empty()) return problem(where + ".src", "texture input without a src", "export.missing", pass.id, c);
             channel.kind = ChannelKind::StockMedia;
             channel.media = src;
         } else {
-            desc_.notices.push_back(label_ + ": " + where + ": " + (kind.empty() ? "untyped" : kind) +
-                                    " inputs are not supported; the channel is left unbound");
+            notice((kind.empty() ? std::string("untyped") : kind) + " inputs are not supported; the channel is left unbound",
+                   "export.unsupported-input", pass.id, c);
             return;
         }
         channel.sampler = defaultSampler(channel.kind);
@@ -167,10 +190,11 @@ private:
         if (filter == "nearest") channel.sampler.filter = Filter::Nearest;
         else if (filter == "linear") channel.sampler.filter = Filter::Linear;
         else if (filter == "mipmap") channel.sampler.filter = Filter::Mipmap;
-        else if (!filter.empty()) problem(where, "unknown filter \"" + filter + "\"");
+        else if (!filter.empty())
+            problem(where + ".sampler.filter", "unknown filter \"" + filter + "\"", "export.value", pass.id, c);
         if (wrap == "clamp") channel.sampler.wrap = Wrap::Clamp;
         else if (wrap == "repeat") channel.sampler.wrap = Wrap::Repeat;
-        else if (!wrap.empty()) problem(where, "unknown wrap \"" + wrap + "\"");
+        else if (!wrap.empty()) problem(where + ".sampler.wrap", "unknown wrap \"" + wrap + "\"", "export.value", pass.id, c);
         // vflip applies to images only; the player ignores it for buffers.
         if (channel.kind == ChannelKind::StockMedia)
             if (std::optional<bool> vflip = flag(sampler, "vflip")) channel.sampler.vflip = *vflip;
@@ -183,9 +207,9 @@ private:
             for (int c = 0; c < kChannelCount; ++c) {
                 ChannelDesc& channel = pass.channels[c];
                 if (channel.kind != ChannelKind::Buffer || desc_.hasBuffer(channel.buffer)) continue;
-                desc_.notices.push_back(label_ + ": " + passName(pass.id) + " / iChannel" + std::to_string(c) + " reads " +
-                                        passName(bufferPass(channel.buffer)) +
-                                        ", which the export does not define; the channel is left unbound");
+                notice(std::string("reads ") + passName(bufferPass(channel.buffer)) +
+                           ", which the export does not define; the channel is left unbound",
+                       "export.missing-buffer", pass.id, c);
                 channel = ChannelDesc{};
             }
     }
@@ -193,15 +217,16 @@ private:
     fs::path path_;
     std::string label_;
     ManifestDesc desc_;
-    std::vector<std::string> problems_;
+    std::vector<Diagnostic> problems_;
 };
 
 }  // namespace
 
 int bufferIndexFromExportId(const json& id) {
     if (id.is_number_integer()) {
-        const int n = id.get<int>();
-        return n >= 257 && n <= 260 ? n - 257 : -1;
+        // In 64 bits: 4294967553 must not wrap around to 257 (Buffer A).
+        const long long n = id.is_number_unsigned() && id.get<unsigned long long>() > 1000 ? -1 : id.get<long long>();
+        return n >= 257 && n <= 260 ? static_cast<int>(n - 257) : -1;
     }
     if (id.is_string()) {
         static const char* siteIds[] = {"4dXGR8", "XsXGR8", "4sXGR8", "XdfGR8"};
@@ -222,10 +247,12 @@ Result<ManifestDesc> parseShadertoyExport(std::string_view jsonText, const fs::p
     try {
         document = json::parse(jsonText);
     } catch (const json::parse_error& e) {
-        return Error{path.string() + ": invalid JSON: " + e.what()};
+        return fileError(path.string(), std::string("invalid JSON: ") + e.what(), "export.json");
     }
     const json* shader = shaderObject(document);
-    if (!shader) return Error{path.string() + ": not a Shadertoy export (expected {\"Shader\": {\"renderpass\": [...]}})"};
+    if (!shader)
+        return fileError(path.string(), "not a Shadertoy export (expected {\"Shader\": {\"renderpass\": [...]}})",
+                         "export.shape");
     return ExportReader(path).read(*shader);
 }
 

@@ -20,9 +20,15 @@ bool hasExtension(const char* name) {
 Status checkRequiredGlFeatures() {
     for (const char* ext : {"GL_EXT_color_buffer_float", "GL_OES_texture_float_linear"})
         if (!hasExtension(ext))
-            return Error{std::string("GL: the driver lacks ") + ext +
-                         ", which Shadertoy's float buffers need"};
+            return Error(std::string("GL: the driver lacks ") + ext + ", which Shadertoy's float buffers need",
+                         "gl.feature");
     return okStatus();
+}
+
+int maxTextureSize() {
+    GLint size = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
+    return size;
 }
 
 const char* glErrorName(unsigned int error) {

@@ -1,14 +1,30 @@
-// GlContext: the small interface every GL backend fills (make current, present, describe).
-// The renderer only needs a current OpenGL ES 3 context and never knows which backend made it.
-// Backends: headless EGL surfaceless (EglSurfacelessContext.h); a window backend comes later.
+// GlContext and GlSurface: the small interfaces every GL backend fills. A context is what every
+// backend has (make current, look up GL functions, describe itself); a surface is what only a
+// window has (framebuffer size in pixels, present, swap interval). The renderer needs a current
+// OpenGL ES 3 context and never learns which backend made it. Backends: headless EGL
+// (gl/HeadlessContext.h) and a GLFW window (gl/WindowContext.h).
 #pragma once
 
-#include <memory>
 #include <string>
 
 #include "core/Result.h"
 
 namespace toyhost {
+
+class GlSurface {
+public:
+    virtual ~GlSurface() = default;
+    struct Size {
+        int width = 0;
+        int height = 0;
+    };
+    // The default framebuffer's size in pixels (not window coordinates: HiDPI differs).
+    virtual Size framebufferSize() const = 0;
+    // Shows what was drawn to the default framebuffer (swap buffers).
+    virtual Status present() = 0;
+    // 1: wait for vertical sync when presenting; 0: do not.
+    virtual Status setSwapInterval(int interval) = 0;
+};
 
 class GlContext {
 public:
@@ -18,12 +34,12 @@ public:
     GlContext& operator=(const GlContext&) = delete;
 
     virtual Status makeCurrent() = 0;
-    // True when the context has an on-screen surface to present to (window backends).
-    virtual bool hasSurface() const = 0;
-    // Shows the default framebuffer (swap); a no-op for headless contexts.
-    virtual Status present() = 0;
+    // The address of a GL or GL extension function, or null.
+    virtual void* procAddress(const char* name) const = 0;
     // One line naming the backend, API version and renderer, for logs and benchmarks.
     virtual std::string describe() const = 0;
+    // The on-screen surface of a window backend; null for headless contexts.
+    virtual GlSurface* surface() { return nullptr; }
 };
 
 // Checks the GL extensions Shadertoy's WebGL2 player relies on (float render targets and
@@ -32,5 +48,8 @@ Status checkRequiredGlFeatures();
 
 // "GL_INVALID_OPERATION" etc., for error messages.
 const char* glErrorName(unsigned int error);
+
+// GL_MAX_TEXTURE_SIZE of the current context.
+int maxTextureSize();
 
 }  // namespace toyhost

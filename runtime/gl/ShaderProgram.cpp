@@ -16,38 +16,49 @@ std::string infoLog(GLuint object, bool isProgram) {
     return std::string(text.data());
 }
 
-Result<GlShader> compile(GLenum stage, const std::string& text) {
+// The compiled shader, or an empty one with `log` set.
+GlShader compile(GLenum stage, const std::string& text, std::string& log) {
     GlShader shader(glCreateShader(stage));
     const char* source = text.c_str();
     glShaderSource(shader.id(), 1, &source, nullptr);
     glCompileShader(shader.id());
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
-    if (!ok) return Error{infoLog(shader.id(), false)};
+    if (!ok) {
+        log = infoLog(shader.id(), false);
+        return GlShader();
+    }
     return shader;
 }
 
 }  // namespace
 
-Result<GlProgram> buildProgram(const AssembledShader& fragment, const ProgramSources& names) {
-    Result<GlShader> vertex = compile(GL_VERTEX_SHADER, fullscreenVertexShader());
-    if (!vertex) return Error{names.passLabel + ": internal vertex shader failed: " + vertex.error().message};
-    Result<GlShader> pixel = compile(GL_FRAGMENT_SHADER, fragment.text);
-    if (!pixel)
-        return Error{names.passLabel + ": shader compile failed\n" +
-                     translateCompilerLog(fragment, pixel.error().message, names.commonFile, names.passFile)};
-
+ProgramBuild buildProgram(const std::string& vertexText, const std::string& fragmentText) {
+    ProgramBuild build;
+    GlShader vertex = compile(GL_VERTEX_SHADER, vertexText, build.log);
+    if (!vertex) {
+        build.failedStage = ProgramBuild::Stage::Vertex;
+        return build;
+    }
+    GlShader fragment = compile(GL_FRAGMENT_SHADER, fragmentText, build.log);
+    if (!fragment) {
+        build.failedStage = ProgramBuild::Stage::Fragment;
+        return build;
+    }
     GlProgram program(glCreateProgram());
-    glAttachShader(program.id(), vertex->id());
-    glAttachShader(program.id(), pixel->id());
+    glAttachShader(program.id(), vertex.id());
+    glAttachShader(program.id(), fragment.id());
     glLinkProgram(program.id());
     GLint ok = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-    if (!ok)
-        return Error{names.passLabel + " (" + names.passFile + "): shader link failed\n" +
-                     translateCompilerLog(fragment, infoLog(program.id(), true), names.commonFile,
-                                          names.passFile)};
-    return program;
+    if (!ok) {
+        build.failedStage = ProgramBuild::Stage::Link;
+        build.log = infoLog(program.id(), true);
+        return build;
+    }
+    build.program = std::move(program);
+    build.ok = true;
+    return build;
 }
 
 }  // namespace toyhost

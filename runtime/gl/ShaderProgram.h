@@ -1,21 +1,22 @@
-// Compiles and links a pass's program, turning compiler logs into messages that name the user's
-// file and line. Needs a current GL context.
+// Compiles and links a GL program from vertex and fragment shader text, returning the driver's
+// own info log on failure (shader/CompilerLog.h turns it into the user's file and line). Needs a
+// current GL context.
 #pragma once
 
 #include <string>
 
-#include "core/Result.h"
 #include "gl/GlObjects.h"
-#include "shader/ShaderAssembly.h"
 
 namespace toyhost {
 
-struct ProgramSources {
-    std::string passLabel;     // "Buffer A", used when the error has no line
-    std::string passFile;      // shown for errors in the pass code
-    std::string commonFile;    // shown for errors in Common
+struct ProgramBuild {
+    enum class Stage { Vertex, Fragment, Link };
+    GlProgram program;  // valid only when ok
+    bool ok = false;
+    Stage failedStage = Stage::Fragment;
+    std::string log;    // the driver's info log of the stage that failed
 };
 
-Result<GlProgram> buildProgram(const AssembledShader& fragment, const ProgramSources& names);
+ProgramBuild buildProgram(const std::string& vertexText, const std::string& fragmentText);
 
 }  // namespace toyhost

@@ -37,4 +37,20 @@ PassGraph buildPassGraph(const ManifestDesc& manifest) {
     return graph;
 }
 
+bool operator==(const ChannelPlan& a, const ChannelPlan& b) {
+    return a.kind == b.kind && a.buffer == b.buffer && a.age == b.age && a.sampler.filter == b.sampler.filter &&
+           a.sampler.wrap == b.sampler.wrap && a.sampler.vflip == b.sampler.vflip;
+}
+
+bool PassGraph::sameStructure(const PassGraph& other) const {
+    if (passes.size() != other.passes.size() || bufferUsed != other.bufferUsed ||
+        bufferMipmapped != other.bufferMipmapped)
+        return false;
+    for (size_t i = 0; i < passes.size(); ++i)
+        if (passes[i].id != other.passes[i].id || passes[i].targetBuffer != other.passes[i].targetBuffer ||
+            passes[i].channels != other.passes[i].channels)
+            return false;
+    return true;
+}
+
 }  // namespace toyhost

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "manifest/ManifestDesc.h"
@@ -26,18 +27,26 @@ struct PassPlan {
     std::array<ChannelPlan, kChannelCount> channels;
 };
 
-// Each buffer owns two textures (slots 0 and 1). On frame n a buffer renders into slot n % 2,
-// which then is its "last rendered" texture; the other slot holds frame n-1's output.
-inline int slotWritten(int frame) { return frame & 1; }
-inline int slotRead(FrameAge age, int frame) {
-    return age == FrameAge::Current ? slotWritten(frame) : slotWritten(frame + 1);
+// Each buffer owns two textures (slots 0 and 1). `step` counts the frames rendered since the
+// buffers were created, across restarts and rewinds of time (the Player owns it; it is not
+// iFrame, which a restart resets): on step s a buffer renders into slot s % 2, which then is its
+// "last rendered" texture; the other slot holds step s-1's output.
+inline int slotWritten(std::uint64_t step) { return static_cast<int>(step & 1); }
+inline int slotRead(FrameAge age, std::uint64_t step) {
+    return age == FrameAge::Current ? slotWritten(step) : slotWritten(step + 1);
 }
 
 struct PassGraph {
     std::vector<PassPlan> passes;                  // in execution order, Image last
     std::array<bool, kBufferCount> bufferUsed{};   // a pass exists for this buffer
     std::array<bool, kBufferCount> bufferMipmapped{};  // some channel samples it with `mipmap`
+
+    // True when `other` binds and samples exactly the same (passes, channels, sampler settings,
+    // buffers and their mipmaps); the code of the passes may differ.
+    bool sameStructure(const PassGraph& other) const;
 };
+
+bool operator==(const ChannelPlan& a, const ChannelPlan& b);
 
 PassGraph buildPassGraph(const ManifestDesc& manifest);
 

@@ -37,11 +37,19 @@ std::string describe(const json& value) {
 class EventContext {
 public:
     EventContext(std::string_view source, std::size_t index)
-        : prefix_(std::string(source) + ": event " + std::to_string(index) + ": ") {}
-    Error error(const std::string& what) const { return Error{prefix_ + what}; }
+        : source_(source), field_("event " + std::to_string(index)) {}
+    Error error(const std::string& what) const {
+        Diagnostic d;
+        d.code = "script.event";
+        d.file = source_;
+        d.field = field_;
+        d.message = what;
+        return Error(std::move(d));
+    }
 
 private:
-    std::string prefix_;
+    std::string source_;
+    std::string field_;
 };
 
 Result<json> parseArray(std::string_view text, std::string_view source) {
@@ -49,11 +57,11 @@ Result<json> parseArray(std::string_view text, std::string_view source) {
     try {
         doc = json::parse(text);
     } catch (const json::parse_error& e) {
-        return Error{std::string(source) + ": invalid JSON: " + e.what()};
+        return fileError(std::string(source), std::string("invalid JSON: ") + e.what(), "script.json");
     }
     if (!doc.is_array())
-        return Error{std::string(source) + ": expected a JSON array of events, got " +
-                     doc.type_name()};
+        return fileError(std::string(source), std::string("expected a JSON array of events, got ") + doc.type_name(),
+                         "script.json");
     return doc;
 }
 
@@ -123,7 +131,7 @@ Result<int> readKey(const json& event, const EventContext& ctx) {
     if (!v.is_string())
         return ctx.error("\"key\" must be a key name or a keyCode, got " + describe(v));
     auto code = keyCodeFromName(v.get<std::string>());
-    if (!code) return ctx.error(code.error().message);
+    if (!code) return ctx.error(code.error().first().message);
     return *code;
 }
 

@@ -23,35 +23,33 @@ ScriptCursor::ScriptCursor(std::vector<ScriptMoment> moments) : moments_(std::mo
     nextTime_ = timeBegin_;
 }
 
-std::vector<std::size_t> ScriptCursor::takeDue(std::int64_t frame, double iTime) {
-    std::vector<std::size_t> due;
-    while (nextFrame_ < timeBegin_ && moments_[nextFrame_].dueBefore(frame, iTime))
-        due.push_back(nextFrame_++);
-    while (nextTime_ < moments_.size() && moments_[nextTime_].dueBefore(frame, iTime))
-        due.push_back(nextTime_++);
-    return due;
-}
-
 MouseScriptPlayer::MouseScriptPlayer(MouseScript script)
     : script_(std::move(script)), cursor_(sortedMoments(script_.events)) {}
 
-void MouseScriptPlayer::applyBeforeFrame(std::int64_t frame, double iTime, MouseState& mouse) {
+void MouseScriptPlayer::eventsBeforeFrame(std::int64_t frame, double iTime, std::vector<InputEvent>& out) {
     using Type = MouseScriptEvent::Type;
-    for (std::size_t i : cursor_.takeDue(frame, iTime)) {
+    cursor_.takeDue(frame, iTime, [&](std::size_t i) {
         const MouseScriptEvent& e = script_.events[i];
         switch (e.type) {
-        case Type::Down: mouse.press(e.position->x, e.position->y); break;
-        case Type::Move: mouse.move(e.position->x, e.position->y); break;
+        case Type::Down: out.push_back(InputEvent::mouseDown(e.position->x, e.position->y)); break;
+        case Type::Move: out.push_back(InputEvent::mouseMove(e.position->x, e.position->y)); break;
         case Type::Up:
-            if (e.position) mouse.move(e.position->x, e.position->y);
-            mouse.release();
+            if (e.position) out.push_back(InputEvent::mouseMove(e.position->x, e.position->y));
+            out.push_back(InputEvent::mouseUp());
             break;
         case Type::Click:
-            mouse.press(e.position->x, e.position->y);
-            mouse.release();
+            out.push_back(InputEvent::mouseDown(e.position->x, e.position->y));
+            out.push_back(InputEvent::mouseUp());
             break;
         }
-    }
+    });
+}
+
+void MouseScriptPlayer::applyBeforeFrame(std::int64_t frame, double iTime, MouseState& mouse) {
+    scratch_.clear();
+    eventsBeforeFrame(frame, iTime, scratch_);
+    KeyboardState unused;
+    for (const InputEvent& e : scratch_) applyInput(e, mouse, unused);
 }
 
 bool MouseScriptPlayer::finished() const { return cursor_.finished(); }
@@ -59,26 +57,39 @@ bool MouseScriptPlayer::finished() const { return cursor_.finished(); }
 KeyScriptPlayer::KeyScriptPlayer(KeyScript script)
     : script_(std::move(script)), cursor_(sortedMoments(script_.events)) {}
 
-void KeyScriptPlayer::applyBeforeFrame(std::int64_t frame, double iTime,
-                                       KeyboardState& keyboard) {
-    for (int keyCode : std::exchange(pendingReleases_, {})) keyboard.release(keyCode);
+void KeyScriptPlayer::eventsBeforeFrame(std::int64_t frame, double iTime, std::vector<InputEvent>& out) {
+    for (int keyCode : pendingReleases_) out.push_back(InputEvent::keyUp(keyCode));
+    pendingReleases_.clear();
 
     using Type = KeyScriptEvent::Type;
-    for (std::size_t i : cursor_.takeDue(frame, iTime)) {
+    cursor_.takeDue(frame, iTime, [&](std::size_t i) {
         const KeyScriptEvent& e = script_.events[i];
         switch (e.type) {
-        case Type::Down: keyboard.press(e.keyCode); break;
-        case Type::Up: keyboard.release(e.keyCode); break;
+        case Type::Down: out.push_back(InputEvent::keyDown(e.keyCode)); break;
+        case Type::Up: out.push_back(InputEvent::keyUp(e.keyCode)); break;
         case Type::Tap:
-            keyboard.press(e.keyCode);
+            out.push_back(InputEvent::keyDown(e.keyCode));
             pendingReleases_.push_back(e.keyCode);
             break;
         }
-    }
+    });
+}
+
+void KeyScriptPlayer::applyBeforeFrame(std::int64_t frame, double iTime, KeyboardState& keyboard) {
+    scratch_.clear();
+    eventsBeforeFrame(frame, iTime, scratch_);
+    MouseState unused;
+    for (const InputEvent& e : scratch_) applyInput(e, unused, keyboard);
 }
 
 bool KeyScriptPlayer::finished() const {
     return cursor_.finished() && pendingReleases_.empty();
 }
 
+}  // namespace toyhost
+
+namespace toyhost {
+bool operator==(const InputEvent& a, const InputEvent& b) {
+    return a.type == b.type && a.x == b.x && a.y == b.y && a.key == b.key;
+}
 }  // namespace toyhost

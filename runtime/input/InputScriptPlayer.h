@@ -1,11 +1,12 @@
-// Replays a MouseScript into a MouseState and a KeyScript into a KeyboardState, frame by frame,
-// for headless runs. Pure logic, no GL context needed.
+// Replays a MouseScript and a KeyScript frame by frame as InputEvents (input/InputEvent.h), which
+// the Player applies before rendering the frame. Pure logic, no GL context needed.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "input/InputEvent.h"
 #include "input/InputScript.h"
 #include "input/KeyboardState.h"
 #include "input/MouseState.h"
@@ -19,9 +20,13 @@ public:
     // `moments` of the events in script order (sorted by firesEarlier).
     explicit ScriptCursor(std::vector<ScriptMoment> moments);
 
-    // Indices of the not yet fired events that are due before rendering `frame` (at `iTime`),
-    // in script order; marks them fired.
-    std::vector<std::size_t> takeDue(std::int64_t frame, double iTime);
+    // Calls `fired(index)` for each not yet fired event that is due before rendering `frame` (at
+    // `iTime`), in script order, and marks it fired. Allocates nothing.
+    template <class Fired>
+    void takeDue(std::int64_t frame, double iTime, Fired&& fired) {
+        while (nextFrame_ < timeBegin_ && moments_[nextFrame_].dueBefore(frame, iTime)) fired(nextFrame_++);
+        while (nextTime_ < moments_.size() && moments_[nextTime_].dueBefore(frame, iTime)) fired(nextTime_++);
+    }
     bool finished() const { return nextFrame_ == timeBegin_ && nextTime_ == moments_.size(); }
 
 private:
@@ -32,17 +37,20 @@ private:
 };
 
 // The script is sorted (stably, by firesEarlier) on construction, so hand-built scripts work too.
-// Call applyBeforeFrame(n, iTime) once per frame, with increasing n, before rendering frame n
-// and before reading mouse.uniform(). "click" presses and releases before the same frame.
+// Call eventsBeforeFrame(n, iTime) once per frame, with increasing n, before rendering frame n:
+// it appends the events due to `out`. "click" presses and releases before the same frame.
+// applyBeforeFrame does the same straight into a MouseState.
 class MouseScriptPlayer {
 public:
     explicit MouseScriptPlayer(MouseScript script);
+    void eventsBeforeFrame(std::int64_t frame, double iTime, std::vector<InputEvent>& out);
     void applyBeforeFrame(std::int64_t frame, double iTime, MouseState& mouse);
     bool finished() const;
 
 private:
     MouseScript script_;
     ScriptCursor cursor_;
+    std::vector<InputEvent> scratch_;
 };
 
 // Same contract for keys. A "tap" presses before its frame and leaves a release pending, which
@@ -50,6 +58,7 @@ private:
 class KeyScriptPlayer {
 public:
     explicit KeyScriptPlayer(KeyScript script);
+    void eventsBeforeFrame(std::int64_t frame, double iTime, std::vector<InputEvent>& out);
     void applyBeforeFrame(std::int64_t frame, double iTime, KeyboardState& keyboard);
     bool finished() const;  // every event fired and no tap release pending
 
@@ -57,6 +66,7 @@ private:
     KeyScript script_;
     ScriptCursor cursor_;
     std::vector<int> pendingReleases_;
+    std::vector<InputEvent> scratch_;
 };
 
 }  // namespace toyhost

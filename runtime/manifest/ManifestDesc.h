@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "core/Diagnostic.h"
+
 namespace toyhost {
 
 // Passes in the order Shadertoy renders them each frame: Buffer A, B, C, D, then Image.
@@ -59,7 +61,7 @@ struct ManifestDesc {
     std::string commonCode;
     std::vector<PassDesc> passes;                  // sorted in render order; Image is last
     std::map<std::string, std::filesystem::path> mediaOverrides;  // stock id -> user file
-    std::vector<std::string> notices;              // things the user should know (lenient imports)
+    std::vector<Diagnostic> notices;               // things the user should know (lenient imports)
 
     const PassDesc* find(PassId id) const;
     bool hasBuffer(int index) const { return find(bufferPass(index)) != nullptr; }

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/AtomicFile.h"
-#include "media/StockMedia.h"
+#include "manifest/StockMedia.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -20,19 +20,24 @@ namespace {
 class Problems {
 public:
     explicit Problems(std::string file) : file_(std::move(file)) {}
-    void add(const std::string& where, const std::string& what) {
-        lines_.push_back(file_ + ": " + (where.empty() ? "" : where + ": ") + what);
+    // `field` is the JSON path; `pass`/`channel` are set when the problem is about one.
+    void add(const std::string& field, const std::string& message, const char* code = "manifest.value",
+             std::optional<PassId> pass = std::nullopt, int channel = -1) {
+        Diagnostic d;
+        d.code = code;
+        d.file = file_;
+        d.field = field;
+        d.message = message;
+        if (pass) d.pass = passName(*pass);
+        d.channel = channel;
+        diagnostics_.push_back(std::move(d));
     }
-    bool empty() const { return lines_.empty(); }
-    Error toError() const {
-        std::string text;
-        for (size_t i = 0; i < lines_.size(); ++i) text += (i ? "\n" : "") + lines_[i];
-        return Error{text};
-    }
+    bool empty() const { return diagnostics_.empty(); }
+    Error toError() const { return Error(diagnostics_); }
 
 private:
     std::string file_;
-    std::vector<std::string> lines_;
+    std::vector<Diagnostic> diagnostics_;
 };
 
 std::string quote(const std::string& s) { return "\"" + s + "\""; }
@@ -45,7 +50,7 @@ void rejectUnknownFields(const json& object, const std::set<std::string>& known,
         if (known.count(key)) continue;
         std::string list;
         for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-        problems.add(where, "unknown field " + quote(key) + " (known: " + list + ")");
+        problems.add(where, "unknown field " + quote(key) + " (known: " + list + ")", "manifest.unknown-field");
     }
 }
 
@@ -77,9 +82,9 @@ public:
         try {
             root = json::parse(text);
         } catch (const json::parse_error& e) {
-            return Error{path_.string() + ": invalid JSON: " + e.what()};
+            return fileError(path_.string(), std::string("invalid JSON: ") + e.what(), "manifest.json");
         }
-        if (!root.is_object()) return Error{path_.string() + ": the manifest must be a JSON object"};
+        if (!root.is_object()) return fileError(path_.string(), "the manifest must be a JSON object", "manifest.json");
 
         desc_.manifestPath = path_;
         rejectUnknownFields(root, {"name", "common", "passes", "media"}, "", problems_);
@@ -105,7 +110,7 @@ private:
         auto it = object.find(key);
         if (it == object.end()) return std::nullopt;
         if (!it->is_string() || it->get<std::string>().empty()) {
-            problems_.add(where, quote(key) + " must be a non-empty string, not " + typeName(*it));
+            problems_.add(where, quote(key) + " must be a non-empty string, not " + typeName(*it), "manifest.type");
             return std::nullopt;
         }
         return it->get<std::string>();
@@ -119,7 +124,9 @@ private:
         fs::path file = resolve(*name);
         Result<std::string> text = readTextFile(file);
         if (!text) {
-            problems_.add(where, quote(key) + ": " + text.error().message);
+            const Diagnostic& cause = text.error().first();
+            problems_.add(where.empty() ? key : where + "." + key, file.string() + ": " + cause.message,
+                          cause.code.c_str());
             return std::nullopt;
         }
         return std::make_pair(file, std::move(*text));
@@ -143,19 +150,19 @@ private:
         auto it = root.find("media");
         if (it == root.end()) return;
         if (!it->is_object()) {
-            problems_.add("media", "must be an object mapping stock media ids to files");
+            problems_.add("media", "must be an object mapping stock media ids to files", "manifest.type");
             return;
         }
         for (const auto& [id, file] : it->items()) {
             const std::string where = "media." + quote(id);
             if (!file.is_string()) {
-                problems_.add(where, "must be a file path string, not " + typeName(file));
+                problems_.add(where, "must be a file path string, not " + typeName(file), "manifest.type");
                 continue;
             }
             fs::path resolved = resolve(file.get<std::string>());
             std::error_code ec;
             if (!fs::is_regular_file(resolved, ec))
-                problems_.add(where, resolved.string() + ": file not found");
+                problems_.add(where, resolved.string() + ": file not found", "io.not-found");
             desc_.mediaOverrides[id] = resolved;
         }
     }
@@ -165,37 +172,39 @@ private:
     void checkMediaOverridesUsed() {
         for (const auto& [id, file] : desc_.mediaOverrides)
             if (!findStockMedia(id) && !mediaRefs_.count(id))
-                problems_.add("media." + quote(id), "not a stock media id, and no channel uses it");
+                problems_.add("media." + quote(id), "not a stock media id, and no channel uses it", "manifest.unused");
     }
 
     void readPasses(const json& root) {
         auto it = root.find("passes");
         if (it == root.end() || !it->is_object() || it->empty()) {
             problems_.add("passes", "must be an object with an \"Image\" pass and optionally "
-                                    "\"Buffer A\" .. \"Buffer D\"");
+                                    "\"Buffer A\" .. \"Buffer D\"", "manifest.missing");
             return;
         }
         for (const auto& [name, body] : it->items()) {
             const std::string where = "passes." + quote(name);
             std::optional<PassId> id = passFromName(name);
             if (!id) {
-                problems_.add(where, "unknown pass (known: Buffer A, Buffer B, Buffer C, Buffer D, Image)");
+                problems_.add(where, "unknown pass (known: Buffer A, Buffer B, Buffer C, Buffer D, Image)",
+                              "manifest.unknown-pass");
                 continue;
             }
             if (!body.is_object()) {
-                problems_.add(where, "must be an object with \"source\" and \"channels\"");
+                problems_.add(where, "must be an object with \"source\" and \"channels\"", "manifest.type", *id);
                 continue;
             }
             readPass(*id, body, where);
         }
         if (!desc_.find(PassId::Image) && !it->contains("Image"))
-            problems_.add("passes", "the \"Image\" pass is missing");
+            problems_.add("passes", "the \"Image\" pass is missing", "manifest.missing");
         // Buffer references can only be checked once every pass is known.
         for (const auto& [pass, channel, buffer] : bufferRefs_) {
             if (!it->contains(passName(bufferPass(buffer))))
                 problems_.add(channelWhere(pass, channel),
                               std::string("reads ") + passName(bufferPass(buffer)) +
-                                  ", which this manifest does not define");
+                                  ", which this manifest does not define",
+                              "manifest.reference", pass, channel);
         }
     }
 
@@ -207,7 +216,7 @@ private:
         rejectUnknownFields(body, {"source", "channels"}, where, problems_);
         PassDesc pass;
         pass.id = id;
-        if (!body.contains("source")) problems_.add(where, "\"source\" is missing");
+        if (!body.contains("source")) problems_.add(where, "\"source\" is missing", "manifest.missing", id);
         if (auto source = readSourceFile(body, "source", where)) {
             pass.source = source->first;
             pass.sourceName = source->first.string();
@@ -223,13 +232,14 @@ private:
     void readChannels(PassDesc& pass, const json& channels, const std::string& where) {
         if (channels.is_array()) {
             if (channels.size() > kChannelCount)
-                problems_.add(where, "at most 4 channels, got " + std::to_string(channels.size()));
+                problems_.add(where, "at most 4 channels, got " + std::to_string(channels.size()), "manifest.value",
+                              pass.id);
             for (size_t i = 0; i < channels.size() && i < kChannelCount; ++i)
                 readChannel(pass, static_cast<int>(i), channels[i]);
             return;
         }
         if (!channels.is_object()) {
-            problems_.add(where, "must be an object keyed iChannel0..iChannel3 or an array");
+            problems_.add(where, "must be an object keyed iChannel0..iChannel3 or an array", "manifest.type", pass.id);
             return;
         }
         for (const auto& [key, value] : channels.items()) {
@@ -237,7 +247,8 @@ private:
             if (key.size() == 9 && key.rfind("iChannel", 0) == 0 && key[8] >= '0' && key[8] <= '3')
                 index = key[8] - '0';
             if (index < 0) {
-                problems_.add(where, "unknown channel " + quote(key) + " (known: iChannel0..iChannel3)");
+                problems_.add(where, "unknown channel " + quote(key) + " (known: iChannel0..iChannel3)",
+                              "manifest.unknown-field", pass.id);
                 continue;
             }
             readChannel(pass, index, value);
@@ -249,7 +260,7 @@ private:
         ChannelDesc& channel = pass.channels[index];
         if (value.is_null()) return;
         if (!value.is_object()) {
-            problems_.add(where, "must be an object such as {\"buffer\": \"A\"}, or null");
+            problems_.add(where, "must be an object such as {\"buffer\": \"A\"}, or null", "manifest.type", pass.id, index);
             return;
         }
         rejectUnknownFields(value, {"buffer", "texture", "media", "keyboard", "filter", "wrap", "vflip"},
@@ -257,24 +268,27 @@ private:
         int sources = 0;
         for (const char* key : {"buffer", "texture", "media", "keyboard"}) sources += value.contains(key);
         if (sources != 1) {
-            problems_.add(where, "needs exactly one of \"buffer\", \"texture\", \"media\", \"keyboard\"");
+            problems_.add(where, "needs exactly one of \"buffer\", \"texture\", \"media\", \"keyboard\"",
+                          "manifest.value", pass.id, index);
             return;
         }
         if (auto buffer = readString(value, "buffer", where)) {
-            std::optional<int> index = bufferFromName(*buffer);
-            if (!index) {
-                problems_.add(where, "buffer " + quote(*buffer) + " does not exist (known: A, B, C, D)");
+            std::optional<int> bufferIndex = bufferFromName(*buffer);
+            if (!bufferIndex) {
+                problems_.add(where, "buffer " + quote(*buffer) + " does not exist (known: A, B, C, D)",
+                              "manifest.reference", pass.id, index);
                 return;
             }
             channel.kind = ChannelKind::Buffer;
-            channel.buffer = *index;
-            bufferRefs_.push_back({pass.id, static_cast<int>(&channel - pass.channels.data()), *index});
+            channel.buffer = *bufferIndex;
+            bufferRefs_.push_back({pass.id, index, *bufferIndex});
         } else if (auto texture = readString(value, "texture", where)) {
             channel.kind = ChannelKind::ImageFile;
             channel.file = resolve(*texture);
             std::error_code ec;
             if (!fs::is_regular_file(channel.file, ec))
-                problems_.add(where, "texture " + channel.file.string() + ": file not found");
+                problems_.add(where, "texture " + channel.file.string() + ": file not found", "io.not-found", pass.id,
+                              index);
         } else if (auto media = readString(value, "media", where)) {
             channel.kind = ChannelKind::StockMedia;
             channel.media = *media;
@@ -283,45 +297,49 @@ private:
             // stand-in, as imported exports do); other names must be known or given a file.
             const bool mediaPath = media->rfind("/media/a/", 0) == 0 && media->size() > 9;
             if (!mediaPath && !findStockMedia(*media) && !desc_.mediaOverrides.count(*media))
-                problems_.add(where, "unknown stock media " + quote(*media) +
-                                         " (use a /media/a/<hash>.<ext> id, a stock name such as \"Abstract 3\", "
-                                         "or add it to \"media\" with a file)");
+                problems_.add(where,
+                              "unknown stock media " + quote(*media) +
+                                  " (use a /media/a/<hash>.<ext> id, a stock name such as \"Abstract 3\", "
+                                  "or add it to \"media\" with a file)",
+                              "manifest.reference", pass.id, index);
         } else if (value.contains("keyboard")) {
             if (value["keyboard"] != true) {
-                problems_.add(where, "\"keyboard\" must be true");
+                problems_.add(where, "\"keyboard\" must be true", "manifest.value", pass.id, index);
                 return;
             }
             channel.kind = ChannelKind::Keyboard;
         } else {
             return;  // readString already reported the bad value
         }
-        readSampler(channel, value, where);
+        readSampler(pass.id, index, channel, value, where);
     }
 
-    void readSampler(ChannelDesc& channel, const json& value, const std::string& where) {
+    void readSampler(PassId pass, int index, ChannelDesc& channel, const json& value, const std::string& where) {
         channel.sampler = defaultSampler(channel.kind);
         const bool isTexture = channel.kind == ChannelKind::ImageFile || channel.kind == ChannelKind::StockMedia;
         if (channel.kind == ChannelKind::Keyboard) {
             for (const char* key : {"filter", "wrap", "vflip"})
                 if (value.contains(key))
-                    problems_.add(where, std::string("the keyboard texture takes no \"") + key +
-                                             "\" (it is always nearest/clamp)");
+                    problems_.add(where,
+                                  std::string("the keyboard texture takes no \"") + key + "\" (it is always nearest/clamp)",
+                                  "manifest.value", pass, index);
             return;
         }
         if (auto filter = readString(value, "filter", where)) {
             if (*filter == "nearest") channel.sampler.filter = Filter::Nearest;
             else if (*filter == "linear") channel.sampler.filter = Filter::Linear;
             else if (*filter == "mipmap") channel.sampler.filter = Filter::Mipmap;
-            else problems_.add(where, "filter " + quote(*filter) + " is not one of nearest, linear, mipmap");
+            else problems_.add(where, "filter " + quote(*filter) + " is not one of nearest, linear, mipmap", "manifest.value", pass, index);
         }
         if (auto wrap = readString(value, "wrap", where)) {
             if (*wrap == "clamp") channel.sampler.wrap = Wrap::Clamp;
             else if (*wrap == "repeat") channel.sampler.wrap = Wrap::Repeat;
-            else problems_.add(where, "wrap " + quote(*wrap) + " is not one of clamp, repeat");
+            else problems_.add(where, "wrap " + quote(*wrap) + " is not one of clamp, repeat", "manifest.value", pass, index);
         }
         if (auto vflip = value.find("vflip"); vflip != value.end()) {
-            if (!vflip->is_boolean()) problems_.add(where, "\"vflip\" must be true or false");
-            else if (!isTexture) problems_.add(where, "\"vflip\" applies only to image textures, not buffers");
+            if (!vflip->is_boolean()) problems_.add(where, "\"vflip\" must be true or false", "manifest.type", pass, index);
+            else if (!isTexture)
+                problems_.add(where, "\"vflip\" applies only to image textures, not buffers", "manifest.value", pass, index);
             else channel.sampler.vflip = vflip->get<bool>();
         }
     }

@@ -4,8 +4,9 @@
 #include <cctype>
 #include <optional>
 
-#include "media/ImageFile.h"
-#include "media/StockMedia.h"
+#include "image/ImageFile.h"
+#include "manifest/StockMedia.h"
+#include "media/StandIns.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -72,8 +73,11 @@ Result<ResolvedMedia> MediaResolver::resolve(std::string_view ref) const {
 
     if (const auto it = overrides_.find(overrideKey(ref)); it != overrides_.end()) {
         Result<ResolvedMedia> loaded = loadReal(it->second);
-        if (!loaded)
-            return withContext("media override for '" + std::string(ref) + "'", loaded.error());
+        if (!loaded) {
+            Error error = loaded.error();
+            for (Diagnostic& d : error.diagnostics) d.message = "media override for '" + std::string(ref) + "': " + d.message;
+            return error;
+        }
         return loaded;
     }
 
@@ -90,25 +94,27 @@ Result<ResolvedMedia> MediaResolver::resolve(std::string_view ref) const {
                                                                                          : ref.find('.', 9) - 9));
         const StockMediaInfo unknown{hash, "", "unknown stock texture", 512, 512, 3, StockMediaKind::Photo};
         ResolvedMedia standIn{makeStandIn(unknown), true, {}};
-        standIn.notice = "toyhost: stock texture " + std::string(ref) +
-                         " is not in toyhost's table (its size is unknown); using a 512x512 stand-in. Supply "
-                         "the real file with --media-file " + hash + "=<path> or --media DIR.";
+        standIn.notice.severity = Severity::Notice;
+        standIn.notice.code = "media.unknown-stand-in";
+        standIn.notice.message = "stock texture " + std::string(ref) +
+                                 " is not in toyhost's table (its size is unknown); using a 512x512 stand-in. "
+                                 "Supply the real file with --media-file " + hash + "=<path> or --media DIR.";
         return standIn;
     }
     if (!info) {
-        return Error{
-            "media '" + std::string(ref) +
-            "' is not a Shadertoy stock texture and was found in no override or media folder"};
+        return Error("media '" + std::string(ref) +
+                         "' is not a Shadertoy stock texture and was found in no override or media folder",
+                     "media.not-found");
     }
 
     const std::string path = stockMediaPath(*info);
     ResolvedMedia standIn{makeStandIn(*info), true, {}};
-    standIn.notice =
-        "toyhost: stock texture '" + std::string(info->name) + "' (" + path + ", " +
-        std::to_string(info->width) + "x" + std::to_string(info->height) +
-        ") is not available; using a deterministic stand-in. Supply the real file with "
-        "--media-file " +
-        std::string(info->hash) + "=<path>.";
+    standIn.notice.severity = Severity::Notice;
+    standIn.notice.code = "media.stand-in";
+    standIn.notice.message = "stock texture '" + std::string(info->name) + "' (" + path + ", " +
+                             std::to_string(info->width) + "x" + std::to_string(info->height) +
+                             ") is not available; using a deterministic stand-in. Supply the real file with "
+                             "--media-file " + std::string(info->hash) + "=<path>.";
     return standIn;
 }
 

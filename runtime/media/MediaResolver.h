@@ -10,16 +10,16 @@
 #include <vector>
 
 #include "core/Result.h"
-#include "media/Image.h"
+#include "image/Image.h"
 
 namespace toyhost {
 
 struct ResolvedMedia {
-    Image8 image;          // RGBA8, rows top row first
+    Image8 image;          // RGBA8, rows bottom first
     bool standIn = false;  // true when the real file was not available
-    // One line, empty unless standIn, e.g. "toyhost: stock texture 'Abstract 3'
-    // (/media/a/8979...jpg, 1024x1024) is not available; using a deterministic stand-in. ..."
-    std::string notice;
+    // Set when standIn: a notice such as "stock texture 'Abstract 3' (/media/a/8979...jpg,
+    // 1024x1024) is not available; using a deterministic stand-in. ..."
+    Diagnostic notice;
 };
 
 // Resolution order for an id: its override, then each search folder in the order added, then (for

@@ -1,22 +1,18 @@
 #include "render/ChannelTextures.h"
 
-#include <cstring>
 #include <vector>
 
 namespace toyhost {
 
 InputTexture uploadImage(const Image8& image, const SamplerDesc& sampler) {
     InputTexture out{makeTexture(), image.width, image.height};
-    const size_t rowBytes = static_cast<size_t>(image.width) * 4;
-    // GL's first row is t = 0. A file's first row is its top, so uploading unchanged shows the
-    // image upside down; vflip (Shadertoy's default) reverses the rows to put the top at t = 1.
+    // GL's first row is t = 0. Images in memory are bottom row first, so with vflip (Shadertoy's
+    // default) they upload as they are, the top at t = 1; without vflip the browser uploads the
+    // file's rows in file order (top first), which puts the top at t = 0.
     std::vector<std::uint8_t> flipped;
     const std::uint8_t* pixels = image.rgba.data();
-    if (sampler.vflip) {
-        flipped.resize(image.rgba.size());
-        for (int y = 0; y < image.height; ++y)
-            std::memcpy(flipped.data() + rowBytes * y, image.rgba.data() + rowBytes * (image.height - 1 - y),
-                        rowBytes);
+    if (!sampler.vflip) {
+        copyFlipped(std::span<const std::uint8_t>(image.rgba), image.width, image.height, flipped);
         pixels = flipped.data();
     }
     glBindTexture(GL_TEXTURE_2D, out.texture.id());

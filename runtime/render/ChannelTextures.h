@@ -10,7 +10,7 @@
 
 #include "gl/GlObjects.h"
 #include "manifest/ManifestDesc.h"
-#include "media/Image.h"
+#include "image/Image.h"
 
 namespace toyhost {
 
@@ -20,8 +20,8 @@ struct InputTexture {
     int height = 0;
 };
 
-// Uploads `image` (rows top first) as RGBA8. With `vflip` the top row ends up at t = 1, as
-// WebGL's UNPACK_FLIP_Y does; without it the file's first row is at t = 0.
+// Uploads `image` (rows bottom first) as RGBA8. With `vflip` the picture's top row ends up at
+// t = 1, as WebGL's UNPACK_FLIP_Y does; without it the file's first row (its top) is at t = 0.
 InputTexture uploadImage(const Image8& image, const SamplerDesc& sampler);
 
 class KeyboardTexture {

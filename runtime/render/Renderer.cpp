@@ -1,50 +1,22 @@
 #include "render/Renderer.h"
 
 #include <GLES3/gl3.h>
-#include <optional>
+#include <map>
 #include <string>
+#include <tuple>
 
-#include "capture/PixelConversion.h"
+#include "core/Defaults.h"
 #include "gl/GlContext.h"
 #include "gl/GlObjects.h"
-#include "gl/ShaderProgram.h"
+#include "image/PixelConversion.h"
 #include "render/ChannelTextures.h"
-#include "render/PingPongTarget.h"
-#include "shader/ShaderAssembly.h"
+#include "render/PassProgram.h"
 
 namespace toyhost {
 
 namespace {
 
-// Uniform locations, looked up once after linking; -1 where the shader does not use one.
-struct UniformLocations {
-    GLint resolution = -1, time = -1, timeDelta = -1, frameRate = -1, frame = -1, mouse = -1, date = -1,
-          sampleRate = -1, channelTime = -1, channelResolution = -1;
-    std::array<GLint, kChannelCount> chSize{-1, -1, -1, -1}, chTime{-1, -1, -1, -1}, chLoaded{-1, -1, -1, -1};
-
-    UniformLocations() = default;
-    explicit UniformLocations(GLuint program) {
-        auto at = [&](const std::string& name) { return glGetUniformLocation(program, name.c_str()); };
-        resolution = at("iResolution");
-        time = at("iTime");
-        timeDelta = at("iTimeDelta");
-        frameRate = at("iFrameRate");
-        frame = at("iFrame");
-        mouse = at("iMouse");
-        date = at("iDate");
-        sampleRate = at("iSampleRate");
-        channelTime = at("iChannelTime");
-        channelResolution = at("iChannelResolution");
-        for (int i = 0; i < kChannelCount; ++i) {
-            const std::string ch = "iCh" + std::to_string(i);
-            chSize[i] = at(ch + ".size");
-            chTime[i] = at(ch + ".time");
-            chLoaded[i] = at(ch + ".loaded");
-        }
-    }
-};
-
-// What a channel binds, fixed after creation except for buffers, whose slot depends on the frame.
+// What a channel binds, fixed after creation except for buffers, whose slot depends on the step.
 struct ChannelBinding {
     GLuint texture = 0;            // non-buffer inputs
     GLuint sampler = 0;
@@ -53,48 +25,48 @@ struct ChannelBinding {
 
 struct PassRuntime {
     PassPlan plan;
-    GlProgram program;
-    UniformLocations uniforms;
+    PassProgram program;
     std::array<ChannelBinding, kChannelCount> channels;
 };
 
 }  // namespace
 
 struct Renderer::Impl {
+    TextureAllocator allocate;
     SamplerSet samplers;
     GlVertexArray vertexArray = makeVertexArray();
     std::optional<KeyboardTexture> keyboard;
     std::array<std::optional<PingPongTarget>, kBufferCount> buffers;
     RenderTexture imageTarget;
     bool floatImage = false;
-    std::vector<InputTexture> inputs;
+    // Image textures by (picture, vflip, mipmapped): channels showing the same upload share it.
+    std::map<std::tuple<std::string, bool, bool>, InputTexture> inputs;
     std::vector<PassRuntime> passes;
-    int lastFrame = -1;
-    bool imageRendered = false;
+    std::uint64_t lastStep = 0;
 
-    void setStaticUniforms(PassRuntime& pass) {
-        glUseProgram(pass.program.id());
+    GLenum imageFormat() const { return floatImage ? GL_RGBA32F : GL_RGBA8; }
+
+    // The uniforms that change only when the program, the bindings or the canvas change.
+    void setStaticUniforms(PassRuntime& pass) const {
+        const UniformLocations& u = pass.program.uniforms;
+        glUseProgram(pass.program.program.id());
         for (int i = 0; i < kChannelCount; ++i) {
             // Texture unit i carries iChannel i (and iCh i.sampler in the Image pass).
-            glUniform1i(glGetUniformLocation(pass.program.id(), ("iChannel" + std::to_string(i)).c_str()), i);
-            glUniform1i(glGetUniformLocation(pass.program.id(), ("iCh" + std::to_string(i) + ".sampler").c_str()), i);
-            glUniform1i(pass.uniforms.chLoaded[i], pass.plan.channels[i].kind != ChannelKind::None);
-            glUniform1f(pass.uniforms.chTime[i], 0.0f);
+            glUniform1i(u.channel[i], i);
+            glUniform1i(u.chSampler[i], i);
+            glUniform1i(u.chLoaded[i], pass.plan.channels[i].kind != ChannelKind::None);
+            glUniform1f(u.chTime[i], 0.0f);
         }
-        glUniform1f(pass.uniforms.sampleRate, 44100.0f);
+        glUniform1f(u.sampleRate, static_cast<float>(defaults::kSampleRate));
         const float zeros[4] = {0, 0, 0, 0};
-        glUniform1fv(pass.uniforms.channelTime, 4, zeros);  // no video or audio inputs
-        setResolutionUniforms(pass);
-        glUseProgram(0);
-    }
-
-    void setResolutionUniforms(PassRuntime& pass) {
+        glUniform1fv(u.channelTime, 4, zeros);  // no video or audio inputs
         std::array<float, 3 * kChannelCount> resolutions{};
         for (int i = 0; i < kChannelCount; ++i) {
             for (int k = 0; k < 3; ++k) resolutions[3 * i + k] = pass.channels[i].resolution[k];
-            glUniform3fv(pass.uniforms.chSize[i], 1, pass.channels[i].resolution.data());
+            glUniform3fv(u.chSize[i], 1, pass.channels[i].resolution.data());
         }
-        glUniform3fv(pass.uniforms.channelResolution, kChannelCount, resolutions.data());
+        glUniform3fv(u.channelResolution, kChannelCount, resolutions.data());
+        glUseProgram(0);
     }
 };
 
@@ -102,45 +74,46 @@ Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Renderer::~Renderer() = default;
 
 Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest, const PassGraph& graph,
-                                                   const RendererOptions& options,
-                                                   const ImageProvider& images) {
+                                                   const RendererDesc& desc, const ChannelImages& images) {
     if (Status features = checkRequiredGlFeatures(); !features) return features.error();
     auto impl = std::make_unique<Impl>();
-    const int w = options.width, h = options.height;
+    impl->allocate = desc.allocate ? desc.allocate : TextureAllocator(createRenderTexture);
+    const int w = desc.width, h = desc.height;
     const std::array<float, 3> canvas{float(w), float(h), 1.0f};
+
+    // Every program first: a shader error is reported before any large allocation, and all
+    // failing passes are reported together.
+    std::vector<Diagnostic> problems;
+    std::vector<PassProgram> programs;
+    for (size_t p = 0; p < graph.passes.size(); ++p) {
+        Result<PassProgram> program = compilePassProgram(manifest, manifest.passes[p]);
+        if (!program) {
+            problems.insert(problems.end(), program.error().diagnostics.begin(), program.error().diagnostics.end());
+            continue;
+        }
+        programs.push_back(std::move(*program));
+    }
+    if (!problems.empty()) return Error(std::move(problems));
 
     for (int b = 0; b < kBufferCount; ++b) {
         if (!graph.bufferUsed[b]) continue;
-        Result<PingPongTarget> target = PingPongTarget::create(w, h, graph.bufferMipmapped[b]);
-        if (!target) return withContext(passName(bufferPass(b)), target.error());
+        Result<PingPongTarget> target = PingPongTarget::create(w, h, graph.bufferMipmapped[b], impl->allocate);
+        if (!target) return inPass(passName(bufferPass(b)), target.error());
         impl->buffers[b] = std::move(*target);
     }
-    impl->floatImage = options.floatImageTarget;
-    Result<RenderTexture> image =
-        createRenderTexture(w, h, options.floatImageTarget ? GL_RGBA32F : GL_RGBA8, false);
-    if (!image) return withContext("Image", image.error());
+    impl->floatImage = desc.floatImageTarget;
+    Result<RenderTexture> image = impl->allocate(w, h, impl->imageFormat(), false);
+    if (!image) return inPass("Image", image.error());
     impl->imageTarget = std::move(*image);
 
-    impl->inputs.reserve(graph.passes.size() * kChannelCount);
     for (size_t p = 0; p < graph.passes.size(); ++p) {
         const PassPlan& plan = graph.passes[p];
-        const PassDesc& desc = manifest.passes[p];
-        ShaderInputs shaderInputs;
-        shaderInputs.pass = plan.id;
-        shaderInputs.common = manifest.commonSource ? &manifest.commonCode : nullptr;
-        shaderInputs.code = desc.code;
-        AssembledShader fragment = assembleFragmentShader(shaderInputs);
-        ProgramSources names{passName(plan.id), desc.sourceName, manifest.commonName};
-        Result<GlProgram> program = buildProgram(fragment, names);
-        if (!program) return program.error();
-
-        PassRuntime pass{plan, std::move(*program), {}, {}};
-        pass.uniforms = UniformLocations(pass.program.id());
+        const PassDesc& passDesc = manifest.passes[p];
+        PassRuntime pass{plan, std::move(programs[p]), {}};
         for (int c = 0; c < kChannelCount; ++c) {
             const ChannelPlan& channel = plan.channels[c];
             ChannelBinding& binding = pass.channels[c];
             binding.sampler = impl->samplers.get(channel.sampler);
-            const std::string where = std::string(passName(plan.id)) + " / iChannel" + std::to_string(c);
             switch (channel.kind) {
                 case ChannelKind::None: binding.sampler = 0; break;
                 case ChannelKind::Buffer: binding.resolution = canvas; break;
@@ -151,10 +124,16 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
                     break;
                 case ChannelKind::ImageFile:
                 case ChannelKind::StockMedia: {
-                    Result<Image8> pixels = images(desc.channels[c]);
-                    if (!pixels) return withContext(where, pixels.error());
-                    impl->inputs.push_back(uploadImage(*pixels, channel.sampler));
-                    binding.texture = impl->inputs.back().texture.id();
+                    const Image8* pixels = images.find(passDesc.channels[c]);
+                    if (!pixels)
+                        return inPass(passName(plan.id),
+                                      Error("the channel's image was not loaded before rendering", "internal"), c);
+                    const auto key = std::make_tuple(channelImageKey(passDesc.channels[c]), channel.sampler.vflip,
+                                                     channel.sampler.filter == Filter::Mipmap);
+                    auto it = impl->inputs.find(key);
+                    if (it == impl->inputs.end())
+                        it = impl->inputs.emplace(key, uploadImage(*pixels, channel.sampler)).first;
+                    binding.texture = it->second.texture.id();
                     binding.resolution = {float(pixels->width), float(pixels->height), 1};
                     break;
                 }
@@ -164,7 +143,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
         impl->passes.push_back(std::move(pass));
     }
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
-        return Error{std::string("GL: setting up the passes failed: ") + glErrorName(error)};
+        return Error(std::string("GL: setting up the passes failed: ") + glErrorName(error), "gl.setup");
 
     std::unique_ptr<Renderer> renderer(new Renderer(std::move(impl)));
     renderer->width_ = w;
@@ -172,7 +151,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
     return renderer;
 }
 
-void Renderer::renderFrame(const FrameUniforms& u, bool renderImage) {
+void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool renderImage) {
     Impl& s = *impl_;
     glBindVertexArray(s.vertexArray.id());
     glViewport(0, 0, width_, height_);
@@ -182,10 +161,10 @@ void Renderer::renderFrame(const FrameUniforms& u, bool renderImage) {
         const bool isImage = pass.plan.targetBuffer < 0;
         if (isImage && !renderImage) continue;
         GLuint target = isImage ? s.imageTarget.framebuffer.id()
-                                : s.buffers[pass.plan.targetBuffer]->slot(slotWritten(u.frame)).framebuffer.id();
+                                : s.buffers[pass.plan.targetBuffer]->slot(slotWritten(step)).framebuffer.id();
         glBindFramebuffer(GL_FRAMEBUFFER, target);
-        glUseProgram(pass.program.id());
-        const UniformLocations& loc = pass.uniforms;
+        glUseProgram(pass.program.program.id());
+        const UniformLocations& loc = pass.program.uniforms;
         glUniform3f(loc.resolution, float(width_), float(height_), 1.0f);
         glUniform1f(loc.time, u.time);
         glUniform1f(loc.timeDelta, u.timeDelta);
@@ -197,23 +176,17 @@ void Renderer::renderFrame(const FrameUniforms& u, bool renderImage) {
             const ChannelPlan& plan = pass.plan.channels[c];
             GLuint texture = pass.channels[c].texture;
             if (plan.kind == ChannelKind::Buffer)
-                texture = s.buffers[plan.buffer]->slot(slotRead(plan.age, u.frame)).texture.id();
+                texture = s.buffers[plan.buffer]->slot(slotRead(plan.age, step)).texture.id();
             glActiveTexture(GL_TEXTURE0 + c);
             glBindTexture(GL_TEXTURE_2D, texture);
             glBindSampler(c, pass.channels[c].sampler);
         }
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        if (!isImage && s.buffers[pass.plan.targetBuffer]->mipmapped()) {
-            // Mipmaps of a buffer are regenerated only when some channel samples it with `mipmap`.
-            glActiveTexture(GL_TEXTURE0);
-            glBindTexture(GL_TEXTURE_2D,
-                          s.buffers[pass.plan.targetBuffer]->slot(slotWritten(u.frame)).texture.id());
-            glGenerateMipmap(GL_TEXTURE_2D);
-        }
+        // Mipmaps of a buffer are regenerated only when some channel samples it with `mipmap`.
+        if (!isImage) s.buffers[pass.plan.targetBuffer]->generateMipmaps(slotWritten(step));
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    s.lastFrame = u.frame;
-    s.imageRendered = renderImage;
+    s.lastStep = step;
 }
 
 void Renderer::updateKeyboard(std::span<const std::uint8_t> texels) {
@@ -221,61 +194,102 @@ void Renderer::updateKeyboard(std::span<const std::uint8_t> texels) {
 }
 
 Status Renderer::resize(int width, int height) {
-    for (auto& buffer : impl_->buffers)
-        if (buffer)
-            if (Status resized = buffer->resize(width, height); !resized) return resized;
-    Result<RenderTexture> image =
-        createRenderTexture(width, height, impl_->floatImage ? GL_RGBA32F : GL_RGBA8, false);
-    if (!image) return image.error();
-    impl_->imageTarget = std::move(*image);
-    for (PassRuntime& pass : impl_->passes) {
+    Impl& s = *impl_;
+    // Allocate everything first; any failure returns before the current state is touched.
+    std::array<std::optional<PingPongTarget>, kBufferCount> buffers;
+    for (int b = 0; b < kBufferCount; ++b) {
+        if (!s.buffers[b]) continue;
+        Result<PingPongTarget> target = PingPongTarget::create(width, height, s.buffers[b]->mipmapped(), s.allocate);
+        if (!target) return inPass(passName(bufferPass(b)), target.error());
+        buffers[b] = std::move(*target);
+    }
+    Result<RenderTexture> image = s.allocate(width, height, s.imageFormat(), false);
+    if (!image) return inPass("Image", image.error());
+
+    for (int b = 0; b < kBufferCount; ++b)
+        if (buffers[b]) {
+            buffers[b]->copyContentFrom(*s.buffers[b]);
+            s.buffers[b] = std::move(buffers[b]);
+        }
+    s.imageTarget = std::move(*image);
+    width_ = width;
+    height_ = height;
+    for (PassRuntime& pass : s.passes) {
         for (int c = 0; c < kChannelCount; ++c)
             if (pass.plan.channels[c].kind == ChannelKind::Buffer)
                 pass.channels[c].resolution = {float(width), float(height), 1};
-        glUseProgram(pass.program.id());
-        impl_->setResolutionUniforms(pass);
+        s.setStaticUniforms(pass);
     }
-    glUseProgram(0);
-    width_ = width;
-    height_ = height;
     return okStatus();
+}
+
+void Renderer::clearBuffers() {
+    for (auto& buffer : impl_->buffers)
+        if (buffer) buffer->clear();
+}
+
+Status Renderer::replaceProgram(std::size_t index, const ManifestDesc& manifest, const PassDesc& pass) {
+    Result<PassProgram> program = compilePassProgram(manifest, pass);
+    if (!program) return program.error();
+    PassRuntime& runtime = impl_->passes.at(index);
+    runtime.program = std::move(*program);
+    impl_->setStaticUniforms(runtime);
+    return okStatus();
+}
+
+void Renderer::takeBuffersFrom(Renderer& old) {
+    for (int b = 0; b < kBufferCount; ++b) {
+        std::optional<PingPongTarget>& mine = impl_->buffers[b];
+        std::optional<PingPongTarget>& theirs = old.impl_->buffers[b];
+        if (!mine || !theirs) continue;
+        if (theirs->width() == mine->width() && theirs->height() == mine->height() &&
+            theirs->mipmapped() == mine->mipmapped())
+            mine = std::move(theirs);
+        else
+            mine->copyContentFrom(*theirs);
+    }
+    impl_->lastStep = old.impl_->lastStep;
 }
 
 void Renderer::finish() { glFinish(); }
 
-bool Renderer::outputIsFloat(PassId pass) const { return pass != PassId::Image || impl_->floatImage; }
-
-unsigned int Renderer::outputFramebuffer(PassId pass) const {
-    if (pass == PassId::Image) return impl_->imageTarget.framebuffer.id();
+PassOutput Renderer::output(PassId pass) const {
+    if (pass == PassId::Image)
+        return {impl_->imageTarget.framebuffer.id(), impl_->imageTarget.texture.id(), width_, height_,
+                impl_->floatImage ? PixelFormat::Rgba32f : PixelFormat::Rgba8};
     const auto& buffer = impl_->buffers[bufferIndex(pass)];
-    return buffer ? buffer->slot(slotWritten(impl_->lastFrame < 0 ? 0 : impl_->lastFrame)).framebuffer.id() : 0;
-}
-
-void Renderer::readImageRgba8(std::vector<std::uint8_t>& out) const {
-    out.resize(static_cast<size_t>(width_) * height_ * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, impl_->imageTarget.framebuffer.id());
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    if (impl_->floatImage) {
-        // Convert as GL does when writing float colour to a UNORM8 target.
-        std::vector<float> floats(out.size());
-        glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, floats.data());
-        for (size_t i = 0; i < floats.size(); ++i) out[i] = unorm8(floats[i]);
-    } else {
-        glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
-    }
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    if (!buffer) return {};
+    const RenderTexture& slot = buffer->slot(slotWritten(impl_->lastStep));
+    return {slot.framebuffer.id(), slot.texture.id(), width_, height_, PixelFormat::Rgba32f};
 }
 
 void Renderer::readRgba32f(PassId pass, std::vector<float>& out) const {
+    const PassOutput source = output(pass);
     out.resize(static_cast<size_t>(width_) * height_ * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, outputFramebuffer(pass));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, source.framebuffer);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    if (pass == PassId::Image && !impl_->floatImage) {
+    if (source.format == PixelFormat::Rgba8) {
         std::vector<std::uint8_t> bytes(out.size());
         glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
         for (size_t i = 0; i < bytes.size(); ++i) out[i] = bytes[i] / 255.0f;
     } else {
         glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, out.data());
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+}
+
+void Renderer::readRgba8(PassId pass, std::vector<std::uint8_t>& out) const {
+    const PassOutput source = output(pass);
+    out.resize(static_cast<size_t>(width_) * height_ * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, source.framebuffer);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    if (source.format == PixelFormat::Rgba32f) {
+        // Convert as GL does when writing float colour to a UNORM8 target.
+        std::vector<float> floats(out.size());
+        glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, floats.data());
+        toUnorm8(floats, out);
+    } else {
+        glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
     }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }

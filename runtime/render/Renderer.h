@@ -1,29 +1,35 @@
-// Renderer: executes a PassGraph each frame. Owns the programs (one per pass, uniform locations
-// looked up once), the buffers' ping-pong targets, the channel textures and the Image target.
-// Needs a current GL context for its whole life.
+// Renderer: executes a PassGraph. Owns the programs (one per pass, uniform locations looked up
+// once), the buffers' ping-pong targets, the channel textures and the Image target; which slot a
+// channel reads comes from the graph and the step counter it is given. The Player
+// (player/Player.h) owns the renderer and decides when to render, resize or rebuild; nothing
+// else drives it. Needs a current GL context for its whole life.
 #pragma once
 
 #include <array>
 #include <cstdint>
-#include <functional>
-#include <glm/vec4.hpp>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
+#include <glm/vec4.hpp>
+
 #include "core/Result.h"
 #include "graph/PassGraph.h"
+#include "image/Image.h"
 #include "manifest/ManifestDesc.h"
-#include "media/Image.h"
+#include "media/ChannelImages.h"
+#include "render/RenderTargets.h"
 
 namespace toyhost {
 
-struct RendererOptions {
-    int width = 800;
-    int height = 450;
+struct RendererDesc {
+    int width = 0;                 // canvas size, already validated
+    int height = 0;
     // The Image pass renders into RGBA8 (what the screen shows) unless its raw float output is
-    // wanted (EXR capture of Image).
+    // wanted (EXR capture of Image, tests).
     bool floatImageTarget = false;
+    TextureAllocator allocate;     // empty: createRenderTexture
 };
 
 // Per-frame uniform values; the caller owns the clock and the inputs.
@@ -36,25 +42,40 @@ struct FrameUniforms {
     glm::vec4 date{0};
 };
 
-// Supplies the pixels of an image-file or stock-media channel (rows top first).
-using ImageProvider = std::function<Result<Image8>(const ChannelDesc&)>;
+// Where a pass's latest output is, for readback and presenting.
+struct PassOutput {
+    unsigned int framebuffer = 0;
+    unsigned int texture = 0;
+    int width = 0;
+    int height = 0;
+    PixelFormat format = PixelFormat::Rgba8;
+};
 
 class Renderer {
 public:
     static Result<std::unique_ptr<Renderer>> create(const ManifestDesc& manifest, const PassGraph& graph,
-                                                    const RendererOptions& options,
-                                                    const ImageProvider& images);
+                                                    const RendererDesc& desc, const ChannelImages& images);
     ~Renderer();
 
-    // Runs every buffer, then Image when `renderImage` (headless runs skip Image on frames
-    // nobody captures). Frames must be rendered in order, starting at 0.
-    void renderFrame(const FrameUniforms& uniforms, bool renderImage = true);
+    // Runs every buffer, then Image when `renderImage`. `step` picks the ping-pong slots
+    // (graph/PassGraph.h); it must go up by one per call.
+    void renderFrame(const FrameUniforms& uniforms, std::uint64_t step, bool renderImage = true);
 
     // New keyboard texels (256*3 bytes, row 0 first); call only when they changed.
     void updateKeyboard(std::span<const std::uint8_t> texels);
 
-    // Resizes the canvas; buffer content survives in the bottom-left corner.
+    // Resizes the canvas: every target is allocated first, and only when all of them exist is
+    // the buffer content copied (bottom-left) and the old targets released. On failure nothing
+    // changed.
     Status resize(int width, int height);
+    // Every buffer's both slots to zero (a restart: frame 0 starts from cleared buffers).
+    void clearBuffers();
+
+    // Recompiles pass `index` (graph order) from `pass`; on failure the old program stays.
+    Status replaceProgram(std::size_t index, const ManifestDesc& manifest, const PassDesc& pass);
+    // For a renderer rebuilt from a changed manifest: takes the content of every buffer that
+    // `old` also has (moving the textures when their layout is the same, else copying).
+    void takeBuffersFrom(Renderer& old);
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -63,16 +84,13 @@ public:
     // end so that their measured time includes the GPU's work; never per frame.
     void finish();
 
-    // True when a pass's output texture holds floats (buffers, and the Image target when it was
-    // created with floatImageTarget); false for the RGBA8 Image target.
-    bool outputIsFloat(PassId pass) const;
+    // A pass's latest output (a buffer's last rendered slot, or the Image target).
+    PassOutput output(PassId pass) const;
 
-    // Synchronous readbacks of the last rendered frame, rows bottom first.
-    void readImageRgba8(std::vector<std::uint8_t>& out) const;
-    // A buffer's last rendered texture, or the Image target, as float RGBA.
+    // Synchronous readbacks of a pass's latest output, rows bottom first: as floats, or as the
+    // bytes a UNORM8 target holds (clamped and rounded).
     void readRgba32f(PassId pass, std::vector<float>& out) const;
-    // The framebuffer holding a pass's latest output (for readback and presenting).
-    unsigned int outputFramebuffer(PassId pass) const;
+    void readRgba8(PassId pass, std::vector<std::uint8_t>& out) const;
 
     struct Impl;
 

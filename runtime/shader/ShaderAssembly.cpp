@@ -1,16 +1,11 @@
 #include "shader/ShaderAssembly.h"
 
 #include <algorithm>
-#include <regex>
 #include <sstream>
 
 namespace toyhost {
 
 namespace {
-
-int countNewlines(std::string_view text) {
-    return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
-}
 
 const char* samplerKeyword(SamplerType type) {
     switch (type) {
@@ -26,6 +21,7 @@ std::string makeHeader(const ShaderInputs& in) {
     const bool image = in.pass == PassId::Image;
     std::ostringstream h;
     h << "#version 300 es\n"
+         "#line " << kHeaderLineBase + 2 << "\n"
          "precision highp float;\n"
          "precision highp int;\n"
          "precision mediump sampler3D;\n"
@@ -86,15 +82,14 @@ std::string makeHeader(const ShaderInputs& in) {
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     AssembledShader out;
     out.text = makeHeader(inputs);
-    out.headerLines = countNewlines(out.text);
-    out.passFirstLine = out.headerLines + 1;
     if (inputs.common) {
         // Common is pasted followed by a newline.
+        out.hasCommon = true;
+        out.text += "#line " + std::to_string(kCommonLineBase + 1) + "\n";
         out.text += *inputs.common;
         out.text += '\n';
-        out.commonLines = countNewlines(*inputs.common) + 1;
-        out.passFirstLine += out.commonLines;
     }
+    out.text += "#line 1\n";
     out.text += inputs.code;
     return out;
 }
@@ -107,49 +102,10 @@ const char* fullscreenVertexShader() {
            "}\n";
 }
 
-SourceLine mapGeneratedLine(const AssembledShader& shader, int line) {
-    if (line <= shader.headerLines) return {SourceLine::Part::Header, line};
-    if (line < shader.passFirstLine) return {SourceLine::Part::Common, line - shader.headerLines};
-    return {SourceLine::Part::Pass, line - shader.passFirstLine + 1};
-}
-
-std::string translateCompilerLog(const AssembledShader& shader, std::string_view log,
-                                 const std::string& commonFile, const std::string& passFile) {
-    // Mesa: "0:57(12): error: msg"; glslang/ANGLE: "ERROR: 0:57: msg"; NVIDIA: "0(57) : error C...".
-    static const std::regex mesa(R"(^\s*(\d+):(\d+)\((\d+)\):\s*(.*)$)");
-    static const std::regex angle(R"(^\s*(ERROR|WARNING):\s*(\d+):(\d+):\s*(.*)$)");
-    static const std::regex nvidia(R"(^\s*(\d+)\((\d+)\)\s*:\s*(.*)$)");
-
-    auto location = [&](int generatedLine, const std::string& column) {
-        SourceLine where = mapGeneratedLine(shader, generatedLine);
-        std::string file = where.part == SourceLine::Part::Pass     ? passFile
-                           : where.part == SourceLine::Part::Common ? commonFile
-                                                                    : std::string("<toyhost header>");
-        std::string text = file + ":" + std::to_string(where.line);
-        if (!column.empty()) text += ":" + column;
-        return text;
-    };
-
-    std::string out;
-    std::istringstream lines{std::string(log)};
-    std::string line;
-    while (std::getline(lines, line)) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (line.empty()) continue;
-        std::smatch m;
-        std::string rewritten = line;
-        if (std::regex_match(line, m, mesa)) {
-            rewritten = location(std::stoi(m[2]), m[3]) + ": " + m[4].str();
-        } else if (std::regex_match(line, m, angle)) {
-            std::string kind = m[1] == "ERROR" ? "error" : "warning";
-            rewritten = location(std::stoi(m[3]), "") + ": " + kind + ": " + m[4].str();
-        } else if (std::regex_match(line, m, nvidia)) {
-            rewritten = location(std::stoi(m[2]), "") + ": " + m[3].str();
-        }
-        if (!out.empty()) out += '\n';
-        out += rewritten;
-    }
-    return out;
+SourceLine mapGeneratedLine(int line) {
+    if (line > kHeaderLineBase) return {SourceLine::Part::Header, line - kHeaderLineBase};
+    if (line > kCommonLineBase) return {SourceLine::Part::Common, line - kCommonLineBase};
+    return {SourceLine::Part::Pass, line};
 }
 
 }  // namespace toyhost

@@ -1,6 +1,6 @@
 // Builds the GLSL ES 3.00 fragment shader a pass becomes on shadertoy.com (header, uniforms,
-// main() wrapper, then Common, then the pass code) and maps compiler messages back to the
-// user's files and lines. Pure text work; no GL needed.
+// main() wrapper, then Common, then the pass code), numbered so that compiler messages map back
+// to the user's files and lines (shader/CompilerLog.h). Pure text work; no GL needed.
 #pragma once
 
 #include <array>
@@ -21,11 +21,17 @@ struct ShaderInputs {
     std::array<SamplerType, kChannelCount> samplers{};
 };
 
+// The generated text numbers its parts apart with #line, so a compiler message's line number
+// alone says which part it is in: the header from kHeaderLineBase, Common from kCommonLineBase
+// and the pass code from 1, exactly as the user's file numbers it (a user's own #line in the pass
+// keeps working as the user meant it). The site numbers lines through the whole concatenated
+// text; only __LINE__ can tell the difference.
+inline constexpr int kHeaderLineBase = 2000000;
+inline constexpr int kCommonLineBase = 1000000;
+
 struct AssembledShader {
     std::string text;
-    int headerLines = 0;       // lines 1..headerLines are the generated header
-    int commonLines = 0;       // lines of Common (0 without Common)
-    int passFirstLine = 1;     // generated line where the pass code's line 1 is
+    bool hasCommon = false;
 };
 
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs);
@@ -39,12 +45,7 @@ struct SourceLine {
     int line = 0;              // 1-based line within that part
 };
 
-SourceLine mapGeneratedLine(const AssembledShader& shader, int generatedLine);
-
-// Rewrites a compiler info log so each message points at the user's file and line:
-// "0:57(12): error: ..." becomes "<passFile>:40:12: error: ..." (or "<commonFile>:...").
-// Understands Mesa's "S:L(C):", ANGLE/glslang's "ERROR: S:L:" and NVIDIA's "S(L) :" forms.
-std::string translateCompilerLog(const AssembledShader& shader, std::string_view log,
-                                 const std::string& commonFile, const std::string& passFile);
+// Which part a line number in a compiler message belongs to (see kHeaderLineBase).
+SourceLine mapGeneratedLine(int reportedLine);
 
 }  // namespace toyhost

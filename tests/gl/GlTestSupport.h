@@ -1,5 +1,6 @@
-// Shared helpers for GL tests: one EGL surfaceless context per test process, loading a
-// shadertoy folder into a Renderer, running the CLI, and paths of the repo and ../shared.
+// Shared helpers for GL tests: one headless EGL context per test process, a shadertoy loaded
+// into a Player (the engine every driver runs), running the CLI, and paths of the repo and
+// ../shared.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -7,15 +8,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
-#include "gl/EglSurfacelessContext.h"
-#include "graph/PassGraph.h"
-#include "manifest/ManifestLoader.h"
-#include "media/MediaResolver.h"
-#include "render/Renderer.h"
-#include "run/ChannelImages.h"
+#include "export/LoadShadertoy.h"
+#include "gl/HeadlessContext.h"
+#include "player/Player.h"
 
 namespace toyhost::testing {
 
@@ -34,54 +33,45 @@ inline std::filesystem::path toyhostBinary() { return TOYHOST_BIN; }
 class GlTest : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        auto made = createEglSurfacelessContext();
-        ASSERT_TRUE(made.ok()) << made.error().message;
-        context_ = std::move(*made).release();
+        auto made = createHeadlessContext();
+        ASSERT_TRUE(made.ok()) << made.error().text();
+        context_ = std::move(*made);
     }
-    static void TearDownTestSuite() {
-        delete context_;
-        context_ = nullptr;
-    }
-    static inline GlContext* context_ = nullptr;
+    static void TearDownTestSuite() { context_.reset(); }
+    static inline std::shared_ptr<GlContext> context_;
 };
 
-// A shadertoy loaded into a renderer, with the same image loading as real runs.
-struct LoadedShadertoy {
-    ManifestDesc manifest;
-    PassGraph graph;
-    MediaResolver media;
-    std::unique_ptr<ChannelImages> images;
-    std::unique_ptr<Renderer> renderer;
+// The fixed time step of headless runs: frame n at iTime = n / fps.
+inline FrameTime fixedStep(int frame, double fps = 60.0) {
+    return FrameTime{frame / fps, 1.0 / fps, fps, glm::vec4(0.0f)};
+}
 
-    FrameUniforms uniforms(int frame, float fps = 60.0f) const {
-        FrameUniforms u;
-        u.frame = frame;
-        u.time = frame / fps;
-        u.timeDelta = 1.0f / fps;
-        u.frameRate = fps;
-        return u;
-    }
-};
-
-inline std::unique_ptr<LoadedShadertoy> loadShadertoy(const std::filesystem::path& target, int width,
-                                                      int height, bool floatImage = false) {
-    auto loaded = std::make_unique<LoadedShadertoy>();
-    auto manifest = loadManifest(target);
-    EXPECT_TRUE(manifest.ok()) << manifest.error().message;
+// A shadertoy (folder, manifest or export) in a Player on `context`, with the same loading as
+// real runs (images decoded, stand-ins for stock media).
+inline std::unique_ptr<Player> loadPlayer(const std::shared_ptr<GlContext>& context, const std::filesystem::path& target,
+                                          int width, int height, bool floatImage = false,
+                                          TextureAllocator allocate = {}) {
+    auto manifest = loadShadertoy(target);
+    EXPECT_TRUE(manifest.ok()) << manifest.error().text();
     if (!manifest.ok()) return nullptr;
-    loaded->manifest = std::move(*manifest);
-    loaded->graph = buildPassGraph(loaded->manifest);
-    for (const auto& [id, file] : loaded->manifest.mediaOverrides) loaded->media.setOverride(id, file);
-    loaded->images = std::make_unique<ChannelImages>(loaded->media, nullptr);
-    RendererOptions options;
-    options.width = width;
-    options.height = height;
-    options.floatImageTarget = floatImage;
-    auto renderer = Renderer::create(loaded->manifest, loaded->graph, options, std::ref(*loaded->images));
-    EXPECT_TRUE(renderer.ok()) << renderer.error().message;
-    if (!renderer.ok()) return nullptr;
-    loaded->renderer = std::move(*renderer);
-    return loaded;
+    auto plan = planPlayer(std::move(*manifest), MediaOptions{});
+    EXPECT_TRUE(plan.ok()) << plan.error().text();
+    if (!plan.ok()) return nullptr;
+    PlayerDesc desc;
+    desc.width = width;
+    desc.height = height;
+    desc.floatImage = floatImage;
+    desc.allocate = std::move(allocate);
+    auto player = Player::create(context, std::move(*plan), desc);
+    EXPECT_TRUE(player.ok()) << player.error().text();
+    if (!player.ok()) return nullptr;
+    return std::move(*player);
+}
+
+// Steps `player` through its next frame at the fixed time step of that frame.
+inline void stepAt(Player& player, std::span<const InputEvent> events = {}, bool renderImage = true,
+                   double fps = 60.0) {
+    player.step(fixedStep(player.frame(), fps), events, renderImage);
 }
 
 struct CommandResult {

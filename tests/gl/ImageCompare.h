@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <limits>
 
-#include "media/Image.h"
+#include "image/Image.h"
 
 namespace toyhost::testing {
 

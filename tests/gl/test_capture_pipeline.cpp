@@ -7,9 +7,9 @@
 #include <cstring>
 #include <fstream>
 
-#include "capture/ImageWriters.h"
-#include "capture/ReadbackRing.h"
-#include "media/ImageFile.h"
+#include "image/ImageWriters.h"
+#include "render/ReadbackRing.h"
+#include "image/ImageFile.h"
 
 namespace toyhost::testing {
 namespace {
@@ -23,24 +23,24 @@ const fs::path kProbe = sourceDir() / "shadertoys/pingpong-probe";
 class CapturePipeline : public GlTest {};
 
 TEST_F(CapturePipeline, RingReturnsTheSameBytesAsASynchronousReadWithFramesInFlight) {
-    auto toy = loadShadertoy(kProbe, 24, 10);
-    ASSERT_TRUE(toy);
+    auto player = loadPlayer(context_, kProbe, 24, 10);
+    ASSERT_TRUE(player);
     for (PassId pass : {PassId::Image, PassId::BufferA}) {
-        const PixelFormat format = toy->renderer->outputIsFloat(pass) ? PixelFormat::Rgba32f : PixelFormat::Rgba8;
+        const PixelFormat format = player->output(pass).format;
         auto ring = ReadbackRing::create(24, 10, format, 3);
-        ASSERT_TRUE(ring.ok()) << ring.error().message;
+        ASSERT_TRUE(ring.ok()) << ring.error().text();
         std::vector<std::vector<std::byte>> expected;
         std::vector<std::byte> got(ring->frameBytes());
         for (int frame = 0; frame < 8; ++frame) {
-            toy->renderer->renderFrame(toy->uniforms(frame));
+            stepAt(*player);
             expected.emplace_back(ring->frameBytes());
-            readFramebuffer(toy->renderer->outputFramebuffer(pass), 24, 10, format, expected.back());
+            readFramebuffer(player->output(pass).framebuffer, 24, 10, format, expected.back());
             if (ring->full()) {
                 const int oldest = ring->oldestFrame();
                 ASSERT_TRUE(ring->takeOldest(got).ok());
                 EXPECT_EQ(got, expected[oldest]) << passName(pass) << " frame " << oldest;
             }
-            ring->start(toy->renderer->outputFramebuffer(pass), frame);
+            ring->start(player->output(pass).framebuffer, frame);
         }
         while (!ring->empty()) {
             const int oldest = ring->oldestFrame();

@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "capture/ImageWriters.h"
+#include "image/ImageWriters.h"
 
 namespace toyhost::testing {
 namespace {
@@ -21,7 +21,7 @@ class CliInputs : public ::testing::Test {
 protected:
     ImageF32 frame(const fs::path& dir, int n) {
         auto exr = readExr(dir / ("a_" + std::to_string(n) + ".exr"));
-        EXPECT_TRUE(exr.ok()) << exr.error().message;
+        EXPECT_TRUE(exr.ok()) << exr.error().text();
         return exr.ok() ? *exr : ImageF32{};
     }
     std::string probe() const { return "run '" + (sourceDir() / "shadertoys/uniform-probe").string() + "' --size 64x8 --quiet "; }

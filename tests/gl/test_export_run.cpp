@@ -11,9 +11,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "capture/ImageWriters.h"
+#include "image/ImageWriters.h"
 #include "export/ShadertoyExport.h"
-#include "media/ImageFile.h"
+#include "image/ImageFile.h"
 
 namespace toyhost::testing {
 namespace {
@@ -48,8 +48,8 @@ std::vector<std::string> fileNames(const fs::path& dir) {
 void expectSamePng(const fs::path& expectedPath, const fs::path& actualPath) {
     auto expected = loadImageFile(expectedPath);
     auto actual = loadImageFile(actualPath);
-    ASSERT_TRUE(expected.ok()) << expected.error().message;
-    ASSERT_TRUE(actual.ok()) << actual.error().message;
+    ASSERT_TRUE(expected.ok()) << expected.error().text();
+    ASSERT_TRUE(actual.ok()) << actual.error().text();
     ASSERT_EQ(expected->width, actual->width);
     ASSERT_EQ(expected->height, actual->height);
     ASSERT_FALSE(expected->rgba.empty());
@@ -61,8 +61,8 @@ void expectSamePng(const fs::path& expectedPath, const fs::path& actualPath) {
 void expectSameExr(const fs::path& expectedPath, const fs::path& actualPath) {
     auto expected = readExr(expectedPath);
     auto actual = readExr(actualPath);
-    ASSERT_TRUE(expected.ok()) << expected.error().message;
-    ASSERT_TRUE(actual.ok()) << actual.error().message;
+    ASSERT_TRUE(expected.ok()) << expected.error().text();
+    ASSERT_TRUE(actual.ok()) << actual.error().text();
     ASSERT_EQ(expected->width, actual->width);
     ASSERT_EQ(expected->height, actual->height);
     ASSERT_EQ(expected->rgba.size(), actual->rgba.size());
@@ -337,7 +337,7 @@ TEST(ExportCompileErrors, SyntheticExportRuns) {
     ASSERT_EQ(run.exitCode, 0) << run.output;
     // Image shows Buffer B, which is (helper(), Buffer A's green, 0, 1) = (0.5, 0.5, 0, 1).
     auto image = loadImageFile(dir / "out" / "f_1.png");
-    ASSERT_TRUE(image.ok()) << image.error().message;
+    ASSERT_TRUE(image.ok()) << image.error().text();
     EXPECT_NEAR(image->rgba[0], 128, 1);
     EXPECT_NEAR(image->rgba[1], 128, 1);
     EXPECT_EQ(image->rgba[2], 0);

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "capture/ImageWriters.h"
-#include "media/ImageFile.h"
+#include "image/ImageWriters.h"
+#include "image/ImageFile.h"
 
 namespace toyhost::testing {
 namespace {
@@ -18,11 +18,10 @@ std::string quoted(const std::filesystem::path& path) { return "'" + path.string
 // Runs floor_render with `arguments` (already shell-quoted), stdout and stderr together.
 CommandResult runFloor(const std::string& arguments) { return runCommand(TOYHOST_FLOOR_BIN, arguments); }
 
-// Writes a top-first Image8 as PNG (writePng takes rows bottom first).
-void writeTopFirstPng(const std::filesystem::path& path, const Image8& image) {
-    const auto bottomUp = flipRows<std::uint8_t>(image.rgba, image.width, image.height);
-    const Status written = writePng(path, image.width, image.height, bottomUp);
-    EXPECT_TRUE(written.ok()) << written.error().message;
+// Writes an image (rows bottom first, like every image in memory) as PNG.
+void writeImagePng(const std::filesystem::path& path, const Image8& image) {
+    const Status written = writePng(path, image.width, image.height, image.rgba);
+    EXPECT_TRUE(written.ok()) << written.error().text();
 }
 
 TEST(FloorMatch, OceanRendersLikeTheIndependentFloorProgram) {
@@ -41,9 +40,9 @@ TEST(FloorMatch, OceanRendersLikeTheIndependentFloorProgram) {
     ASSERT_EQ(floor.exitCode, 0) << floor.output;
 
     auto actual = loadImageFile(toyhostPng);
-    ASSERT_TRUE(actual.ok()) << actual.error().message;
+    ASSERT_TRUE(actual.ok()) << actual.error().text();
     auto expected = loadImageFile(floorPng);
-    ASSERT_TRUE(expected.ok()) << expected.error().message;
+    ASSERT_TRUE(expected.ok()) << expected.error().text();
     ASSERT_EQ(actual->width, 320);
     ASSERT_EQ(actual->height, 180);
     ASSERT_TRUE(sameSize(*actual, *expected));
@@ -56,7 +55,7 @@ TEST(FloorMatch, OceanRendersLikeTheIndependentFloorProgram) {
     std::printf("floor match: PSNR %.2f dB, mean abs error %.4f, max abs error %d\n", psnr,
                 meanAbsError(*actual, *expected), maxAbsError(*actual, *expected));
     EXPECT_GE(psnr, 40.0) << "toyhost and floor_render disagree; see " << dir;
-    if (!(psnr >= 40.0)) writeTopFirstPng(dir / "diff.png", makeDiffImage(*actual, *expected, 8));
+    if (!(psnr >= 40.0)) writeImagePng(dir / "diff.png", makeDiffImage(*actual, *expected, 8));
 }
 
 }  // namespace

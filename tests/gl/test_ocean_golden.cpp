@@ -7,8 +7,8 @@
 #include "GlTestSupport.h"
 #include "ImageCompare.h"
 
-#include "capture/ImageWriters.h"
-#include "media/ImageFile.h"
+#include "image/ImageWriters.h"
+#include "image/ImageFile.h"
 
 namespace toyhost::testing {
 namespace {
@@ -37,9 +37,9 @@ TEST_P(OceanGolden, MatchesCheckedInFrame) {
         GTEST_SKIP() << "golden refreshed: " << golden;
     }
     auto expected = loadImageFile(golden);
-    ASSERT_TRUE(expected.ok()) << expected.error().message << " (refresh with TOYHOST_UPDATE_GOLDENS=1)";
+    ASSERT_TRUE(expected.ok()) << expected.error().text() << " (refresh with TOYHOST_UPDATE_GOLDENS=1)";
     auto actual = loadImageFile(actualPath);
-    ASSERT_TRUE(actual.ok()) << actual.error().message;
+    ASSERT_TRUE(actual.ok()) << actual.error().text();
     ASSERT_TRUE(sameSize(*expected, *actual));
 
     const double psnr = psnrRgb(*expected, *actual);
@@ -47,8 +47,7 @@ TEST_P(OceanGolden, MatchesCheckedInFrame) {
     std::printf("%s: PSNR %.2f dB, mean abs error %.4f, max %d\n", c.name, psnr, mae, maxAbsError(*expected, *actual));
     if (psnr < 40.0 || mae > 1.0) {
         Image8 diff = makeDiffImage(*expected, *actual, 8);
-        std::vector<std::uint8_t> bottomUp = flipRows<std::uint8_t>(diff.rgba, diff.width, diff.height);
-        (void)writePng(dir / (std::string(c.name) + ".diff.png"), diff.width, diff.height, bottomUp);
+        (void)writePng(dir / (std::string(c.name) + ".diff.png"), diff.width, diff.height, diff.rgba);
         fs::copy_file(golden, dir / (std::string(c.name) + ".expected.png"), fs::copy_options::overwrite_existing);
         ADD_FAILURE() << c.name << ": PSNR " << psnr << " dB (need >= 40), mean abs error " << mae
                       << " (need <= 1); actual, expected and diff are in " << dir;

@@ -14,11 +14,12 @@
 #include <unistd.h>
 #include <vector>
 
+#include "DiagnosticText.h"
 #include "TestFolder.h"
 #include "export/LoadShadertoy.h"
 #include "export/ShadertoyExport.h"
 #include "manifest/ManifestWriter.h"
-#include "media/StockMedia.h"
+#include "manifest/StockMedia.h"
 
 using namespace toyhost;
 namespace fs = std::filesystem;
@@ -36,19 +37,26 @@ const std::string kGrayNoise = "/media/a/0c7bf5fe9462d5bffbd11126e82908e39be3ce5
 
 ManifestDesc parseOk(const std::string& text, const fs::path& path = kExportPath) {
     Result<ManifestDesc> result = parseShadertoyExport(text, path);
-    EXPECT_TRUE(result.ok()) << (result.ok() ? "" : result.error().message);
+    EXPECT_TRUE(result.ok()) << (result.ok() ? "" : result.error().text());
     return result.ok() ? std::move(result.value()) : ManifestDesc{};
 }
 
 std::string parseError(const std::string& text, const fs::path& path = kExportPath) {
     Result<ManifestDesc> result = parseShadertoyExport(text, path);
     EXPECT_FALSE(result.ok()) << "expected an error for:\n" << text;
-    return result.ok() ? std::string() : result.error().message;
+    return result.ok() ? std::string() : toyhost::testing::plainText(result.error());
 }
 
 void expectMentions(const std::string& message, std::initializer_list<std::string> parts) {
     for (const std::string& part : parts)
         EXPECT_NE(message.find(part), std::string::npos) << "message lacks \"" << part << "\":\n" << message;
+}
+
+// Every notice as the CLI prints it (without the "toyhost: " prefix).
+std::vector<std::string> noticeLines(const ManifestDesc& desc) {
+    std::vector<std::string> lines;
+    for (const Diagnostic& d : desc.notices) lines.push_back(formatDiagnostic(d));
+    return lines;
 }
 
 std::vector<PassId> passIds(const ManifestDesc& desc) {
@@ -326,15 +334,15 @@ TEST(ExportParse, UnsupportedInputsAreLeftUnboundWithANoticeNamingPassChannelAnd
     EXPECT_EQ(a[3].kind, ChannelKind::Buffer);  // the supported input beside them is kept
 
     const std::vector<std::string> expected = {
-        kLabel + ": Image / iChannel0: video inputs are not supported; the channel is left unbound",
-        kLabel + ": Image / iChannel1: music inputs are not supported; the channel is left unbound",
-        kLabel + ": Image / iChannel2: musicstream inputs are not supported; the channel is left unbound",
-        kLabel + ": Image / iChannel3: mic inputs are not supported; the channel is left unbound",
-        kLabel + ": Buffer A / iChannel0: webcam inputs are not supported; the channel is left unbound",
-        kLabel + ": Buffer A / iChannel1: cubemap inputs are not supported; the channel is left unbound",
-        kLabel + ": Buffer A / iChannel2: volume inputs are not supported; the channel is left unbound",
+        kLabel + ": notice: Image / iChannel0: video inputs are not supported; the channel is left unbound [export.unsupported-input]",
+        kLabel + ": notice: Image / iChannel1: music inputs are not supported; the channel is left unbound [export.unsupported-input]",
+        kLabel + ": notice: Image / iChannel2: musicstream inputs are not supported; the channel is left unbound [export.unsupported-input]",
+        kLabel + ": notice: Image / iChannel3: mic inputs are not supported; the channel is left unbound [export.unsupported-input]",
+        kLabel + ": notice: Buffer A / iChannel0: webcam inputs are not supported; the channel is left unbound [export.unsupported-input]",
+        kLabel + ": notice: Buffer A / iChannel1: cubemap inputs are not supported; the channel is left unbound [export.unsupported-input]",
+        kLabel + ": notice: Buffer A / iChannel2: volume inputs are not supported; the channel is left unbound [export.unsupported-input]",
     };
-    EXPECT_EQ(desc.notices, expected);
+    EXPECT_EQ(noticeLines(desc), expected);
 }
 
 TEST(ExportParse, SoundPassIsSkippedWithANotice) {
@@ -342,13 +350,13 @@ TEST(ExportParse, SoundPassIsSkippedWithANotice) {
                                                  apiPass("image", "Image", "37", kImageCode)}));
     EXPECT_EQ(passIds(desc), std::vector<PassId>{PassId::Image});
     ASSERT_EQ(desc.notices.size(), 1u);
-    expectMentions(desc.notices[0], {kLabel, "Sound pass is skipped"});
+    expectMentions(formatDiagnostic(desc.notices[0]), {kLabel, "Sound pass is skipped"});
 }
 
 TEST(ExportParse, CubemapPassIsAnError) {
     const std::string message = parseError(apiExport({apiPass("image", "Image", "37", kImageCode),
                                                        apiPass("cubemap", "Cube A", "41", "// cube\n")}));
-    expectMentions(message, {kLabel + ": renderpass[1] \"Cube A\": ", "Cube A passes are not supported"});
+    expectMentions(message, {kLabel + ": renderpass[1].type: ", "Cube A passes are not supported"});
 }
 
 TEST(ExportParse, ReadingABufferTheExportLacksUnbindsTheChannelWithANotice) {
@@ -364,10 +372,10 @@ TEST(ExportParse, ReadingABufferTheExportLacksUnbindsTheChannelWithANotice) {
         EXPECT_EQ(c[1].buffer, -1);
     }
     const std::vector<std::string> expected = {
-        kLabel + ": Buffer A / iChannel1 reads Buffer B, which the export does not define; the channel is left unbound",
-        kLabel + ": Image / iChannel1 reads Buffer B, which the export does not define; the channel is left unbound",
+        kLabel + ": notice: Buffer A / iChannel1: reads Buffer B, which the export does not define; the channel is left unbound [export.missing-buffer]",
+        kLabel + ": notice: Image / iChannel1: reads Buffer B, which the export does not define; the channel is left unbound [export.missing-buffer]",
     };
-    EXPECT_EQ(desc.notices, expected);
+    EXPECT_EQ(noticeLines(desc), expected);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -396,28 +404,28 @@ TEST(ExportParse, PassWithoutCode) {
     const std::string noCode = R"({"inputs": [], "outputs": [{"id": 257, "channel": 0}], "name": "Buffer A", "type": "buffer"})";
     const std::string nullCode = R"({"inputs": [], "outputs": [], "code": null, "name": "Common", "type": "common"})";
     const std::string message = parseError(apiExport({apiPass("image", "Image", "37", kImageCode), noCode, nullCode}));
-    expectMentions(message, {kLabel + ": renderpass[1] \"Buffer A\": has no \"code\" string",
-                             kLabel + ": renderpass[2] \"Common\": has no \"code\" string"});
+    expectMentions(message, {kLabel + ": renderpass[1].code: is missing or not a string",
+                             kLabel + ": renderpass[2].code: is missing or not a string"});
 }
 
 TEST(ExportParse, TwoImagePasses) {
     const std::string message = parseError(apiExport({apiPass("image", "Image", "37", kImageCode),
                                                       apiPass("image", "Image", "37", kImageCode)}));
-    expectMentions(message, {kLabel + ": renderpass[1] \"Image\": a second Image pass"});
+    expectMentions(message, {kLabel + ": Image: renderpass[1]: a second Image pass"});
 }
 
 TEST(ExportParse, TwoPassesWithTheSameBufferId) {
     const std::string message = parseError(apiExport({apiPass("buffer", "Buffer A", "257", "// a\n"),
                                                       apiPass("buffer", "Buffer B", "257", "// b\n"),
                                                       apiPass("image", "Image", "37", kImageCode)}));
-    expectMentions(message, {kLabel + ": renderpass[1] \"Buffer B\": a second Buffer A pass"});
+    expectMentions(message, {kLabel + ": Buffer A: renderpass[1]: a second Buffer A pass"});
 }
 
 TEST(ExportParse, InputOnChannelSeven) {
     const std::string inputs = "[" + input("buffer", "257", "/media/previz/buffer00.png", 7) + "]";
     const std::string message = parseError(apiExport({apiPass("buffer", "Buffer A", "257", "// a\n"),
                                                       apiPass("image", "Image", "37", kImageCode, inputs)}));
-    expectMentions(message, {kLabel + ": renderpass[1] \"Image\": an input has no channel 0..3"});
+    expectMentions(message, {kLabel + ": Image: renderpass[1].inputs[0].channel: 7 is not 0..3"});
 }
 
 TEST(ExportParse, UnknownFilterAndWrapNameBufferAndChannel) {
@@ -425,28 +433,28 @@ TEST(ExportParse, UnknownFilterAndWrapNameBufferAndChannel) {
                                input("texture", "5", kLondon, 1, samplerJson("linear", "mirror", "\"true\"")) + "]";
     const std::string message = parseError(apiExport({apiPass("image", "Image", "37", kImageCode),
                                                       apiPass("buffer", "Buffer B", "258", "// b\n", inputs)}));
-    expectMentions(message, {kLabel + ": Buffer B / iChannel2: unknown filter \"trilinear\"",
-                             kLabel + ": Buffer B / iChannel1: unknown wrap \"mirror\""});
+    expectMentions(message, {kLabel + ": Buffer B / iChannel2: renderpass[1].inputs[0].sampler.filter: unknown filter \"trilinear\"",
+                             kLabel + ": Buffer B / iChannel1: renderpass[1].inputs[1].sampler.wrap: unknown wrap \"mirror\""});
 }
 
 TEST(ExportParse, BufferInputWithUnknownId) {
     const std::string inputs = "[" + input("buffer", "999", "/media/previz/whatever.png", 1) + "]";
     const std::string message = parseError(apiExport({apiPass("image", "Image", "37", kImageCode, inputs)}));
-    expectMentions(message, {kLabel + ": Image / iChannel1: buffer input with an unknown id 999"});
+    expectMentions(message, {kLabel + ": Image / iChannel1: renderpass[0].inputs[0].id: buffer input with an unknown id 999"});
 }
 
 TEST(ExportParse, ChannelBoundTwice) {
     const std::string inputs = "[" + input("texture", "5", kLondon, 0) + "," + input("keyboard", "33", "/presets/tex00.jpg", 0) + "]";
     const std::string message = parseError(apiExport({apiPass("image", "Image", "37", kImageCode, inputs)}));
-    expectMentions(message, {kLabel + ": Image / iChannel0: bound twice"});
+    expectMentions(message, {kLabel + ": Image / iChannel0: renderpass[0].inputs[1].channel: iChannel0 is bound twice"});
 }
 
 TEST(ExportParse, UnknownPassTypeAndUnidentifiableBuffer) {
     const std::string message = parseError(apiExport({apiPass("image", "Image", "37", kImageCode),
                                                       apiPass("shader", "Weird", "", "// w\n"),
                                                       apiPass("buffer", "Scratch", "37", "// s\n")}));
-    expectMentions(message, {kLabel + ": renderpass[1] \"Weird\": unknown pass type \"shader\"",
-                             kLabel + ": renderpass[2] \"Scratch\": buffer pass without a Buffer A..D output id"});
+    expectMentions(message, {kLabel + ": renderpass[1].type: unknown pass type \"shader\"",
+                             kLabel + ": renderpass[2].outputs: buffer pass without a Buffer A..D output id"});
 }
 
 TEST(ExportParse, EveryProblemIsReportedOnItsOwnLine) {
@@ -454,7 +462,7 @@ TEST(ExportParse, EveryProblemIsReportedOnItsOwnLine) {
     const std::string message = parseError(apiExport({apiPass("image", "Image", "37", kImageCode, inputs),
                                                       apiPass("cubemap", "Cube A", "41", "// c\n")}));
     EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
-    expectMentions(message, {"Image / iChannel0", "renderpass[1] \"Cube A\""});
+    expectMentions(message, {"Image / iChannel0", "renderpass[1].type"});
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -526,7 +534,7 @@ TEST(ExportCorpus, EveryPublicExportParsesWithItsPassesAndInputs) {
         const json document = json::parse(text);
         ASSERT_TRUE(isShadertoyExport(document));
         Result<ManifestDesc> parsed = parseShadertoyExport(text, file);
-        ASSERT_TRUE(parsed.ok()) << parsed.error().message;
+        ASSERT_TRUE(parsed.ok()) << parsed.error().text();
         const ManifestDesc& desc = *parsed;
         ASSERT_NE(desc.find(PassId::Image), nullptr);
         EXPECT_EQ(desc.passes.back().id, PassId::Image);
@@ -595,7 +603,7 @@ TEST(ExportCorpus, EveryPublicExportParsesWithItsPassesAndInputs) {
 
         // loadShadertoy recognises the file as an export and gives the same description.
         Result<ManifestDesc> loaded = loadShadertoy(file);
-        ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+        ASSERT_TRUE(loaded.ok()) << loaded.error().text();
         EXPECT_EQ(passIds(*loaded), passIds(desc));
         EXPECT_EQ(loaded->name, desc.name);
     }
@@ -661,7 +669,7 @@ TEST(ExportImport, WrittenFolderLoadsBackIdentically) {
     const ManifestDesc exported = parseOk(roundTripExport());
     ASSERT_EQ(passIds(exported), (std::vector<PassId>{PassId::BufferA, PassId::BufferC, PassId::Image}));
     Status written = writeManifestFolder(exported, temp.path / "toy", false);
-    ASSERT_TRUE(written.ok()) << written.error().message;
+    ASSERT_TRUE(written.ok()) << written.error().text();
 
     // The pass files hold the code byte for byte (CRLF and UTF-8 untouched).
     EXPECT_EQ(readFile(temp.path / "toy" / "common.glsl"), exported.commonCode);
@@ -672,7 +680,7 @@ TEST(ExportImport, WrittenFolderLoadsBackIdentically) {
     EXPECT_NE(exported.commonCode.find("\r\n"), std::string::npos);
 
     Result<ManifestDesc> loaded = loadShadertoy(temp.path / "toy");
-    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    ASSERT_TRUE(loaded.ok()) << loaded.error().text();
     expectSameChannels(exported, *loaded);
     EXPECT_EQ(loaded->name, "Synthetic (tSt123 by tester)");
     EXPECT_EQ(loaded->commonCode, exported.commonCode);
@@ -722,17 +730,17 @@ TEST(ExportImport, RefusesToOverwriteAnExistingManifestUnlessAsked) {
     changed.name = "Changed";
     Status refused = writeManifestFolder(changed, dir, false);
     ASSERT_FALSE(refused.ok());
-    expectMentions(refused.error().message, {(dir / "manifest.json").string(), "already exists"});
+    expectMentions(refused.error().text(), {(dir / "manifest.json").string(), "already exists"});
     // Nothing was touched.
     EXPECT_EQ(readFile(dir / "manifest.json"), firstManifest);
     EXPECT_EQ(readFile(dir / "image.glsl"), kImageCode);
     EXPECT_EQ(readFile(dir / "buffer_a.glsl"), pass(exported, PassId::BufferA).code);
 
     Status forced = writeManifestFolder(changed, dir, true);
-    ASSERT_TRUE(forced.ok()) << forced.error().message;
+    ASSERT_TRUE(forced.ok()) << forced.error().text();
     EXPECT_EQ(readFile(dir / "image.glsl"), "// changed Image\n");
     Result<ManifestDesc> loaded = loadShadertoy(dir);
-    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    ASSERT_TRUE(loaded.ok()) << loaded.error().text();
     EXPECT_EQ(loaded->name, "Changed");
     EXPECT_EQ(pass(*loaded, PassId::BufferA).code, "// changed Buffer A\n");
 
@@ -749,12 +757,12 @@ TEST(ExportImport, EveryPublicExportRoundTripsThroughAFolder) {
     for (const fs::path& file : files) {
         SCOPED_TRACE(file.filename().string());
         Result<ManifestDesc> exported = parseShadertoyExport(readFile(file), file);
-        ASSERT_TRUE(exported.ok()) << exported.error().message;
+        ASSERT_TRUE(exported.ok()) << exported.error().text();
         const fs::path dir = temp.path / file.stem();
         Status written = writeManifestFolder(*exported, dir, false);
-        ASSERT_TRUE(written.ok()) << written.error().message;
+        ASSERT_TRUE(written.ok()) << written.error().text();
         Result<ManifestDesc> loaded = loadShadertoy(dir);
-        ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+        ASSERT_TRUE(loaded.ok()) << loaded.error().text();
         expectSameChannels(*exported, *loaded);
         EXPECT_EQ(loaded->name, exported->name);
     }

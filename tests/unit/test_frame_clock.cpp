@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "run/FrameClock.h"
+#include "timing/FrameClock.h"
 
 using namespace toyhost;
 
@@ -13,7 +13,7 @@ namespace {
 
 double wallClock(const std::string& text) {
     Result<double> r = parseWallClock(text);
-    EXPECT_TRUE(r.ok()) << text << ": " << (r.ok() ? "" : r.error().message);
+    EXPECT_TRUE(r.ok()) << text << ": " << (r.ok() ? "" : r.error().text());
     return r.ok() ? *r : 0.0;
 }
 
@@ -88,7 +88,7 @@ TEST(FrameClock, ParseWallClockErrors) {
                             "2023-02-29", "2024-02-30", "2024-04-31T00:00:00", "2100-02-29"}) {
         Result<double> r = parseWallClock(bad);
         ASSERT_FALSE(r.ok()) << "\"" << bad << "\" was accepted as " << std::to_string(*r);
-        EXPECT_EQ(r.error().message, "date \"" + std::string(bad) + "\" is not YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS");
+        EXPECT_EQ(r.error().first().message, "date \"" + std::string(bad) + "\" is not YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS");
     }
 }
 

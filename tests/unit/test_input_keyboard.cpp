@@ -136,23 +136,23 @@ TEST(KeyboardKeyNames, NamesMapToJavaScriptKeyCodes) {
     };
     for (const auto& [name, code] : cases) {
         auto result = keyCodeFromName(name);
-        ASSERT_TRUE(result.ok()) << name << ": " << result.error().message;
+        ASSERT_TRUE(result.ok()) << name << ": " << result.error().text();
         EXPECT_EQ(*result, code) << name;
     }
 }
 
 TEST(KeyboardKeyNames, UnknownNamesAndBadNumbersAreErrors) {
-    EXPECT_EQ(keyCodeFromName("spacebar").error().message, "unknown key \"spacebar\"");
-    EXPECT_EQ(keyCodeFromName("f13").error().message, "unknown key \"f13\"");
-    EXPECT_EQ(keyCodeFromName("").error().message, "unknown key \"\"");
-    EXPECT_EQ(keyCodeFromName("300").error().message, "key code 300 is out of range 0..255");
+    EXPECT_EQ(keyCodeFromName("spacebar").error().first().message, "unknown key \"spacebar\"");
+    EXPECT_EQ(keyCodeFromName("f13").error().first().message, "unknown key \"f13\"");
+    EXPECT_EQ(keyCodeFromName("").error().first().message, "unknown key \"\"");
+    EXPECT_EQ(keyCodeFromName("300").error().first().message, "key code 300 is out of range 0..255");
     EXPECT_FALSE(keyCodeFromName("99999999999999999999999").ok());
 }
 
 // Runs a key script for `frames` frames at 60 fps and returns the rows of `code` per frame.
 std::vector<Rows> keyFrames(const std::string& json, int code, int frames) {
     auto script = parseKeyScript(json, "keys.json");
-    EXPECT_TRUE(script.ok()) << script.error().message;
+    EXPECT_TRUE(script.ok()) << script.error().text();
     KeyScriptPlayer player(std::move(*script));
     KeyboardState keyboard;
     std::vector<Rows> out;
@@ -200,7 +200,7 @@ TEST(KeyboardScriptPlayer, TapReleaseHappensBeforeTheNextFramesOwnEvents) {
 
 TEST(KeyboardScriptPlayer, FinishedOnlyAfterThePendingTapRelease) {
     auto script = parseKeyScript(R"([{"frame": 0, "type": "tap", "key": "up"}])", "keys.json");
-    ASSERT_TRUE(script.ok()) << script.error().message;
+    ASSERT_TRUE(script.ok()) << script.error().text();
     KeyScriptPlayer player(std::move(*script));
     KeyboardState keyboard;
     EXPECT_FALSE(player.finished());

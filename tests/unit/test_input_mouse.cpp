@@ -24,7 +24,7 @@ using glm::vec4;
 // Runs `json` as a mouse script for `frames` frames at `fps` and returns iMouse of every frame.
 std::vector<vec4> iMouseFrames(const std::string& json, int frames, double fps = 60.0) {
     auto script = parseMouseScript(json, "test.json");
-    EXPECT_TRUE(script.ok()) << script.error().message;
+    EXPECT_TRUE(script.ok()) << script.error().text();
     MouseScriptPlayer player(std::move(*script));
     MouseState mouse;
     std::vector<vec4> out;

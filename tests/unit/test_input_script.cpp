@@ -2,6 +2,8 @@
 // event index, field).
 #include <gtest/gtest.h>
 
+#include "DiagnosticText.h"
+
 #include <string>
 
 #include "input/InputScript.h"
@@ -11,12 +13,12 @@ namespace {
 
 std::string mouseError(const std::string& json) {
     auto result = parseMouseScript(json, "mouse.json");
-    return result.ok() ? "(parsed without error)" : result.error().message;
+    return result.ok() ? "(parsed without error)" : toyhost::testing::plainText(result.error());
 }
 
 std::string keyError(const std::string& json) {
     auto result = parseKeyScript(json, "keys.json");
-    return result.ok() ? "(parsed without error)" : result.error().message;
+    return result.ok() ? "(parsed without error)" : toyhost::testing::plainText(result.error());
 }
 
 TEST(InputScriptParse, MouseEventsOfEveryType) {
@@ -27,7 +29,7 @@ TEST(InputScriptParse, MouseEventsOfEveryType) {
         {"frame": 41, "type": "up", "x": 1, "y": 2},
         {"frame": 50, "type": "click", "x": -3, "y": 4}
     ])", "mouse.json");
-    ASSERT_TRUE(script.ok()) << script.error().message;
+    ASSERT_TRUE(script.ok()) << script.error().text();
     const auto& e = script->events;
     ASSERT_EQ(e.size(), 5u);
     using Type = MouseScriptEvent::Type;
@@ -56,7 +58,7 @@ TEST(InputScriptParse, SortsStablyFrameEventsThenTimeEvents) {
         {"frame": 3, "type": "move", "x": 5, "y": 0},
         {"time": 0.5, "type": "move", "x": 6, "y": 0}
     ])", "mouse.json");
-    ASSERT_TRUE(script.ok()) << script.error().message;
+    ASSERT_TRUE(script.ok()) << script.error().text();
     std::vector<float> order;
     for (const auto& e : script->events) order.push_back(e.position->x);
     EXPECT_EQ(order, (std::vector<float>{3, 5, 1, 4, 2, 6, 0}));
@@ -75,7 +77,7 @@ TEST(InputScriptParse, KeyEventsByNameAndCode) {
         {"time": 1.25, "type": "tap", "key": "Left"},
         {"frame": 4, "type": "tap", "key": "200"}
     ])", "keys.json");
-    ASSERT_TRUE(script.ok()) << script.error().message;
+    ASSERT_TRUE(script.ok()) << script.error().text();
     const auto& e = script->events;
     ASSERT_EQ(e.size(), 4u);
     using Type = KeyScriptEvent::Type;
@@ -177,7 +179,10 @@ TEST(InputScriptParse, ErrorsUseTheGivenSourceName) {
     auto result = parseKeyScript(R"([{"frame": 0, "type": "down", "key": "nope"}])",
                                  "scripts/demo/keys.json");
     ASSERT_FALSE(result.ok());
-    EXPECT_EQ(result.error().message, "scripts/demo/keys.json: event 0: unknown key \"nope\"");
+    EXPECT_EQ(toyhost::testing::plainText(result.error()), "scripts/demo/keys.json: event 0: unknown key \"nope\"");
+    EXPECT_EQ(result.error().first().file, "scripts/demo/keys.json");
+    EXPECT_EQ(result.error().first().field, "event 0");
+    EXPECT_EQ(result.error().first().code, "script.event");
 }
 
 TEST(InputScriptParse, MomentDueRules) {

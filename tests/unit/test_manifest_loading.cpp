@@ -29,7 +29,7 @@ struct ManifestFolder {
     }
     ManifestDesc parse(const std::string& json) const {
         Result<ManifestDesc> result = parseManifest(json, dir / "manifest.json");
-        EXPECT_TRUE(result.ok()) << (result.ok() ? "" : result.error().message);
+        EXPECT_TRUE(result.ok()) << (result.ok() ? "" : result.error().text());
         return result.ok() ? std::move(result.value()) : ManifestDesc{};
     }
 };
@@ -206,7 +206,7 @@ TEST(ManifestLoading, RelativeManifestPathIsMadeAbsolute) {
     fs::current_path(f.dir.parent_path());
     Result<ManifestDesc> m = parseManifest(R"({"passes": {"Image": {"source": "image.glsl"}}})", "toy/manifest.json");
     fs::current_path(cwd);
-    ASSERT_TRUE(m.ok()) << m.error().message;
+    ASSERT_TRUE(m.ok()) << m.error().text();
     EXPECT_EQ(m->manifestPath, f.dir / "manifest.json");
     EXPECT_EQ(m->passes[0].source, f.dir / "image.glsl");
     EXPECT_EQ(m->name, "toy");
@@ -278,7 +278,7 @@ TEST(ManifestLoading, LoadManifestFromFolderAndFromFile) {
 
     for (const fs::path& target : {f.dir, manifest}) {
         Result<ManifestDesc> m = loadManifest(target);
-        ASSERT_TRUE(m.ok()) << target << ": " << m.error().message;
+        ASSERT_TRUE(m.ok()) << target << ": " << m.error().text();
         EXPECT_EQ(m->name, "toy");
         EXPECT_EQ(m->manifestPath, manifest);
         EXPECT_EQ(passIds(*m), (std::vector<PassId>{PassId::BufferA, PassId::Image}));
@@ -287,7 +287,7 @@ TEST(ManifestLoading, LoadManifestFromFolderAndFromFile) {
     }
     // A manifest file with another name is loaded as given.
     Result<ManifestDesc> other = loadManifest(f.dir / "other.json");
-    ASSERT_TRUE(other.ok()) << other.error().message;
+    ASSERT_TRUE(other.ok()) << other.error().text();
     EXPECT_EQ(other->name, "other");
     EXPECT_EQ(other->manifestPath, f.dir / "other.json");
 }
@@ -303,7 +303,7 @@ TEST(ManifestLoading, RepositoryOceanManifest) {
     if (!fs::is_directory(kShared / "MdXyzX"))
         GTEST_SKIP() << "the original shaders are not beside the repo (" << kShared << " missing)";
     Result<ManifestDesc> m = loadManifest(kRepo / "shadertoys" / "ocean");
-    ASSERT_TRUE(m.ok()) << m.error().message;
+    ASSERT_TRUE(m.ok()) << m.error().text();
     EXPECT_EQ(m->name, "Very fast procedural ocean (afl_ext, MdXyzX)");
     EXPECT_FALSE(m->commonSource.has_value());
     ASSERT_EQ(m->passes.size(), 1u);
@@ -318,7 +318,7 @@ TEST(ManifestLoading, RepositoryMountainsLakesManifestHas7tSSDDWiring) {
     if (!fs::is_directory(kShared / "7tSSDD"))
         GTEST_SKIP() << "the original shaders are not beside the repo (" << kShared << " missing)";
     Result<ManifestDesc> m = loadManifest(kRepo / "shadertoys" / "mountains-lakes");
-    ASSERT_TRUE(m.ok()) << m.error().message;
+    ASSERT_TRUE(m.ok()) << m.error().text();
     const fs::path src = (kShared / "7tSSDD").lexically_normal();
     EXPECT_EQ(m->name, "Mountains & Lakes (xjorma, 7tSSDD)");
     ASSERT_TRUE(m->commonSource.has_value());
@@ -375,7 +375,7 @@ TEST(ManifestLoading, RepositoryMountainsLakesManifestHas7tSSDDWiring) {
 TEST(ManifestLoading, RepositoryProbeManifests) {
     for (const char* name : {"pingpong-probe", "uniform-probe"}) {
         Result<ManifestDesc> m = loadManifest(kRepo / "shadertoys" / name);
-        ASSERT_TRUE(m.ok()) << name << ": " << m.error().message;
+        ASSERT_TRUE(m.ok()) << name << ": " << m.error().text();
         EXPECT_EQ(m->name, name);
     }
 }

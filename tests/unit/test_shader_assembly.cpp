@@ -1,11 +1,13 @@
-// ShaderAssembly: the generated header (content and order per SEMANTICS.md), Common pasting, the
-// generated-line -> user-line mapping, and compiler-log translation for Mesa, ANGLE and NVIDIA.
+// ShaderAssembly and CompilerLog: the generated header (content and order per SEMANTICS.md),
+// Common pasting, the #line numbering that maps compiler messages back to the user's files (also
+// with the user's own #line), and compiler-log parsing for Mesa, ANGLE and NVIDIA.
 #include <gtest/gtest.h>
 
 #include <regex>
 #include <string>
 #include <vector>
 
+#include "shader/CompilerLog.h"
 #include "shader/ShaderAssembly.h"
 
 using namespace toyhost;
@@ -42,11 +44,29 @@ std::vector<std::string> splitLines(std::string_view text) {
     return lines;
 }
 
+// The generated header: everything before the #line that starts Common or the pass code.
 std::string headerOf(const AssembledShader& s) {
     std::string header;
-    const std::vector<std::string> lines = splitLines(s.text);
-    for (int i = 0; i < s.headerLines; ++i) header += lines.at(i) + "\n";
+    const std::string common = "#line " + std::to_string(kCommonLineBase + 1);
+    for (const std::string& line : splitLines(s.text)) {
+        if (line == common || line == "#line 1") break;
+        header += line + "\n";
+    }
     return header;
+}
+
+// The line number a GLSL ES 3.00 preprocessor gives each physical line of `text` (1-based, in
+// order): counting from 1, and after "#line N" the next line is N (checked on Mesa).
+std::vector<int> reportedLines(const std::string& text) {
+    std::vector<int> numbers;
+    int next = 1;
+    static const std::regex directive(R"(^\s*#\s*line\s+(\d+).*$)");
+    for (const std::string& line : splitLines(text)) {
+        numbers.push_back(next);
+        std::smatch m;
+        next = std::regex_match(line, m, directive) ? std::stoi(m[1]) : next + 1;
+    }
+    return numbers;
 }
 
 // Offset of the first match of `pattern` in `text`, or npos.
@@ -61,11 +81,12 @@ int countMatches(const std::string& text, const std::string& pattern) {
     return static_cast<int>(std::distance(std::sregex_iterator(text.begin(), text.end(), re), std::sregex_iterator()));
 }
 
-// 1-based line of the first occurrence of `token` in the assembled text.
-int generatedLineOf(const AssembledShader& s, const std::string& token) {
+// The line number the compiler reports for the first occurrence of `token`.
+int reportedLineOf(const AssembledShader& s, const std::string& token) {
     const size_t at = s.text.find(token);
     EXPECT_NE(at, std::string::npos) << token;
-    return 1 + static_cast<int>(std::count(s.text.begin(), s.text.begin() + static_cast<long>(at), '\n'));
+    const size_t physical = static_cast<size_t>(std::count(s.text.begin(), s.text.begin() + static_cast<long>(at), '\n'));
+    return reportedLines(s.text).at(physical);
 }
 
 const char* partName(SourceLine::Part p) {
@@ -75,12 +96,6 @@ const char* partName(SourceLine::Part p) {
         case SourceLine::Part::Pass: return "Pass";
     }
     return "?";
-}
-
-void expectMaps(const AssembledShader& s, int generated, SourceLine::Part part, int line) {
-    const SourceLine got = mapGeneratedLine(s, generated);
-    EXPECT_EQ(got.part, part) << "generated line " << generated << " -> " << partName(got.part) << " " << got.line;
-    EXPECT_EQ(got.line, line) << "generated line " << generated << " -> " << partName(got.part);
 }
 
 }  // namespace
@@ -211,31 +226,22 @@ TEST(ShaderAssembly, SamplerKeywordsPerChannel) {
 
 TEST(ShaderAssembly, TextIsHeaderThenCommonAndNewlineThenPassCode) {
     const std::string common = "#define TAU 6.2831853\nfloat sq(float x) { return x * x; }";
+    const std::string commonLine = "#line " + std::to_string(kCommonLineBase + 1) + "\n";
     for (PassId pass : {PassId::Image, PassId::BufferA}) {
         const AssembledShader without = assemble(pass);
         const std::string header = headerOf(without);
-        EXPECT_EQ(without.text, header + kPassCode);
-        EXPECT_EQ(without.headerLines, static_cast<int>(std::count(header.begin(), header.end(), '\n')));
-        EXPECT_EQ(without.commonLines, 0);
-        EXPECT_EQ(without.passFirstLine, without.headerLines + 1);
+        EXPECT_EQ(without.text, header + "#line 1\n" + kPassCode);
+        EXPECT_FALSE(without.hasCommon);
 
         const AssembledShader with = assemble(pass, &common);
-        EXPECT_EQ(with.text, header + common + "\n" + kPassCode);
-        EXPECT_EQ(with.headerLines, without.headerLines);
-        EXPECT_EQ(with.commonLines, 2);
-        EXPECT_EQ(with.passFirstLine, with.headerLines + 3);
+        EXPECT_EQ(with.text, header + commonLine + common + "\n#line 1\n" + kPassCode);
+        EXPECT_TRUE(with.hasCommon);
 
         const std::string commonWithNewline = common + "\n";
-        const AssembledShader withNewline = assemble(pass, &commonWithNewline);
-        EXPECT_EQ(withNewline.text, header + commonWithNewline + "\n" + kPassCode);
-        EXPECT_EQ(withNewline.commonLines, 3);  // the pasted newline adds an empty line
-        EXPECT_EQ(withNewline.passFirstLine, withNewline.headerLines + 4);
+        EXPECT_EQ(assemble(pass, &commonWithNewline).text, header + commonLine + commonWithNewline + "\n#line 1\n" + kPassCode);
 
         const std::string empty;
-        const AssembledShader withEmpty = assemble(pass, &empty);
-        EXPECT_EQ(withEmpty.text, header + "\n" + kPassCode);
-        EXPECT_EQ(withEmpty.commonLines, 1);
-        EXPECT_EQ(withEmpty.passFirstLine, withEmpty.headerLines + 2);
+        EXPECT_EQ(assemble(pass, &empty).text, header + commonLine + "\n#line 1\n" + kPassCode);
     }
 }
 
@@ -248,40 +254,19 @@ TEST(ShaderAssembly, FullscreenVertexShaderIsGlslEs300) {
 
 // ---- Line mapping --------------------------------------------------------------------------------
 
-TEST(ShaderAssembly, MapGeneratedLineWithoutCommon) {
-    const AssembledShader s = assemble(PassId::Image);
-    const int h = s.headerLines;
-    ASSERT_GT(h, 20);
-    expectMaps(s, 1, SourceLine::Part::Header, 1);
-    expectMaps(s, h, SourceLine::Part::Header, h);
-    expectMaps(s, h + 1, SourceLine::Part::Pass, 1);
-    expectMaps(s, h + 4, SourceLine::Part::Pass, 4);
+TEST(ShaderAssembly, MapReportedLineBands) {
+    EXPECT_EQ(mapGeneratedLine(1).part, SourceLine::Part::Pass);
+    EXPECT_EQ(mapGeneratedLine(1).line, 1);
+    EXPECT_EQ(mapGeneratedLine(kCommonLineBase).part, SourceLine::Part::Pass);
+    EXPECT_EQ(mapGeneratedLine(kCommonLineBase + 1).part, SourceLine::Part::Common);
+    EXPECT_EQ(mapGeneratedLine(kCommonLineBase + 1).line, 1);
+    EXPECT_EQ(mapGeneratedLine(kHeaderLineBase + 3).part, SourceLine::Part::Header);
+    EXPECT_EQ(mapGeneratedLine(kHeaderLineBase + 3).line, 3);
 }
 
-TEST(ShaderAssembly, MapGeneratedLineWithCommonEndingWithoutNewline) {
-    const std::string common = "c1\nc2\nc3";
-    const AssembledShader s = assemble(PassId::BufferA, &common);
-    const int h = s.headerLines;
-    expectMaps(s, h, SourceLine::Part::Header, h);
-    expectMaps(s, h + 1, SourceLine::Part::Common, 1);
-    expectMaps(s, h + 3, SourceLine::Part::Common, 3);
-    expectMaps(s, h + 4, SourceLine::Part::Pass, 1);
-    expectMaps(s, h + 8, SourceLine::Part::Pass, 5);
-}
-
-TEST(ShaderAssembly, MapGeneratedLineWithCommonEndingWithNewline) {
-    const std::string common = "c1\nc2\nc3\n";
-    const AssembledShader s = assemble(PassId::Image, &common);
-    const int h = s.headerLines;
-    expectMaps(s, h + 1, SourceLine::Part::Common, 1);
-    expectMaps(s, h + 3, SourceLine::Part::Common, 3);
-    expectMaps(s, h + 4, SourceLine::Part::Common, 4);  // the empty line of the pasted newline
-    expectMaps(s, h + 5, SourceLine::Part::Pass, 1);
-    expectMaps(s, h + 9, SourceLine::Part::Pass, 5);
-}
-
-// Marker tokens on known lines: wherever they land in the assembled text, the mapping must lead
-// back to their line, for every way Common can end (and with CRLF line endings).
+// Marker tokens on known lines: wherever they land in the assembled text, the number the compiler
+// reports for them must lead back to their line, for every way Common can end, with CRLF line
+// endings, and with the user's own #line in the pass.
 TEST(ShaderAssembly, MappingIsRightByConstruction) {
     std::string pass;
     for (int line = 1; line <= 40; ++line) pass += "// pass line " + std::to_string(line) + " PASS_MARK_" + std::to_string(line) + "_\n";
@@ -300,96 +285,107 @@ TEST(ShaderAssembly, MappingIsRightByConstruction) {
             for (const std::string* p : passes) {
                 const AssembledShader s = assemble(id, c, *p);
                 for (int line = 1; line <= 40; ++line) {
-                    const SourceLine got = mapGeneratedLine(s, generatedLineOf(s, "PASS_MARK_" + std::to_string(line) + "_"));
+                    const SourceLine got = mapGeneratedLine(reportedLineOf(s, "PASS_MARK_" + std::to_string(line) + "_"));
                     EXPECT_EQ(got.part, SourceLine::Part::Pass);
                     EXPECT_EQ(got.line, line) << "pass marker, common " << (c ? "yes" : "no");
                 }
                 if (!c) continue;
                 for (int line = 1; line <= 7; ++line) {
-                    const SourceLine got = mapGeneratedLine(s, generatedLineOf(s, "COMMON_MARK_" + std::to_string(line) + "_"));
+                    const SourceLine got = mapGeneratedLine(reportedLineOf(s, "COMMON_MARK_" + std::to_string(line) + "_"));
                     EXPECT_EQ(got.part, SourceLine::Part::Common);
                     EXPECT_EQ(got.line, line) << "common marker";
                 }
-                // Every generated line maps to a line whose text is the generated line's text.
+                // Every line of Common and the pass maps to a line whose text is that line's text;
+                // header lines map into the header.
                 const std::vector<std::string> generated = splitLines(s.text);
-                const std::vector<std::string> header = splitLines(headerOf(s));
+                const std::vector<int> reported = reportedLines(s.text);
                 const std::vector<std::string> passLines = splitLines(*p);
                 const std::vector<std::string> commonLines = c ? splitLines(*c) : std::vector<std::string>{};
-                for (int g = 1; g <= static_cast<int>(generated.size()); ++g) {
-                    const SourceLine where = mapGeneratedLine(s, g);
-                    const std::vector<std::string>& source = where.part == SourceLine::Part::Header ? header
-                                                             : where.part == SourceLine::Part::Common ? commonLines
-                                                                                                      : passLines;
+                // Line 1 is "#version 300 es", which must come before anything else (so before any
+                // #line); it is toyhost's own and no user code can make a message point at it.
+                ASSERT_EQ(generated[0], "#version 300 es");
+                for (size_t g = 1; g < generated.size(); ++g) {
+                    if (generated[g].rfind("#line ", 0) == 0) continue;
+                    const SourceLine where = mapGeneratedLine(reported[g]);
+                    if (where.part == SourceLine::Part::Header) {
+                        EXPECT_LT(g, splitLines(headerOf(s)).size()) << "line " << g << " is not in the header";
+                        continue;
+                    }
+                    const std::vector<std::string>& source = where.part == SourceLine::Part::Common ? commonLines : passLines;
                     const std::string expected =
                         where.line <= static_cast<int>(source.size()) ? source[where.line - 1] : std::string();
-                    EXPECT_EQ(generated[g - 1], expected) << "generated line " << g << " -> " << partName(where.part)
-                                                          << " " << where.line;
+                    EXPECT_EQ(generated[g], expected) << "generated line " << g + 1 << " -> " << partName(where.part) << " "
+                                                      << where.line;
                 }
             }
         }
     }
 }
 
+TEST(ShaderAssembly, AUsersOwnLineDirectiveNeverPointsIntoTheHeader) {
+    const std::string common = "float c;\n";
+    const std::string code = "void mainImage(out vec4 c, in vec2 p) {\n#line 5\n  MARK_AFTER_5\n#line 40\n  MARK_AFTER_40\n}\n";
+    const AssembledShader s = assemble(PassId::Image, &common, code);
+    for (auto [token, line] : {std::pair<const char*, int>{"MARK_AFTER_5", 5}, {"MARK_AFTER_40", 40}}) {
+        const SourceLine got = mapGeneratedLine(reportedLineOf(s, token));
+        EXPECT_EQ(got.part, SourceLine::Part::Pass) << token;
+        EXPECT_EQ(got.line, line) << token;
+    }
+}
+
 // ---- Compiler logs -------------------------------------------------------------------------------
 
 namespace {
-struct LogFixture {
-    std::string common = "float c1;\nfloat c2;\nfloat c3;";
-    AssembledShader shader = assemble(PassId::Image, &common);
-    int h = shader.headerLines;
-    int passLine(int n) const { return shader.passFirstLine + n - 1; }
-    std::string translate(const std::string& log) const {
-        return translateCompilerLog(shader, log, "/toys/common.glsl", "/toys/image.glsl");
-    }
-};
+const CompilerLogNames kNames{"Image", "/toys/image.glsl", "/toys/common.glsl"};
+
+std::string parsed(const std::string& log) {
+    std::string out;
+    for (const Diagnostic& d : parseCompilerLog(log, kNames)) out += (out.empty() ? "" : "\n") + formatDiagnostic(d);
+    return out;
+}
+std::string common(int line) { return std::to_string(kCommonLineBase + line); }
+std::string header(int line) { return std::to_string(kHeaderLineBase + line); }
 }  // namespace
 
-TEST(ShaderAssembly, TranslateMesaLog) {
-    LogFixture f;
-    const std::string log = "0:" + std::to_string(f.passLine(4)) + "(12): error: `foo' undeclared\n" +
-                            "0:" + std::to_string(f.h + 2) + "(7): warning: unused variable\n" +
-                            "0:3(1): error: something in the header\n";
-    EXPECT_EQ(f.translate(log),
-              "/toys/image.glsl:4:12: error: `foo' undeclared\n"
-              "/toys/common.glsl:2:7: warning: unused variable\n"
-              "<toyhost header>:3:1: error: something in the header");
+TEST(ShaderAssembly, ParseMesaLog) {
+    const std::string log = "0:4(12): error: `foo' undeclared\n0:" + common(2) + "(7): warning: unused variable\n0:" +
+                            header(3) + "(1): error: something in the header\n";
+    EXPECT_EQ(parsed(log),
+              "/toys/image.glsl:4:12: error: Image: `foo' undeclared [shader.compile]\n"
+              "/toys/common.glsl:2:7: warning: Image: unused variable [shader.compile]\n"
+              "<toyhost header>:3:1: error: Image: something in the header [shader.compile]");
+    const std::vector<Diagnostic> d = parseCompilerLog("0:4(12): error: `foo' undeclared", kNames);
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_EQ(d[0].file, "/toys/image.glsl");
+    EXPECT_EQ(d[0].pass, "Image");
+    EXPECT_EQ(d[0].line, 4);
+    EXPECT_EQ(d[0].column, 12);
+    EXPECT_EQ(d[0].severity, Severity::Error);
+    EXPECT_EQ(d[0].message, "`foo' undeclared");
 }
 
-TEST(ShaderAssembly, TranslateAngleLog) {
-    LogFixture f;
-    const std::string log = "ERROR: 0:" + std::to_string(f.passLine(2)) + ": 'foo' : undeclared identifier\n" +
-                            "WARNING: 0:" + std::to_string(f.h + 3) + ": 'bar' : unused\n" +
-                            "ERROR: 2 compilation errors.  No code generated.\n";
-    EXPECT_EQ(f.translate(log),
-              "/toys/image.glsl:2: error: 'foo' : undeclared identifier\n"
-              "/toys/common.glsl:3: warning: 'bar' : unused\n"
-              "ERROR: 2 compilation errors.  No code generated.");
+TEST(ShaderAssembly, ParseAngleLog) {
+    const std::string log = "ERROR: 0:2: 'foo' : undeclared identifier\nWARNING: 0:" + common(3) +
+                            ": 'bar' : unused\nERROR: 2 compilation errors.  No code generated.\n";
+    EXPECT_EQ(parsed(log),
+              "/toys/image.glsl:2: error: Image: 'foo' : undeclared identifier [shader.compile]\n"
+              "/toys/common.glsl:3: warning: Image: 'bar' : unused [shader.compile]\n"
+              "/toys/image.glsl: error: Image: ERROR: 2 compilation errors.  No code generated. [shader.compile]");
 }
 
-TEST(ShaderAssembly, TranslateNvidiaLog) {
-    LogFixture f;
-    const std::string log = "0(" + std::to_string(f.passLine(5)) + ") : error C1008: undefined variable \"foo\"\n" +
-                            "0(" + std::to_string(f.h + 1) + ") : warning C7022: unrecognized profile specifier\n";
-    EXPECT_EQ(f.translate(log),
-              "/toys/image.glsl:5: error C1008: undefined variable \"foo\"\n"
-              "/toys/common.glsl:1: warning C7022: unrecognized profile specifier");
+TEST(ShaderAssembly, ParseNvidiaLog) {
+    const std::string log = "0(5) : error C1008: undefined variable \"foo\"\n0(" + common(1) +
+                            ") : warning C7022: unrecognized profile specifier\n";
+    EXPECT_EQ(parsed(log),
+              "/toys/image.glsl:5: error: Image: undefined variable \"foo\" [shader.compile]\n"
+              "/toys/common.glsl:1: warning: Image: unrecognized profile specifier [shader.compile]");
 }
 
-TEST(ShaderAssembly, TranslateLeavesLinesWithoutLocationAndHandlesCrlf) {
-    LogFixture f;
-    const std::string log = "Compilation failed.\r\n\r\n0:" + std::to_string(f.passLine(1)) +
-                            "(3): error: syntax error, unexpected IDENTIFIER\r\nlink: not attempted";
-    EXPECT_EQ(f.translate(log),
-              "Compilation failed.\n"
-              "/toys/image.glsl:1:3: error: syntax error, unexpected IDENTIFIER\n"
-              "link: not attempted");
-    EXPECT_EQ(f.translate(""), "");
-}
-
-TEST(ShaderAssembly, TranslateWithoutCommon) {
-    const AssembledShader s = assemble(PassId::BufferA);
-    const std::string log = "0:" + std::to_string(s.headerLines + 3) + "(9): error: x\n0:" +
-                            std::to_string(s.headerLines) + "(1): error: y";
-    EXPECT_EQ(translateCompilerLog(s, log, "common.glsl", "buf.glsl"),
-              "buf.glsl:3:9: error: x\n<toyhost header>:" + std::to_string(s.headerLines) + ":1: error: y");
+TEST(ShaderAssembly, ParseKeepsLinesWithoutLocationAndHandlesCrlf) {
+    const std::string log = "Compilation failed.\r\n\r\n0:1(3): error: syntax error, unexpected IDENTIFIER\r\nlink: not attempted";
+    EXPECT_EQ(parsed(log),
+              "/toys/image.glsl: error: Image: Compilation failed. [shader.compile]\n"
+              "/toys/image.glsl:1:3: error: Image: syntax error, unexpected IDENTIFIER [shader.compile]\n"
+              "/toys/image.glsl: error: Image: link: not attempted [shader.compile]");
+    EXPECT_EQ(parsed(""), "");
 }

@@ -3,16 +3,13 @@
 #include <GLES3/gl3.h>
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 
 #include "export/LoadShadertoy.h"
-#include "gl/EglSurfacelessContext.h"
-#include "input/MouseState.h"
-#include "graph/PassGraph.h"
-#include "media/MediaResolver.h"
-#include "media/StockMedia.h"
-#include "render/Renderer.h"
-#include "run/ChannelImages.h"
+#include "gl/HeadlessContext.h"
+#include "player/Player.h"
+#include "timing/FrameClock.h"
 
 namespace toyhost::compat {
 namespace fs = std::filesystem;
@@ -25,9 +22,10 @@ std::string firstLines(const std::string& text, int lines) {
     return end == std::string::npos ? text : text.substr(0, end);
 }
 
-void judgeOutput(const Renderer& renderer, const ManifestDesc& manifest, ProbeResult& result) {
+void judgeOutput(const Player& player, ProbeResult& result) {
+    const ManifestDesc& manifest = player.manifest();
     std::vector<std::uint8_t> image;
-    renderer.readImageRgba8(image);
+    player.readRgba8(PassId::Image, image);
     result.uniformImage = true;
     for (size_t i = 4; i < image.size() && result.uniformImage; i += 4)
         for (int k = 0; k < 3; ++k)
@@ -35,7 +33,7 @@ void judgeOutput(const Renderer& renderer, const ManifestDesc& manifest, ProbeRe
     std::vector<float> floats;
     for (const PassDesc& pass : manifest.passes) {
         if (!isBuffer(pass.id)) continue;
-        renderer.readRgba32f(pass.id, floats);
+        player.readRgba32f(pass.id, floats);
         size_t nan = 0, inf = 0;
         for (float v : floats) {
             nan += std::isnan(v);
@@ -55,65 +53,56 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
     result.id = exportFile.stem().string();
     Result<ManifestDesc> manifest = loadShadertoy(exportFile);
     if (!manifest) {
-        result.error = firstLines(manifest.error().message, 3);
+        result.error = firstLines(manifest.error().text(), 3);
         return result;
     }
     result.loaded = true;
     result.name = manifest->name;
     result.passes = static_cast<int>(manifest->passes.size()) + (manifest->commonSource ? 1 : 0);
-    result.notices = manifest->notices;
+    for (const Diagnostic& notice : manifest->notices) result.notices.push_back(formatDiagnostic(notice));
 
-    auto context = createEglSurfacelessContext();
-    if (!context) {
-        result.error = context.error().message;
+    MediaOptions media;
+    media.folders = settings.mediaFolders;
+    Result<PlayerPlan> plan = planPlayer(std::move(*manifest), media);
+    if (!plan) {
+        result.error = firstLines(plan.error().text(), 3);
         return result;
     }
-    MediaResolver media;
-    for (const fs::path& folder : settings.mediaFolders) media.addSearchFolder(folder);
-    ChannelImages images(media, nullptr);
-    for (const PassDesc& pass : manifest->passes)
-        for (const ChannelDesc& channel : pass.channels)
-            if (channel.kind == ChannelKind::StockMedia) {
-                auto resolved = media.resolve(channel.media);
-                if (resolved && resolved->standIn) {
-                    const StockMediaInfo* info = findStockMedia(channel.media);
-                    std::string name = info ? std::string(info->name) : channel.media;
-                    if (std::find(result.standIns.begin(), result.standIns.end(), name) == result.standIns.end())
-                        result.standIns.push_back(name);
-                }
-            }
+    for (const StandInUse& standIn : plan->images.standIns())
+        if (std::find(result.standIns.begin(), result.standIns.end(), standIn.name) == result.standIns.end())
+            result.standIns.push_back(standIn.name);
 
-    const PassGraph graph = buildPassGraph(*manifest);
-    RendererOptions options;
-    options.width = settings.width;
-    options.height = settings.height;
-    auto renderer = Renderer::create(*manifest, graph, options, std::ref(images));
-    if (!renderer) {
-        result.error = firstLines(renderer.error().message, 4);
+    auto context = createHeadlessContext();
+    if (!context) {
+        result.error = context.error().text();
+        return result;
+    }
+    PlayerDesc desc;
+    desc.width = settings.width;
+    desc.height = settings.height;
+    auto player = Player::create(*context, std::move(*plan), desc);
+    if (!player) {
+        result.error = firstLines(player.error().text(), 4);
         return result;
     }
     result.compiled = true;
 
     // Like a visitor, the probe drags the mouse across the canvas from frame 1 on, so shaders
-    // that show nothing until clicked get their click.
-    MouseState mouse;
+    // that show nothing until clicked get their click. Time and date come from the same fixed-step
+    // clock a headless run uses.
+    const FrameClock clock(60.0, 0.0, localWallClockNow());
+    std::vector<InputEvent> events;
     auto frameAt = [&](int frame) {
-        if (frame == 1) mouse.press(settings.width * 0.3f, settings.height * 0.4f);
+        events.clear();
+        if (frame == 1) events.push_back(InputEvent::mouseDown(settings.width * 0.3f, settings.height * 0.4f));
         if (frame > 1) {
             const float t = std::min(1.0f, frame / static_cast<float>(std::max(2, settings.frames)));
-            mouse.move(settings.width * (0.3f + 0.4f * t), settings.height * (0.4f + 0.2f * t));
+            events.push_back(InputEvent::mouseMove(settings.width * (0.3f + 0.4f * t), settings.height * (0.4f + 0.2f * t)));
         }
-        FrameUniforms u;
-        u.frame = frame;
-        u.time = frame / 60.0f;
-        u.timeDelta = 1.0f / 60.0f;
-        u.frameRate = 60.0f;
-        u.mouse = mouse.uniform();
-        (*renderer)->renderFrame(u);
+        (*player)->step(clock.frameTime(frame), events);
         // Finish each frame so ms/frame is the real shading cost: llvmpipe drops queued work for
         // tiles that a later draw overwrites before anything reads them.
-        glFinish();
-        mouse.endFrame();
+        (*player)->finish();
         result.framesRendered = frame + 1;
     };
     const auto start = std::chrono::steady_clock::now();
@@ -121,7 +110,7 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.msPerFrame = 1000.0 * seconds / settings.frames;
     if (GLenum error = glGetError(); error != GL_NO_ERROR) result.error = "GL error " + std::to_string(error);
-    judgeOutput(**renderer, *manifest, result);
+    judgeOutput(**player, result);
     // Patience for fade-ins and shaders that need time: check every quarter second of iTime.
     for (int frame = settings.frames; result.uniformImage && frame / 60.0 < settings.patienceSeconds; ++frame) {
         frameAt(frame);
@@ -129,7 +118,7 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > settings.wallBudgetSeconds)
             break;
         result.nonFiniteBuffers.clear();
-        judgeOutput(**renderer, *manifest, result);
+        judgeOutput(**player, result);
         if (!result.uniformImage) result.firstNonUniformTime = frame / 60.0;
     }
     return result;

@@ -206,7 +206,7 @@ int main(int argc, char** argv) {
 
     auto write = [](const std::string& path, const std::string& text) {
         Status s = writeBytesAtomically(path, std::as_bytes(std::span(text.data(), text.size())));
-        if (!s) std::cerr << "toyhost-compat: " << s.error().message << "\n";
+        if (!s) std::cerr << formatDiagnostics(s.error().diagnostics, "toyhost-compat: ") << "\n";
         return s.ok();
     };
     if (!markdownOut.empty() && !write(markdownOut, markdown(results, settings, dir, known))) return 1;

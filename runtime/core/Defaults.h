@@ -1,0 +1,22 @@
+// Defaults: every default value of a run, in one place. Descriptions (PlayerDesc, RunOptions)
+// leave a field at zero/absent to mean "the default", and one function per description
+// (withDefaults) fills them from here; the CLI shows these same numbers in --help. No GL needed.
+#pragma once
+
+#include <cstddef>
+
+namespace toyhost::defaults {
+
+inline constexpr int kCanvasWidth = 800;
+inline constexpr int kCanvasHeight = 450;
+inline constexpr int kFrames = 1;
+inline constexpr double kFps = 60.0;             // fixed time step: iTime = start + n / fps
+inline constexpr int kPngLevel = 1;              // zlib level of captured PNG files (fast)
+inline constexpr std::size_t kCaptureMemoryMiB = 256;  // frames waiting for the encoders
+inline constexpr int kCaptureEvery = 1;
+inline constexpr int kMaxCanvasSide = 16384;     // --size limit, before asking GL for its own
+// iTimeDelta the site uses on the frame after a restart and while paused (1/60 s).
+inline constexpr double kRestartTimeDelta = 1.0 / 60.0;
+inline constexpr double kSampleRate = 44100.0;   // iSampleRate in every pass
+
+}  // namespace toyhost::defaults

@@ -1,0 +1,31 @@
+// FrameSequence: the two counters a running shadertoy keeps. `frame` is iFrame: it starts at 0,
+// counts rendered frames and goes back to 0 on a restart (the site's Effect.ResetTime). `step`
+// picks the ping-pong slots (graph/PassGraph.h): it goes up by one per rendered frame and never
+// goes back, not on a restart and not when time is rewound, so "the other slot" is always the
+// previous frame's output. Pure logic, no GL needed; checked by tests/unit/test_frame_sequence.cpp.
+#pragma once
+
+#include <cstdint>
+
+namespace toyhost {
+
+class FrameSequence {
+public:
+    int frame() const { return frame_; }             // iFrame of the next frame
+    std::uint64_t step() const { return step_; }     // ping-pong step of the next frame
+    bool startOfRun() const { return frame_ == 0; }  // the next frame sees cleared buffers
+
+    // After a frame was rendered.
+    void advance() {
+        ++frame_;
+        ++step_;
+    }
+    // iFrame back to 0; the step goes on.
+    void restart() { frame_ = 0; }
+
+private:
+    int frame_ = 0;
+    std::uint64_t step_ = 0;
+};
+
+}  // namespace toyhost

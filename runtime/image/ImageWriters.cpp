@@ -1,0 +1,195 @@
+#include "image/ImageWriters.h"
+
+#include <cerrno>
+#include <csetjmp>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStdIO.h>
+#include <png.h>
+
+#include "core/AtomicFile.h"
+#include "image/ImageFile.h"
+
+namespace toyhost {
+namespace fs = std::filesystem;
+
+namespace {
+constexpr const char* kExrChannels[4] = {"R", "G", "B", "A"};
+
+Error ioError(const fs::path& path, const std::string& what, int error) {
+    return fileError(path.string(), what + ": " + std::strerror(error), error == ENOSPC ? "io.no-space" : "io.write");
+}
+
+Status checkSize(const fs::path& path, int width, int height, std::size_t values) {
+    if (width <= 0 || height <= 0)
+        return fileError(path.string(), "invalid image size " + std::to_string(width) + "x" + std::to_string(height),
+                         "image.size");
+    const std::size_t expected =
+        static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4;
+    if (values != expected)
+        return fileError(path.string(), "pixel buffer holds " + std::to_string(values) + " values, " + std::to_string(width) +
+                                   "x" + std::to_string(height) + " RGBA needs " + std::to_string(expected),
+                         "image.size");
+    return okStatus();
+}
+
+// ---- PNG ----
+// libpng reports errors by longjmp. The jump target lives in encodePng, whose frame holds only C
+// objects, so no C++ destructor is ever skipped; the caller owns the FILE and the row table.
+struct PngError {
+    char message[256];
+};
+
+[[noreturn]] void onPngError(png_structp png, png_const_charp message) {
+    auto* error = static_cast<PngError*>(png_get_error_ptr(png));
+    std::snprintf(error->message, sizeof error->message, "%s", message);
+    png_longjmp(png, 1);
+}
+
+void onPngWarning(png_structp, png_const_charp) {}  // library code does not print
+
+bool encodePng(std::FILE* file, const std::uint8_t* const* rows, png_uint_32 width, png_uint_32 height, int level,
+               PngError* error) {
+    png_structp png =
+        png_create_write_struct(PNG_LIBPNG_VER_STRING, error, onPngError, onPngWarning);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    if (!info) {
+        png_destroy_write_struct(&png, nullptr);
+        std::snprintf(error->message, sizeof error->message, "out of memory");
+        return false;
+    }
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        return false;
+    }
+    png_init_io(png, file);
+    png_set_compression_level(png, level);
+    // libpng's adaptive row filters cost about as much as zlib's fastest level itself; at the
+    // fast levels (capture) they are skipped, which on rendered frames costs little size.
+    if (level <= 2) png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+    png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB_ALPHA, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    png_write_image(png, const_cast<png_bytepp>(rows));
+    png_write_end(png, nullptr);
+    png_destroy_write_struct(&png, &info);
+    return true;
+}
+
+struct FileCloser {
+    void operator()(std::FILE* file) const { std::fclose(file); }
+};
+}  // namespace
+
+Status writePng(const fs::path& path, int width, int height, std::span<const std::uint8_t> rgba,
+                int compressionLevel, ImageScratch* scratch) {
+    if (Status size = checkSize(path, width, height, rgba.size()); !size) return size;
+    if (compressionLevel < 0 || compressionLevel > 9)
+        return fileError(path.string(), "PNG compression level must be 0..9, got " + std::to_string(compressionLevel),
+                         "image.png-level");
+
+    // PNG stores the top row first: row i of the file is row (height-1-i) of the input. The table
+    // of row pointers flips without copying pixels.
+    ImageScratch local;
+    std::vector<const std::uint8_t*>& rows = (scratch ? scratch : &local)->rows;
+    const std::size_t stride = static_cast<std::size_t>(width) * 4;
+    rows.resize(static_cast<std::size_t>(height));
+    for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = rgba.data() + (rows.size() - 1 - i) * stride;
+
+    return writeFileAtomically(path, [&](const fs::path& temp) -> Status {
+        std::unique_ptr<std::FILE, FileCloser> file(std::fopen(temp.c_str(), "wb"));
+        if (!file) return ioError(path, "cannot open for writing", errno);
+        PngError error{};
+        if (!encodePng(file.get(), rows.data(), static_cast<png_uint_32>(width),
+                       static_cast<png_uint_32>(height), compressionLevel, &error)) {
+            // libpng reports a failed fwrite as "Write Error"; errno still says why.
+            const int cause = errno;
+            if (cause == ENOSPC) return ioError(path, "PNG write failed", cause);
+            return fileError(path.string(), std::string("PNG encoding failed: ") + error.message, "io.write");
+        }
+        if (std::fflush(file.get()) != 0 || std::ferror(file.get())) return ioError(path, "write failed", errno);
+        if (std::fclose(file.release()) != 0) return ioError(path, "write failed", errno);
+        return okStatus();
+    });
+}
+
+Result<Image8> readPng(const fs::path& path) { return loadImageFile(path); }
+
+// ---- EXR ----
+Status writeExr(const fs::path& path, int width, int height, std::span<const float> rgba, ImageScratch* scratch) {
+    if (Status size = checkSize(path, width, height, rgba.size()); !size) return size;
+    ImageScratch local;
+    std::vector<float>& topFirst = (scratch ? scratch : &local)->floats;
+    copyFlipped(rgba, width, height, topFirst);
+
+    return writeFileAtomically(path, [&](const fs::path& temp) -> Status {
+        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+        if (!out) return ioError(path, "cannot open for writing", errno);
+        try {
+            Imf::Header header(width, height);
+            header.compression() = Imf::NO_COMPRESSION;
+            header.lineOrder() = Imf::INCREASING_Y;
+            Imf::FrameBuffer frame;
+            const std::size_t pixelBytes = 4 * sizeof(float);
+            for (int c = 0; c < 4; ++c) {
+                header.channels().insert(kExrChannels[c], Imf::Channel(Imf::FLOAT));
+                frame.insert(kExrChannels[c],
+                             Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(topFirst.data() + c),
+                                        pixelBytes, pixelBytes * static_cast<std::size_t>(width)));
+            }
+            Imf::StdOFStream stream(out, temp.c_str());
+            Imf::OutputFile file(stream, header);
+            file.setFrameBuffer(frame);
+            file.writePixels(height);
+        } catch (const std::exception& e) {
+            const int cause = errno;
+            if (cause == ENOSPC) return ioError(path, "cannot write EXR", cause);
+            return fileError(path.string(), std::string("cannot write EXR: ") + e.what(), "io.write");
+        }
+        out.close();  // the OutputFile above has written its offset table by now
+        if (!out) return ioError(path, "write failed", errno);
+        return okStatus();
+    });
+}
+
+Result<ImageF32> readExr(const fs::path& path) {
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (!fs::exists(status)) return fileError(path.string(), "file not found", "io.not-found");
+    if (!fs::is_regular_file(status)) return fileError(path.string(), "is not a regular file", "io.not-a-file");
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imath::Box2i window = file.header().dataWindow();
+        const int width = window.max.x - window.min.x + 1;
+        const int height = window.max.y - window.min.y + 1;
+        std::vector<float> topFirst(static_cast<std::size_t>(width) *
+                                    static_cast<std::size_t>(height) * 4);
+        Imf::FrameBuffer frame;
+        const std::size_t pixelBytes = 4 * sizeof(float);
+        for (int c = 0; c < 4; ++c) {
+            frame.insert(kExrChannels[c],
+                         Imf::Slice::Make(Imf::FLOAT, topFirst.data() + c, window, pixelBytes,
+                                          pixelBytes * static_cast<std::size_t>(width), 1, 1,
+                                          c == 3 ? 1.0 : 0.0));
+        }
+        file.setFrameBuffer(frame);
+        file.readPixels(window.min.y, window.max.y);
+        flipRows(std::span<float>(topFirst), width, height);
+        return ImageF32{width, height, std::move(topFirst)};
+    } catch (const std::exception& e) {
+        return fileError(path.string(), std::string("not a readable EXR file: ") + e.what(), "image.decode");
+    }
+}
+
+}  // namespace toyhost

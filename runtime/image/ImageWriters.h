@@ -1,0 +1,45 @@
+// ImageWriters: PNG (8-bit RGBA) and OpenEXR (32-bit float RGBA) files from pixels held rows
+// bottom first (image/Image.h), and readers of the same formats for tests and tools. Files are
+// written atomically: complete or absent. CPU only, no GL needed.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <vector>
+
+#include "core/Result.h"
+#include "image/Image.h"
+
+namespace toyhost {
+
+// Working memory a writer reuses from one file to the next, so that writing frames allocates no
+// pixel-sized buffer once the first one is written (the codec libraries keep their own state).
+struct ImageScratch {
+    std::vector<const std::uint8_t*> rows;  // PNG row table
+    std::vector<float> floats;              // EXR rows in file order
+};
+
+// `rgba` holds width * height * 4 bytes, rows bottom first; the file gets the top row first.
+// `compressionLevel` is zlib's 0 (none) .. 9 (smallest); the default 1 favours speed when
+// capturing frames. Levels 0-2 write rows unfiltered, 3-9 use libpng's adaptive filters.
+Status writePng(const std::filesystem::path& path, int width, int height, std::span<const std::uint8_t> rgba,
+                int compressionLevel = 1, ImageScratch* scratch = nullptr);
+
+// `rgba` holds width * height * 4 floats, rows bottom first. Writes 32-bit FLOAT channels
+// A, B, G, R (EXR keeps channels sorted by name), uncompressed, scanlines in increasing y with the
+// image's top row as scanline 0. That is the layout of Shadertoy's own "export buffer to EXR"
+// (piLibs piExportToEXR, called by effect.js saveScreenshot): FLOAT B/G/R, no compression,
+// INCREASING_Y, GL rows flipped so the top comes first. The site drops alpha (3 channels); we keep
+// it, and readers that ignore A see the same RGB.
+Status writeExr(const std::filesystem::path& path, int width, int height, std::span<const float> rgba,
+                ImageScratch* scratch = nullptr);
+
+// Reads any scanline or tiled EXR into RGBA float, rows bottom first (the inverse of writeExr).
+// Missing channels read as R=G=B=0, A=1 (so a site export without alpha has A=1).
+Result<ImageF32> readExr(const std::filesystem::path& path);
+
+// Reads a PNG (or anything loadImageFile reads) to RGBA8, rows bottom first.
+Result<Image8> readPng(const std::filesystem::path& path);
+
+}  // namespace toyhost

@@ -1,0 +1,41 @@
+// StockMedia: the table of Shadertoy's stock 2D textures (/media/a/<sha256>.<ext>) with their true
+// size and channel count, which manifests and exports name by id or by the site's name. Pure data;
+// the stand-ins for files toyhost does not have are made in media/StandIns.h. No GL needed.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+
+namespace toyhost {
+
+enum class StockMediaKind {
+    Noise,  // uniform random bytes (Gray/RGBA Noise): shaders use them as hash tables
+    Photo,  // photographic or painted surface detail (Abstract, Organic, London, ...)
+    Other,  // anything else: font atlas, Bayer matrix, Nyancat sprite sheet, blue noise
+};
+
+struct StockMediaInfo {
+    std::string_view hash;       // sha256 as used in the path, lower-case hex
+    std::string_view extension;  // "png" or "jpg", without the dot
+    std::string_view name;       // the site's display name, e.g. "Abstract 3"
+    int width;
+    int height;
+    int channels;  // channels in the real file: 1 grey, 3 RGB, 4 RGBA
+    StockMediaKind kind;
+};
+
+// Every stock texture the host knows, in alphabetical order of name.
+std::span<const StockMediaInfo> stockMediaTable();
+
+// Looks a texture up by "/media/a/<hash>.<ext>", "<hash>.<ext>", "<hash>" or the site name (case
+// does not matter: "Abstract 3", "abstract 3"). Returns nullptr when it is not a stock texture.
+const StockMediaInfo* findStockMedia(std::string_view ref);
+
+// The canonical reference "/media/a/<hash>.<ext>".
+std::string stockMediaPath(const StockMediaInfo& info);
+
+
+
+}  // namespace toyhost

@@ -1,0 +1,55 @@
+// ChannelImages: the decoded pixels of every image-file and stock-media channel of a shadertoy,
+// loaded before any GL work (each file or stock id once, however many channels use it), with the
+// stand-ins that were used. Every problem (missing file, undecodable image) is reported at once.
+// CPU only, no GL needed.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/Result.h"
+#include "image/Image.h"
+#include "manifest/ManifestDesc.h"
+#include "media/MediaResolver.h"
+
+namespace toyhost {
+
+// Where stock media and image files come from, besides the stand-ins.
+struct MediaOptions {
+    std::vector<std::pair<std::string, std::filesystem::path>> files;  // stock id -> user file (--media-file)
+    std::vector<std::filesystem::path> folders;                         // --media DIR, $TOYHOST_MEDIA
+};
+
+// A resolver set up with the manifest's own "media" entries, then `options` (which win).
+MediaResolver makeMediaResolver(const ManifestDesc& manifest, const MediaOptions& options);
+
+struct StandInUse {
+    std::string id;    // the media id as the manifest wrote it
+    std::string name;  // "Abstract 3", or the id when the table does not know it
+};
+
+class ChannelImages {
+public:
+    // Decodes every image channel of `manifest`. Errors name the pass and channel of each problem.
+    static Result<ChannelImages> load(const ManifestDesc& manifest, const MediaResolver& media);
+
+    // The pixels of an image-file or stock-media channel of the manifest it was loaded for.
+    const Image8* find(const ChannelDesc& channel) const;
+
+    const std::vector<Diagnostic>& notices() const { return notices_; }  // one per stand-in
+    const std::vector<StandInUse>& standIns() const { return standIns_; }
+
+private:
+    std::map<std::string, std::shared_ptr<const Image8>> images_;  // by channelImageKey
+    std::vector<Diagnostic> notices_;
+    std::vector<StandInUse> standIns_;
+};
+
+// The key two channels share when they show the same picture.
+std::string channelImageKey(const ChannelDesc& channel);
+
+}  // namespace toyhost

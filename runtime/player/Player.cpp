@@ -1,0 +1,141 @@
+#include "player/Player.h"
+
+#include <string>
+
+namespace toyhost {
+
+namespace {
+
+// The canvas must fit GL's own limit as well as toyhost's; checked before any allocation.
+Status checkSizeForGl(int width, int height) {
+    if (Status size = checkCanvasSize(width, height); !size) return size;
+    const int limit = maxTextureSize();
+    if (width > limit || height > limit)
+        return Error("canvas size " + std::to_string(width) + "x" + std::to_string(height) +
+                         " is larger than this GL allows (GL_MAX_TEXTURE_SIZE " + std::to_string(limit) + ")",
+                     "gl.texture-size");
+    return okStatus();
+}
+
+RendererDesc rendererDesc(const PlayerDesc& desc, int width, int height) {
+    RendererDesc r;
+    r.width = width;
+    r.height = height;
+    r.floatImageTarget = desc.floatImage;
+    r.allocate = desc.allocate;
+    return r;
+}
+
+// The images every channel shows, by pass and channel, for telling whether a reload changes them.
+std::vector<std::string> channelSources(const ManifestDesc& manifest) {
+    std::vector<std::string> keys;
+    for (const PassDesc& pass : manifest.passes)
+        for (const ChannelDesc& channel : pass.channels)
+            keys.push_back(channel.kind == ChannelKind::ImageFile || channel.kind == ChannelKind::StockMedia
+                               ? channelImageKey(channel)
+                               : std::string());
+    return keys;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<Player>> Player::create(std::shared_ptr<GlContext> context, PlayerPlan plan, PlayerDesc desc) {
+    if (!context) return Error("the player needs a GL context", "internal");
+    if (Status current = context->makeCurrent(); !current) return current.error();
+    desc = withDefaults(std::move(desc));
+    if (Status size = checkSizeForGl(desc.width, desc.height); !size) return size.error();
+    std::unique_ptr<Player> player(new Player());
+    player->context_ = std::move(context);
+    player->desc_ = desc;
+    player->plan_ = std::move(plan);
+    Result<std::unique_ptr<Renderer>> renderer = Renderer::create(
+        player->plan_.manifest, player->plan_.graph, rendererDesc(desc, desc.width, desc.height), player->plan_.images);
+    if (!renderer) return renderer.error();
+    player->renderer_ = std::move(*renderer);
+    for (const PassDesc& pass : player->plan_.manifest.passes)
+        player->built_.push_back({pass.code, player->plan_.manifest.commonCode});
+    return player;
+}
+
+Player::~Player() {
+    // The GL objects below belong to this context; make sure it is the current one while they go.
+    if (context_) (void)context_->makeCurrent();
+    renderer_.reset();
+}
+
+void Player::step(const FrameTime& time, std::span<const InputEvent> events, bool renderImage) {
+    for (const InputEvent& event : events) applyInput(event, mouse_, keyboard_);
+    if (keyboard_.revision() != uploadedKeyboard_) {
+        renderer_->updateKeyboard(keyboard_.texels());
+        uploadedKeyboard_ = keyboard_.revision();
+    }
+    FrameUniforms uniforms;
+    uniforms.frame = sequence_.frame();
+    uniforms.time = static_cast<float>(time.time);
+    uniforms.timeDelta = static_cast<float>(time.timeDelta);
+    uniforms.frameRate = static_cast<float>(time.frameRate);
+    uniforms.mouse = mouse_.uniform();
+    uniforms.date = time.date;
+    renderer_->renderFrame(uniforms, sequence_.step(), renderImage);
+    mouse_.endFrame();
+    keyboard_.endFrame();  // its change is uploaded before the next frame renders
+    sequence_.advance();
+}
+
+Status Player::resize(int width, int height) {
+    if (width == renderer_->width() && height == renderer_->height()) return okStatus();
+    if (Status size = checkSizeForGl(width, height); !size) return size;
+    return renderer_->resize(width, height);
+}
+
+void Player::restart() {
+    sequence_.restart();
+    renderer_->clearBuffers();
+}
+
+ReloadReport Player::reload(PlayerPlan next) {
+    ReloadReport report;
+    const bool sameStructure =
+        plan_.graph.sameStructure(next.graph) && channelSources(plan_.manifest) == channelSources(next.manifest);
+    if (!sameStructure) {
+        report.structureChanged = true;
+        Result<std::unique_ptr<Renderer>> renderer = Renderer::create(
+            next.manifest, next.graph, rendererDesc(desc_, renderer_->width(), renderer_->height()), next.images);
+        if (!renderer) {
+            report.problems = renderer.error().diagnostics;
+            return report;
+        }
+        (*renderer)->takeBuffersFrom(*renderer_);
+        renderer_ = std::move(*renderer);
+        plan_ = std::move(next);
+        built_.clear();
+        for (const PassDesc& pass : plan_.manifest.passes) {
+            built_.push_back({pass.code, plan_.manifest.commonCode});
+            report.recompiled.push_back(passName(pass.id));
+        }
+        // The new renderer's keyboard texture starts empty: upload the state before the next frame.
+        uploadedKeyboard_ = keyboard_.revision() + 1;
+        report.applied = true;
+        return report;
+    }
+    // Same passes and bindings: recompile only the passes whose code (or Common) changed. A pass
+    // that fails keeps running what it ran; its record stays, so the next change retries it.
+    for (std::size_t i = 0; i < next.manifest.passes.size(); ++i) {
+        const PassDesc& pass = next.manifest.passes[i];
+        if (pass.code == built_[i].code && next.manifest.commonCode == built_[i].common) continue;
+        Status replaced = renderer_->replaceProgram(i, next.manifest, pass);
+        if (!replaced) {
+            report.problems.insert(report.problems.end(), replaced.error().diagnostics.begin(),
+                                   replaced.error().diagnostics.end());
+            continue;
+        }
+        built_[i] = {pass.code, next.manifest.commonCode};
+        report.recompiled.push_back(passName(pass.id));
+    }
+    report.applied = !report.recompiled.empty();
+    // The plan now describes what runs, except for the code of passes that failed (kept in built_).
+    plan_ = std::move(next);
+    return report;
+}
+
+}  // namespace toyhost

@@ -1,0 +1,99 @@
+// Player: the one engine every driver runs (the headless run, the window, the compatibility
+// runner, the tests). It owns a running shadertoy: the pass graph, the renderer with its buffers,
+// the mouse and keyboard state the shader sees, and the frame counters (graph/FrameSequence.h).
+// Drivers own the clock and the input sources and call step() once per frame; they also decide
+// when to resize, restart or reload. Needs its GL context current on the calling thread; it
+// holds the context, so its GL objects are destroyed before the context by ownership.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/Result.h"
+#include "gl/GlContext.h"
+#include "graph/FrameSequence.h"
+#include "input/InputEvent.h"
+#include "player/PlayerDesc.h"
+#include "render/Renderer.h"
+#include "timing/FrameTime.h"
+
+namespace toyhost {
+
+struct ReloadReport {
+    // The passes, channels or images changed: the renderer was rebuilt (when `applied`), carrying
+    // over the content of every buffer the new manifest still has. Drivers usually restart then.
+    bool structureChanged = false;
+    bool applied = false;                 // the new manifest (or some of its passes) runs now
+    std::vector<std::string> recompiled;  // passes whose new code runs now
+    // Passes that did not compile: each keeps its last good program (after a structure change,
+    // the whole old shadertoy keeps running).
+    std::vector<Diagnostic> problems;
+};
+
+class Player {
+public:
+    // Makes `context` current and builds everything; every shader error is reported at once.
+    static Result<std::unique_ptr<Player>> create(std::shared_ptr<GlContext> context, PlayerPlan plan,
+                                                  PlayerDesc desc = {});
+    ~Player();
+    Player(const Player&) = delete;
+    Player& operator=(const Player&) = delete;
+
+    // Applies `events` (in order) to the mouse and keyboard, renders frame iFrame = frame() (every
+    // buffer, then Image unless `renderImage` is false: nothing reads Image but the driver), then
+    // ends the frame for the inputs (the click and went-down signals last one frame) and advances.
+    void step(const FrameTime& time, std::span<const InputEvent> events = {}, bool renderImage = true);
+
+    int frame() const { return sequence_.frame(); }  // iFrame of the next frame
+
+    // New canvas size; buffers keep their content bottom-left, iFrame goes on. All or nothing: on
+    // failure (a size GL cannot hold) the old size and content stay.
+    Status resize(int width, int height);
+    // iFrame back to 0 and every buffer cleared, as the site's restart does; mouse and keyboard
+    // state stay. The driver resets its clock.
+    void restart();
+    // Switches to `next` (made by planPlayer, possibly on another thread): see ReloadReport.
+    ReloadReport reload(PlayerPlan next);
+
+    // Where a pass's latest output is (readback, presenting).
+    PassOutput output(PassId pass) const { return renderer_->output(pass); }
+    void readRgba32f(PassId pass, std::vector<float>& out) const { renderer_->readRgba32f(pass, out); }
+    void readRgba8(PassId pass, std::vector<std::uint8_t>& out) const { renderer_->readRgba8(pass, out); }
+    // Waits for the GPU (glFinish); never needed per frame.
+    void finish() { renderer_->finish(); }
+
+    int width() const { return renderer_->width(); }
+    int height() const { return renderer_->height(); }
+    const ManifestDesc& manifest() const { return plan_.manifest; }
+    const PlayerPlan& plan() const { return plan_; }
+    const std::vector<Diagnostic>& notices() const { return plan_.notices; }
+    const MouseState& mouse() const { return mouse_; }
+    const KeyboardState& keyboard() const { return keyboard_; }
+    GlContext& context() { return *context_; }
+    // For objects that hold GL resources of this context (a recorder's readback buffers): owning
+    // a share keeps the context alive until they are gone.
+    std::shared_ptr<GlContext> sharedContext() const { return context_; }
+
+private:
+    Player() = default;
+    // Per pass (graph order), the code its running program was built from.
+    struct BuiltFrom {
+        std::string code;
+        std::string common;
+    };
+
+    std::shared_ptr<GlContext> context_;  // declared first: destroyed after every GL object below
+    PlayerDesc desc_;
+    PlayerPlan plan_;
+    std::unique_ptr<Renderer> renderer_;
+    std::vector<BuiltFrom> built_;
+    FrameSequence sequence_;
+    MouseState mouse_;
+    KeyboardState keyboard_;
+    std::uint64_t uploadedKeyboard_ = 0;
+};
+
+}  // namespace toyhost

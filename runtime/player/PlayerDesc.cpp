@@ -1,0 +1,33 @@
+#include "player/PlayerDesc.h"
+
+#include <string>
+
+#include "core/Defaults.h"
+
+namespace toyhost {
+
+PlayerDesc withDefaults(PlayerDesc desc) {
+    if (desc.width == 0) desc.width = defaults::kCanvasWidth;
+    if (desc.height == 0) desc.height = defaults::kCanvasHeight;
+    return desc;
+}
+
+Status checkCanvasSize(int width, int height) {
+    if (width < 1 || height < 1 || width > defaults::kMaxCanvasSide || height > defaults::kMaxCanvasSide)
+        return Error("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " is not between 1x1 and " +
+                         std::to_string(defaults::kMaxCanvasSide) + "x" + std::to_string(defaults::kMaxCanvasSide),
+                     "usage.size");
+    return okStatus();
+}
+
+Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media) {
+    const MediaResolver resolver = makeMediaResolver(manifest, media);
+    Result<ChannelImages> images = ChannelImages::load(manifest, resolver);
+    if (!images) return images.error();
+    PassGraph graph = buildPassGraph(manifest);
+    std::vector<Diagnostic> notices = manifest.notices;
+    notices.insert(notices.end(), images->notices().begin(), images->notices().end());
+    return PlayerPlan{std::move(manifest), std::move(graph), std::move(*images), std::move(notices)};
+}
+
+}  // namespace toyhost

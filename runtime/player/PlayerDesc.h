@@ -1,0 +1,43 @@
+// PlayerDesc and PlayerPlan: what a Player is made from. A PlayerDesc is plain settings whose
+// zero/absent fields mean "the default" (filled by withDefaults from core/Defaults.h, the one
+// place defaults live). A PlayerPlan is everything about a shadertoy that can be prepared without
+// GL: the validated manifest, its pass graph and the decoded pixels of every image channel. Plans
+// are made off the GL thread (a file watcher does it before a hot reload). No GL needed.
+#pragma once
+
+#include <vector>
+
+#include "core/Result.h"
+#include "graph/PassGraph.h"
+#include "manifest/ManifestDesc.h"
+#include "media/ChannelImages.h"
+#include "render/RenderTargets.h"
+
+namespace toyhost {
+
+struct PlayerDesc {
+    int width = 0;               // canvas size; 0: defaults::kCanvasWidth x kCanvasHeight
+    int height = 0;
+    // Render the Image pass into RGBA32F instead of RGBA8 (EXR capture of Image, float checks).
+    bool floatImage = false;
+    // Tests make allocations fail here to check that resize is all-or-nothing; empty: real GL.
+    TextureAllocator allocate;
+};
+
+// `desc` with every zero field replaced by its default.
+PlayerDesc withDefaults(PlayerDesc desc);
+
+// Checks a canvas size against toyhost's own limits (not GL's, which the Player checks).
+Status checkCanvasSize(int width, int height);
+
+struct PlayerPlan {
+    ManifestDesc manifest;
+    PassGraph graph;
+    ChannelImages images;
+    std::vector<Diagnostic> notices;  // the manifest's notices and the stand-ins used
+};
+
+// Builds the graph and decodes every image channel; every problem is reported at once.
+Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media);
+
+}  // namespace toyhost

@@ -1,0 +1,73 @@
+#include "render/PassProgram.h"
+
+#include <string>
+
+#include "gl/ShaderProgram.h"
+#include "shader/CompilerLog.h"
+#include "shader/ShaderAssembly.h"
+
+namespace toyhost {
+
+namespace {
+
+UniformLocations locate(GLuint program) {
+    auto at = [&](const std::string& name) { return glGetUniformLocation(program, name.c_str()); };
+    UniformLocations u;
+    u.resolution = at("iResolution");
+    u.time = at("iTime");
+    u.timeDelta = at("iTimeDelta");
+    u.frameRate = at("iFrameRate");
+    u.frame = at("iFrame");
+    u.mouse = at("iMouse");
+    u.date = at("iDate");
+    u.sampleRate = at("iSampleRate");
+    u.channelTime = at("iChannelTime");
+    u.channelResolution = at("iChannelResolution");
+    for (int i = 0; i < kChannelCount; ++i) {
+        const std::string ch = "iCh" + std::to_string(i);
+        u.channel[i] = at("iChannel" + std::to_string(i));
+        u.chSampler[i] = at(ch + ".sampler");
+        u.chSize[i] = at(ch + ".size");
+        u.chTime[i] = at(ch + ".time");
+        u.chLoaded[i] = at(ch + ".loaded");
+    }
+    return u;
+}
+
+}  // namespace
+
+Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassDesc& pass) {
+    ShaderInputs inputs;
+    inputs.pass = pass.id;
+    inputs.common = manifest.commonSource ? &manifest.commonCode : nullptr;
+    inputs.code = pass.code;
+    const AssembledShader fragment = assembleFragmentShader(inputs);
+    ProgramBuild build = buildProgram(fullscreenVertexShader(), fragment.text);
+    if (!build.ok) {
+        const CompilerLogNames names{passName(pass.id), pass.sourceName, manifest.commonName};
+        std::vector<Diagnostic> diagnostics = parseCompilerLog(build.log, names);
+        const char* what = build.failedStage == ProgramBuild::Stage::Link     ? "shader link failed"
+                           : build.failedStage == ProgramBuild::Stage::Vertex ? "internal vertex shader failed"
+                                                                               : "shader compile failed";
+        if (diagnostics.empty()) {
+            Diagnostic d;
+            d.code = "shader.compile";
+            d.pass = passName(pass.id);
+            d.file = pass.sourceName;
+            d.message = std::string(what) + " (the driver gave no message)";
+            diagnostics.push_back(std::move(d));
+        }
+        if (build.failedStage == ProgramBuild::Stage::Link)
+            for (Diagnostic& d : diagnostics) {
+                d.code = "shader.link";
+                d.message = "link: " + d.message;
+            }
+        return Error(std::move(diagnostics));
+    }
+    PassProgram made;
+    made.uniforms = locate(build.program.id());
+    made.program = std::move(build.program);
+    return made;
+}
+
+}  // namespace toyhost

@@ -1,0 +1,32 @@
+// PassProgram: one pass's GL program (the assembled Shadertoy fragment shader and the shared
+// full-screen triangle), with every uniform location looked up once after linking. Compile
+// errors come back as diagnostics naming the user's file, pass, line and column. Needs a current
+// GL context.
+#pragma once
+
+#include <array>
+
+#include "core/Result.h"
+#include "gl/GlObjects.h"
+#include "manifest/ManifestDesc.h"
+
+namespace toyhost {
+
+// Uniform locations; -1 where the shader does not use one (glUniform* ignores -1).
+struct UniformLocations {
+    GLint resolution = -1, time = -1, timeDelta = -1, frameRate = -1, frame = -1, mouse = -1, date = -1,
+          sampleRate = -1, channelTime = -1, channelResolution = -1;
+    std::array<GLint, kChannelCount> channel{-1, -1, -1, -1};  // iChannelN
+    std::array<GLint, kChannelCount> chSampler{-1, -1, -1, -1}, chSize{-1, -1, -1, -1}, chTime{-1, -1, -1, -1},
+        chLoaded{-1, -1, -1, -1};  // the Image pass's iChN struct members
+};
+
+struct PassProgram {
+    GlProgram program;
+    UniformLocations uniforms;
+};
+
+// Builds `pass` of `manifest` (Common included when the manifest has one).
+Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassDesc& pass);
+
+}  // namespace toyhost

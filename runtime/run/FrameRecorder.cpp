@@ -1,0 +1,92 @@
+#include "run/FrameRecorder.h"
+
+#include "capture/FileSinks.h"
+
+namespace toyhost {
+
+Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSettings& settings, const Player& player) {
+    std::unique_ptr<FrameRecorder> recorder(new FrameRecorder());
+    recorder->context_ = player.sharedContext();
+    recorder->settings_ = settings;
+    const PassOutput output = player.output(settings.pass);
+    recorder->width_ = output.width;
+    recorder->height_ = output.height;
+    recorder->format_ = output.format;
+
+    switch (settings.output.format()) {
+        case OutputFormat::Png:
+        case OutputFormat::Exr:
+            recorder->sink_ = std::make_unique<ImageSequenceSink>(settings.output, settings.pngLevel);
+            break;
+        case OutputFormat::RawStream:
+            recorder->sink_ = std::make_unique<RawStreamSink>(settings.rawStreamFd, "stdout");
+            break;
+        case OutputFormat::Video: {
+            Result<std::unique_ptr<VideoSink>> video = VideoSink::start(
+                settings.output.pathFor(0), recorder->width_, recorder->height_, settings.fps, settings.video);
+            if (!video) return video.error();
+            recorder->sink_ = std::move(*video);
+            break;
+        }
+    }
+    const int threads = settings.synchronous ? 0
+                        : settings.encoderThreads > 0 ? settings.encoderThreads
+                                                      : defaultEncoderThreads();
+    recorder->pool_ = std::make_unique<EncoderPool>(*recorder->sink_, threads, settings.memoryCapBytes);
+    if (!settings.synchronous) {
+        Result<ReadbackRing> ring = ReadbackRing::create(recorder->width_, recorder->height_, recorder->format_);
+        if (!ring) return ring.error();
+        recorder->ring_.emplace(std::move(*ring));
+    }
+    return recorder;
+}
+
+FrameRecorder::~FrameRecorder() {
+    // The encoders stop first (discarding incomplete output), then the readback buffers go while
+    // their context is current.
+    pool_.reset();
+    if (context_) (void)context_->makeCurrent();
+    ring_.reset();
+}
+
+Status FrameRecorder::capture(const Player& player, int frame) {
+    const PassOutput output = player.output(settings_.pass);
+    if (output.width != width_ || output.height != height_)
+        return Error("capture: the canvas changed size during a recording (" + std::to_string(width_) + "x" +
+                         std::to_string(height_) + " -> " + std::to_string(output.width) + "x" +
+                         std::to_string(output.height) + ")",
+                     "capture.size");
+    if (!ring_) {
+        Result<std::vector<std::byte>> pixels = pool_->acquire(frameBytes(width_, height_, format_));
+        if (!pixels) return pixels.error();
+        readFramebuffer(output.framebuffer, width_, height_, format_, *pixels);
+        return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(*pixels)});
+    }
+    if (ring_->full())
+        if (Status collected = collectOldest(); !collected) return collected;
+    ring_->start(output.framebuffer, frame);
+    return poll();
+}
+
+Status FrameRecorder::poll() {
+    while (ring_ && !ring_->empty() && ring_->oldestReady())
+        if (Status collected = collectOldest(); !collected) return collected;
+    return okStatus();
+}
+
+Status FrameRecorder::collectOldest() {
+    // Blocks while the encoders hold the memory cap: back-pressure reaches the render loop here.
+    Result<std::vector<std::byte>> pixels = pool_->acquire(ring_->frameBytes());
+    if (!pixels) return pixels.error();
+    const int frame = ring_->oldestFrame();
+    if (Status copied = ring_->takeOldest(*pixels); !copied) return copied;
+    return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(*pixels)});
+}
+
+Status FrameRecorder::finish() {
+    while (ring_ && !ring_->empty())
+        if (Status collected = collectOldest(); !collected) return collected;
+    return pool_->finish();
+}
+
+}  // namespace toyhost

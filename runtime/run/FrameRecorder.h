@@ -1,0 +1,69 @@
+// FrameRecorder: takes the frames a run captures from the Player to their output (capture/).
+// Asynchronous by default: readbacks go through a ReadbackRing (no stall on the render thread)
+// and are encoded by an EncoderPool into the sink `--out` asks for (image files, ffmpeg video,
+// raw stdout). The synchronous path (read and encode on the render thread) is kept for
+// comparison. Needs the player's GL context current for its whole life.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "capture/EncoderPool.h"
+#include "capture/OutputPattern.h"
+#include "capture/VideoSink.h"
+#include "core/Result.h"
+#include "manifest/ManifestDesc.h"
+#include "player/Player.h"
+#include "render/ReadbackRing.h"
+
+namespace toyhost {
+
+struct RecorderSettings {
+    OutputPattern output;
+    PassId pass = PassId::Image;
+    bool synchronous = false;      // glReadPixels and encoding on the render thread
+    int pngLevel = 1;
+    int encoderThreads = 0;        // 0: defaultEncoderThreads()
+    std::size_t memoryCapBytes = std::size_t(256) << 20;
+    VideoSettings video;
+    double fps = 60;               // the video's frame rate
+    int rawStreamFd = 1;           // where "--out -" writes (stdout)
+};
+
+class FrameRecorder {
+public:
+    // Creates the sink (starting ffmpeg for a video), the encoder threads and the readback ring,
+    // sized for the player's current canvas.
+    static Result<std::unique_ptr<FrameRecorder>> create(const RecorderSettings& settings, const Player& player);
+
+    // Captures the frame the player has just rendered (its iFrame is `frame`).
+    Status capture(const Player& player, int frame);
+    // Hands readbacks that have completed to the encoders, without waiting; call once a frame.
+    Status poll();
+    // Waits for every readback and every encoder, then completes the output. Without a
+    // successful finish(), destruction discards incomplete output.
+    Status finish();
+
+    std::uint64_t bytesWritten() const { return pool_->bytesWritten(); }
+    int encoderThreads() const { return pool_->threads(); }
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+    ~FrameRecorder();
+
+private:
+    FrameRecorder() = default;
+    Status collectOldest();
+
+    std::shared_ptr<GlContext> context_;  // declared first: outlives the readback buffers
+    RecorderSettings settings_;
+    int width_ = 0, height_ = 0;
+    PixelFormat format_ = PixelFormat::Rgba8;
+    std::unique_ptr<FrameSink> sink_;    // declared before pool_: the pool's threads use it
+    std::unique_ptr<EncoderPool> pool_;
+    std::optional<ReadbackRing> ring_;
+};
+
+}  // namespace toyhost

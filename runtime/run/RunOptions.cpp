@@ -1,0 +1,94 @@
+#include "run/RunOptions.h"
+
+#include <cmath>
+
+#include "core/AtomicFile.h"
+#include "core/ChildProcess.h"
+#include "core/Defaults.h"
+#include "export/LoadShadertoy.h"
+
+namespace toyhost {
+namespace fs = std::filesystem;
+
+namespace {
+int countCaptured(int frames, int every) {
+    int n = 0;
+    for (int f = 0; f < frames; ++f) n += isCapturedFrame(f, frames, every);
+    return n;
+}
+
+Error usage(std::string message) { return Error(std::move(message), "usage"); }
+}  // namespace
+
+RunOptions withDefaults(RunOptions o) {
+    if (!o.width) o.width = defaults::kCanvasWidth;
+    if (!o.height) o.height = defaults::kCanvasHeight;
+    if (!o.frames) o.frames = defaults::kFrames;
+    if (!o.fps) o.fps = defaults::kFps;
+    if (!o.captureEvery) o.captureEvery = defaults::kCaptureEvery;
+    if (!o.pngLevel) o.pngLevel = defaults::kPngLevel;
+    if (!o.captureMemoryBytes) o.captureMemoryBytes = defaults::kCaptureMemoryMiB << 20;
+    return o;
+}
+
+Result<PreparedRun> prepareRun(const RunOptions& options) {
+    const RunOptions o = withDefaults(options);
+    if (Status size = checkCanvasSize(*o.width, *o.height); !size) return size.error();
+    if (*o.frames < 1) return usage("--frames must be at least 1");
+    if (!(*o.fps > 0) || !std::isfinite(*o.fps)) return usage("--fps must be a positive number");
+    if (!std::isfinite(o.startTime)) return usage("--start-time must be a finite number");
+    if (*o.captureEvery < 1) return usage("--capture-every must be at least 1");
+    if (*o.captureMemoryBytes == 0) return usage("--capture-memory must be at least 1 (MiB)");
+    if (o.mouse && o.mouseScript) return usage("--mouse and --mouse-script cannot be combined");
+    if (*o.pngLevel < 0 || *o.pngLevel > 9) return usage("--png-level must be 0..9");
+    if (o.encoderThreads < 0 || o.encoderThreads > 1024) return usage("--encoder-threads must be 0 (automatic) to 1024");
+    if (o.video.quality && (*o.video.quality < 0 || *o.video.quality > 63))
+        return usage("--video-quality must be 0..63 (a constant rate factor; lower is better)");
+
+    Result<ManifestDesc> manifest = loadShadertoy(o.target);
+    if (!manifest) return manifest.error();
+    if (!manifest->find(o.capturePass))
+        return usage(std::string("--capture-pass ") + passName(o.capturePass) + ": " +
+                     manifest->manifestPath.string() + " has no such pass");
+
+    PreparedRun run{o, {}, std::nullopt, {}, {}};
+    if (o.outPattern) {
+        Result<OutputPattern> pattern = OutputPattern::parse(*o.outPattern);
+        if (!pattern) return pattern.error();
+        if (!pattern->numbered() && !pattern->streamed() && countCaptured(*o.frames, *o.captureEvery) > 1)
+            return usage("--out " + *o.outPattern + ": more than one frame is captured, so the "
+                         "pattern needs a frame number placeholder such as %04d");
+        if (pattern->format() == OutputFormat::Video && !findExecutable("ffmpeg"))
+            return Error("--out " + *o.outPattern + ": video needs ffmpeg, which is not in PATH "
+                         "(Debian: apt-get install ffmpeg)",
+                         "capture.ffmpeg");
+        run.output = std::move(*pattern);
+    }
+    if ((o.video.codec || o.video.quality) && (!run.output || run.output->format() != OutputFormat::Video))
+        return usage("--codec and --video-quality apply only to a video --out (.mp4, .webm, .mov, .mkv)");
+    if (o.mouse) run.mouse = mouseHeldAt(o.mouse->x, o.mouse->y);
+    if (o.mouseScript) {
+        Result<std::string> text = readTextFile(*o.mouseScript);
+        if (!text) return text.error();
+        Result<MouseScript> script = parseMouseScript(*text, o.mouseScript->string());
+        if (!script) return script.error();
+        run.mouse = std::move(*script);
+    }
+    if (o.keyScript) {
+        Result<std::string> text = readTextFile(*o.keyScript);
+        if (!text) return text.error();
+        Result<KeyScript> script = parseKeyScript(*text, o.keyScript->string());
+        if (!script) return script.error();
+        run.keys = std::move(*script);
+    }
+    for (const auto& [id, file] : o.media.files) {
+        std::error_code ec;
+        if (!fs::is_regular_file(file, ec)) return fileError(file.string(), "file not found (--media-file " + id + ")", "io.not-found");
+    }
+    Result<PlayerPlan> plan = planPlayer(std::move(*manifest), o.media);
+    if (!plan) return plan.error();
+    run.plan = std::move(*plan);
+    return run;
+}
+
+}  // namespace toyhost

@@ -1,0 +1,78 @@
+// RunOptions: what a user asks of a run (`toyhost run`), as plain settings whose absent fields
+// mean "the default" (withDefaults fills them from core/Defaults.h; a value the user gave, such as
+// --frames 0, is kept so that prepareRun can refuse it), and the checks that need no GL
+// (prepareRun: the manifest, images, output pattern, input scripts, ffmpeg), shared by the
+// headless and window drivers. No GL needed.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "capture/OutputPattern.h"
+#include "capture/VideoSink.h"
+#include "core/Result.h"
+#include "gl/HeadlessContext.h"
+#include "input/InputScript.h"
+#include "manifest/ManifestDesc.h"
+#include "media/ChannelImages.h"
+#include "player/PlayerDesc.h"
+
+namespace toyhost {
+
+struct RunOptions {
+    std::filesystem::path target;          // folder with manifest.json, the manifest file, or an export
+    std::optional<int> width;              // default defaults::kCanvasWidth x kCanvasHeight
+    std::optional<int> height;
+    std::optional<int> frames;             // default defaults::kFrames
+    std::optional<double> fps;             // default defaults::kFps
+    double startTime = 0;
+    std::optional<std::string> outPattern;
+    std::optional<int> captureEvery;       // default defaults::kCaptureEvery
+    PassId capturePass = PassId::Image;
+    std::optional<glm::vec2> mouse;        // --mouse X,Y: pressed on frame 0 and held
+    std::optional<std::filesystem::path> mouseScript;
+    std::optional<std::filesystem::path> keyScript;
+    MediaOptions media;
+    std::optional<double> wallClock;       // iDate at frame 0 (FrameClock form); default: now
+    EglPlatform eglPlatform = EglPlatform::Automatic;
+
+    // Capture pipeline (runtime/capture).
+    std::optional<int> pngLevel;           // zlib level of PNG files, 0..9; default defaults::kPngLevel
+    bool syncCapture = false;              // read back and encode on the render thread (reference path)
+    int encoderThreads = 0;                // 0: defaultEncoderThreads()
+    std::optional<std::size_t> captureMemoryBytes;  // cap on frames waiting for encoders
+    VideoSettings video;                   // codec and quality of --out x.mp4|.webm|.mov|.mkv
+    int rawStreamFd = 1;                   // where --out - writes
+    // glFinish after every frame. For benchmarks: llvmpipe drops queued work that a later draw
+    // fully overwrites before anything reads it, so an unsynchronised render-only loop does not
+    // measure the shading cost.
+    bool finishEachFrame = false;
+};
+
+// `options` with every absent field set to its default.
+RunOptions withDefaults(RunOptions options);
+
+// Frames n with n % captureEvery == 0, and the last frame.
+inline bool isCapturedFrame(int frame, int frames, int captureEvery) {
+    return frame % captureEvery == 0 || frame == frames - 1;
+}
+
+// Everything a run needs that can be checked without GL.
+struct PreparedRun {
+    RunOptions options;                    // with defaults applied
+    PlayerPlan plan;
+    std::optional<OutputPattern> output;
+    MouseScript mouse;
+    KeyScript keys;
+};
+
+// Validates `options` (after withDefaults), loads the shadertoy and decodes its images, parses
+// the output pattern and the input scripts. No GL.
+Result<PreparedRun> prepareRun(const RunOptions& options);
+
+}  // namespace toyhost

@@ -1,0 +1,42 @@
+#include "timing/ProgressLine.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace toyhost {
+
+std::string formatBytes(std::uint64_t bytes) {
+    char text[32];
+    if (bytes < 1024) std::snprintf(text, sizeof text, "%llu B", static_cast<unsigned long long>(bytes));
+    else if (bytes < (1ull << 20)) std::snprintf(text, sizeof text, "%.1f KiB", bytes / 1024.0);
+    else if (bytes < (1ull << 30)) std::snprintf(text, sizeof text, "%.1f MiB", bytes / 1048576.0);
+    else std::snprintf(text, sizeof text, "%.2f GiB", bytes / 1073741824.0);
+    return text;
+}
+
+std::string formatDuration(double seconds) {
+    const long long total = seconds > 0 ? std::llround(seconds) : 0;
+    char text[32];
+    if (total >= 3600)
+        std::snprintf(text, sizeof text, "%lld:%02lld:%02lld", total / 3600, (total / 60) % 60, total % 60);
+    else
+        std::snprintf(text, sizeof text, "%lld:%02lld", total / 60, total % 60);
+    return text;
+}
+
+std::string formatProgressLine(const RunProgress& p) {
+    const double fps = p.seconds > 0 ? p.framesDone / p.seconds : 0;
+    char head[96];
+    if (p.frames <= 0) {
+        std::snprintf(head, sizeof head, "frame %d  %.1f fps", p.framesDone, fps);
+    } else {
+        std::string eta = "--:--";
+        if (fps > 0) eta = formatDuration((p.frames - p.framesDone) / fps);
+        std::snprintf(head, sizeof head, "frame %d/%d  %.1f fps  ETA %s", p.framesDone, p.frames, fps, eta.c_str());
+    }
+    std::string line = head;
+    if (p.bytesWritten > 0) line += "  " + formatBytes(p.bytesWritten) + " written";
+    return line;
+}
+
+}  // namespace toyhost

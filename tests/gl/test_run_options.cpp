@@ -1,0 +1,76 @@
+// RunOptions and prepareRun: defaults come from one place, and what a run cannot do is refused
+// before any GL work, with the usage code the CLI turns into exit status 2.
+#include "GlTestSupport.h"
+
+#include "core/Defaults.h"
+#include "run/RunOptions.h"
+
+namespace toyhost::testing {
+namespace {
+
+RunOptions probeOptions() {
+    RunOptions options;
+    options.target = sourceDir() / "shadertoys/pingpong-probe";
+    options.width = 8;
+    options.height = 8;
+    return options;
+}
+
+TEST(RunOptions, AbsentFieldsTakeTheDefaultsAndGivenOnesStay) {
+    const RunOptions filled = withDefaults(RunOptions{});
+    EXPECT_EQ(*filled.width, defaults::kCanvasWidth);
+    EXPECT_EQ(*filled.height, defaults::kCanvasHeight);
+    EXPECT_EQ(*filled.frames, defaults::kFrames);
+    EXPECT_EQ(*filled.fps, defaults::kFps);
+    EXPECT_EQ(*filled.captureEvery, defaults::kCaptureEvery);
+    EXPECT_EQ(*filled.pngLevel, defaults::kPngLevel);
+    EXPECT_EQ(*filled.captureMemoryBytes, defaults::kCaptureMemoryMiB << 20);
+    RunOptions given;
+    given.frames = 0;  // a user's 0 is kept, so that prepareRun can refuse it
+    given.pngLevel = 0;
+    EXPECT_EQ(*withDefaults(given).frames, 0);
+    EXPECT_EQ(*withDefaults(given).pngLevel, 0);
+}
+
+TEST(RunOptions, ImpossibleValuesAreUsageErrorsBeforeAnyWork) {
+    auto refused = [](RunOptions options, const std::string& mentions) {
+        Result<PreparedRun> run = prepareRun(options);
+        ASSERT_FALSE(run.ok()) << mentions;
+        EXPECT_EQ(run.error().first().code.rfind("usage", 0), 0u) << run.error().text();
+        EXPECT_NE(run.error().text().find(mentions), std::string::npos) << run.error().text();
+    };
+    RunOptions o = probeOptions();
+    o.encoderThreads = 100000;
+    refused(o, "--encoder-threads");
+    o = probeOptions();
+    o.frames = 0;
+    refused(o, "--frames");
+    o = probeOptions();
+    o.fps = 0;
+    refused(o, "--fps");
+    o = probeOptions();
+    o.fps = std::numeric_limits<double>::quiet_NaN();
+    refused(o, "--fps");
+    o = probeOptions();
+    o.width = 0;
+    refused(o, "canvas size 0x8");
+    o = probeOptions();
+    o.pngLevel = 10;
+    refused(o, "--png-level");
+    o = probeOptions();
+    o.captureEvery = 0;
+    refused(o, "--capture-every");
+}
+
+TEST(RunOptions, PrepareDecodesTheImagesAndReportsStandIns) {
+    RunOptions o;
+    o.target = sourceDir() / "shadertoys/uniform-probe";
+    Result<PreparedRun> run = prepareRun(o);
+    ASSERT_TRUE(run.ok()) << run.error().text();
+    EXPECT_EQ(*run->options.width, defaults::kCanvasWidth);
+    ASSERT_FALSE(run->plan.images.standIns().empty());
+    EXPECT_EQ(run->plan.images.standIns().front().name, "RGBA Noise Small");
+}
+
+}  // namespace
+}  // namespace toyhost::testing

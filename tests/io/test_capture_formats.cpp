@@ -1,0 +1,90 @@
+// Capture helpers without GL: float-to-8-bit conversion and row order of captured frames, the
+// ffmpeg command line for each container, the progress line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "capture/FrameBytes.h"
+#include "capture/VideoSink.h"
+#include "timing/ProgressLine.h"
+
+using namespace toyhost;
+
+namespace {
+
+bool contains(const std::vector<std::string>& args, const std::vector<std::string>& run) {
+    return std::search(args.begin(), args.end(), run.begin(), run.end()) != args.end();
+}
+
+}  // namespace
+
+TEST(PixelConversion, FloatsAreClampedAndRoundedLikeAUnorm8Target) {
+    const float values[8] = {-1.0f, 0.0f, 0.5f, 1.0f, 2.0f, 0.2f, std::numeric_limits<float>::quiet_NaN(),
+                             std::numeric_limits<float>::infinity()};
+    CapturedFrame frame{0, 2, 1, PixelFormat::Rgba32f, std::vector<std::byte>(sizeof values)};
+    std::memcpy(frame.pixels.data(), values, sizeof values);
+    std::vector<std::uint8_t> scratch;
+    const auto bytes = rgba8BottomUp(frame, scratch);
+    EXPECT_EQ(std::vector<std::uint8_t>(bytes.begin(), bytes.end()),
+              (std::vector<std::uint8_t>{0, 0, 128, 255, 255, 51, 0, 255}));
+}
+
+TEST(PixelConversion, Rgba8FramesPassThroughAndRowsFlip) {
+    CapturedFrame frame{0, 1, 3, PixelFormat::Rgba8, std::vector<std::byte>(12)};
+    for (int i = 0; i < 12; ++i) frame.pixels[i] = std::byte(i);
+    std::vector<std::uint8_t> scratch, rows;
+    const auto bytes = rgba8BottomUp(frame, scratch);
+    EXPECT_EQ(static_cast<const void*>(bytes.data()), static_cast<const void*>(frame.pixels.data()));
+    const auto top = rowsTopFirst(bytes, 1, 3, rows);
+    EXPECT_EQ(std::vector<std::uint8_t>(top.begin(), top.end()),
+              (std::vector<std::uint8_t>{8, 9, 10, 11, 4, 5, 6, 7, 0, 1, 2, 3}));
+}
+
+TEST(VideoArguments, Mp4IsH264FromRawRgbaOnStdin) {
+    const auto args = ffmpegArguments({"/tmp/.m.mp4.1.0.partial", ".mp4", 640, 360, 30, {}});
+    EXPECT_EQ(args.front(), "ffmpeg");
+    EXPECT_EQ(args.back(), "/tmp/.m.mp4.1.0.partial");
+    EXPECT_TRUE(contains(args, {"-f", "rawvideo", "-pix_fmt", "rgba", "-video_size", "640x360", "-framerate", "30",
+                                "-i", "pipe:0"}));
+    EXPECT_TRUE(contains(args, {"-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt", "yuv420p"}));
+    EXPECT_TRUE(contains(args, {"-f", "mp4"}));
+}
+
+TEST(VideoArguments, OddSizesKeepFullChromaAndQualityIsTheCrf) {
+    VideoSettings settings;
+    settings.quality = 23;
+    const auto args = ffmpegArguments({"x", ".mov", 33, 17, 59.94, settings});
+    EXPECT_TRUE(contains(args, {"-crf", "23", "-pix_fmt", "yuv444p"}));
+    EXPECT_TRUE(contains(args, {"-framerate", "59.94"}));
+    EXPECT_TRUE(contains(args, {"-f", "mov"}));
+}
+
+TEST(VideoArguments, WebmIsVp9AndACustomCodecGetsOnlyWhatWasAsked) {
+    const auto webm = ffmpegArguments({"x", ".webm", 64, 64, 60, {}});
+    EXPECT_TRUE(contains(webm, {"-c:v", "libvpx-vp9", "-crf", "31", "-b:v", "0"}));
+    EXPECT_TRUE(contains(webm, {"-f", "webm"}));
+    VideoSettings custom;
+    custom.codec = "ffv1";
+    const auto mkv = ffmpegArguments({"x", ".mkv", 64, 64, 60, custom});
+    EXPECT_TRUE(contains(mkv, {"-c:v", "ffv1", "-f", "matroska"}));
+    EXPECT_EQ(std::count(mkv.begin(), mkv.end(), "-crf"), 0);
+}
+
+TEST(ProgressLine, ShowsFramesRateEtaAndBytes) {
+    RunProgress p;
+    p.framesDone = 120;
+    p.frames = 600;
+    p.seconds = 24;
+    p.bytesWritten = 13 * 1048576 + 1048576 / 2;
+    EXPECT_EQ(formatProgressLine(p), "frame 120/600  5.0 fps  ETA 1:36  13.5 MiB written");
+    p.bytesWritten = 0;
+    p.seconds = 0;
+    EXPECT_EQ(formatProgressLine(p), "frame 120/600  0.0 fps  ETA --:--");
+    EXPECT_EQ(formatDuration(3723), "1:02:03");
+    EXPECT_EQ(formatBytes(812), "812 B");
+    EXPECT_EQ(formatBytes(3 * 1024 + 400), "3.4 KiB");
+    EXPECT_EQ(formatBytes(std::uint64_t(3) << 30), "3.00 GiB");
+}

@@ -1,0 +1,220 @@
+// FrameQueue and EncoderPool without GL: frames keep their order, a slow consumer holds the
+// producer back (back-pressure) instead of letting memory grow or frames drop, the memory cap
+// holds, and the first encoder error stops the producer.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstring>
+#include <mutex>
+#include <set>
+#include <thread>
+#include <vector>
+
+#include "capture/EncoderPool.h"
+#include "capture/FrameQueue.h"
+
+using namespace toyhost;
+
+namespace {
+
+constexpr std::size_t kFrameBytes = 1000;
+
+CapturedFrame stamped(int frame, std::vector<std::byte> pixels) {
+    std::memcpy(pixels.data(), &frame, sizeof frame);  // the payload says which frame it is
+    return CapturedFrame{frame, 1, 1, PixelFormat::Rgba8, std::move(pixels)};
+}
+
+int stampOf(const CapturedFrame& frame) {
+    int value = -1;
+    std::memcpy(&value, frame.pixels.data(), sizeof value);
+    return value;
+}
+
+// A sink that takes its time, remembers what it got and can fail on a given frame.
+class RecordingSink final : public FrameSink {
+public:
+    RecordingSink(bool ordered, std::chrono::milliseconds delay, int failAt = -1)
+        : ordered_(ordered), delay_(delay), failAt_(failAt) {}
+    bool ordered() const override { return ordered_; }
+    Status write(const CapturedFrame& frame, EncodeScratch&) override {
+        std::this_thread::sleep_for(delay_);
+        if (frame.frame == failAt_) return Error{"disk full at frame " + std::to_string(frame.frame)};
+        std::lock_guard lock(mutex_);
+        frames.push_back(frame.frame);
+        stampsMatch = stampsMatch && stampOf(frame) == frame.frame;
+        addBytesWritten(frame.pixels.size());
+        return okStatus();
+    }
+    Status close() override {
+        closed = true;
+        return okStatus();
+    }
+    void discard() override { discarded = true; }
+
+    std::mutex mutex_;
+    std::vector<int> frames;
+    bool stampsMatch = true;
+    std::atomic<bool> closed{false}, discarded{false};
+
+private:
+    bool ordered_;
+    std::chrono::milliseconds delay_;
+    int failAt_;
+};
+
+}  // namespace
+
+TEST(FrameQueue, FramesLeaveInPushOrderAndBuffersAreRecycled) {
+    FrameQueue queue(4 * kFrameBytes);
+    for (int f = 0; f < 3; ++f) queue.push(stamped(f, *queue.acquire(kFrameBytes)));
+    queue.close();
+    std::vector<int> seen;
+    while (auto frame = queue.pop()) {
+        seen.push_back(stampOf(*frame));
+        queue.recycle(std::move(frame->pixels));
+    }
+    EXPECT_EQ(seen, (std::vector<int>{0, 1, 2}));
+    // The three buffers are pooled; taking them again allocates nothing new.
+    EXPECT_EQ(queue.allocatedBytes(), 3 * kFrameBytes);
+    for (int i = 0; i < 3; ++i) ASSERT_TRUE(queue.acquire(kFrameBytes));
+    EXPECT_EQ(queue.peakAllocatedBytes(), 3 * kFrameBytes);
+}
+
+TEST(FrameQueue, SlowConsumerHoldsTheProducerBackUnderTheCap) {
+    const std::size_t cap = 3 * kFrameBytes;
+    FrameQueue queue(cap);
+    constexpr int kFrames = 40;
+    std::vector<int> seen;
+    std::thread consumer([&] {
+        while (auto frame = queue.pop()) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+            seen.push_back(stampOf(*frame));
+            queue.recycle(std::move(frame->pixels));
+        }
+    });
+    const auto start = std::chrono::steady_clock::now();
+    for (int f = 0; f < kFrames; ++f) {
+        auto buffer = queue.acquire(kFrameBytes);
+        ASSERT_TRUE(buffer);
+        EXPECT_LE(queue.allocatedBytes(), cap);
+        queue.push(stamped(f, std::move(*buffer)));
+    }
+    // The producer could only run ahead by the cap: it waited for the consumer.
+    const auto producing = std::chrono::steady_clock::now() - start;
+    queue.close();
+    consumer.join();
+    EXPECT_GE(producing, std::chrono::milliseconds(2 * (kFrames - 3)));
+    ASSERT_EQ(seen.size(), static_cast<std::size_t>(kFrames));
+    for (int f = 0; f < kFrames; ++f) EXPECT_EQ(seen[f], f);
+    EXPECT_LE(queue.peakAllocatedBytes(), cap);
+}
+
+TEST(FrameQueue, AFrameLargerThanTheCapPassesAlone) {
+    FrameQueue queue(100);
+    auto big = queue.acquire(1000);
+    ASSERT_TRUE(big);
+    std::atomic<bool> gotSecond{false};
+    std::thread producer([&] {
+        auto second = queue.acquire(1000);
+        gotSecond = second.has_value();
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    EXPECT_FALSE(gotSecond);  // waits: the first one holds the memory
+    queue.recycle(std::move(*big));
+    producer.join();
+    EXPECT_TRUE(gotSecond);
+}
+
+TEST(FrameQueue, AbortWakesBlockedProducersAndConsumers) {
+    FrameQueue queue(kFrameBytes);
+    auto held = queue.acquire(kFrameBytes);
+    std::atomic<int> woken{0};
+    std::thread producer([&] { woken += !queue.acquire(kFrameBytes).has_value(); });
+    std::thread consumer([&] { woken += !queue.pop().has_value(); });
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    queue.abort();
+    producer.join();
+    consumer.join();
+    EXPECT_EQ(woken, 2);
+}
+
+TEST(EncoderPool, OrderedSinkGetsEveryFrameInOrderThroughASlowWriter) {
+    RecordingSink sink(/*ordered=*/true, std::chrono::milliseconds(3));
+    const std::size_t cap = 4 * kFrameBytes;
+    EncoderPool pool(sink, /*threads=*/4, cap);
+    EXPECT_EQ(pool.threads(), 1);  // ordered: one writer whatever was asked
+    constexpr int kFrames = 30;
+    for (int f = 0; f < kFrames; ++f) {
+        auto buffer = pool.acquire(kFrameBytes);
+        ASSERT_TRUE(buffer.ok()) << buffer.error().text();
+        ASSERT_TRUE(pool.submit(stamped(f, std::move(*buffer))).ok());
+        EXPECT_LE(pool.queue().allocatedBytes(), cap);
+    }
+    ASSERT_TRUE(pool.finish().ok());
+    std::vector<int> expected(kFrames);
+    for (int f = 0; f < kFrames; ++f) expected[f] = f;
+    EXPECT_EQ(sink.frames, expected);
+    EXPECT_TRUE(sink.stampsMatch);
+    EXPECT_TRUE(sink.closed);
+    EXPECT_FALSE(sink.discarded);
+    EXPECT_LE(pool.queue().peakAllocatedBytes(), cap);
+    EXPECT_EQ(pool.bytesWritten(), kFrames * kFrameBytes);
+}
+
+TEST(EncoderPool, ParallelSinkGetsEveryFrameExactlyOnce) {
+    RecordingSink sink(/*ordered=*/false, std::chrono::milliseconds(2));
+    const std::size_t cap = 3 * kFrameBytes;
+    EncoderPool pool(sink, /*threads=*/3, cap);
+    EXPECT_EQ(pool.threads(), 3);
+    constexpr int kFrames = 40;
+    for (int f = 0; f < kFrames; ++f) {
+        auto buffer = pool.acquire(kFrameBytes);
+        ASSERT_TRUE(buffer.ok());
+        ASSERT_TRUE(pool.submit(stamped(f, std::move(*buffer))).ok());
+    }
+    ASSERT_TRUE(pool.finish().ok());
+    std::set<int> unique(sink.frames.begin(), sink.frames.end());
+    EXPECT_EQ(sink.frames.size(), static_cast<std::size_t>(kFrames));
+    EXPECT_EQ(unique.size(), static_cast<std::size_t>(kFrames));
+    EXPECT_TRUE(sink.stampsMatch);
+    EXPECT_LE(pool.queue().peakAllocatedBytes(), cap);
+}
+
+TEST(EncoderPool, SynchronousPoolWritesOnTheCallersThread) {
+    RecordingSink sink(/*ordered=*/false, std::chrono::milliseconds(0));
+    EncoderPool pool(sink, /*threads=*/0, kFrameBytes);
+    EXPECT_EQ(pool.threads(), 0);
+    for (int f = 0; f < 5; ++f) {
+        ASSERT_TRUE(pool.submit(stamped(f, *pool.acquire(kFrameBytes))).ok());
+        EXPECT_EQ(sink.frames.size(), static_cast<std::size_t>(f + 1));  // written already
+    }
+    ASSERT_TRUE(pool.finish().ok());
+    EXPECT_EQ(pool.queue().peakAllocatedBytes(), kFrameBytes);  // one buffer, reused
+}
+
+TEST(EncoderPool, FirstErrorStopsTheProducerAndDiscardsTheOutput) {
+    auto sink = std::make_unique<RecordingSink>(/*ordered=*/true, std::chrono::milliseconds(1), /*failAt=*/5);
+    std::optional<Error> seen;
+    {
+        EncoderPool pool(*sink, 1, 2 * kFrameBytes);
+        for (int f = 0; f < 100 && !seen; ++f) {
+            auto buffer = pool.acquire(kFrameBytes);
+            if (!buffer) {
+                seen = buffer.error();
+                break;
+            }
+            if (Status submitted = pool.submit(stamped(f, std::move(*buffer))); !submitted) seen = submitted.error();
+        }
+        if (!seen) {
+            Status finished = pool.finish();
+            ASSERT_FALSE(finished.ok());
+            seen = finished.error();
+        }
+    }
+    ASSERT_TRUE(seen);
+    EXPECT_EQ(seen->first().message, "disk full at frame 5");
+    EXPECT_TRUE(sink->discarded);
+    EXPECT_FALSE(sink->closed);
+    EXPECT_EQ(sink->frames, (std::vector<int>{0, 1, 2, 3, 4}));
+}

@@ -1,0 +1,32 @@
+// The toyhost subcommands: `run` (options parsed into RunOptions), `import` and `inspect`.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "run/RunOptions.h"
+
+namespace toyhost::cli {
+
+class RunCommand {
+public:
+    // Declares the options of `run` on `command`.
+    void define(CLI::App& command);
+    // Turns the parsed options into RunOptions and runs; returns the exit code.
+    int execute();
+
+private:
+    RunOptions options_;
+    std::string target_, size_, capturePass_, mouse_, date_, codec_;
+    std::optional<int> frames_, captureEvery_, pngLevel_, videoQuality_, captureMemoryMiB_, encoderThreads_;
+    std::optional<double> fps_, startTime_;
+    std::vector<std::string> mediaFiles_, mediaFolders_;
+    bool headless_ = false, quiet_ = false;
+};
+
+int importCommand(const std::string& source, const std::string& dir, bool force);
+int inspectCommand(const std::vector<std::string>& files, const std::string& regionText);
+
+}  // namespace toyhost::cli

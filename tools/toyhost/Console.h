@@ -1,0 +1,46 @@
+// Console: how the toyhost CLI talks to the user. Every diagnostic is printed the same way
+// ("toyhost: " + formatDiagnostic), notices and progress go to stderr (stdout may carry raw
+// frames), and the exit code follows from the error (docs/cli.md lists them). Ctrl-C and SIGTERM
+// ask a running job to stop.
+#pragma once
+
+#include <chrono>
+#include <csignal>
+#include <string>
+
+#include "core/Result.h"
+#include "run/RunObserver.h"
+
+namespace toyhost::cli {
+
+// Exit codes (docs/cli.md).
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;  // the run failed: bad manifest, shader error, GL, I/O
+inline constexpr int kExitUsage = 2;    // bad command line
+
+void printDiagnostic(const Diagnostic& diagnostic);
+void printError(const Error& error);
+// Prints `error` and returns its exit code: 2 for usage errors, 128 + signal when a signal
+// interrupted the run, else 1.
+int fail(const Error& error);
+// A usage error with one message; returns 2.
+int usage(const std::string& message);
+
+// SIGINT/SIGTERM set a flag that stopRequested() reads; a second signal ends the process at once.
+void installStopSignals();
+int stopSignal();
+
+class ConsoleObserver final : public RunObserver {
+public:
+    explicit ConsoleObserver(bool quiet);
+    void notice(const Diagnostic& notice) override;
+    bool stopRequested() const override { return stopSignal() != 0; }
+    void progress(const RunProgress& p) override;
+
+private:
+    bool show_;
+    bool shown_ = false;
+    std::chrono::steady_clock::time_point lastShown_;
+};
+
+}  // namespace toyhost::cli

@@ -1,0 +1,161 @@
+#include <cmath>
+#include <cstdio>
+#include <unistd.h>
+
+#include "Commands.h"
+#include "Console.h"
+#include "core/Defaults.h"
+#include "run/HeadlessRun.h"
+#include "timing/FrameClock.h"
+#include "timing/ProgressLine.h"
+
+namespace toyhost::cli {
+
+namespace {
+
+bool parseSize(const std::string& text, int& w, int& h) {
+    char x = 0, extra = 0;
+    return std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) == 3 && (x == 'x' || x == 'X');
+}
+
+std::optional<PassId> parsePass(const std::string& text) {
+    for (PassId id : {PassId::BufferA, PassId::BufferB, PassId::BufferC, PassId::BufferD, PassId::Image})
+        if (text == passName(id)) return id;
+    if (text.size() == 1 && text[0] >= 'A' && text[0] <= 'D') return bufferPass(text[0] - 'A');
+    return std::nullopt;
+}
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+std::string plural(int n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+}  // namespace
+
+void RunCommand::define(CLI::App& run) {
+    const std::string defaultSize = std::to_string(defaults::kCanvasWidth) + "x" + std::to_string(defaults::kCanvasHeight);
+    run.add_option("target", target_, "Folder holding manifest.json, a manifest file, or a Shadertoy JSON export")
+        ->required();
+    run.add_flag("--headless", headless_, "Render without a window (EGL, no display needed); the only mode for now");
+    run.add_option("--size", size_, "Canvas size WxH (default " + defaultSize + ")");
+    run.add_option("--frames", frames_, "Frames to render (default " + std::to_string(defaults::kFrames) + ")");
+    run.add_option("--fps", fps_,
+                   "Fixed time step: frame n has iTime = start + n/F, iTimeDelta = 1/F (default " +
+                       number(defaults::kFps) + ")");
+    run.add_option("--start-time", startTime_, "iTime of frame 0, in seconds (default 0)");
+    run.add_option("--out", options_.outPattern,
+                   "Write captured frames: out/frame_%04d.png (8-bit, as shown) or .exr (32-bit float RGBA), "
+                   "numbered by iFrame; a video movie.mp4|.webm|.mov|.mkv (through ffmpeg); or - for raw "
+                   "frames on stdout: per frame width*height*4 bytes RGBA8, rows top first, no header");
+    run.add_option("--png-level", pngLevel_,
+                   "PNG compression 0 (none) .. 9 (smallest) (default " + std::to_string(defaults::kPngLevel) +
+                       ", fast)");
+    run.add_option("--codec", codec_, "Video encoder (ffmpeg name); default libx264 (.mp4/.mov/.mkv), libvpx-vp9 (.webm)");
+    run.add_option("--video-quality", videoQuality_,
+                   "Video constant rate factor, lower is better (default 18 for H.264, 31 for VP9)");
+    run.add_option("--encoder-threads", encoderThreads_, "Threads encoding captured frames (default: cores - 1, at least 1)");
+    run.add_option("--capture-memory", captureMemoryMiB_,
+                   "MiB of frames allowed to wait for the encoders; rendering waits beyond it (default " +
+                       std::to_string(defaults::kCaptureMemoryMiB) + ")");
+    run.add_flag("--sync-capture", options_.syncCapture,
+                 "Read back and encode each frame on the render thread (slower; the reference path)");
+    run.add_flag("--finish-each-frame", options_.finishEachFrame,
+                 "Wait for the GPU after every frame (benchmarks; see docs/performance.md)");
+    run.add_option("--capture-every", captureEvery_, "Capture frames n with n % K == 0, and the last frame (default 1)");
+    run.add_option("--capture-pass", capturePass_, "Pass to capture: Image (default), \"Buffer A\" .. \"Buffer D\" (or A..D)");
+    run.add_option("--mouse", mouse_, "Press the button at pixel X,Y (origin bottom-left) on frame 0 and hold it");
+    run.add_option("--mouse-script", options_.mouseScript, "JSON list of timed mouse events (see README)");
+    run.add_option("--key-script", options_.keyScript, "JSON list of timed key events (see README)");
+    run.add_option("--media-file", mediaFiles_, "Use FILE for a stock media id: ID=FILE (repeatable)");
+    run.add_option("--media", mediaFolders_,
+                   "Folder with real stock media files, by hash or name (repeatable; also $TOYHOST_MEDIA)");
+    run.add_option("--date", date_, "iDate at frame 0, YYYY-MM-DDTHH:MM:SS (default: now, local time)");
+    run.add_flag("--quiet", quiet_, "No progress line");
+}
+
+int RunCommand::execute() {
+    RunOptions& o = options_;
+    o.target = target_;
+    if (!size_.empty()) {
+        int w = 0, h = 0;
+        if (!parseSize(size_, w, h)) return usage("--size " + size_ + ": expected WxH, e.g. 800x450");
+        o.width = w;
+        o.height = h;
+    }
+    o.frames = frames_;
+    o.fps = fps_;
+    if (startTime_) o.startTime = *startTime_;
+    o.captureEvery = captureEvery_;
+    o.pngLevel = pngLevel_;
+    if (encoderThreads_) o.encoderThreads = *encoderThreads_;
+    if (captureMemoryMiB_) {
+        if (*captureMemoryMiB_ < 1) return usage("--capture-memory must be at least 1 (MiB)");
+        o.captureMemoryBytes = static_cast<std::size_t>(*captureMemoryMiB_) << 20;
+    }
+    if (!capturePass_.empty()) {
+        std::optional<PassId> pass = parsePass(capturePass_);
+        if (!pass) return usage("--capture-pass " + capturePass_ + ": expected Image or \"Buffer A\" .. \"Buffer D\"");
+        o.capturePass = *pass;
+    }
+    if (!mouse_.empty()) {
+        float x = 0, y = 0;
+        char comma = 0, extra = 0;
+        if (std::sscanf(mouse_.c_str(), "%f%c%f%c", &x, &comma, &y, &extra) != 3 || comma != ',' || !std::isfinite(x) ||
+            !std::isfinite(y))
+            return usage("--mouse " + mouse_ + ": expected X,Y in pixels");
+        o.mouse = glm::vec2(x, y);
+    }
+    for (const std::string& entry : mediaFiles_) {
+        const size_t eq = entry.find('=');
+        if (eq == std::string::npos || eq == 0 || eq + 1 == entry.size())
+            return usage("--media-file " + entry + ": expected ID=FILE");
+        o.media.files.emplace_back(entry.substr(0, eq), entry.substr(eq + 1));
+    }
+    for (const std::string& folder : mediaFolders_) o.media.folders.emplace_back(folder);
+    if (const char* mediaFolder = std::getenv("TOYHOST_MEDIA"); mediaFolder && *mediaFolder)
+        o.media.folders.emplace_back(mediaFolder);
+    if (!date_.empty()) {
+        Result<double> wallClock = parseWallClock(date_);
+        if (!wallClock) return usage("--date: " + wallClock.error().first().message);
+        o.wallClock = *wallClock;
+    }
+    if (const char* platform = std::getenv("TOYHOST_EGL_PLATFORM"); platform && *platform) {
+        const std::string name = platform;
+        if (name == "device") o.eglPlatform = EglPlatform::Device;
+        else if (name == "surfaceless") o.eglPlatform = EglPlatform::Surfaceless;
+        else if (name != "automatic") return usage("TOYHOST_EGL_PLATFORM=" + name + ": expected surfaceless, device or automatic");
+    }
+    if (!codec_.empty()) o.video.codec = codec_;
+    if (videoQuality_) o.video.quality = *videoQuality_;
+    if (o.outPattern && *o.outPattern == "-" && isatty(STDOUT_FILENO))
+        return usage("--out -: stdout is a terminal; redirect the raw frames to a file or a pipe");
+    // A closed stdout (`--out - | head -c ...`) must end the run with a message, not kill it.
+    std::signal(SIGPIPE, SIG_IGN);
+    installStopSignals();
+
+    ConsoleObserver observer(quiet_);
+    Result<RunReport> report = runHeadless(o, observer);
+    if (!report) return fail(report.error());
+    const double fps = report->seconds > 0 ? report->framesRendered / report->seconds : 0;
+    std::fprintf(stderr, "toyhost: %s: %s at %dx%d in %.3f s (%.1f frames/s, first frame after %.0f ms), headless on %s\n",
+                 report->manifestName.c_str(), plural(report->framesRendered, "frame", "frames").c_str(),
+                 report->width, report->height, report->seconds, fps, report->firstFrameSeconds * 1000.0,
+                 report->context.c_str());
+    if (report->files.size() == 1)
+        std::fprintf(stderr, "toyhost: wrote %s (%s)\n", report->files.front().c_str(),
+                     formatBytes(report->bytesWritten).c_str());
+    else if (!report->files.empty())
+        std::fprintf(stderr, "toyhost: wrote %zu files (%s): %s .. %s\n", report->files.size(),
+                     formatBytes(report->bytesWritten).c_str(), report->files.front().c_str(),
+                     report->files.back().c_str());
+    else if (o.outPattern && *o.outPattern == "-")
+        std::fprintf(stderr, "toyhost: wrote %s of raw RGBA8 frames to stdout\n", formatBytes(report->bytesWritten).c_str());
+    return kExitOk;
+}
+
+}  // namespace toyhost::cli
