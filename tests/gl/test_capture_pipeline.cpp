@@ -56,6 +56,7 @@ struct Case {
     const char* name;
     const char* pass;
     const char* extension;
+    friend void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 };
 
 class AsyncMatchesSync : public ::testing::TestWithParam<Case> {};

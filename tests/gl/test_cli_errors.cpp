@@ -114,7 +114,10 @@ TEST_F(CliErrors, BadOptionsAreUsageErrors) {
 TEST_F(CliErrors, HelpAndVersionWork) {
     auto help = runToyhost("--help");
     EXPECT_EQ(help.exitCode, 0);
-    EXPECT_NE(help.output.find("run"), std::string::npos);
+    // Each command on its own line of the Subcommands list, with its description.
+    for (const char* line : {"\n  run    ", "\n  import    ", "\n  inspect    "})
+        EXPECT_NE(help.output.find(line), std::string::npos) << "no line starting with" << line << "\n" << help.output;
+    EXPECT_NE(help.output.find("Usage: toyhost [OPTIONS] SUBCOMMAND"), std::string::npos) << help.output;
     auto runHelp = runToyhost("run --help");
     EXPECT_EQ(runHelp.exitCode, 0);
     for (const char* option : {"--headless", "--size", "--frames", "--fps", "--start-time", "--out", "--capture-every",

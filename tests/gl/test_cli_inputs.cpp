@@ -58,7 +58,7 @@ TEST_F(CliInputs, BadScriptNamesFileEventAndField) {
     std::ofstream(dir / "mouse.json") << R"([{"frame": 0, "type": "down", "x": 1}])";
     auto run = runToyhost(probe() + "--mouse-script '" + (dir / "mouse.json").string() + "'");
     EXPECT_NE(run.exitCode, 0);
-    EXPECT_NE(run.output.find((dir / "mouse.json").string() + ": event 0: \"y\""), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find((dir / "mouse.json").string() + ": error: event 0: \"y\" is missing"), std::string::npos) << run.output;
 }
 
 TEST_F(CliInputs, CaptureEveryKeepsMultiplesAndTheLastFrame) {

@@ -18,6 +18,7 @@ namespace fs = std::filesystem;
 struct GoldenCase {
     const char* name;
     const char* startTime;
+    friend void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.name; }
 };
 
 class OceanGolden : public ::testing::TestWithParam<GoldenCase> {};

@@ -42,6 +42,7 @@ struct VideoCase {
     int frames;
     int every;
     const char* expected;  // width,height,frames as ffprobe prints them
+    friend void PrintTo(const VideoCase& c, std::ostream* os) { *os << c.file; }
 };
 
 class VideoOutput : public ::testing::TestWithParam<VideoCase> {};
@@ -83,7 +84,7 @@ TEST(VideoOutputErrors, VideoOptionsNeedAVideoOutput) {
     const fs::path dir = freshOutputDir("video-options");
     auto result = runToyhost("run " + quoted(kProbe) + " --size 32x16 --quiet --video-quality 20 --out " +
                              quoted(dir / "f.png"));
-    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_EQ(result.exitCode, 2) << "a usage error";
     EXPECT_NE(result.output.find("--video-quality"), std::string::npos) << result.output;
 }
 

@@ -42,6 +42,7 @@ public:
         if (frame.frame == failAt_) return Error{"disk full at frame " + std::to_string(frame.frame)};
         std::lock_guard lock(mutex_);
         frames.push_back(frame.frame);
+        threads.push_back(std::this_thread::get_id());
         stampsMatch = stampsMatch && stampOf(frame) == frame.frame;
         addBytesWritten(frame.pixels.size());
         return okStatus();
@@ -54,6 +55,7 @@ public:
 
     std::mutex mutex_;
     std::vector<int> frames;
+    std::vector<std::thread::id> threads;  // which thread wrote each frame
     bool stampsMatch = true;
     std::atomic<bool> closed{false}, discarded{false};
 
@@ -62,6 +64,18 @@ private:
     std::chrono::milliseconds delay_;
     int failAt_;
 };
+
+// Waits (yielding) until `condition` holds; false after 10 s, so a broken queue fails the test
+// instead of hanging it. Tests wait for states ("the producer is blocked"), never for time.
+template <class Condition>
+bool eventually(Condition condition) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (!condition()) {
+        if (std::chrono::steady_clock::now() > deadline) return false;
+        std::this_thread::yield();
+    }
+    return true;
+}
 
 }  // namespace
 
@@ -86,25 +100,28 @@ TEST(FrameQueue, SlowConsumerHoldsTheProducerBackUnderTheCap) {
     FrameQueue queue(cap);
     constexpr int kFrames = 40;
     std::vector<int> seen;
+    bool producerBlocked = false;
+    std::size_t bytesWhenBlocked = 0;
     std::thread consumer([&] {
+        // Consumes nothing until the producer has filled the cap and waits in acquire().
+        producerBlocked = eventually([&] { return queue.blockedProducers() == 1; });
+        bytesWhenBlocked = queue.allocatedBytes();
         while (auto frame = queue.pop()) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(2));
             seen.push_back(stampOf(*frame));
             queue.recycle(std::move(frame->pixels));
         }
     });
-    const auto start = std::chrono::steady_clock::now();
     for (int f = 0; f < kFrames; ++f) {
         auto buffer = queue.acquire(kFrameBytes);
         ASSERT_TRUE(buffer);
         EXPECT_LE(queue.allocatedBytes(), cap);
         queue.push(stamped(f, std::move(*buffer)));
     }
-    // The producer could only run ahead by the cap: it waited for the consumer.
-    const auto producing = std::chrono::steady_clock::now() - start;
     queue.close();
     consumer.join();
-    EXPECT_GE(producing, std::chrono::milliseconds(2 * (kFrames - 3)));
+    // The producer ran ahead by exactly the cap (3 frames), then waited for the consumer.
+    EXPECT_TRUE(producerBlocked);
+    EXPECT_EQ(bytesWhenBlocked, cap);
     ASSERT_EQ(seen.size(), static_cast<std::size_t>(kFrames));
     for (int f = 0; f < kFrames; ++f) EXPECT_EQ(seen[f], f);
     EXPECT_LE(queue.peakAllocatedBytes(), cap);
@@ -119,7 +136,7 @@ TEST(FrameQueue, AFrameLargerThanTheCapPassesAlone) {
         auto second = queue.acquire(1000);
         gotSecond = second.has_value();
     });
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ASSERT_TRUE(eventually([&] { return queue.blockedProducers() == 1; }));
     EXPECT_FALSE(gotSecond);  // waits: the first one holds the memory
     queue.recycle(std::move(*big));
     producer.join();
@@ -132,7 +149,8 @@ TEST(FrameQueue, AbortWakesBlockedProducersAndConsumers) {
     std::atomic<int> woken{0};
     std::thread producer([&] { woken += !queue.acquire(kFrameBytes).has_value(); });
     std::thread consumer([&] { woken += !queue.pop().has_value(); });
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ASSERT_TRUE(eventually([&] { return queue.blockedProducers() == 1 && queue.blockedConsumers() == 1; }));
+    EXPECT_EQ(woken, 0);
     queue.abort();
     producer.join();
     consumer.join();
@@ -190,6 +208,7 @@ TEST(EncoderPool, SynchronousPoolWritesOnTheCallersThread) {
         EXPECT_EQ(sink.frames.size(), static_cast<std::size_t>(f + 1));  // written already
     }
     ASSERT_TRUE(pool.finish().ok());
+    for (std::thread::id writer : sink.threads) EXPECT_EQ(writer, std::this_thread::get_id());
     EXPECT_EQ(pool.queue().peakAllocatedBytes(), kFrameBytes);  // one buffer, reused
 }
 
