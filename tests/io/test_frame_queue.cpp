@@ -5,6 +5,9 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <optional>
+#include <stdexcept>
 #include <cstring>
 #include <mutex>
 #include <set>
@@ -236,4 +239,84 @@ TEST(EncoderPool, FirstErrorStopsTheProducerAndDiscardsTheOutput) {
     EXPECT_TRUE(sink->discarded);
     EXPECT_FALSE(sink->closed);
     EXPECT_EQ(sink->frames, (std::vector<int>{0, 1, 2, 3, 4}));
+}
+
+namespace {
+
+// A sink whose write throws on one frame, as a codec library or a bad_alloc might.
+class ThrowingSink final : public FrameSink {
+public:
+    explicit ThrowingSink(int throwAt) : throwAt_(throwAt) {}
+    bool ordered() const override { return false; }
+    Status write(const CapturedFrame& frame, EncodeScratch&) override {
+        if (frame.frame == throwAt_) throw std::runtime_error("codec exploded");
+        return okStatus();
+    }
+    void discard() override { discarded = true; }
+    std::atomic<bool> discarded{false};
+
+private:
+    int throwAt_;
+};
+
+// A sink whose write blocks until cancel(), like a pipe whose reader stopped reading.
+class StalledSink final : public FrameSink {
+public:
+    bool ordered() const override { return true; }
+    Status write(const CapturedFrame&, EncodeScratch&) override {
+        std::unique_lock lock(mutex_);
+        writing = true;
+        woken_.wait(lock, [&] { return cancelled; });
+        return Error("cancelled");
+    }
+    void cancel() override {
+        std::lock_guard lock(mutex_);
+        cancelled = true;
+        woken_.notify_all();
+    }
+    void discard() override { discarded = true; }
+    std::mutex mutex_;
+    std::condition_variable woken_;
+    bool writing = false, cancelled = false;
+    std::atomic<bool> discarded{false};
+};
+
+}  // namespace
+
+TEST(EncoderPool, AnExceptionInAnEncoderBecomesTheRunsError) {
+    for (int threads : {0, 2}) {
+        SCOPED_TRACE(std::to_string(threads) + " threads");
+        ThrowingSink sink(/*throwAt=*/2);
+        std::optional<Error> seen;
+        {
+            EncoderPool pool(sink, threads, 2 * kFrameBytes);
+            for (int f = 0; f < 50 && !seen; ++f) {
+                auto buffer = pool.acquire(kFrameBytes);
+                if (!buffer) seen = buffer.error();
+                else if (Status s = pool.submit(stamped(f, std::move(*buffer))); !s) seen = s.error();
+            }
+            if (!seen) {
+                Status finished = pool.finish();
+                ASSERT_FALSE(finished.ok());
+                seen = finished.error();
+            }
+        }
+        ASSERT_TRUE(seen);
+        EXPECT_NE(seen->text().find("codec exploded"), std::string::npos) << seen->text();
+        EXPECT_TRUE(sink.discarded);
+    }
+}
+
+TEST(EncoderPool, StoppingCancelsAStalledSinkInsteadOfWaitingForIt) {
+    StalledSink sink;
+    {
+        EncoderPool pool(sink, 1, 4 * kFrameBytes);
+        ASSERT_TRUE(pool.submit(stamped(0, *pool.acquire(kFrameBytes))).ok());
+        ASSERT_TRUE(eventually([&] {
+            std::lock_guard lock(sink.mutex_);
+            return sink.writing;
+        }));
+    }  // destroyed without finish(): must cancel the write, join and discard, not hang
+    EXPECT_TRUE(sink.cancelled);
+    EXPECT_TRUE(sink.discarded);
 }
