@@ -9,6 +9,7 @@ packages=(
   libstb-dev libpng-dev libopenexr-dev                  # image I/O: PNG/JPEG in, PNG and EXR out
   libgtest-dev                                           # tests
   ffmpeg                                                 # video output (--out x.mp4); ffprobe for its tests
+  xvfb xauth xdotool                                     # window-mode tests: a virtual X server and real X input
 )
 
 missing=()
