@@ -7,6 +7,7 @@
 #include "player/Player.h"
 #include "timing/FrameClock.h"
 #include "run/FrameRecorder.h"
+#include "run/ShadertoyWatcher.h"
 
 namespace toyhost {
 
@@ -21,28 +22,14 @@ std::vector<std::filesystem::path> capturedFiles(const OutputPattern& output, in
     return files;
 }
 
-Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) {
+namespace {
+
+// Renders frames 0..frames-1 of `player` (from iFrame 0) with the fixed clock, the input scripts
+// and, when `run` has an output, a new FrameRecorder; fills `report`.
+Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observer, RunReport& report,
+                    std::chrono::steady_clock::time_point started) {
     using Clock = std::chrono::steady_clock;
-    const auto started = Clock::now();
-    Result<PreparedRun> prepared = prepareRun(options);
-    if (!prepared) return prepared.error();
-    PreparedRun& run = *prepared;
     const RunOptions& o = run.options;
-    for (const Diagnostic& line : run.plan.notices) observer.notice(line);
-
-    HeadlessOptions headless;
-    headless.platform = o.eglPlatform;
-    Result<std::shared_ptr<GlContext>> context = createHeadlessContext(headless);
-    if (!context) return context.error();
-
-    PlayerDesc desc;
-    desc.width = *o.width;
-    desc.height = *o.height;
-    desc.floatImage = run.output && run.output->format() == OutputFormat::Exr && o.capturePass == PassId::Image;
-    Result<std::unique_ptr<Player>> made = Player::create(*context, std::move(run.plan), desc);
-    if (!made) return made.error();
-    Player& player = **made;
-
     std::unique_ptr<FrameRecorder> recorder;
     if (run.output) {
         RecorderSettings settings;
@@ -60,15 +47,15 @@ Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) 
         recorder = std::move(*created);
     }
 
-    RunReport report;
     report.manifestName = player.manifest().name;
     report.context = player.context().describe();
     report.width = player.width();
     report.height = player.height();
+    report.framesRendered = 0;
 
     const FrameClock clock(*o.fps, o.startTime, o.wallClock ? *o.wallClock : localWallClockNow());
-    MouseScriptPlayer mouseScript(std::move(run.mouse));
-    KeyScriptPlayer keyScript(std::move(run.keys));
+    MouseScriptPlayer mouseScript(run.mouse);
+    KeyScriptPlayer keyScript(run.keys);
     std::vector<InputEvent> events;
     events.reserve(64);
     RunProgress progress;
@@ -91,9 +78,9 @@ Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) 
         player.step(clock.frameTime(frame), events, renderImage);
 
         if (captured) {
-            if (Status saved = recorder->capture(player, frame); !saved) return saved.error();
+            if (Status saved = recorder->capture(player, frame); !saved) return saved;
         } else if (recorder) {
-            if (Status polled = recorder->poll(); !polled) return polled.error();
+            if (Status polled = recorder->poll(); !polled) return polled;
         }
         // Frame 0 waits for the GPU once so that the time to the first frame is real.
         if (o.finishEachFrame || frame == 0) player.finish();
@@ -105,14 +92,83 @@ Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) 
         observer.progress(progress);
     }
     if (recorder) {
-        if (Status finished = recorder->finish(); !finished) return finished.error();
+        if (Status finished = recorder->finish(); !finished) return finished;
         report.bytesWritten = recorder->bytesWritten();
         report.encoderThreads = recorder->encoderThreads();
     }
     player.finish();  // the reported time includes the GPU's work
     report.seconds = std::chrono::duration<double>(Clock::now() - loopStart).count();
-    if (run.output) report.files = capturedFiles(*run.output, *o.frames, *o.captureEvery);
-    return report;
+    report.files = run.output ? capturedFiles(*run.output, *o.frames, *o.captureEvery)
+                              : std::vector<std::filesystem::path>{};
+    return okStatus();
+}
+
+}  // namespace
+
+Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) {
+    const auto started = std::chrono::steady_clock::now();
+    Result<PreparedRun> prepared = prepareRun(options);
+    if (!prepared) return prepared.error();
+    PreparedRun& run = *prepared;
+    const RunOptions& o = run.options;
+    for (const Diagnostic& line : run.plan.notices) observer.notice(line);
+
+    HeadlessOptions headless;
+    headless.platform = o.eglPlatform;
+    Result<std::shared_ptr<GlContext>> context = createHeadlessContext(headless);
+    if (!context) return context.error();
+
+    PlayerDesc desc;
+    desc.width = *o.width;
+    desc.height = *o.height;
+    desc.floatImage = run.output && run.output->format() == OutputFormat::Exr && o.capturePass == PassId::Image;
+    std::optional<ShadertoyWatcher> watcher;
+    if (o.watch) watcher.emplace(o.target, o.media, run.plan.manifest);
+    auto stop = [&] { return observer.stopRequested(); };
+
+    // With --watch, a shadertoy that does not compile yet waits for the fix.
+    Result<std::unique_ptr<Player>> made = Player::create(*context, std::move(run.plan), desc);
+    while (!made && watcher) {
+        observer.roundFinished(made.error());
+        std::optional<Result<PlayerPlan>> next = watcher->wait(stop);
+        if (!next) return made.error();
+        if (!*next) {
+            made = next->error();
+            continue;
+        }
+        run.plan = std::move(**next);
+        made = Player::create(*context, std::move(run.plan), desc);
+    }
+    if (!made) return made.error();
+    Player& player = **made;
+
+    RunReport report;
+    Status round = renderFrames(player, run, observer, report, started);
+    if (!watcher) {
+        if (!round) return round.error();
+        return report;
+    }
+    // --watch: after every change, the same frames again with what changed rebuilt (a pass that
+    // does not compile keeps its last good program, and the run says so).
+    while (true) {
+        if (round) observer.roundFinished(report);
+        else observer.roundFinished(round.error());
+        if (!round && round.error().first().code == "interrupted") return round.error();
+        std::optional<Result<PlayerPlan>> next = watcher->wait(stop);
+        if (!next) return report;  // stopped while waiting: the last round's files are complete
+        if (!*next) {
+            round = next->error();
+            continue;
+        }
+        ReloadReport reloaded = player.reload(std::move(**next));
+        if (!reloaded.problems.empty()) {
+            round = Error(reloaded.problems);
+            if (!reloaded.applied) continue;
+            for (const Diagnostic& problem : reloaded.problems) observer.notice(problem);
+        }
+        player.restart();
+        round = renderFrames(player, run, observer, report, std::chrono::steady_clock::now());
+    }
 }
 
 }  // namespace toyhost

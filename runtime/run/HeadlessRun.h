@@ -15,18 +15,6 @@
 
 namespace toyhost {
 
-struct RunReport {
-    std::string manifestName;
-    std::string context;                   // GL backend description
-    int width = 0;
-    int height = 0;
-    int framesRendered = 0;
-    std::vector<std::filesystem::path> files;
-    double seconds = 0;                    // wall time of the frame loop, GPU and encoders included
-    double firstFrameSeconds = 0;          // from start of run() to the first frame finished
-    std::uint64_t bytesWritten = 0;        // by the capture (file sizes; the video's size)
-    int encoderThreads = 0;                // encoder threads the capture used (0: synchronous)
-};
 
 Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer);
 

@@ -4,11 +4,29 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "timing/ProgressLine.h"
 
 namespace toyhost {
+
+// What a run did (for the one-line summary).
+struct RunReport {
+    std::string manifestName;
+    std::string context;                   // GL backend description
+    int width = 0;
+    int height = 0;
+    int framesRendered = 0;
+    std::vector<std::filesystem::path> files;
+    double seconds = 0;                    // wall time of the frame loop, GPU and encoders included
+    double firstFrameSeconds = 0;          // from start of run() to the first frame finished
+    std::uint64_t bytesWritten = 0;        // by the capture (file sizes; the video's size)
+    int encoderThreads = 0;                // encoder threads the capture used (0: synchronous)
+};
 
 class RunObserver {
 public:
@@ -19,6 +37,9 @@ public:
     // Polled before every frame; true ends the run with an "interrupted" error, cleanly (a video
     // being encoded is discarded, image files already written stay).
     virtual bool stopRequested() const { return false; }
+    // --watch: a round of frames ended (`report`) or failed (`error`); the run now waits for the
+    // next change of the shadertoy's files.
+    virtual void roundFinished(const Result<RunReport>& round) { (void)round; }
 };
 
 }  // namespace toyhost

@@ -12,6 +12,7 @@ namespace fs = std::filesystem;
 
 namespace {
 int countCaptured(int frames, int every) {
+    if (frames == 0) return 2;  // no end: as many as the user lets run
     int n = 0;
     for (int f = 0; f < frames; ++f) n += isCapturedFrame(f, frames, every);
     return n;
@@ -23,8 +24,8 @@ Error usage(std::string message) { return Error(std::move(message), "usage"); }
 RunOptions withDefaults(RunOptions o) {
     if (!o.width) o.width = defaults::kCanvasWidth;
     if (!o.height) o.height = defaults::kCanvasHeight;
-    if (!o.frames) o.frames = defaults::kFrames;
-    if (!o.fps) o.fps = defaults::kFps;
+    if (!o.frames) o.frames = o.interactive ? 0 : defaults::kFrames;
+    if (!o.fps && !o.interactive) o.fps = defaults::kFps;
     if (!o.captureEvery) o.captureEvery = defaults::kCaptureEvery;
     if (!o.pngLevel) o.pngLevel = defaults::kPngLevel;
     if (!o.captureMemoryBytes) o.captureMemoryBytes = defaults::kCaptureMemoryMiB << 20;
@@ -32,10 +33,10 @@ RunOptions withDefaults(RunOptions o) {
 }
 
 Result<PreparedRun> prepareRun(const RunOptions& options) {
+    if (options.frames && *options.frames < 1) return usage("--frames must be at least 1");
     const RunOptions o = withDefaults(options);
     if (Status size = checkCanvasSize(*o.width, *o.height); !size) return size.error();
-    if (*o.frames < 1) return usage("--frames must be at least 1");
-    if (!(*o.fps > 0) || !std::isfinite(*o.fps)) return usage("--fps must be a positive number");
+    if (o.fps && (!(*o.fps > 0) || !std::isfinite(*o.fps))) return usage("--fps must be a positive number");
     if (!std::isfinite(o.startTime)) return usage("--start-time must be a finite number");
     if (*o.captureEvery < 1) return usage("--capture-every must be at least 1");
     if (*o.captureMemoryBytes == 0) return usage("--capture-memory must be at least 1 (MiB)");

@@ -28,8 +28,12 @@ struct RunOptions {
     std::filesystem::path target;          // folder with manifest.json, the manifest file, or an export
     std::optional<int> width;              // default defaults::kCanvasWidth x kCanvasHeight
     std::optional<int> height;
-    std::optional<int> frames;             // default defaults::kFrames
-    std::optional<double> fps;             // default defaults::kFps
+    // Window mode: no frame count means "until the window closes" and no fps means real time.
+    bool interactive = false;
+    // Re-render (headless) or hot-reload (window) when a file of the shadertoy changes.
+    bool watch = false;
+    std::optional<int> frames;             // default defaults::kFrames (headless), no end (window)
+    std::optional<double> fps;             // default defaults::kFps (headless), real time (window)
     double startTime = 0;
     std::optional<std::string> outPattern;
     std::optional<int> captureEvery;       // default defaults::kCaptureEvery
@@ -54,7 +58,8 @@ struct RunOptions {
     bool finishEachFrame = false;
 };
 
-// `options` with every absent field set to its default.
+// `options` with every absent field set to its default (frames 0 then means "no end"; an
+// interactive run keeps fps absent: real time).
 RunOptions withDefaults(RunOptions options);
 
 // Frames n with n % captureEvery == 0, and the last frame.

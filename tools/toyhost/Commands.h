@@ -23,7 +23,7 @@ private:
     std::optional<int> frames_, captureEvery_, pngLevel_, videoQuality_, captureMemoryMiB_, encoderThreads_;
     std::optional<double> fps_, startTime_;
     std::vector<std::string> mediaFiles_, mediaFolders_;
-    bool headless_ = false, quiet_ = false;
+    bool headless_ = false, window_ = false, watch_ = false, quiet_ = false;
 };
 
 int importCommand(const std::string& source, const std::string& dir, bool force);

@@ -40,7 +40,19 @@ void installStopSignals() {
 
 int stopSignal() { return stopSignalNumber; }
 
-ConsoleObserver::ConsoleObserver(bool quiet) : show_(!quiet && isatty(STDERR_FILENO)) {}
+ConsoleObserver::ConsoleObserver(bool quiet, std::function<void(const RunReport&)> summary)
+    : summary_(std::move(summary)), show_(!quiet && isatty(STDERR_FILENO)) {}
+
+void ConsoleObserver::roundFinished(const Result<RunReport>& round) {
+    if (shown_) std::cerr << "\r\033[K";
+    shown_ = false;
+    if (round) {
+        if (summary_) summary_(*round);
+    } else {
+        printError(round.error());
+    }
+    std::fprintf(stderr, "toyhost: watching the shadertoy's files; Ctrl-C ends\n");
+}
 
 void ConsoleObserver::notice(const Diagnostic& notice) {
     if (shown_) std::cerr << "\r\033[K";

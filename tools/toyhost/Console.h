@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <functional>
 #include <string>
 
 #include "core/Result.h"
@@ -32,12 +33,15 @@ int stopSignal();
 
 class ConsoleObserver final : public RunObserver {
 public:
-    explicit ConsoleObserver(bool quiet);
+    // `summary` prints a finished round of a --watch run.
+    explicit ConsoleObserver(bool quiet, std::function<void(const RunReport&)> summary = {});
     void notice(const Diagnostic& notice) override;
     bool stopRequested() const override { return stopSignal() != 0; }
     void progress(const RunProgress& p) override;
+    void roundFinished(const Result<RunReport>& round) override;
 
 private:
+    std::function<void(const RunReport&)> summary_;
     bool show_;
     bool shown_ = false;
     std::chrono::steady_clock::time_point lastShown_;

@@ -5,7 +5,9 @@
 #include "Commands.h"
 #include "Console.h"
 #include "core/Defaults.h"
+#include "gl/WindowContext.h"
 #include "run/HeadlessRun.h"
+#include "window/WindowRun.h"
 #include "timing/FrameClock.h"
 #include "timing/ProgressLine.h"
 
@@ -35,18 +37,39 @@ std::string plural(int n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
+void printSummary(const RunReport& report, const char* mode, const RunOptions& o) {
+    const double fps = report.seconds > 0 ? report.framesRendered / report.seconds : 0;
+    std::fprintf(stderr, "toyhost: %s: %s at %dx%d in %.3f s (%.1f frames/s, first frame after %.0f ms), %s on %s\n",
+                 report.manifestName.c_str(), plural(report.framesRendered, "frame", "frames").c_str(), report.width,
+                 report.height, report.seconds, fps, report.firstFrameSeconds * 1000.0, mode, report.context.c_str());
+    if (report.files.size() == 1)
+        std::fprintf(stderr, "toyhost: wrote %s (%s)\n", report.files.front().c_str(), formatBytes(report.bytesWritten).c_str());
+    else if (!report.files.empty())
+        std::fprintf(stderr, "toyhost: wrote %zu files (%s): %s .. %s\n", report.files.size(),
+                     formatBytes(report.bytesWritten).c_str(), report.files.front().c_str(), report.files.back().c_str());
+    else if (o.outPattern && *o.outPattern == "-")
+        std::fprintf(stderr, "toyhost: wrote %s of raw RGBA8 frames to stdout\n", formatBytes(report.bytesWritten).c_str());
+}
+
 }  // namespace
 
 void RunCommand::define(CLI::App& run) {
     const std::string defaultSize = std::to_string(defaults::kCanvasWidth) + "x" + std::to_string(defaults::kCanvasHeight);
     run.add_option("target", target_, "Folder holding manifest.json, a manifest file, or a Shadertoy JSON export")
         ->required();
-    run.add_flag("--headless", headless_, "Render without a window (EGL, no display needed); the only mode for now");
+    run.add_flag("--window", window_,
+                 "Open a window (GLFW, OpenGL ES 3) and run in real time with mouse and keyboard; the default when "
+                 "$DISPLAY or $WAYLAND_DISPLAY is set. Keys: F1 help, F5/Ctrl+R restart, F6/Pause pause, F7 step, "
+                 "F11 fullscreen, F12 screenshot, Esc/Ctrl+Q quit; hot reload is always on");
+    run.add_flag("--headless", headless_, "Render without a window (EGL, no display needed); the default without a display");
+    run.add_flag("--watch", watch_,
+                 "Headless: render the frames again whenever a file of the shadertoy changes, until Ctrl-C");
     run.add_option("--size", size_, "Canvas size WxH (default " + defaultSize + ")");
-    run.add_option("--frames", frames_, "Frames to render (default " + std::to_string(defaults::kFrames) + ")");
+    run.add_option("--frames", frames_,
+                   "Frames to render (default " + std::to_string(defaults::kFrames) + "; in a window: until closed)");
     run.add_option("--fps", fps_,
-                   "Fixed time step: frame n has iTime = start + n/F, iTimeDelta = 1/F (default " +
-                       number(defaults::kFps) + ")");
+                   "Fixed time step: frame n has iTime = start + n/F, iTimeDelta = 1/F (default " + number(defaults::kFps) +
+                       "; in a window: real time)");
     run.add_option("--start-time", startTime_, "iTime of frame 0, in seconds (default 0)");
     run.add_option("--out", options_.outPattern,
                    "Write captured frames: out/frame_%04d.png (8-bit, as shown) or .exr (32-bit float RGBA), "
@@ -138,23 +161,19 @@ int RunCommand::execute() {
     std::signal(SIGPIPE, SIG_IGN);
     installStopSignals();
 
-    ConsoleObserver observer(quiet_);
-    Result<RunReport> report = runHeadless(o, observer);
+    if (window_ && headless_) return usage("--window and --headless cannot be combined");
+    const bool windowMode = window_ || (!headless_ && displayAvailable());
+    if (windowMode && watch_) return usage("--watch is for headless runs; a window always reloads changed files");
+    if (windowMode && o.outPattern && *o.outPattern == "-")
+        return usage("--out - (raw frames on stdout) is for headless runs");
+    o.interactive = windowMode;
+    o.watch = watch_;
+
+    const char* mode = windowMode ? "in a window" : "headless";
+    ConsoleObserver observer(quiet_, [&](const RunReport& report) { printSummary(report, mode, o); });
+    Result<RunReport> report = windowMode ? runWindow(o, observer) : runHeadless(o, observer);
     if (!report) return fail(report.error());
-    const double fps = report->seconds > 0 ? report->framesRendered / report->seconds : 0;
-    std::fprintf(stderr, "toyhost: %s: %s at %dx%d in %.3f s (%.1f frames/s, first frame after %.0f ms), headless on %s\n",
-                 report->manifestName.c_str(), plural(report->framesRendered, "frame", "frames").c_str(),
-                 report->width, report->height, report->seconds, fps, report->firstFrameSeconds * 1000.0,
-                 report->context.c_str());
-    if (report->files.size() == 1)
-        std::fprintf(stderr, "toyhost: wrote %s (%s)\n", report->files.front().c_str(),
-                     formatBytes(report->bytesWritten).c_str());
-    else if (!report->files.empty())
-        std::fprintf(stderr, "toyhost: wrote %zu files (%s): %s .. %s\n", report->files.size(),
-                     formatBytes(report->bytesWritten).c_str(), report->files.front().c_str(),
-                     report->files.back().c_str());
-    else if (o.outPattern && *o.outPattern == "-")
-        std::fprintf(stderr, "toyhost: wrote %s of raw RGBA8 frames to stdout\n", formatBytes(report->bytesWritten).c_str());
+    if (!o.watch) printSummary(*report, mode, o);
     return kExitOk;
 }
 

@@ -1,0 +1,32 @@
+#include "render/Present.h"
+
+#include <GLES3/gl3.h>
+#include <algorithm>
+#include <cmath>
+
+namespace toyhost {
+
+PresentRect presentRect(int canvasW, int canvasH, int framebufferW, int framebufferH) {
+    if (canvasW == framebufferW && canvasH == framebufferH) return {0, 0, canvasW, canvasH};
+    const double scale = std::min(static_cast<double>(framebufferW) / canvasW, static_cast<double>(framebufferH) / canvasH);
+    const int w = std::max(1, static_cast<int>(std::lround(canvasW * scale)));
+    const int h = std::max(1, static_cast<int>(std::lround(canvasH * scale)));
+    return {(framebufferW - w) / 2, (framebufferH - h) / 2, w, h};
+}
+
+void presentToDefaultFramebuffer(const PassOutput& output, int framebufferW, int framebufferH) {
+    const PresentRect r = presentRect(output.width, output.height, framebufferW, framebufferH);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    if (r.width != framebufferW || r.height != framebufferH) {
+        glViewport(0, 0, framebufferW, framebufferH);
+        glClearColor(0, 0, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, output.framebuffer);
+    const bool same = r.width == output.width && r.height == output.height;
+    glBlitFramebuffer(0, 0, output.width, output.height, r.x, r.y, r.x + r.width, r.y + r.height, GL_COLOR_BUFFER_BIT,
+                      same ? GL_NEAREST : GL_LINEAR);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+}
+
+}  // namespace toyhost

@@ -1,0 +1,65 @@
+// ShadertoyWatcher: hot reload's eyes. A thread polls the files a shadertoy is made of (the
+// manifest or export, Common, every pass file, image files) with stat() a few times a second; when
+// one changes and then stays unchanged for a moment (editors write in several steps), it loads
+// the shadertoy again and builds a PlayerPlan there, off the GL thread, and leaves the result for
+// the driver to take. The driver gives the plan to Player::reload on its GL thread. A cheap stat
+// poll rather than inotify: it also sees files replaced by rename, on any filesystem. No GL needed.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "core/Result.h"
+#include "manifest/ManifestDesc.h"
+#include "player/PlayerDesc.h"
+
+namespace toyhost {
+
+// The files whose change means "reload": the target, the manifest, Common, the pass files and
+// the image files of `manifest`.
+std::vector<std::filesystem::path> watchedFiles(const std::filesystem::path& target, const ManifestDesc& manifest);
+
+class ShadertoyWatcher {
+public:
+    using Clock = std::chrono::steady_clock;
+    // Starts watching the files of `current` (loaded from `target`).
+    ShadertoyWatcher(std::filesystem::path target, MediaOptions media, const ManifestDesc& current,
+                     Clock::duration interval = std::chrono::milliseconds(100));
+    ~ShadertoyWatcher();
+    ShadertoyWatcher(const ShadertoyWatcher&) = delete;
+    ShadertoyWatcher& operator=(const ShadertoyWatcher&) = delete;
+
+    // The plan (or the errors of loading it) made after the latest change, once; else nothing.
+    std::optional<Result<PlayerPlan>> take();
+    // Waits until a change was loaded or `stop()` returns true (checked every `interval`).
+    std::optional<Result<PlayerPlan>> wait(const std::function<bool()>& stop);
+
+private:
+    struct Stamp {
+        std::filesystem::file_time_type modified{};
+        std::uintmax_t size = 0;
+        bool exists = false;
+        bool operator==(const Stamp&) const = default;
+    };
+    std::map<std::filesystem::path, Stamp> stampAll() const;
+    void run();
+
+    std::filesystem::path target_;
+    MediaOptions media_;
+    Clock::duration interval_;
+    std::vector<std::filesystem::path> files_;  // watcher thread only
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::optional<Result<PlayerPlan>> ready_;
+    bool stopping_ = false;
+    std::thread thread_;
+};
+
+}  // namespace toyhost
