@@ -93,8 +93,13 @@ inline CommandResult runCommand(const std::filesystem::path& binary, const std::
     return result;
 }
 
-// Runs the toyhost CLI with `arguments` (already shell-quoted).
-inline CommandResult runToyhost(const std::string& arguments) { return runCommand(toyhostBinary(), arguments); }
+// Runs the toyhost CLI with `arguments` (already shell-quoted), without a display, so that runs
+// are headless by default as on CI (window mode has its own tests, tests/window).
+inline CommandResult runToyhost(const std::string& arguments) {
+    ::unsetenv("DISPLAY");
+    ::unsetenv("WAYLAND_DISPLAY");
+    return runCommand(toyhostBinary(), arguments);
+}
 
 inline std::filesystem::path freshOutputDir(const std::string& name) {
     std::filesystem::path dir = testOutputDir() / name;

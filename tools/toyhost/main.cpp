@@ -17,7 +17,7 @@ using namespace toyhost;
 using namespace toyhost::cli;
 
 int main(int argc, char** argv) {
-    CLI::App app{"toyhost: run Shadertoy shaders unmodified, headless on EGL (no display needed)"};
+    CLI::App app{"toyhost: run Shadertoy shaders unmodified, in a window (GLFW) or headless on EGL (no display needed)"};
     app.name("toyhost");  // not argv[0]: the help text is the same however toyhost was started
     app.set_version_flag("--version", std::string("toyhost ") + TOYHOST_VERSION);
     app.require_subcommand(1);
