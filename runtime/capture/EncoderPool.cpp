@@ -127,6 +127,15 @@ Result<std::vector<std::byte>> EncoderPool::acquire(std::size_t bytes) {
     return std::move(*buffer);
 }
 
+Result<std::optional<std::vector<std::byte>>> EncoderPool::tryAcquire(std::size_t bytes) {
+    if (std::optional<Error> error = firstError()) return *error;
+    std::optional<std::vector<std::byte>> buffer = queue_.acquire(bytes, /*wait=*/false);
+    if (!buffer) {
+        if (std::optional<Error> error = firstError()) return *error;
+    }
+    return buffer;
+}
+
 Status EncoderPool::submit(CapturedFrame frame) {
     if (std::optional<Error> error = firstError()) return *error;
     if (workers_.empty()) {

@@ -34,6 +34,8 @@ public:
     // A pixel buffer for the next frame; blocks while the queue holds its memory cap
     // (back-pressure). Fails with the first encoder error once one happened.
     Result<std::vector<std::byte>> acquire(std::size_t bytes);
+    // As acquire(), but never waits: std::nullopt when the cap is reached right now.
+    Result<std::optional<std::vector<std::byte>>> tryAcquire(std::size_t bytes);
     // Queues a frame whose pixels came from acquire(); synchronous pools write it right away.
     Status submit(CapturedFrame frame);
     // Writes everything queued, stops the threads and closes the sink; the first error wins.

@@ -6,7 +6,7 @@ namespace toyhost {
 
 FrameQueue::FrameQueue(std::size_t capBytes) : cap_(capBytes) {}
 
-std::optional<std::vector<std::byte>> FrameQueue::acquire(std::size_t bytes) {
+std::optional<std::vector<std::byte>> FrameQueue::acquire(std::size_t bytes, bool wait) {
     std::unique_lock lock(mutex_);
     for (;;) {
         if (aborted_) return std::nullopt;
@@ -28,6 +28,7 @@ std::optional<std::vector<std::byte>> FrameQueue::acquire(std::size_t bytes) {
             lock.unlock();
             return std::vector<std::byte>(bytes);
         }
+        if (!wait) return std::nullopt;
         ++blockedProducers_;
         bufferFreed_.wait(lock);
         --blockedProducers_;

@@ -23,8 +23,9 @@ public:
     explicit FrameQueue(std::size_t capBytes);
 
     // A buffer of exactly `bytes` bytes, recycled when one is free. Blocks while taking it would
-    // pass the cap. std::nullopt once the queue was aborted.
-    std::optional<std::vector<std::byte>> acquire(std::size_t bytes);
+    // pass the cap (or, with `wait` false, returns std::nullopt at once). std::nullopt once the
+    // queue was aborted.
+    std::optional<std::vector<std::byte>> acquire(std::size_t bytes, bool wait = true);
     // Hands a frame (whose buffer came from acquire) to the consumers. Never blocks.
     void push(CapturedFrame frame);
     // The oldest frame; blocks until there is one. std::nullopt when closed and drained, or aborted.

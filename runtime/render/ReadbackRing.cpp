@@ -53,6 +53,12 @@ bool ReadbackRing::oldestReady() {
     return state == GL_ALREADY_SIGNALED || state == GL_CONDITION_SATISFIED;
 }
 
+void ReadbackRing::dropOldest() {
+    slots_[oldest_].fence.reset();
+    oldest_ = (oldest_ + 1) % static_cast<int>(slots_.size());
+    --pending_;
+}
+
 Status ReadbackRing::takeOldest(std::span<std::byte> out) {
     Slot& slot = slots_[oldest_];
     if (out.size() != bytes_) return Error("readback ring: destination has the wrong size", "capture.readback");

@@ -35,6 +35,8 @@ public:
     // Waits for the oldest pending readback, copies its pixels (rows bottom first) into `out`
     // (exactly frameBytes() long) and frees its slot. Requires !empty().
     Status takeOldest(std::span<std::byte> out);
+    // Forgets the oldest readback without reading it (a frame the recorder drops).
+    void dropOldest();
 
 private:
     struct Slot {

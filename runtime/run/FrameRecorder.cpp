@@ -57,10 +57,11 @@ Status FrameRecorder::capture(const Player& player, int frame) {
                          std::to_string(output.height) + ")",
                      "capture.size");
     if (!ring_) {
-        Result<std::vector<std::byte>> pixels = pool_->acquire(frameBytes(width_, height_, format_));
+        Result<std::optional<std::vector<std::byte>>> pixels = takeBuffer(frameBytes(width_, height_, format_));
         if (!pixels) return pixels.error();
-        readFramebuffer(output.framebuffer, width_, height_, format_, *pixels);
-        return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(*pixels)});
+        if (!*pixels) return okStatus();  // dropped
+        readFramebuffer(output.framebuffer, width_, height_, format_, **pixels);
+        return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(**pixels)});
     }
     if (ring_->full())
         if (Status collected = collectOldest(); !collected) return collected;
@@ -74,16 +75,32 @@ Status FrameRecorder::poll() {
     return okStatus();
 }
 
-Status FrameRecorder::collectOldest() {
+Result<std::optional<std::vector<std::byte>>> FrameRecorder::takeBuffer(std::size_t bytes) {
+    if (settings_.dropWhenBusy) {
+        Result<std::optional<std::vector<std::byte>>> buffer = pool_->tryAcquire(bytes);
+        if (buffer && !*buffer) ++dropped_;
+        return buffer;
+    }
     // Blocks while the encoders hold the memory cap: back-pressure reaches the render loop here.
-    Result<std::vector<std::byte>> pixels = pool_->acquire(ring_->frameBytes());
+    Result<std::vector<std::byte>> buffer = pool_->acquire(bytes);
+    if (!buffer) return buffer.error();
+    return std::optional<std::vector<std::byte>>(std::move(*buffer));
+}
+
+Status FrameRecorder::collectOldest() {
+    Result<std::optional<std::vector<std::byte>>> pixels = takeBuffer(ring_->frameBytes());
     if (!pixels) return pixels.error();
+    if (!*pixels) {
+        ring_->dropOldest();
+        return okStatus();
+    }
     const int frame = ring_->oldestFrame();
-    if (Status copied = ring_->takeOldest(*pixels); !copied) return copied;
-    return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(*pixels)});
+    if (Status copied = ring_->takeOldest(**pixels); !copied) return copied;
+    return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(**pixels)});
 }
 
 Status FrameRecorder::finish() {
+    settings_.dropWhenBusy = false;  // what is still in the ring is written
     while (ring_ && !ring_->empty())
         if (Status collected = collectOldest(); !collected) return collected;
     return pool_->finish();

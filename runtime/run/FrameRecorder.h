@@ -30,6 +30,9 @@ struct RecorderSettings {
     VideoSettings video;
     double fps = 60;               // the video's frame rate
     int rawStreamFd = 1;           // where "--out -" writes (stdout)
+    // Real-time window runs: when the encoders are behind by the memory cap, drop the frame
+    // instead of making the render (UI) thread wait. Off: every frame is written (back-pressure).
+    bool dropWhenBusy = false;
 };
 
 class FrameRecorder {
@@ -48,6 +51,7 @@ public:
 
     std::uint64_t bytesWritten() const { return pool_->bytesWritten(); }
     int encoderThreads() const { return pool_->threads(); }
+    int droppedFrames() const { return dropped_; }
     int width() const { return width_; }
     int height() const { return height_; }
 
@@ -60,6 +64,9 @@ private:
     std::shared_ptr<GlContext> context_;  // declared first: outlives the readback buffers
     RecorderSettings settings_;
     int width_ = 0, height_ = 0;
+    int dropped_ = 0;
+    // A pixel buffer for a frame: waits for one, or (dropWhenBusy) gives nothing when none is free.
+    Result<std::optional<std::vector<std::byte>>> takeBuffer(std::size_t bytes);
     PixelFormat format_ = PixelFormat::Rgba8;
     std::unique_ptr<FrameSink> sink_;    // declared before pool_: the pool's threads use it
     std::unique_ptr<EncoderPool> pool_;

@@ -170,6 +170,7 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
         settings.video = o.video;
         settings.fps = o.fps ? *o.fps : defaults::kFps;
         settings.rawStreamFd = o.rawStreamFd;
+        settings.dropWhenBusy = !o.fps;  // real time: the window never waits for the encoders
         Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(settings, player);
         if (!created) return created.error();
         recorder = std::move(*created);
@@ -318,6 +319,17 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
         if (Status finished = recorder->finish(); !finished) return finished.error();
         report.bytesWritten = recorder->bytesWritten();
         report.encoderThreads = recorder->encoderThreads();
+        if (recorder->droppedFrames() > 0) {
+            std::vector<fs::path> written;
+            for (const fs::path& file : report.files)
+                if (std::error_code ec; fs::exists(file, ec)) written.push_back(file);
+            report.files = std::move(written);
+        }
+        if (recorder->droppedFrames() > 0)
+            observer.notice(notice(std::to_string(recorder->droppedFrames()) +
+                                       " frames were not recorded: the encoders were behind and real-time mode "
+                                       "does not wait for them (use --fps for every frame)",
+                                   "capture.dropped"));
         if (run.output->format() == OutputFormat::Video) report.files.push_back(run.output->pathFor(0));
     }
     player.finish();

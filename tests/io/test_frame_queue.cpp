@@ -320,3 +320,26 @@ TEST(EncoderPool, StoppingCancelsAStalledSinkInsteadOfWaitingForIt) {
     EXPECT_TRUE(sink.cancelled);
     EXPECT_TRUE(sink.discarded);
 }
+
+TEST(FrameQueue, AcquireWithoutWaitingGivesNothingAtTheCap) {
+    FrameQueue queue(2 * kFrameBytes);
+    auto first = queue.acquire(kFrameBytes, /*wait=*/false);
+    auto second = queue.acquire(kFrameBytes, /*wait=*/false);
+    ASSERT_TRUE(first && second);
+    EXPECT_FALSE(queue.acquire(kFrameBytes, /*wait=*/false)) << "the cap is reached: no buffer, no waiting";
+    EXPECT_EQ(queue.blockedProducers(), 0u);
+    queue.recycle(std::move(*first));
+    EXPECT_TRUE(queue.acquire(kFrameBytes, /*wait=*/false)) << "a recycled buffer is given again";
+}
+
+TEST(EncoderPool, TryAcquireReportsBusyAndErrorsApart) {
+    StalledSink sink;
+    EncoderPool pool(sink, 1, 2 * kFrameBytes);
+    ASSERT_TRUE(pool.submit(stamped(0, *pool.acquire(kFrameBytes))).ok());
+    auto second = pool.tryAcquire(kFrameBytes);
+    ASSERT_TRUE(second.ok());
+    ASSERT_TRUE(second->has_value());
+    auto third = pool.tryAcquire(kFrameBytes);
+    ASSERT_TRUE(third.ok()) << "busy is not an error";
+    EXPECT_FALSE(third->has_value());
+}

@@ -171,6 +171,14 @@ TEST_F(WindowMode, TheCanvasFollowsTheWindowSize) {
     EXPECT_EQ(large.height, 120);
     EXPECT_EQ(column(large, 4), (std::array<int, 4>{60, 30, 0, 255}));
     EXPECT_GT(column(large, 3)[0], column(small, 3)[0]) << "the buffers and iFrame went on";
+    xdo("key F11");
+    Image8 full = screenshot();
+    auto [code, screen] = shell("xdotool getdisplaygeometry");
+    EXPECT_EQ(std::to_string(full.width) + " " + std::to_string(full.height) + "\n", screen) << "F11: the whole screen";
+    xdo("key F11");
+    Image8 back = screenshot();
+    EXPECT_EQ(back.width, 240) << "F11 again: the window as it was";
+    EXPECT_EQ(back.height, 120);
 }
 
 TEST_F(WindowMode, HotReloadKeepsTheLastGoodProgramAndShowsTheError) {

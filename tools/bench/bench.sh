@@ -47,7 +47,7 @@ if [ "$quick" = 1 ]; then ocean_frames=8; trivial_frames=500; lakes_frames=20; f
 # Seconds of toyhost's frame loop (GPU work and encoders included), from its report line.
 toyhost_seconds() {
   local line
-  line=$("$toyhost" run "$@" --quiet 2>&1 >/dev/null | grep ' frames at ') || { echo "bench: toyhost run $* failed" >&2; exit 1; }
+  line=$("$toyhost" run "$@" --headless --quiet 2>&1 >/dev/null | grep ' frames at ') || { echo "bench: toyhost run $* failed" >&2; exit 1; }
   echo "$line" >"$work/report_line"
   sed -E 's/.* in ([0-9.]+) s .*/\1/' <<<"$line"
 }
@@ -155,7 +155,7 @@ row "Mountains & Lakes 800x450, PNG every 10th frame vs every frame" \
 echo "bench: time to first frame, ocean 800x450 x $first_reps" >&2
 t=(); f=()
 for _ in $(seq "$first_reps"); do
-  t+=("$(wall_seconds "$toyhost" run "$ocean" --size 800x450 --frames 1 --quiet)")
+  t+=("$(wall_seconds "$toyhost" run "$ocean" --size 800x450 --frames 1 --headless --quiet)")
   f+=("$(wall_seconds "$floor" "$ocean_glsl" --size 800x450 --time 0 --frames 1)")
 done
 ft=$(median "${t[@]}"); ff=$(median "${f[@]}")
