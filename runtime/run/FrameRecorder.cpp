@@ -1,6 +1,7 @@
 #include "run/FrameRecorder.h"
 
 #include "capture/FileSinks.h"
+#include "core/Defaults.h"
 
 namespace toyhost {
 
@@ -47,6 +48,22 @@ FrameRecorder::~FrameRecorder() {
     pool_.reset();
     if (context_) (void)context_->makeCurrent();
     ring_.reset();
+}
+
+RecorderSettings recorderSettings(const PreparedRun& run) {
+    const RunOptions& o = run.options;
+    RecorderSettings settings;
+    settings.output = *run.output;
+    settings.pass = o.capturePass;
+    settings.synchronous = o.syncCapture;
+    settings.pngLevel = *o.pngLevel;
+    settings.encoderThreads = o.encoderThreads;
+    settings.memoryCapBytes = *o.captureMemoryBytes;
+    settings.video = o.video;
+    settings.fps = o.fps.value_or(defaults::kFps);
+    settings.rawStreamFd = o.rawStreamFd;
+    settings.dropWhenBusy = o.interactive && !o.fps;
+    return settings;
 }
 
 Status FrameRecorder::capture(const Player& player, int frame) {

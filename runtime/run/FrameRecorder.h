@@ -16,6 +16,7 @@
 #include "core/Result.h"
 #include "manifest/ManifestDesc.h"
 #include "player/Player.h"
+#include "run/RunOptions.h"
 #include "render/ReadbackRing.h"
 
 namespace toyhost {
@@ -34,6 +35,11 @@ struct RecorderSettings {
     // instead of making the render (UI) thread wait. Off: every frame is written (back-pressure).
     bool dropWhenBusy = false;
 };
+
+// The recorder settings a run asks for: its output, pass, PNG level, encoders, memory cap, video
+// settings and frame rate (the default rate when a window runs in real time, which then also
+// drops frames rather than wait for the encoders).
+RecorderSettings recorderSettings(const PreparedRun& run);
 
 class FrameRecorder {
 public:

@@ -32,17 +32,7 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
     const RunOptions& o = run.options;
     std::unique_ptr<FrameRecorder> recorder;
     if (run.output) {
-        RecorderSettings settings;
-        settings.output = *run.output;
-        settings.pass = o.capturePass;
-        settings.synchronous = o.syncCapture;
-        settings.pngLevel = *o.pngLevel;
-        settings.encoderThreads = o.encoderThreads;
-        settings.memoryCapBytes = *o.captureMemoryBytes;
-        settings.video = o.video;
-        settings.fps = *o.fps;
-        settings.rawStreamFd = o.rawStreamFd;
-        Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(settings, player);
+        Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(recorderSettings(run), player);
         if (!created) return created.error();
         recorder = std::move(*created);
     }

@@ -34,7 +34,7 @@ double monotonicNow() {
 // What GLFW's callbacks collect between two frames, read by the loop on the same thread.
 struct WindowInputState {
     WindowContext* window = nullptr;
-    int canvasW = 0, canvasH = 0;
+    const Player* player = nullptr;  // the canvas size comes from it
     std::vector<InputEvent> events;  // for the next rendered frame, in order
     int buttonsDown = 0;
     bool controls[8] = {};           // indexed by Control: pressed since the last loop iteration
@@ -55,6 +55,7 @@ struct WindowInputState {
         const GlSurface::Size win = window->windowSize();
         const GlSurface::Size fb = window->framebufferSize();
         if (win.width <= 0 || win.height <= 0 || fb.width <= 0 || fb.height <= 0) return glm::vec2(0.0f);
+        const int canvasW = player->width(), canvasH = player->height();
         const PresentRect r = presentRect(canvasW, canvasH, fb.width, fb.height);
         const double fx = cx * fb.width / win.width;
         const double fyTop = cy * fb.height / win.height;
@@ -160,26 +161,14 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
 
     std::unique_ptr<FrameRecorder> recorder;
     if (recording) {
-        RecorderSettings settings;
-        settings.output = *run.output;
-        settings.pass = o.capturePass;
-        settings.synchronous = o.syncCapture;
-        settings.pngLevel = *o.pngLevel;
-        settings.encoderThreads = o.encoderThreads;
-        settings.memoryCapBytes = *o.captureMemoryBytes;
-        settings.video = o.video;
-        settings.fps = o.fps ? *o.fps : defaults::kFps;
-        settings.rawStreamFd = o.rawStreamFd;
-        settings.dropWhenBusy = !o.fps;  // real time: the window never waits for the encoders
-        Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(settings, player);
+        Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(recorderSettings(run), player);
         if (!created) return created.error();
         recorder = std::move(*created);
     }
 
     WindowInputState input;
     input.window = window.get();
-    input.canvasW = player.width();
-    input.canvasH = player.height();
+    input.player = &player;
     input.events.reserve(256);
     glfwSetWindowUserPointer(window->handle(), &input);
     glfwSetCursorPosCallback(window->handle(), onCursor);
@@ -253,8 +242,6 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
         if (!recording && size.width > 0 && size.height > 0 &&
             (size.width != player.width() || size.height != player.height())) {
             if (Status resized = player.resize(size.width, size.height); !resized) showProblems(resized.error().diagnostics);
-            input.canvasW = player.width();
-            input.canvasH = player.height();
         }
 
         // Hot reload.
@@ -292,6 +279,8 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
                     run.output->format() != OutputFormat::RawStream)
                     report.files.push_back(run.output->pathFor(rendered));
             }
+            if (rendered == 0)
+                report.firstFrameSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
             ++rendered;
             progress.framesDone = rendered;
             progress.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count();
@@ -337,7 +326,6 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
     report.width = player.width();
     report.height = player.height();
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count();
-    report.firstFrameSeconds = std::chrono::duration<double>(loopStart - started).count();
     return report;
 }
 

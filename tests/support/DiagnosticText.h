@@ -9,23 +9,14 @@
 
 namespace toyhost::testing {
 
-inline std::string plainLine(const Diagnostic& d) {
-    std::string out;
-    if (!d.file.empty()) {
-        out += d.file;
-        if (d.line > 0) {
-            out += ':' + std::to_string(d.line);
-            if (d.column > 0) out += ':' + std::to_string(d.column);
-        }
-        out += ": ";
-    }
-    if (!d.pass.empty() && d.field.find("\"" + d.pass + "\"") == std::string::npos) {
-        out += d.pass;
-        if (d.channel >= 0) out += " / iChannel" + std::to_string(d.channel);
-        out += ": ";
-    }
-    if (!d.field.empty()) out += d.field + ": ";
-    return out + d.message;
+// formatDiagnostic's line without the code and the severity word.
+inline std::string plainLine(Diagnostic d) {
+    d.code.clear();
+    std::string out = formatDiagnostic(d);
+    const std::string severity = std::string(severityName(d.severity)) + ": ";
+    const std::size_t place = d.file.empty() ? 0 : out.find(": ") + 2;  // after FILE[:L[:C]]
+    if (out.compare(place, severity.size(), severity) == 0) out.erase(place, severity.size());
+    return out;
 }
 
 inline std::string plainText(const Error& error) {
