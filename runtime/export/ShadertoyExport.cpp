@@ -69,14 +69,7 @@ private:
     // `field` is the place in the export (renderpass[3].inputs[1].channel).
     void problem(const std::string& field, const std::string& what, const char* code = "export.value",
                  std::optional<PassId> pass = std::nullopt, int channel = -1) {
-        Diagnostic d;
-        d.code = code;
-        d.file = label_;
-        d.field = field;
-        d.message = what;
-        if (pass) d.pass = passName(*pass);
-        d.channel = channel;
-        problems_.push_back(std::move(d));
+        problems_.push_back(fieldDiagnostic(label_, field, what, code, pass, channel));
     }
 
     void notice(const std::string& what, const char* code, std::optional<PassId> pass = std::nullopt,

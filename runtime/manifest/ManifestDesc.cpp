@@ -2,6 +2,18 @@
 
 namespace toyhost {
 
+Diagnostic fieldDiagnostic(std::string file, std::string field, std::string message, std::string code,
+                           std::optional<PassId> pass, int channel) {
+    Diagnostic d;
+    d.code = std::move(code);
+    d.file = std::move(file);
+    d.field = std::move(field);
+    d.message = std::move(message);
+    if (pass) d.pass = passName(*pass);
+    d.channel = channel;
+    return d;
+}
+
 const char* passName(PassId id) {
     switch (id) {
         case PassId::BufferA: return "Buffer A";

@@ -20,6 +20,11 @@ inline constexpr int kBufferCount = 4;
 inline constexpr int kChannelCount = 4;
 
 const char* passName(PassId id);            // "Buffer A" .. "Image"
+
+// A problem at JSON path `field` of `file` (a manifest or an export), about `pass` / `channel`
+// when set.
+Diagnostic fieldDiagnostic(std::string file, std::string field, std::string message, std::string code,
+                           std::optional<PassId> pass = std::nullopt, int channel = -1);
 inline bool isBuffer(PassId id) { return id != PassId::Image; }
 inline int bufferIndex(PassId id) { return static_cast<int>(id); }  // only for buffers
 inline PassId bufferPass(int index) { return static_cast<PassId>(index); }

@@ -23,14 +23,7 @@ public:
     // `field` is the JSON path; `pass`/`channel` are set when the problem is about one.
     void add(const std::string& field, const std::string& message, const char* code = "manifest.value",
              std::optional<PassId> pass = std::nullopt, int channel = -1) {
-        Diagnostic d;
-        d.code = code;
-        d.file = file_;
-        d.field = field;
-        d.message = message;
-        if (pass) d.pass = passName(*pass);
-        d.channel = channel;
-        diagnostics_.push_back(std::move(d));
+        diagnostics_.push_back(fieldDiagnostic(file_, field, message, code, pass, channel));
     }
     bool empty() const { return diagnostics_.empty(); }
     Error toError() const { return Error(diagnostics_); }
