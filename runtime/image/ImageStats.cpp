@@ -40,4 +40,21 @@ Result<std::array<ChannelStats, 4>> channelStats(const ImageF32& image, Region r
     return stats;
 }
 
+NonFiniteFind findNonFinite(std::span<const float> rgba, int width) {
+    NonFiniteFind found;
+    for (std::size_t i = 0; i < rgba.size(); ++i) {
+        const float v = rgba[i];
+        if (std::isfinite(v)) continue;
+        if (found.count() == 0 && width > 0) {
+            const std::size_t pixel = i / 4;
+            found.x = static_cast<int>(pixel % static_cast<std::size_t>(width));
+            found.y = static_cast<int>(pixel / static_cast<std::size_t>(width));
+            found.channel = static_cast<int>(i % 4);
+        }
+        if (std::isnan(v)) ++found.nan;
+        else ++found.inf;
+    }
+    return found;
+}
+
 }  // namespace toyhost

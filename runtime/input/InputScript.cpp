@@ -135,8 +135,26 @@ Result<int> readKey(const json& event, const EventContext& ctx) {
     return *code;
 }
 
+// "to": {"frame"|"time": ..., "x": ..., "y": ...}, the end of a glide that starts at `start`.
+Result<MouseGlide> readGlide(const json& to, const ScriptMoment& start, const EventContext& ctx) {
+    if (!to.is_object()) return ctx.error("\"to\" must be an object such as {\"frame\": 60, \"x\": 10, \"y\": 20}, got " + describe(to));
+    for (const auto& item : to.items())
+        if (item.key() != "frame" && item.key() != "time" && item.key() != "x" && item.key() != "y")
+            return ctx.error("\"to\": unknown field " + inQuotes(item.key()) + " (known: frame, time, x, y)");
+    auto end = readMoment(to, ctx);
+    if (!end) return ctx.error("\"to\": " + end.error().first().message);
+    if (end->clock != start.clock)
+        return ctx.error(std::string("\"to\" must use the event's own clock (\"") +
+                         (start.clock == ScriptMoment::Clock::Frame ? "frame" : "time") + "\")");
+    if (!firesEarlier(start, *end))
+        return ctx.error("\"to\" must end after the event starts");
+    auto position = readPosition(to, ctx);
+    if (!position) return ctx.error("\"to\": " + position.error().first().message);
+    return MouseGlide{*end, *position};
+}
+
 Result<MouseScriptEvent> readMouseEvent(const json& event, const EventContext& ctx) {
-    if (auto s = checkFields(event, {"x", "y"}, ctx); !s) return s.error();
+    if (auto s = checkFields(event, {"x", "y", "to"}, ctx); !s) return s.error();
     auto at = readMoment(event, ctx);
     if (!at) return at.error();
     auto type = readType(event, ctx);
@@ -151,7 +169,13 @@ Result<MouseScriptEvent> readMouseEvent(const json& event, const EventContext& c
     else if (*type == "click") out.type = Type::Click;
     else return ctx.error("unknown type " + inQuotes(*type) + " (expected down, move, up, click)");
 
-    bool positionOptional = out.type == Type::Up && !event.contains("x") && !event.contains("y");
+    if (event.contains("to")) {
+        if (out.type != Type::Move) return ctx.error("\"to\" is only for \"move\" events");
+        auto glide = readGlide(event["to"], out.at, ctx);
+        if (!glide) return glide.error();
+        out.to = *glide;
+    }
+    bool positionOptional = (out.type == Type::Up || out.to) && !event.contains("x") && !event.contains("y");
     if (!positionOptional) {
         auto pos = readPosition(event, ctx);
         if (!pos) return pos.error();

@@ -18,7 +18,15 @@
 //     {"frame": 60, "type": "click", "x": 10,  "y": 20} ]   down and up before the same frame:
 //                                                           that frame sees w > 0 and z < 0,
 //                                                           like a click shorter than a frame
-//   "down", "move", "click" need "x" and "y"; for "up" they are optional (both or neither).
+//     {"frame": 70, "type": "move", "to": {"frame": 100, "x": 300, "y": 40}}
+//                                                           glides in a straight line from where
+//                                                           the pointer is (or from "x", "y" when
+//                                                           given) to "to"'s x, y, one move per
+//                                                           frame, arriving on frame 100; "to"
+//                                                           takes the event's clock ("frame" or
+//                                                           "time") and a later moment
+//   "down", "move", "click" need "x" and "y" (a "move" with "to" may leave both out); for "up"
+//   they are optional (both or neither). A drag is two lines: a "down", then a "move" with "to".
 //
 // Key script (key by name, case-insensitive, e.g. "A", "7", "space", "left", "f5", or by
 // JavaScript keyCode as a number, e.g. 65; names are listed in KeyCodes.h):
@@ -67,11 +75,20 @@ struct ScriptMoment {
 // The script order: "frame" events (by frame) before "time" events (by time).
 bool firesEarlier(const ScriptMoment& a, const ScriptMoment& b);
 
+// The end of a "move" that glides: where the pointer arrives, and when.
+struct MouseGlide {
+    ScriptMoment end;  // same clock as the event, later than it
+    glm::vec2 position{0.0f};
+};
+
 struct MouseScriptEvent {
     enum class Type { Down, Move, Up, Click };
     ScriptMoment at;
     Type type = Type::Down;
-    std::optional<glm::vec2> position;  // always set for Down/Move/Click; optional for Up
+    // Always set for Down/Click and for a Move without "to"; optional for Up and a gliding Move
+    // (which then starts from wherever the pointer is).
+    std::optional<glm::vec2> position;
+    std::optional<MouseGlide> to;  // Move only: glide linearly to here
 };
 
 struct MouseScript {

@@ -24,15 +24,22 @@ ScriptCursor::ScriptCursor(std::vector<ScriptMoment> moments) : moments_(std::mo
 }
 
 MouseScriptPlayer::MouseScriptPlayer(MouseScript script)
-    : script_(std::move(script)), cursor_(sortedMoments(script_.events)) {}
+    : script_(std::move(script)), cursor_(sortedMoments(script_.events)) {
+    glides_.reserve(static_cast<std::size_t>(
+        std::ranges::count_if(script_.events, [](const MouseScriptEvent& e) { return e.to.has_value(); })));
+}
 
 void MouseScriptPlayer::eventsBeforeFrame(std::int64_t frame, double iTime, std::vector<InputEvent>& out) {
     using Type = MouseScriptEvent::Type;
     cursor_.takeDue(frame, iTime, [&](std::size_t i) {
         const MouseScriptEvent& e = script_.events[i];
+        if (e.position) pointerAt(*e.position);
         switch (e.type) {
         case Type::Down: out.push_back(InputEvent::mouseDown(e.position->x, e.position->y)); break;
-        case Type::Move: out.push_back(InputEvent::mouseMove(e.position->x, e.position->y)); break;
+        case Type::Move:
+            if (e.to) glides_.push_back(ActiveGlide{e.at, *e.to, pointer_});
+            else out.push_back(InputEvent::mouseMove(e.position->x, e.position->y));
+            break;
         case Type::Up:
             if (e.position) out.push_back(InputEvent::mouseMove(e.position->x, e.position->y));
             out.push_back(InputEvent::mouseUp());
@@ -43,6 +50,19 @@ void MouseScriptPlayer::eventsBeforeFrame(std::int64_t frame, double iTime, std:
             break;
         }
     });
+    // Glides: the fraction of the way by the event's own clock, so a glide that fires late (a
+    // run that starts later) is where it would have been.
+    for (auto it = glides_.begin(); it != glides_.end();) {
+        const bool byFrame = it->start.clock == ScriptMoment::Clock::Frame;
+        const double done = byFrame ? double(frame - it->start.frame) / double(it->end.end.frame - it->start.frame)
+                                    : (iTime - it->start.seconds) / (it->end.end.seconds - it->start.seconds);
+        const bool arrived = it->end.end.dueBefore(frame, iTime);
+        const float t = arrived ? 1.0f : static_cast<float>(std::clamp(done, 0.0, 1.0));
+        const glm::vec2 at = it->from + (it->end.position - it->from) * t;
+        out.push_back(InputEvent::mouseMove(at.x, at.y));
+        pointerAt(at);
+        it = arrived ? glides_.erase(it) : it + 1;
+    }
 }
 
 void MouseScriptPlayer::applyBeforeFrame(std::int64_t frame, double iTime, MouseState& mouse) {
@@ -52,7 +72,7 @@ void MouseScriptPlayer::applyBeforeFrame(std::int64_t frame, double iTime, Mouse
     for (const InputEvent& e : scratch_) applyInput(e, mouse, unused);
 }
 
-bool MouseScriptPlayer::finished() const { return cursor_.finished(); }
+bool MouseScriptPlayer::finished() const { return cursor_.finished() && glides_.empty(); }
 
 KeyScriptPlayer::KeyScriptPlayer(KeyScript script)
     : script_(std::move(script)), cursor_(sortedMoments(script_.events)) {}

@@ -39,17 +39,27 @@ private:
 // The script is sorted (stably, by firesEarlier) on construction, so hand-built scripts work too.
 // Call eventsBeforeFrame(n, iTime) once per frame, with increasing n, before rendering frame n:
 // it appends the events due to `out`. "click" presses and releases before the same frame.
-// applyBeforeFrame does the same straight into a MouseState.
+// applyBeforeFrame does the same straight into a MouseState. A gliding "move" adds one move per
+// frame, after that frame's own events, until it arrives.
 class MouseScriptPlayer {
 public:
     explicit MouseScriptPlayer(MouseScript script);
     void eventsBeforeFrame(std::int64_t frame, double iTime, std::vector<InputEvent>& out);
     void applyBeforeFrame(std::int64_t frame, double iTime, MouseState& mouse);
-    bool finished() const;
+    bool finished() const;  // every event fired and every glide arrived
 
 private:
+    struct ActiveGlide {
+        ScriptMoment start;
+        MouseGlide end;
+        glm::vec2 from{0.0f};
+    };
+    void pointerAt(glm::vec2 position) { pointer_ = position; }
+
     MouseScript script_;
     ScriptCursor cursor_;
+    std::vector<ActiveGlide> glides_;  // reserved for every glide: no allocation per frame
+    glm::vec2 pointer_{0.0f};          // where the script last put the pointer
     std::vector<InputEvent> scratch_;
 };
 

@@ -58,6 +58,15 @@ struct PassDesc {
     std::array<ChannelDesc, kChannelCount> channels;
 };
 
+// A manifest's own "defaults": the run settings its author chose (a shader written for 1080p
+// positions, a simulation that needs 600 frames). The command line overrides each of them.
+struct RunDefaults {
+    std::optional<int> width;
+    std::optional<int> height;
+    std::optional<double> fps;
+    std::optional<int> frames;
+};
+
 struct ManifestDesc {
     std::string name;
     std::filesystem::path manifestPath;            // absolute
@@ -67,6 +76,7 @@ struct ManifestDesc {
     std::vector<PassDesc> passes;                  // sorted in render order; Image is last
     std::map<std::string, std::filesystem::path> mediaOverrides;  // stock id -> user file
     std::vector<Diagnostic> notices;               // things the user should know (lenient imports)
+    RunDefaults runDefaults;                       // the manifest's "defaults" block
 
     const PassDesc* find(PassId id) const;
     bool hasBuffer(int index) const { return find(bufferPass(index)) != nullptr; }

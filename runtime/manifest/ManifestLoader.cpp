@@ -1,6 +1,9 @@
 #include "manifest/ManifestLoader.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
@@ -8,6 +11,8 @@
 #include <vector>
 
 #include "core/AtomicFile.h"
+#include "core/Defaults.h"
+#include "core/Suggest.h"
 #include "manifest/StockMedia.h"
 
 namespace toyhost {
@@ -15,6 +20,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
+
+constexpr long long kMaxSide = defaults::kMaxCanvasSide;
 
 // Collects every problem with its location so the user sees them all in one run.
 class Problems {
@@ -39,12 +46,19 @@ std::string typeName(const json& value) { return value.type_name(); }
 
 void rejectUnknownFields(const json& object, const std::set<std::string>& known,
                          const std::string& where, Problems& problems) {
+    const std::vector<std::string> candidates(known.begin(), known.end());
     for (const auto& [key, _] : object.items()) {
         if (known.count(key)) continue;
         std::string list;
         for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-        problems.add(where, "unknown field " + quote(key) + " (known: " + list + ")", "manifest.unknown-field");
+        problems.add(where, "unknown field " + quote(key) + didYouMean(key, candidates) + " (known: " + list + ")",
+                     "manifest.unknown-field");
     }
+}
+
+const std::vector<std::string>& passNames() {
+    static const std::vector<std::string> names{"Buffer A", "Buffer B", "Buffer C", "Buffer D", "Image"};
+    return names;
 }
 
 std::optional<PassId> passFromName(const std::string& name) {
@@ -80,8 +94,9 @@ public:
         if (!root.is_object()) return fileError(path_.string(), "the manifest must be a JSON object", "manifest.json");
 
         desc_.manifestPath = path_;
-        rejectUnknownFields(root, {"name", "common", "passes", "media"}, "", problems_);
+        rejectUnknownFields(root, {"name", "common", "passes", "media", "defaults"}, "", problems_);
         readName(root);
+        readDefaults(root);
         readCommon(root);
         readMedia(root);
         readPasses(root);
@@ -128,6 +143,56 @@ private:
     void readName(const json& root) {
         if (auto name = readString(root, "name", "")) desc_.name = *name;
         else desc_.name = dir_.filename().string();
+    }
+
+    // "defaults": {"size": "1280x720" or [1280, 720], "fps": 30, "frames": 600}
+    void readDefaults(const json& root) {
+        auto it = root.find("defaults");
+        if (it == root.end()) return;
+        if (!it->is_object()) {
+            problems_.add("defaults", "must be an object such as {\"size\": \"1280x720\", \"fps\": 60, \"frames\": 600}",
+                          "manifest.type");
+            return;
+        }
+        rejectUnknownFields(*it, {"size", "fps", "frames"}, "defaults", problems_);
+        RunDefaults& d = desc_.runDefaults;
+        if (auto size = it->find("size"); size != it->end()) {
+            long long w = 0, h = 0;
+            bool parsed = false;
+            if (size->is_string()) {
+                char x = 0, extra = 0;
+                const std::string text = size->get<std::string>();
+                parsed = std::sscanf(text.c_str(), "%lld%c%lld%c", &w, &x, &h, &extra) == 3 && (x == 'x' || x == 'X');
+            } else if (size->is_array() && size->size() == 2 && (*size)[0].is_number_integer() &&
+                       (*size)[1].is_number_integer()) {
+                w = (*size)[0].get<long long>();
+                h = (*size)[1].get<long long>();
+                parsed = true;
+            }
+            if (!parsed || w < 1 || h < 1 || w > kMaxSide || h > kMaxSide)
+                problems_.add("defaults.size",
+                              "must be \"WxH\" or [W, H] with sides 1.." + std::to_string(kMaxSide) + ", not " +
+                                  size->dump(),
+                              "manifest.value");
+            else {
+                d.width = static_cast<int>(w);
+                d.height = static_cast<int>(h);
+            }
+        }
+        if (auto fps = it->find("fps"); fps != it->end()) {
+            if (!fps->is_number() || !std::isfinite(fps->get<double>()) || fps->get<double>() < 0.001 ||
+                fps->get<double>() > 1e6)
+                problems_.add("defaults.fps", "must be a number of frames per second (0.001 .. 1000000), not " + fps->dump(),
+                              "manifest.value");
+            else d.fps = fps->get<double>();
+        }
+        if (auto frames = it->find("frames"); frames != it->end()) {
+            if (!frames->is_number_unsigned() || frames->get<std::uint64_t>() < 1 ||
+                frames->get<std::uint64_t>() > static_cast<std::uint64_t>(INT32_MAX))
+                problems_.add("defaults.frames", "must be a whole number of frames >= 1, not " + frames->dump(),
+                              "manifest.value");
+            else d.frames = frames->get<int>();
+        }
     }
 
     void readCommon(const json& root) {
@@ -179,7 +244,9 @@ private:
             const std::string where = "passes." + quote(name);
             std::optional<PassId> id = passFromName(name);
             if (!id) {
-                problems_.add(where, "unknown pass (known: Buffer A, Buffer B, Buffer C, Buffer D, Image)",
+                problems_.add(where,
+                              "unknown pass" + didYouMean(name, passNames()) +
+                                  " (known: Buffer A, Buffer B, Buffer C, Buffer D, Image)",
                               "manifest.unknown-pass");
                 continue;
             }
@@ -240,7 +307,10 @@ private:
             if (key.size() == 9 && key.rfind("iChannel", 0) == 0 && key[8] >= '0' && key[8] <= '3')
                 index = key[8] - '0';
             if (index < 0) {
-                problems_.add(where, "unknown channel " + quote(key) + " (known: iChannel0..iChannel3)",
+                static const std::vector<std::string> channelKeys{"iChannel0", "iChannel1", "iChannel2", "iChannel3"};
+                problems_.add(where,
+                              "unknown channel " + quote(key) + didYouMean(key, channelKeys) +
+                                  " (known: iChannel0..iChannel3)",
                               "manifest.unknown-field", pass.id);
                 continue;
             }
@@ -289,7 +359,15 @@ private:
             // Any Shadertoy media path is accepted (one the table does not know runs with a flagged
             // stand-in, as imported exports do); other names must be known or given a file.
             const bool mediaPath = media->rfind("/media/a/", 0) == 0 && media->size() > 9;
-            if (!mediaPath && !findStockMedia(*media) && !desc_.mediaOverrides.count(*media))
+            const StockMediaInfo* near = desc_.mediaOverrides.count(*media) ? nullptr : nearStockMedia(*media);
+            if (near)
+                // A one-character slip in a hash would otherwise run with a stand-in of a guessed
+                // size, silently replacing a 256x256 noise with a 512x512 photo.
+                problems_.add(where,
+                              "unknown stock media " + quote(*media) + " (did you mean " + quote(std::string(near->name)) +
+                                  ", " + stockMediaPath(*near) + "?)",
+                              "manifest.media-near-miss", pass.id, index);
+            else if (!mediaPath && !findStockMedia(*media) && !desc_.mediaOverrides.count(*media))
                 problems_.add(where,
                               "unknown stock media " + quote(*media) +
                                   " (use a /media/a/<hash>.<ext> id, a stock name such as \"Abstract 3\", "
@@ -322,12 +400,23 @@ private:
             if (*filter == "nearest") channel.sampler.filter = Filter::Nearest;
             else if (*filter == "linear") channel.sampler.filter = Filter::Linear;
             else if (*filter == "mipmap") channel.sampler.filter = Filter::Mipmap;
-            else problems_.add(where, "filter " + quote(*filter) + " is not one of nearest, linear, mipmap", "manifest.value", pass, index);
+            else {
+                static const std::vector<std::string> filters{"nearest", "linear", "mipmap"};
+                problems_.add(where,
+                              "filter " + quote(*filter) + didYouMean(*filter, filters) +
+                                  " is not one of nearest, linear, mipmap",
+                              "manifest.value", pass, index);
+            }
         }
         if (auto wrap = readString(value, "wrap", where)) {
             if (*wrap == "clamp") channel.sampler.wrap = Wrap::Clamp;
             else if (*wrap == "repeat") channel.sampler.wrap = Wrap::Repeat;
-            else problems_.add(where, "wrap " + quote(*wrap) + " is not one of clamp, repeat", "manifest.value", pass, index);
+            else {
+                static const std::vector<std::string> wraps{"clamp", "repeat"};
+                problems_.add(where,
+                              "wrap " + quote(*wrap) + didYouMean(*wrap, wraps) + " is not one of clamp, repeat",
+                              "manifest.value", pass, index);
+            }
         }
         if (auto vflip = value.find("vflip"); vflip != value.end()) {
             if (!vflip->is_boolean()) problems_.add(where, "\"vflip\" must be true or false", "manifest.type", pass, index);

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/AtomicFile.h"
+#include "manifest/StockMedia.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -22,7 +23,13 @@ ordered_json channelJson(const ChannelDesc& channel) {
         case ChannelKind::Keyboard: out["keyboard"] = true; return out;
         case ChannelKind::Buffer: out["buffer"] = std::string(1, static_cast<char>('A' + channel.buffer)); break;
         case ChannelKind::ImageFile: out["texture"] = channel.file.string(); break;
-        case ChannelKind::StockMedia: out["media"] = channel.media; break;
+        case ChannelKind::StockMedia: {
+            // The site's name ("Lichen") where toyhost knows the texture: the loader accepts it,
+            // and a reader of the manifest sees what the channel shows.
+            const StockMediaInfo* stock = findStockMedia(channel.media);
+            out["media"] = stock ? std::string(stock->name) : channel.media;
+            break;
+        }
     }
     out["filter"] = filterName(channel.sampler.filter);
     out["wrap"] = wrapName(channel.sampler.wrap);

@@ -5,7 +5,10 @@
 #include <cctype>
 #include <cstdlib>
 #include <cstdint>
+#include <string>
 #include <vector>
+
+#include "core/Suggest.h"
 
 namespace toyhost {
 
@@ -118,6 +121,20 @@ const StockMediaInfo* findStockMedia(std::string_view ref) {
         ref.remove_suffix(ref.size() - dot);
     for (const StockMediaInfo& info : kStockMedia)
         if (sameName(ref, info.hash) || sameName(ref, info.name)) return &info;
+    return nullptr;
+}
+
+const StockMediaInfo* nearStockMedia(std::string_view ref) {
+    if (findStockMedia(ref)) return nullptr;
+    if (const auto slash = ref.rfind('/'); slash != std::string_view::npos) ref.remove_prefix(slash + 1);
+    if (const auto dot = ref.rfind('.'); dot != std::string_view::npos) ref.remove_suffix(ref.size() - dot);
+    // A hash is 64 hex digits: a typo changes a few, a different texture changes most of them.
+    constexpr std::size_t kHashTypos = 3;
+    for (const StockMediaInfo& info : kStockMedia)
+        if (ref.size() + kHashTypos >= info.hash.size() && editDistance(ref, info.hash) <= kHashTypos) return &info;
+    std::vector<std::string> names;
+    for (const StockMediaInfo& info : kStockMedia) names.emplace_back(info.name);
+    if (std::optional<std::string> name = closestMatch(ref, names)) return findStockMedia(*name);
     return nullptr;
 }
 

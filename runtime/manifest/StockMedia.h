@@ -33,6 +33,11 @@ std::span<const StockMediaInfo> stockMediaTable();
 // does not matter: "Abstract 3", "abstract 3"). Returns nullptr when it is not a stock texture.
 const StockMediaInfo* findStockMedia(std::string_view ref);
 
+// A stock texture that `ref` ("/media/a/<hash>.<ext>", "<hash>" or a name) is a near miss of:
+// a hash within a few edited characters, or a name within closestMatch's distance. nullptr when
+// `ref` is an exact stock reference or close to none (a genuine id the table does not know).
+const StockMediaInfo* nearStockMedia(std::string_view ref);
+
 // The canonical reference "/media/a/<hash>.<ext>".
 std::string stockMediaPath(const StockMediaInfo& info);
 

@@ -68,6 +68,14 @@ void MediaResolver::addSearchFolder(fs::path folder) {
     searchFolders_.push_back(std::move(folder));
 }
 
+std::optional<fs::path> MediaResolver::findFile(std::string_view ref) const {
+    if (const auto it = overrides_.find(overrideKey(ref)); it != overrides_.end()) return it->second;
+    const StockMediaInfo* info = findStockMedia(ref);
+    for (const fs::path& folder : searchFolders_)
+        if (std::optional<fs::path> file = info ? findStockFile(folder, *info) : findPlainFile(folder, ref)) return file;
+    return std::nullopt;
+}
+
 Result<ResolvedMedia> MediaResolver::resolve(std::string_view ref) const {
     const StockMediaInfo* info = findStockMedia(ref);
 
@@ -94,11 +102,14 @@ Result<ResolvedMedia> MediaResolver::resolve(std::string_view ref) const {
                                                                                          : ref.find('.', 9) - 9));
         const StockMediaInfo unknown{hash, "", "unknown stock texture", 512, 512, 3, StockMediaKind::Photo};
         ResolvedMedia standIn{makeStandIn(unknown), true, {}};
-        standIn.notice.severity = Severity::Notice;
+        // A warning, not a notice: the size is a guess, and shaders that use the size (hash
+        // tables, atlases) will differ from the site until the real file is supplied.
+        standIn.notice.severity = Severity::Warning;
         standIn.notice.code = "media.unknown-stand-in";
         standIn.notice.message = "stock texture " + std::string(ref) +
-                                 " is not in toyhost's table (its size is unknown); using a 512x512 stand-in. "
-                                 "Supply the real file with --media-file " + hash + "=<path> or --media DIR.";
+                                 " is not in toyhost's table; using a stand-in whose size, 512x512 RGB, is a guess. "
+                                 "Supply the real file with --media-file " + hash + "=<path> or --media DIR "
+                                 "(`toyhost media` lists the known ids).";
         return standIn;
     }
     if (!info) {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,6 +41,10 @@ public:
     // Errors: an override or found file that cannot be decoded (named), or an id that is neither a
     // stock texture nor found anywhere.
     Result<ResolvedMedia> resolve(std::string_view ref) const;
+
+    // The real file resolve() would decode for `ref` (its override, or the first match in the
+    // search folders), without decoding it; nothing when a stand-in would be used.
+    std::optional<std::filesystem::path> findFile(std::string_view ref) const;
 
 private:
     std::map<std::string, std::filesystem::path> overrides_;

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/Defaults.h"
+#include "shader/ChannelUse.h"
 
 namespace toyhost {
 
@@ -27,6 +28,7 @@ Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media) 
     PassGraph graph = buildPassGraph(manifest);
     std::vector<Diagnostic> notices = manifest.notices;
     notices.insert(notices.end(), images->notices().begin(), images->notices().end());
+    for (Diagnostic& warning : unboundChannelWarnings(manifest)) notices.push_back(std::move(warning));
     return PlayerPlan{std::move(manifest), std::move(graph), std::move(*images), std::move(notices)};
 }
 

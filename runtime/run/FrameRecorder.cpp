@@ -78,6 +78,7 @@ Status FrameRecorder::capture(const Player& player, int frame) {
         if (!pixels) return pixels.error();
         if (!*pixels) return okStatus();  // dropped
         readFramebuffer(output.framebuffer, width_, height_, format_, **pixels);
+        scanFloatFrame(frame, **pixels);
         return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(**pixels)});
     }
     if (ring_->full())
@@ -113,7 +114,15 @@ Status FrameRecorder::collectOldest() {
     }
     const int frame = ring_->oldestFrame();
     if (Status copied = ring_->takeOldest(**pixels); !copied) return copied;
+    scanFloatFrame(frame, **pixels);
     return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(**pixels)});
+}
+
+void FrameRecorder::scanFloatFrame(int frame, const std::vector<std::byte>& pixels) {
+    if (format_ != PixelFormat::Rgba32f || firstNonFinite_) return;
+    const std::span<const float> values(reinterpret_cast<const float*>(pixels.data()), pixels.size() / sizeof(float));
+    const NonFiniteFind found = findNonFinite(values, width_);
+    if (found.count()) firstNonFinite_.emplace(frame, found);
 }
 
 Status FrameRecorder::finish() {

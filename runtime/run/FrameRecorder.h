@@ -9,11 +9,13 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "capture/EncoderPool.h"
 #include "capture/OutputPattern.h"
 #include "capture/VideoSink.h"
 #include "core/Result.h"
+#include "image/ImageStats.h"
 #include "manifest/ManifestDesc.h"
 #include "player/Player.h"
 #include "run/RunOptions.h"
@@ -58,6 +60,9 @@ public:
     std::uint64_t bytesWritten() const { return pool_->bytesWritten(); }
     int encoderThreads() const { return pool_->threads(); }
     int droppedFrames() const { return dropped_; }
+    // Float captures (EXR of a buffer, or of Image): the first captured frame that held NaN or Inf,
+    // found by scanning what was read back anyway.
+    const std::optional<std::pair<int, NonFiniteFind>>& firstNonFinite() const { return firstNonFinite_; }
     int width() const { return width_; }
     int height() const { return height_; }
 
@@ -66,11 +71,13 @@ public:
 private:
     FrameRecorder() = default;
     Status collectOldest();
+    void scanFloatFrame(int frame, const std::vector<std::byte>& pixels);
 
     std::shared_ptr<GlContext> context_;  // declared first: outlives the readback buffers
     RecorderSettings settings_;
     int width_ = 0, height_ = 0;
     int dropped_ = 0;
+    std::optional<std::pair<int, NonFiniteFind>> firstNonFinite_;
     // A pixel buffer for a frame: waits for one, or (dropWhenBusy) gives nothing when none is free.
     Result<std::optional<std::vector<std::byte>>> takeBuffer(std::size_t bytes);
     PixelFormat format_ = PixelFormat::Rgba8;

@@ -6,6 +6,7 @@
 #include "input/InputScriptPlayer.h"
 #include "player/Player.h"
 #include "timing/FrameClock.h"
+#include "run/FiniteCheck.h"
 #include "run/FrameRecorder.h"
 #include "run/ShadertoyWatcher.h"
 
@@ -48,6 +49,19 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
     KeyScriptPlayer keyScript(run.keys);
     std::vector<InputEvent> events;
     events.reserve(64);
+    FiniteCheck finite;
+    using Coverage = FiniteCheck::Coverage;
+    std::vector<float> bufferPixels;
+    // Every buffer once: after every frame with --check-finite, else after the last one.
+    auto checkBuffers = [&](int frame) {
+        for (const PassDesc& pass : player.manifest().passes) {
+            if (!isBuffer(pass.id) || finite.reported(pass.id)) continue;
+            player.readRgba32f(pass.id, bufferPixels);
+            const Coverage coverage = o.checkFinite ? Coverage::EveryFrame : Coverage::LastFrameOnly;
+            if (auto warning = finite.check(pass.id, frame, bufferPixels, player.width(), coverage))
+                observer.notice(*warning);
+        }
+    };
     RunProgress progress;
     progress.frames = *o.frames;
 
@@ -72,6 +86,7 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
         } else if (recorder) {
             if (Status polled = recorder->poll(); !polled) return polled;
         }
+        if (o.checkFinite) checkBuffers(frame);
         // Frame 0 waits for the GPU once so that the time to the first frame is real.
         if (o.finishEachFrame || frame == 0) player.finish();
         if (frame == 0) report.firstFrameSeconds = std::chrono::duration<double>(Clock::now() - started).count();
@@ -85,7 +100,11 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
         if (Status finished = recorder->finish(); !finished) return finished;
         report.bytesWritten = recorder->bytesWritten();
         report.encoderThreads = recorder->encoderThreads();
+        if (const auto& nonFinite = recorder->firstNonFinite())
+            if (auto warning = finite.check(o.capturePass, nonFinite->first, nonFinite->second, Coverage::CapturedFrames))
+                observer.notice(*warning);
     }
+    if (!o.checkFinite && *o.frames > 0) checkBuffers(*o.frames - 1);
     player.finish();  // the reported time includes the GPU's work
     report.seconds = std::chrono::duration<double>(Clock::now() - loopStart).count();
     report.files = run.output ? capturedFiles(*run.output, *o.frames, *o.captureEvery)

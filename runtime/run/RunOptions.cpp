@@ -32,9 +32,24 @@ RunOptions withDefaults(RunOptions o) {
     return o;
 }
 
+RunOptions withManifestDefaults(RunOptions o, const RunDefaults& manifest) {
+    if (!o.width && !o.height && manifest.width && manifest.height) {
+        o.width = manifest.width;
+        o.height = manifest.height;
+    }
+    // A window runs in real time until it is closed unless the command line says otherwise.
+    if (!o.interactive) {
+        if (!o.fps) o.fps = manifest.fps;
+        if (!o.frames) o.frames = manifest.frames;
+    }
+    return o;
+}
+
 Result<PreparedRun> prepareRun(const RunOptions& options) {
     if (options.frames && *options.frames < 1) return usage("--frames must be at least 1");
-    const RunOptions o = withDefaults(options);
+    Result<ManifestDesc> manifest = loadShadertoy(options.target);
+    if (!manifest) return manifest.error();
+    const RunOptions o = withDefaults(withManifestDefaults(options, manifest->runDefaults));
     if (Status size = checkCanvasSize(*o.width, *o.height); !size) return size.error();
     if (o.fps && (!(*o.fps > 0) || !std::isfinite(*o.fps))) return usage("--fps must be a positive number");
     if (!std::isfinite(o.startTime)) return usage("--start-time must be a finite number");
@@ -46,8 +61,6 @@ Result<PreparedRun> prepareRun(const RunOptions& options) {
     if (o.video.quality && (*o.video.quality < 0 || *o.video.quality > 63))
         return usage("--video-quality must be 0..63 (a constant rate factor; lower is better)");
 
-    Result<ManifestDesc> manifest = loadShadertoy(o.target);
-    if (!manifest) return manifest.error();
     if (!manifest->find(o.capturePass))
         return usage(std::string("--capture-pass ") + passName(o.capturePass) + ": " +
                      manifest->manifestPath.string() + " has no such pass");

@@ -56,11 +56,19 @@ struct RunOptions {
     // fully overwrites before anything reads it, so an unsynchronised render-only loop does not
     // measure the shading cost.
     bool finishEachFrame = false;
+    // Read every buffer back after every frame and report the first NaN/Inf (costs a readback per
+    // buffer and frame). Without it, buffers are checked at the end of the run and on captured
+    // float frames.
+    bool checkFinite = false;
 };
 
 // `options` with every absent field set to its default (frames 0 then means "no end"; an
 // interactive run keeps fps absent: real time).
 RunOptions withDefaults(RunOptions options);
+
+// `options` with each setting the user left absent taken from the manifest's "defaults" (size
+// always; fps and frames only for headless runs: a window runs in real time until closed).
+RunOptions withManifestDefaults(RunOptions options, const RunDefaults& manifest);
 
 // Frames n with n % captureEvery == 0, and the last frame.
 inline bool isCapturedFrame(int frame, int frames, int captureEvery) {

@@ -187,8 +187,8 @@ TEST(MediaResolver, UnknownIdIsAnErrorNamingIt) {
     EXPECT_NE(media.error().text().find("textures/not-anywhere.png"), std::string::npos);
 }
 
-// Exports can name stock textures the table does not know: they get a flagged 512x512
-// stand-in rather than failing the whole shader.
+// Exports can name stock textures the table does not know: they get a 512x512 stand-in rather
+// than failing the whole shader, with a warning (not a notice) that the size is a guess.
 TEST(MediaResolver, UnknownStockPathGetsAFlaggedStandIn) {
     MediaResolver resolver;
     const Result<ResolvedMedia> media = resolver.resolve("/media/a/0123abcd.png");
@@ -197,7 +197,8 @@ TEST(MediaResolver, UnknownStockPathGetsAFlaggedStandIn) {
     EXPECT_EQ(media->image.width, 512);
     EXPECT_EQ(media->image.height, 512);
     EXPECT_NE(media->notice.message.find("/media/a/0123abcd.png"), std::string::npos);
-    EXPECT_NE(media->notice.message.find("size is unknown"), std::string::npos);
+    EXPECT_NE(media->notice.message.find("512x512 RGB, is a guess"), std::string::npos) << media->notice.message;
+    EXPECT_EQ(media->notice.severity, Severity::Warning);
     const Result<ResolvedMedia> again = resolver.resolve("/media/a/0123abcd.png");
     EXPECT_EQ(again->image.rgba, media->image.rgba) << "deterministic";
 }

@@ -69,7 +69,7 @@ TEST(ManifestErrors, RootMustBeAnObject) {
 TEST(ManifestErrors, UnknownTopLevelField) {
     ManifestFolder f;
     EXPECT_EQ(errorOf(f.parse(R"({"shader": 1, "passes": {"Image": {"source": "image.glsl"}}})")),
-              f.line("", R"(unknown field "shader" (known: common, media, name, passes))"));
+              f.line("", R"(unknown field "shader" (known: common, defaults, media, name, passes))"));
 }
 
 TEST(ManifestErrors, NameMustBeANonEmptyString) {
@@ -151,9 +151,9 @@ TEST(ManifestErrors, UnknownChannelKey) {
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel4": {"buffer": "A"}})"))),
               f.line(where, R"(unknown channel "iChannel4" (known: iChannel0..iChannel3))"));
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"channel0": {"buffer": "A"}})"))),
-              f.line(where, R"(unknown channel "channel0" (known: iChannel0..iChannel3))"));
+              f.line(where, R"(unknown channel "channel0" (did you mean "iChannel0"?) (known: iChannel0..iChannel3))"));
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel01": {"buffer": "A"}})"))),
-              f.line(where, R"(unknown channel "iChannel01" (known: iChannel0..iChannel3))"));
+              f.line(where, R"(unknown channel "iChannel01" (did you mean "iChannel0"?) (known: iChannel0..iChannel3))"));
 }
 
 TEST(ManifestErrors, MoreThanFourChannelsInArrayForm) {
@@ -228,7 +228,7 @@ TEST(ManifestErrors, BadFilterWrapAndVflipValues) {
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": "A", "filter": "trilinear"}})"))),
               f.line(kImageCh0, R"(filter "trilinear" is not one of nearest, linear, mipmap)"));
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"texture": "tex.png", "filter": "Linear"}})"))),
-              f.line(kImageCh0, R"(filter "Linear" is not one of nearest, linear, mipmap)"));
+              f.line(kImageCh0, R"(filter "Linear" (did you mean "linear"?) is not one of nearest, linear, mipmap)"));
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": "A", "wrap": "mirror"}})"))),
               f.line(kImageCh0, R"(wrap "mirror" is not one of clamp, repeat)"));
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": "A", "wrap": 1}})"))),
@@ -294,7 +294,7 @@ TEST(ManifestErrors, SeveralProblemsReportedTogetherOnePerLine) {
         }
     })";
     const std::string expected =
-        f.line("", R"(unknown field "extra" (known: common, media, name, passes))") + "\n" +
+        f.line("", R"(unknown field "extra" (known: common, defaults, media, name, passes))") + "\n" +
         f.line(R"(passes."Buffer A".source)", (f.dir / "missing_a.glsl").string() + ": file not found") + "\n" +
         f.line(R"(passes."Buffer A".channels.iChannel0)", R"("keyboard" must be true)") + "\n" +
         f.line(kImageCh0, R"(buffer "E" does not exist (known: A, B, C, D))") + "\n" +

@@ -1,4 +1,5 @@
-// The toyhost subcommands: `run` (options parsed into RunOptions), `import` and `inspect`.
+// The toyhost subcommands: `run` (options parsed into RunOptions), `import`, `inspect`, `new` and
+// `media`.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -28,5 +29,7 @@ private:
 
 int importCommand(const std::string& source, const std::string& dir, bool force);
 int inspectCommand(const std::vector<std::string>& files, const std::string& regionText);
+int newCommand(const std::string& dir, const std::string& passes, bool force);
+int mediaCommand(const std::vector<std::string>& folders);
 
 }  // namespace toyhost::cli

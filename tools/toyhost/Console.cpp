@@ -41,7 +41,7 @@ void installStopSignals() {
 int stopSignal() { return stopSignalNumber; }
 
 ConsoleObserver::ConsoleObserver(bool quiet, std::function<void(const RunReport&)> summary)
-    : summary_(std::move(summary)), show_(!quiet && isatty(STDERR_FILENO)) {}
+    : summary_(std::move(summary)), quiet_(quiet), show_(!quiet && isatty(STDERR_FILENO)) {}
 
 void ConsoleObserver::roundFinished(const Result<RunReport>& round) {
     if (shown_) std::cerr << "\r\033[K";
@@ -55,6 +55,7 @@ void ConsoleObserver::roundFinished(const Result<RunReport>& round) {
 }
 
 void ConsoleObserver::notice(const Diagnostic& notice) {
+    if (quiet_ && notice.severity == Severity::Notice) return;
     if (shown_) std::cerr << "\r\033[K";
     shown_ = false;
     printDiagnostic(notice);

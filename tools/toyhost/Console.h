@@ -33,7 +33,8 @@ int stopSignal();
 
 class ConsoleObserver final : public RunObserver {
 public:
-    // `summary` prints a finished round of a --watch run.
+    // `summary` prints a finished round of a --watch run. `quiet`: no progress line and no
+    // notices (warnings and errors still print).
     explicit ConsoleObserver(bool quiet, std::function<void(const RunReport&)> summary = {});
     void notice(const Diagnostic& notice) override;
     bool stopRequested() const override { return stopSignal() != 0; }
@@ -42,6 +43,7 @@ public:
 
 private:
     std::function<void(const RunReport&)> summary_;
+    bool quiet_;
     bool show_;
     bool shown_ = false;
     std::chrono::steady_clock::time_point lastShown_;

@@ -1,4 +1,6 @@
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "Commands.h"
@@ -8,6 +10,9 @@
 #include "image/ImageStats.h"
 #include "image/ImageWriters.h"
 #include "manifest/ManifestWriter.h"
+#include "manifest/Starter.h"
+#include "manifest/StockMedia.h"
+#include "media/MediaResolver.h"
 
 namespace toyhost::cli {
 
@@ -25,6 +30,22 @@ int importCommand(const std::string& source, const std::string& dir, bool force)
     return kExitOk;
 }
 
+namespace {
+bool hasExtension(const std::string& file, const char* extension) {
+    std::string ext = std::filesystem::path(file).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == extension;
+}
+
+// A PNG or JPEG as floats holding its 8-bit levels.
+Result<ImageF32> readLevels(const std::string& file) {
+    Result<Image8> image = readPng(file);
+    if (!image) return image.error();
+    ImageF32 levels{image->width, image->height, std::vector<float>(image->rgba.begin(), image->rgba.end())};
+    return levels;
+}
+}  // namespace
+
 // `toyhost inspect`: one line per channel and file, for checking invariants of buffer dumps.
 int inspectCommand(const std::vector<std::string>& files, const std::string& regionText) {
     Region region;
@@ -37,17 +58,64 @@ int inspectCommand(const std::vector<std::string>& files, const std::string& reg
         region = {static_cast<int>(x), static_cast<int>(y), static_cast<int>(w), static_cast<int>(h)};
     }
     for (const std::string& file : files) {
-        Result<ImageF32> image = readExr(file);
+        // EXR dumps hold the raw floats; a PNG (what the screen shows) is read as 8-bit levels
+        // 0..255, so its statistics are in levels and can never show NaN or Inf.
+        const bool exr = hasExtension(file, ".exr");
+        Result<ImageF32> image = exr ? readExr(file) : readLevels(file);
         if (!image) return fail(image.error());
         Result<std::array<ChannelStats, 4>> stats = channelStats(*image, region);
         if (!stats) return fail(inFile(file, stats.error()));
-        std::printf("%s (%dx%d)\n", file.c_str(), image->width, image->height);
+        std::printf("%s (%dx%d%s)\n", file.c_str(), image->width, image->height,
+                    exr ? "" : ", 8-bit levels 0..255");
         const char* names = "RGBA";
         for (int c = 0; c < 4; ++c) {
             const ChannelStats& s = (*stats)[c];
             std::printf("  %c: sum %.9g mean %.9g min %.9g max %.9g nan %zu inf %zu\n", names[c], s.sum, s.mean, s.min,
                         s.max, s.nan, s.inf);
         }
+    }
+    return kExitOk;
+}
+
+// `toyhost new`: a starter folder that runs as it is.
+int newCommand(const std::string& dir, const std::string& passes, bool force) {
+    Result<StarterLayout> layout = parseStarterLayout(passes);
+    if (!layout) return usage(layout.error().first().message);
+    if (Status written = writeStarter(dir, *layout, force); !written) return fail(written.error());
+    const ManifestDesc desc = starterManifest(dir, *layout);
+    std::string files = desc.commonSource ? "common.glsl, " : "";
+    for (const PassDesc& pass : desc.passes) files += passFileName(pass.id) + ", ";
+    std::cerr << "toyhost: wrote " << dir << "/ (manifest.json, " << files << "README.md)\n"
+              << "toyhost: run it with: toyhost run " << dir << "\n";
+    return kExitOk;
+}
+
+// `toyhost media`: the stock media table, and which real files the media folders hold.
+int mediaCommand(const std::vector<std::string>& folders) {
+    MediaResolver resolver;
+    for (const std::string& folder : folders) resolver.addSearchFolder(folder);
+    auto kindName = [](StockMediaKind kind) {
+        switch (kind) {
+            case StockMediaKind::Noise: return "noise";
+            case StockMediaKind::Photo: return "photo";
+            case StockMediaKind::Other: return "other";
+        }
+        return "other";
+    };
+    std::printf("%-18s %-6s %-10s %-3s %-6s %s\n", "NAME", "KIND", "SIZE", "CH", "FILE", "ID");
+    for (const StockMediaInfo& info : stockMediaTable()) {
+        const std::string size = std::to_string(info.width) + "x" + std::to_string(info.height);
+        const std::optional<std::filesystem::path> file = resolver.findFile(stockMediaPath(info));
+        std::printf("%-18s %-6s %-10s %-3d %-6s %s\n", std::string(info.name).c_str(), kindName(info.kind),
+                    size.c_str(), info.channels, file ? "found" : "-", stockMediaPath(info).c_str());
+    }
+    std::printf("\nBind one by name or id: \"iChannel0\": {\"media\": \"Abstract 3\"}. Without a real file (FILE -) a\n"
+                "deterministic stand-in of the same size and channels is used; give the file with --media DIR,\n"
+                "$TOYHOST_MEDIA or --media-file ID=FILE.\n");
+    if (!folders.empty()) {
+        std::printf("Searched:");
+        for (const std::string& folder : folders) std::printf(" %s", folder.c_str());
+        std::printf("\n");
     }
     return kExitOk;
 }

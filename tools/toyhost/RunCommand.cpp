@@ -49,6 +49,8 @@ void printSummary(const RunReport& report, const char* mode, const RunOptions& o
                      formatBytes(report.bytesWritten).c_str(), report.files.front().c_str(), report.files.back().c_str());
     else if (o.outPattern && *o.outPattern == "-")
         std::fprintf(stderr, "toyhost: wrote %s of raw RGBA8 frames to stdout\n", formatBytes(report.bytesWritten).c_str());
+    else if (!o.outPattern && !o.interactive)
+        std::fprintf(stderr, "toyhost: no files written (no --out; e.g. --out frame_%%04d.png captures the frames)\n");
 }
 
 }  // namespace
@@ -98,7 +100,10 @@ void RunCommand::define(CLI::App& run) {
     run.add_option("--media", mediaFolders_,
                    "Folder with real stock media files, by hash or name (repeatable; also $TOYHOST_MEDIA)");
     run.add_option("--date", date_, "iDate at frame 0, YYYY-MM-DDTHH:MM:SS (default: now, local time)");
-    run.add_flag("--quiet", quiet_, "No progress line");
+    run.add_flag("--check-finite", options_.checkFinite,
+                 "Read every buffer back after every frame and warn at the first NaN/Inf, naming the pass and the "
+                 "frame (without it: buffers are checked after the last frame and in captured EXR frames)");
+    run.add_flag("--quiet", quiet_, "No progress line and no notices (warnings and errors still print)");
 }
 
 int RunCommand::execute() {

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <unistd.h>
@@ -37,9 +38,26 @@ int main(int argc, char** argv) {
 
     std::vector<std::string> inspectFiles;
     std::string regionText;
-    CLI::App* inspect = app.add_subcommand("inspect", "Print per-channel statistics of EXR buffer dumps");
-    inspect->add_option("files", inspectFiles, "EXR files written by --out ... .exr")->required();
+    CLI::App* inspect = app.add_subcommand("inspect", "Print per-channel statistics of EXR buffer dumps (or PNG frames)");
+    inspect->add_option("files", inspectFiles,
+                        "EXR files written by --out ... .exr (raw floats); PNG/JPEG files are read as levels 0..255")
+        ->required();
     inspect->add_option("--region", regionText, "X,Y,W,H in pixels, origin bottom-left (default: whole image)");
+
+    std::string newDir, newPasses = "image";
+    bool newForce = false;
+    CLI::App* create = app.add_subcommand("new", "Write a starter shadertoy folder that runs at once");
+    create->add_option("dir", newDir, "Folder to create (its name becomes the shadertoy's name)")->required();
+    create->add_option("--passes", newPasses,
+                       "image (default: Image only), buffers (Buffer A with feedback, shown by Image), or a comma "
+                       "list of common, a, b, c, d, image");
+    create->add_flag("--force", newForce, "Overwrite files that already exist");
+
+    std::vector<std::string> mediaFolders;
+    CLI::App* media = app.add_subcommand("media", "List the stock media toyhost knows (bind them by name or id)");
+    media->add_option("--media", mediaFolders,
+                      "Folder with real stock media files, by hash or name (repeatable; also $TOYHOST_MEDIA): the "
+                      "list says which are found");
 
     try {
         app.parse(argc, argv);
@@ -56,5 +74,10 @@ int main(int argc, char** argv) {
 
     if (import->parsed()) return importCommand(importSource, importDir, importForce);
     if (inspect->parsed()) return inspectCommand(inspectFiles, regionText);
+    if (create->parsed()) return newCommand(newDir, newPasses, newForce);
+    if (media->parsed()) {
+        if (const char* folder = std::getenv("TOYHOST_MEDIA"); folder && *folder) mediaFolders.emplace_back(folder);
+        return mediaCommand(mediaFolders);
+    }
     return runCommand.execute();
 }
