@@ -1,14 +1,9 @@
 // afl_ext's ocean (MdXyzX), verbatim from ../shared, against checked-in golden frames at
-// 320x180. Tolerance: PSNR >= 40 dB over RGB and mean absolute error <= 1 level (llvmpipe is
-// deterministic on one machine; the margin absorbs LLVM code generation differences between
-// CPUs, such as fused multiply-adds, which move a few wave-crest pixels. A frame 0.05 s off
-// scores about 20 dB). On failure the actual frame and an 8x diff are written to
-// <build>/test-output/golden/. Refresh on purpose with TOYHOST_UPDATE_GOLDENS=1.
+// 320x180, with the tolerance of Golden.h (a frame 0.05 s off scores about 20 dB). On failure the
+// actual frame and an 8x diff are written to <build>/test-output/golden/. Refresh on purpose with
+// TOYHOST_UPDATE_GOLDENS=1.
 #include "GlTestSupport.h"
-#include "ImageCompare.h"
-
-#include "image/ImageWriters.h"
-#include "image/ImageFile.h"
+#include "Golden.h"
 
 namespace toyhost::testing {
 namespace {
@@ -32,27 +27,7 @@ TEST_P(OceanGolden, MatchesCheckedInFrame) {
                           "' --size 320x180 --frames 1 --start-time " + c.startTime + " --quiet --out '" +
                           actualPath.string() + "'");
     ASSERT_EQ(run.exitCode, 0) << run.output;
-    const fs::path golden = sourceDir() / "tests/golden" / (std::string(c.name) + ".png");
-    if (const char* update = std::getenv("TOYHOST_UPDATE_GOLDENS"); update && std::string(update) == "1") {
-        fs::copy_file(actualPath, golden, fs::copy_options::overwrite_existing);
-        GTEST_SKIP() << "golden refreshed: " << golden;
-    }
-    auto expected = loadImageFile(golden);
-    ASSERT_TRUE(expected.ok()) << expected.error().text() << " (refresh with TOYHOST_UPDATE_GOLDENS=1)";
-    auto actual = loadImageFile(actualPath);
-    ASSERT_TRUE(actual.ok()) << actual.error().text();
-    ASSERT_TRUE(sameSize(*expected, *actual));
-
-    const double psnr = psnrRgb(*expected, *actual);
-    const double mae = meanAbsError(*expected, *actual);
-    std::printf("%s: PSNR %.2f dB, mean abs error %.4f, max %d\n", c.name, psnr, mae, maxAbsError(*expected, *actual));
-    if (psnr < 40.0 || mae > 1.0) {
-        Image8 diff = makeDiffImage(*expected, *actual, 8);
-        (void)writePng(dir / (std::string(c.name) + ".diff.png"), diff.width, diff.height, diff.rgba);
-        fs::copy_file(golden, dir / (std::string(c.name) + ".expected.png"), fs::copy_options::overwrite_existing);
-        ADD_FAILURE() << c.name << ": PSNR " << psnr << " dB (need >= 40), mean abs error " << mae
-                      << " (need <= 1); actual, expected and diff are in " << dir;
-    }
+    expectMatchesGolden(sourceDir(), std::string(c.name) + ".png", actualPath);
 }
 
 INSTANTIATE_TEST_SUITE_P(Frames, OceanGolden,

@@ -1,0 +1,378 @@
+// coastal-foam — ridge-noise waves running onto a rocky shore, with foam where the water
+// meets the rock and on the breaking crests. #define LAKE for a calm FBM lake instead.
+//
+// Technique and parameters (the why):
+//   * Two height fields, both ray-marched: the rock h_r (a shore ramp from -5 m out at sea to
+//     +2.5 m inland, plus ridged FBM relief (1 - |2n - 1|)^2 for sharp crests and gullies, plus
+//     boulders in the surf zone) and the water h_w. The nearer hit wins.
+//   * Sea: a swell of wavelength ~9 m (k = 0.7 rad/m, deep-water w = sqrt(g k) = 2.6 rad/s)
+//     shaped as a ridge, s = 1 - |sin(theta/2)|: the cusp gives the sharp crest and broad trough
+//     of real waves; the crest lines are bent by low-frequency noise. Three octaves of ridge
+//     noise (1 - |2 n - 1|) add chop. The swell grows as the water shoals (amplitude x2.2 toward
+//     the shore) and dies where it breaks on the rock.
+//   * Foam: (1) contact foam where the water thickness h_w - h_r is near zero, i.e. where the
+//     surface meets the rock, widened when a crest arrives (wash); (2) crest foam where the
+//     ridge s is near 1 inside the surf zone, with a decaying trail behind each crest. Both are
+//     broken up by an advected bubbly noise so the foam has holes and streaks.
+//   * Water colour: vertical water thickness over the rock gives a Beer-law mix from the
+//     rock's colour (submerged ledges) to deep sea green-blue; thin crests get a back-lit
+//     sub-surface tint; sky reflection by Schlick Fresnel (F0 = 0.02) plus a sun glitter lobe.
+//   * LAKE: the water becomes 4 octaves of slow value-noise FBM (amplitude 4 cm), darker and
+//     greener, with only a thin contact line of foam and no breaking crests.
+//   iMouse: drag horizontally to turn the camera.
+
+// #define LAKE
+
+const vec3 SUN_DIR = vec3(-0.86, 0.50, 0.10);     // afternoon sun over the sea, ahead-left, out of frame
+const vec3 SUN_COL = vec3(1.45, 1.25, 1.00);
+const float WMAX = 1.2;                           // water surface bounds, m
+const float WMIN = -0.8;
+const float RMAX = 4.5;                           // rock never higher than this, m
+
+// ----------------------------------------------------------------------------- noise --
+float hash21(vec2 p) {
+    uvec2 u = uvec2(ivec2(floor(p)) + 32768);
+    uint h = (u.x * 0x45d9f3bu) ^ (u.y * 0x119de1f3u + 0x632be5abu);
+    h ^= h >> 16; h *= 0x7feb352du; h ^= h >> 15; h *= 0x846ca68bu; h ^= h >> 16;
+    return float(h) * (1.0 / 4294967296.0);
+}
+
+float vnoise(vec2 p) {                              // 0 .. 1
+    vec2 i = floor(p), f = p - i;
+    vec2 u = f * f * (3.0 - 2.0 * f);
+    return mix(mix(hash21(i), hash21(i + vec2(1, 0)), u.x),
+               mix(hash21(i + vec2(0, 1)), hash21(i + vec2(1, 1)), u.x), u.y);
+}
+
+const mat2 ROT = mat2(1.6, 1.2, -1.2, 1.6);        // rotate + scale x2 between octaves
+
+float ridgedFbm(vec2 p, int oct) {                  // 0 .. 1, sharp ridges
+    float s = 0.0, a = 0.5, w = 0.0;
+    for (int i = 0; i < 6; i++) {
+        if (i >= oct) break;
+        float r = 1.0 - abs(2.0 * vnoise(p) - 1.0);
+        s += a * r * r;
+        w += a;
+        p = ROT * p + 3.7;
+        a *= 0.5;
+    }
+    return s / w;
+}
+
+float fbm(vec2 p, int oct) {                        // 0 .. 1
+    float s = 0.0, a = 0.5, w = 0.0;
+    for (int i = 0; i < 6; i++) {
+        if (i >= oct) break;
+        s += a * vnoise(p);
+        w += a;
+        p = ROT * p + 1.3;
+        a *= 0.5;
+    }
+    return s / w;
+}
+
+// ------------------------------------------------------------------------------ rock --
+float shoreX(float z) { return 5.0 + 2.5 * sin(z * 0.12 + 1.0) + 1.2 * sin(z * 0.31 + 0.4); }
+
+// signed distance across the shore (m): < 0 at sea, > 0 on land (cheap, analytic)
+float shoreS(vec2 p) { return p.x - shoreX(p.y); }
+
+float boulderMask(vec2 p, float s) {
+    float b = vnoise(p * 0.28 + vec2(5.2, 1.7));
+    float m = smoothstep(0.56, 0.86, b);
+    return m * smoothstep(-16.0, -7.0, s) * (1.0 - smoothstep(-3.0, 1.0, s));
+}
+
+float rockH(vec2 p, int oct) {
+    float s = shoreS(p);
+    float base = -5.0 + 6.8 * smoothstep(-14.0, 9.0, s);
+    float land = smoothstep(-7.0, 1.0, s);
+    float bm = boulderMask(p, s);
+    float broad = (fbm(p * 0.09, 2) - 0.5) * 2.6 * land;            // big rock masses
+    float relief = (ridgedFbm(p * 0.30, oct) - 0.45) * 1.5 * max(land, bm);
+    float h = base + broad + relief + 2.4 * sqrt(bm);
+    // sedimentary ledges: pull the height toward 0.45 m steps (continuous terrace)
+    float k = h / 0.45;
+    float terr = (floor(k) + smoothstep(0.55, 0.95, fract(k))) * 0.45;
+    return mix(h, terr, 0.55 * max(land, bm));
+}
+
+vec3 rockNormal(vec2 p) {
+    const float e = 0.03;
+    float h = rockH(p, 6);
+    return normalize(vec3(h - rockH(p + vec2(e, 0.0), 6), e, h - rockH(p + vec2(0.0, e), 6)));
+}
+
+// ----------------------------------------------------------------------------- water --
+#ifdef LAKE
+float waterH(vec2 p, float t, int oct) {
+    // calm lake: slow drifting value-noise FBM, 4 cm amplitude
+    return 0.08 * (fbm(p * 0.45 + vec2(0.05, 0.03) * t, oct) - 0.5)
+         + 0.02 * (vnoise(p * 2.1 - vec2(0.2, 0.1) * t) - 0.5);
+}
+float swellRidge(vec2 p, float t) { return 0.0; }
+#else
+float swellTheta(vec2 p, float t) {
+    // crest lines roughly along z, bent by low-frequency noise; travelling toward +x (shore)
+    float warp = 2.5 * sin(0.09 * p.y) + 5.0 * vnoise(p * vec2(0.02, 0.05));
+    return 0.70 * (p.x + warp) - 2.62 * t;
+}
+float swellRidge(vec2 p, float t) {                // 1 on a crest, 0 in the trough
+    return 1.0 - abs(sin(0.5 * swellTheta(p, t)));
+}
+float waterH(vec2 p, float t, int oct) {
+    float s = shoreS(p);
+    float shoal = 1.0 + 1.2 * smoothstep(-22.0, -5.0, s);          // waves grow in shallows
+    float die = 1.0 - 0.75 * smoothstep(-3.0, 1.5, s);             // ... and collapse at the rock
+    float A = 0.24 * shoal * die * (0.6 + 0.8 * vnoise(vec2(p.y * 0.07, 0.5)));
+    float r = swellRidge(p, t);
+    float h = A * (r * r * r - 0.25);
+    // ridge-noise chop, advected in the wave direction
+    float amp = 0.10;
+    vec2 q = p * 0.6;
+    for (int i = 0; i < 3; i++) {
+        if (i >= oct) break;
+        float n = 1.0 - abs(2.0 * vnoise(q + vec2(1.2, 0.3) * t * (1.0 + 0.5 * float(i))) - 1.0);
+        h += amp * (n * n - 0.45);
+        q = ROT * q + 2.1;
+        amp *= 0.45;
+    }
+    return h;
+}
+#endif
+
+vec3 waterNormal(vec2 p, float t, float e) {
+    float h = waterH(p, t, 3);
+    return normalize(vec3(h - waterH(p + vec2(e, 0.0), t, 3), e, h - waterH(p + vec2(0.0, e), t, 3)));
+}
+
+// ----------------------------------------------------------------------------- march --
+// rock: from t0 to t1 (both along the ray), returns t or -1
+float marchRock(vec3 ro, vec3 rd, float t0, float t1) {
+    float t = t0, tp = t0;
+    for (int i = 0; i < 80; i++) {
+        if (t > t1) break;
+        vec3 p = ro + rd * t;
+        float d = p.y - rockH(p.xz, 4);
+        if (d < 0.0) {
+            float a = tp, b = t;
+            for (int j = 0; j < 5; j++) {
+                float m = 0.5 * (a + b);
+                vec3 q = ro + rd * m;
+                if (q.y - rockH(q.xz, 4) < 0.0) b = m; else a = m;
+            }
+            return 0.5 * (a + b);
+        }
+        tp = t;
+        t += max(0.02 + 0.004 * t, 0.45 * d);
+    }
+    return -1.0;
+}
+
+float marchWater(vec3 ro, vec3 rd, float t0, float t1, float time) {
+    float t = t0, tp = t0;
+    for (int i = 0; i < 48; i++) {
+        if (t > t1) break;
+        vec3 p = ro + rd * t;
+        float d = p.y - waterH(p.xz, time, 2);
+        if (d < 0.0) {
+            float a = tp, b = t;
+            for (int j = 0; j < 4; j++) {
+                float m = 0.5 * (a + b);
+                vec3 q = ro + rd * m;
+                if (q.y - waterH(q.xz, time, 2) < 0.0) b = m; else a = m;
+            }
+            return 0.5 * (a + b);
+        }
+        tp = t;
+        t += max(0.03 + 0.005 * t, 0.6 * d / max(-rd.y, 0.05));
+    }
+    return t1;   // near the horizon: take the lower bound plane
+}
+
+// ------------------------------------------------------------------------------- sky --
+vec3 sky(vec3 rd) {
+    vec3 L = normalize(SUN_DIR);
+    float y = max(rd.y, 0.0);
+    vec3 c = mix(vec3(0.78, 0.80, 0.82), vec3(0.22, 0.42, 0.74), pow(y, 0.45));
+    float sd = max(dot(rd, L), 0.0);
+    c += vec3(1.0, 0.75, 0.45) * (0.35 * pow(sd, 6.0) + 0.25 * pow(sd, 48.0));
+    c += vec3(1.0, 0.9, 0.7) * 25.0 * pow(sd, 1800.0);
+    // thin clouds on a plane 1 km up
+    if (rd.y > 0.01) {
+        vec2 cp = rd.xz / rd.y * 0.9 + vec2(0.0, 0.02) * iTime;
+        float cl = smoothstep(0.50, 0.85, fbm(cp, 5)) * smoothstep(0.01, 0.12, rd.y);
+        c = mix(c, vec3(1.0, 0.96, 0.92) * (0.85 + 0.4 * pow(sd, 4.0)), 0.75 * cl);
+    }
+    return c;
+}
+
+// ----------------------------------------------------------------------------- shade --
+vec3 rockAlbedo(vec2 p, float h, vec3 n) {
+    vec2 q = p + vec2(h, -h) * 0.8;                              // h term: less streaking on cliffs
+    float v = fbm(q * 1.7, 3);
+    vec3 c = mix(vec3(0.17, 0.15, 0.14), vec3(0.46, 0.41, 0.35), v);
+    c *= 0.7 + 0.3 * ridgedFbm(q * 6.0, 2);                       // cracks and grain
+    c = mix(c, vec3(0.62, 0.52, 0.30), 0.45 * smoothstep(0.68, 0.8, vnoise(q * 3.1)) * smoothstep(1.0, 2.0, h)); // lichen
+    c = mix(c, vec3(0.52, 0.48, 0.40), smoothstep(0.75, 0.95, n.y) * smoothstep(1.2, 2.5, h) * 0.6);
+    // wet dark band and green algae just above the water line
+    c *= mix(0.45, 1.0, smoothstep(0.1, 1.1, h));
+    c = mix(c, vec3(0.10, 0.14, 0.06), smoothstep(0.6, 0.0, h) * smoothstep(-0.6, 0.0, h) * 0.6);
+    return c;
+}
+
+vec3 shadeRock(vec3 p, vec3 rd) {
+    vec3 n = rockNormal(p.xz);
+    vec3 L = normalize(SUN_DIR);
+    vec3 alb = rockAlbedo(p.xz, p.y, n);
+    float dif = max(dot(n, L), 0.0);
+    // cheap crevice occlusion: the fine ridged detail is low in gullies
+    float ao = 0.45 + 0.55 * ridgedFbm(p.xz * 0.88, 2);
+    vec3 amb = vec3(0.32, 0.40, 0.52) * (0.55 + 0.45 * n.y) * ao;
+    return alb * (SUN_COL * dif * (0.6 + 0.4 * ao) + amb);
+}
+
+// distance to the nearest jittered feature point, and that point's random value
+vec2 cellNear(vec2 p) {
+    vec2 i = floor(p), f = p - i;
+    float d1 = 9.0, id = 0.0;
+    for (int y = -1; y <= 1; y++)
+    for (int x = -1; x <= 1; x++) {
+        vec2 c = vec2(x, y);
+        vec2 o = vec2(hash21(i + c), hash21(i + c + 71.3));
+        float d = length(c + o - f);
+        if (d < d1) { d1 = d; id = hash21(i + c + 13.7); }
+    }
+    return vec2(d1, id);
+}
+
+// foam texture 0..1, advected with the water: a soft FBM body punched with round holes of
+// random size (the bursting bubbles that give sea foam its lace)
+float foamTex(vec2 p, float t) {
+    vec2 q = p * 1.4 + vec2(0.6 * t, 0.1 * t);
+    float body = fbm(q, 3);
+    vec2 w = q * 3.2 + 0.8 * vec2(vnoise(q * 1.3), vnoise(q * 1.3 + 9.1));
+    vec2 c1 = cellNear(w);
+    vec2 c2 = cellNear(w * 2.3 + 5.0);
+    float holes = smoothstep(0.15 + 0.45 * c1.y, 0.3 + 0.5 * c1.y, c1.x)
+                * smoothstep(0.1 + 0.35 * c2.y, 0.25 + 0.4 * c2.y, c2.x);
+    return body * (0.55 + 0.45 * holes) + 0.1;
+}
+
+// foam coverage for a foam density 0..1: dense foam is solid, thin foam breaks into lace
+float foamCover(float density, float tex) {
+    float thr = 1.0 - density;
+    return smoothstep(thr - 0.12, thr + 0.12, tex) * smoothstep(0.0, 0.15, density);
+}
+
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    float t = iTime;
+    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
+
+    float yaw = 0.0;
+    if (iMouse.z > 0.0) yaw = (iMouse.x / iResolution.x - 0.5) * 1.5;
+    // standing on the rocks, looking out to sea along the coast
+    vec3 ro = vec3(7.0, 4.2, -7.5);
+    vec3 fw0 = vec3(-14.0, -3.6, 13.0);
+    fw0.xz = mat2(cos(yaw), sin(yaw), -sin(yaw), cos(yaw)) * fw0.xz;
+    vec3 fw = normalize(fw0);
+    vec3 rt = normalize(cross(vec3(0.0, 1.0, 0.0), fw));
+    vec3 up = cross(fw, rt);
+    vec3 rd = normalize(uv.x * rt + uv.y * up + 1.6 * fw);
+
+    vec3 L = normalize(SUN_DIR);
+    vec3 col;
+    const float FAR = 400.0;
+
+    // water: only between the planes y = WMAX and y = WMIN
+    float tw = FAR;
+    if (rd.y < 0.0) {
+        float tw0 = max((ro.y - WMAX) / -rd.y, 0.0);
+        float tw1 = min((ro.y - WMIN) / -rd.y, FAR);
+        if (tw0 < FAR) tw = marchWater(ro, rd, tw0, tw1, t);
+    }
+    // rock: from where the ray drops below RMAX to the water hit
+    float tr = -1.0;
+    {
+        float tr0 = rd.y < 0.0 ? max((ro.y - RMAX) / -rd.y, 0.0) : 0.0;
+        if (ro.y < RMAX || rd.y < 0.0) tr = marchRock(ro, rd, tr0, min(tw, 120.0));
+    }
+
+    if (tr > 0.0) {
+        vec3 p = ro + rd * tr;
+        col = shadeRock(p, rd);
+        // wet sheen / thin wash film where the rock is just above the water
+        float hw = waterH(p.xz, t, 3);
+        float film = smoothstep(0.25, 0.0, p.y - hw);
+        col = mix(col, col * 0.7 + 0.08, 0.5 * film);
+        col = mix(col, sky(vec3(rd.x, 0.02, rd.z)), 1.0 - exp(-0.00002 * tr * tr));
+    } else if (tw < FAR && rd.y < 0.0) {
+        vec3 p = ro + rd * tw;
+        float e = 0.02 + 0.002 * tw;
+        vec3 n = waterNormal(p.xz, t, e);
+        float fade = exp(-0.012 * tw);                   // far away the sea goes flat
+        n = normalize(mix(vec3(0.0, 1.0, 0.0), n, 0.35 + 0.65 * fade));
+
+        float hr = rockH(p.xz, 3);
+        float depth = max(p.y - hr, 0.0);                // water thickness over the rock
+
+        // water body: Beer-law mix from the submerged rock to the deep colour
+#ifdef LAKE
+        const vec3 KW = vec3(0.55, 0.35, 0.45);
+        vec3 deepCol = vec3(0.015, 0.035, 0.035);
+#else
+        const vec3 KW = vec3(0.45, 0.12, 0.10);
+        vec3 deepCol = vec3(0.012, 0.06, 0.08);
+#endif
+        vec3 bed = rockAlbedo(p.xz, hr, vec3(0.0, 1.0, 0.0)) * (SUN_COL * L.y + 0.3);
+        vec3 trans = exp(-KW * depth * 2.2);
+        vec3 body = mix(deepCol, bed, trans);
+#ifndef LAKE
+        // light through thin, back-lit crests
+        float crest = swellRidge(p.xz, t);
+        float sss = pow(max(dot(rd, L), 0.0), 2.0) * crest * crest * crest * smoothstep(-24.0, -6.0, shoreS(p.xz));
+        body += vec3(0.05, 0.22, 0.20) * sss * fade;
+#endif
+        float cosi = clamp(dot(-rd, n), 0.0, 1.0);
+        float F = 0.02 + 0.98 * pow(1.0 - cosi, 5.0);
+        vec3 rf = reflect(rd, n);
+        rf.y = abs(rf.y);
+        col = mix(body, sky(rf), F);
+        col += SUN_COL * 1.8 * pow(max(dot(rf, L), 0.0), 220.0);
+
+        // ----- foam
+        float s = shoreS(p.xz);
+        float ft = foamTex(p.xz, t);
+#ifdef LAKE
+        float foam = foamCover(0.8 * smoothstep(0.08, 0.0, depth), ft);
+#else
+        float r = swellRidge(p.xz, t);
+        // (1) contact foam where the water thickness over the rock goes to zero; a passing
+        //     crest throws it further out (wash)
+        float reach = 0.5 + 1.1 * r * r;
+        float contact = smoothstep(reach, 0.0, depth) + 0.6 * smoothstep(2.6, 0.3, depth);
+        // (2) crest foam inside the surf zone, with a fading trail behind each crest
+        float theta = swellTheta(p.xz, t);
+        float behind = fract(-theta / 6.28318530718);           // 0 at the crest, grows behind it
+        float surf = smoothstep(-18.0, -7.0, s);
+        float ahead = 1.0 - behind;                              // 0 at the crest, grows ahead
+        float crestF = surf * (smoothstep(0.78, 0.97, r)
+                     + 0.8 * exp(-5.0 * behind) * smoothstep(-15.0, -6.0, s)     // trail
+                     + 0.7 * exp(-14.0 * ahead) * smoothstep(-11.0, -4.0, s));   // spilling face
+        crestF *= 0.3 + 0.7 * smoothstep(0.3, 0.8, vnoise(p.xz * vec2(0.35, 0.12) + 3.0));  // breaks in patches
+        float foam = foamCover(clamp(contact + crestF, 0.0, 1.0), ft);
+#endif
+        foam *= fade;
+        // thick foam is brighter; thin foam lets a little of the water through
+        vec3 foamCol = vec3(0.92, 0.95, 0.96) * (SUN_COL * (0.35 + 0.65 * max(dot(n, L), 0.0)) * 0.75 + vec3(0.30, 0.36, 0.44));
+        foamCol *= 0.82 + 0.25 * ft;
+        col = mix(col, foamCol, foam);
+        col = mix(col, sky(vec3(rd.x, 0.02, rd.z)), 1.0 - exp(-0.00002 * tw * tw));
+    } else {
+        col = sky(rd);
+    }
+
+    col = 1.0 - exp(-1.1 * col);            // gentle tone map
+    col = pow(col, vec3(1.0 / 2.2));
+    fragColor = vec4(col, 1.0);
+}

@@ -1,0 +1,168 @@
+// exp-sine-ocean: a sunlit ocean of sharp-crested waves (toyhost, original work, MIT licence).
+//
+// Technique
+// - Each wave is exp(sin(x) - 1): in (e^-2, 1], with narrow peaked crests and wide flat troughs,
+//   like real deep-water waves. The surface sums many of them, each turned by the golden angle
+//   (2.39996 rad) so no two directions line up, with frequency x1.18, speed x1.07 and weight x0.8
+//   per wave.
+// - Drag (domain warping): after each wave the sample point moves along that wave's direction by
+//   its slope d/dx exp(sin x - 1) = exp(sin x - 1) cos x, times the wave's weight and DRAG (0.38).
+//   Later, smaller waves are thereby pulled into the crests of earlier ones, which bunches
+//   ripples on the crests and leaves the troughs smooth.
+// - The normalised sum lies in (0, 1]; the surface is 0 .. -DEPTH below y = 0, so the ray is only
+//   marched between the planes y = 0 and y = -DEPTH, stepping by the vertical gap (stretched for
+//   shallow rays), with a final linear refinement. The march uses 12 waves, the normal 32 (extra detail only in shading),
+//   and the normal fades toward straight up with distance to keep the horizon from aliasing.
+// - Shading: Schlick's Fresnel with F0 = 0.04 mixes a sky reflection (which carries a bright HDR
+//   sun, hence the glitter path) with a subsurface tint, stronger in the troughs than on the
+//   crests; ACES filmic curve (Stephen Hill's fitted RRT+ODT), then gamma 2.2.
+// - Camera: fixed above the water; before any click it looks at the horizon. Click or drag: look
+//   where the mouse is (x = heading, full turn across the width; y = pitch, centre = default).
+
+const float DEPTH        = 1.0;    // wave range: the surface stays within [-DEPTH, 0]
+const float DRAG         = 0.38;
+const int   MARCH_WAVES  = 12;
+const int   NORMAL_WAVES = 32;
+const int   MARCH_STEPS  = 48;
+const float CAMERA_Y     = 1.2;    // above the top plane
+
+const vec3  SUN_DIR      = vec3(0.25, 0.1, 1.0);           // normalised where used
+const vec3  TROUGH_TINT  = vec3(0.015, 0.07, 0.10);        // subsurface colour in the troughs
+const float CREST_TINT   = 0.35;                           // ... scaled this much on crests
+
+// 2x2 rotation by the golden angle, applied to the wave direction after every wave
+const mat2 GOLDEN_TURN = mat2(-0.737369, 0.675490, -0.675490, -0.737369);
+
+// Normalised wave sum at xz in [0, 1] (1 = highest crest), using n waves.
+float waveSum(vec2 xz, int n) {
+    vec2 dir = vec2(1.0, 0.0);
+    float freq = 1.0;
+    float speed = 2.0;
+    float weight = 1.0;
+    float sum = 0.0;
+    float total = 0.0;
+    float t = iTime;
+    for (int i = 0; i < n; i++) {
+        float x = dot(dir, xz) * freq + t * speed;
+        float w = exp(sin(x) - 1.0);
+        float slope = w * cos(x);
+        xz += dir * slope * weight * DRAG;        // drag: pull later waves toward this crest
+        sum += w * weight;
+        total += weight;
+        weight *= 0.8;
+        freq *= 1.18;
+        speed *= 1.07;
+        dir = GOLDEN_TURN * dir;
+    }
+    return sum / total;
+}
+
+float surfaceY(vec2 xz, int n) { return (waveSum(xz, n) - 1.0) * DEPTH; }
+
+// March between the planes y = 0 and y = -DEPTH. Steps are the vertical gap (a little
+// lengthened for shallow rays, which otherwise crawl), capped at MARCH_STEPS; the final
+// answer interpolates linearly between the last sample above and the first one below.
+float marchWater(vec3 ro, vec3 rd) {
+    float tTop = (ro.y) / -rd.y;
+    float tBot = (ro.y + DEPTH) / -rd.y;
+    float t = tTop;
+    float gapPrev = ro.y + rd.y * t - surfaceY((ro + rd * t).xz, MARCH_WAVES);
+    float tPrev = t;
+    float stretch = 1.0 / (0.6 + abs(rd.y));
+    for (int i = 0; i < MARCH_STEPS; i++) {
+        t = min(t + max(gapPrev * stretch, 0.001 * t), tBot);
+        vec3 p = ro + rd * t;
+        float gap = p.y - surfaceY(p.xz, MARCH_WAVES);
+        if (gap < 0.001 || t >= tBot) {
+            // the surface lies between tPrev and t: take the linear root
+            return mix(tPrev, t, gapPrev / max(gapPrev - gap, 1e-5));
+        }
+        tPrev = t;
+        gapPrev = gap;
+    }
+    return t;
+}
+
+vec3 waterNormal(vec2 xz, float dist) {
+    float e = max(0.01, dist * 0.002);              // wider stencil far away: a cheap filter
+    float h = surfaceY(xz, NORMAL_WAVES);
+    float hx = surfaceY(xz + vec2(e, 0.0), NORMAL_WAVES);
+    float hz = surfaceY(xz + vec2(0.0, e), NORMAL_WAVES);
+    vec3 n = normalize(vec3(h - hx, e, h - hz));
+    // far away a pixel covers many ripples: flatten toward the average normal (up)
+    return normalize(mix(n, vec3(0.0, 1.0, 0.0), 0.8 * smoothstep(0.0, 1.0, sqrt(dist * 0.01))));
+}
+
+vec3 sky(vec3 rd) {
+    vec3 sun = normalize(SUN_DIR);
+    float y = max(rd.y, 0.0);
+    vec3 col = mix(vec3(0.40, 0.56, 0.74), vec3(0.03, 0.12, 0.42), pow(y, 0.4));
+    float mu = max(dot(rd, sun), 0.0);
+    col += vec3(1.0, 0.62, 0.28) * (0.18 * pow(mu, 16.0) + 0.8 * pow(mu, 300.0));
+    col += vec3(1.0, 0.80, 0.55) * 40.0 * smoothstep(0.99988, 0.99993, mu);   // HDR disc
+    return col;
+}
+
+// ACES filmic tone curve, Stephen Hill's fit of the RRT + ODT (sRGB primaries in and out)
+vec3 acesFitted(vec3 c) {
+    const mat3 toAces = mat3(0.59719, 0.07600, 0.02840,
+                             0.35458, 0.90834, 0.13383,
+                             0.04823, 0.01566, 0.83777);
+    const mat3 fromAces = mat3( 1.60475, -0.10208, -0.00327,
+                               -0.53108,  1.10813, -0.07276,
+                               -0.07367, -0.00605,  1.07602);
+    c = toAces * c;
+    vec3 a = c * (c + 0.0245786) - 0.000090537;
+    vec3 b = c * (0.983729 * c + 0.4329510) + 0.238081;
+    return clamp(fromAces * (a / b), 0.0, 1.0);
+}
+
+mat3 viewBasis(float yaw, float pitch) {
+    vec3 f = vec3(sin(yaw) * cos(pitch), sin(pitch), cos(yaw) * cos(pitch));
+    vec3 r = normalize(cross(vec3(0.0, 1.0, 0.0), f));
+    return mat3(r, cross(f, r), f);
+}
+
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
+
+    // Before the first click iMouse is all zeros: default horizon view, which is also what the
+    // mouse at the centre of the canvas gives.
+    vec2 m = vec2(0.5);
+    if (iMouse.z > 0.0 || any(notEqual(iMouse, vec4(0.0)))) m = iMouse.xy / iResolution.xy;
+    float yaw = (m.x - 0.5) * 6.2831853;
+    float pitch = clamp((m.y - 0.5) * 2.6 - 0.1, -1.4, 1.4);
+
+    vec3 ro = vec3(0.0, CAMERA_Y, 0.0);
+    vec3 rd = normalize(viewBasis(yaw, pitch) * vec3(uv, 1.6));
+
+    vec3 col;
+    if (rd.y >= 0.0) {
+        col = sky(rd);
+    } else {
+        float dist = marchWater(ro, rd);
+        vec3 p = ro + rd * dist;
+        vec3 n = waterNormal(p.xz, dist);
+
+        float cosV = max(dot(n, -rd), 0.0);
+        float F = 0.04 + 0.96 * pow(1.0 - cosV, 5.0);     // Schlick, water F0 = 0.04
+
+        vec3 r = reflect(rd, n);
+        r.y = abs(r.y);                                   // no reflections from below the horizon
+        vec3 refl = sky(r);
+        // the sun's glitter: a lobe wider than the tiny disc, so wave facets catch it
+        float glint = pow(max(dot(r, normalize(SUN_DIR)), 0.0), 900.0);
+        refl += vec3(1.0, 0.75, 0.45) * 30.0 * glint;
+
+        // subsurface: light scattered back out of the water, deepest in the troughs
+        float crest = clamp((p.y + DEPTH) / DEPTH, 0.0, 1.0);
+        vec3 sss = TROUGH_TINT * mix(1.0, CREST_TINT, crest);
+
+        col = F * refl + (1.0 - F) * sss;
+        // faraway water fades into the horizon haze
+        col = mix(col, sky(normalize(vec3(rd.x, 0.0, rd.z))), 1.0 - exp(-dist * 0.002));
+    }
+
+    col = acesFitted(col * 1.1);
+    fragColor = vec4(pow(col, vec3(1.0 / 2.2)), 1.0);
+}

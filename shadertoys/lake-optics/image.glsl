@@ -1,0 +1,283 @@
+// lake-optics — Image pass: a sandy shore sloping into deep water, seen from above at an angle.
+//
+// Technique (the water model is the point of this shader):
+//   * The view ray hits the water plane y = 0 at P, is refracted (Snell, n = 1.33) at the
+//     animated surface normal and marched through the water to the bottom B.
+//       d_acc = |B - P|   the path length of the view ray inside the water
+//       d     = -h(B)     the water depth above the bottom point (the sun's path down to it)
+//   * Bottom radiance L_b = albedo * (sun * caustics + ambient) * exp(-K (d + d_acc)):
+//     K is an RGB extinction coefficient (1/m), applied to the light going down to the bottom
+//     and to the light coming back up along the view ray.
+//   * In-scattering: water = mix(C_s, L_b, exp(-b d_acc)); the longer the path, the more the
+//     colour tends to the scatter colour C_s (b = scattering coefficient, 1/m).
+//   * Sky reflection by Schlick's Fresnel, F = F0 + (1 - F0)(1 - cos)^5, F0 = 0.02 for water:
+//     colour = mix(water, sky(reflect), F).
+//   Presets (keys 1-3, kept in Buffer A texel (0,0).x = 0, 1, 2):
+//     1 tropical ocean   K = (0.46, 0.09, 0.06)  b = 0.11  C_s = (0.05, 0.05, 0.10)
+//       pure water absorbs red most and blue least; few particles -> clear, blue.
+//     2 muddy river      K = (1.05, 1.20, 1.55)  b = 0.90  C_s = (0.24, 0.17, 0.08)
+//       suspended silt attenuates all colours strongly (grey-ish) with a bit more loss in blue;
+//       the same silt back-scatters a lot, so the water turns opaque light brown within ~2 m.
+//     3 tannin lake      K = (0.45, 0.80, 2.20)  b = 0.04  C_s = (0.055, 0.026, 0.007)
+//       dissolved organic matter (humic acids / tannins) absorbs blue very strongly and red
+//       weakly, but there are few particles: clear, dark amber "tea" water, black when deep.
+//   Colours are linear; gamma 2.2 at the end. iMouse x (while dragged) turns the camera.
+
+const vec3 SUN_DIR = vec3(-0.38, 0.70, -0.60);   // behind-left of the camera: no glint in view
+const vec3 SUN_COL = vec3(1.25, 1.15, 1.00);
+const float WATER_IOR = 1.33;
+
+// ---------------------------------------------------------------- noise (hash-based, own) --
+float hash2i(ivec2 c) {
+    uint h = uint(c.x) * 0x8da6b343u ^ uint(c.y) * 0xd8163841u;
+    h ^= h >> 15;
+    h *= 0x2c1b3c6du;
+    h ^= h >> 12;
+    h *= 0x297a2d39u;
+    h ^= h >> 15;
+    return float(h) * (1.0 / 4294967296.0);
+}
+
+float vnoise(vec2 p) {
+    vec2 i = floor(p);
+    vec2 f = p - i;
+    vec2 u = f * f * (3.0 - 2.0 * f);
+    ivec2 c = ivec2(i);
+    float a = hash2i(c);
+    float b = hash2i(c + ivec2(1, 0));
+    float d = hash2i(c + ivec2(0, 1));
+    float e = hash2i(c + ivec2(1, 1));
+    return mix(mix(a, b, u.x), mix(d, e, u.x), u.y);
+}
+
+float fbm3(vec2 p) {
+    float s = 0.0, a = 0.5;
+    for (int i = 0; i < 3; i++) {
+        s += a * vnoise(p);
+        p = mat2(1.6, 1.2, -1.2, 1.6) * p + 7.3;
+        a *= 0.5;
+    }
+    return s / 0.875;
+}
+
+// ---------------------------------------------------------------------------- terrain --
+// "Offshore distance" s: < 0 is the beach, the sand shelf runs to s ~ 13, then a drop-off.
+float offshore(vec2 xz) {
+    return xz.x + 0.35 * xz.y + 1.8 * sin(0.11 * xz.y + 0.6) + 3.0 * (vnoise(xz * 0.07) - 0.5);
+}
+
+// depth (m, positive below the water line) as a function of s
+float depthProfile(float s) {
+    if (s < 0.0) return max(s * 0.10, -2.0);                    // beach rising inland
+    return 2.1 * (1.0 - exp(-s / 4.5)) + 27.0 * smoothstep(12.5, 22.0, s);
+}
+
+// coral / rock patches on the shelf (0..1)
+float patchMask(vec2 xz, float s) {
+    float n = fbm3(xz * 0.28 + 3.1);
+    return smoothstep(0.56, 0.70, n) * smoothstep(5.0, 7.5, s) * (1.0 - smoothstep(14.0, 19.0, s));
+}
+
+float terrainH(vec2 xz) {
+    float s = offshore(xz);
+    float h = -depthProfile(s);
+    // sand ripples, strongest in the shallows
+    float rip = sin(dot(xz, vec2(2.6, 1.1)) + 2.0 * vnoise(xz * 0.6));
+    h += 0.035 * rip * smoothstep(-0.5, 1.0, s) * (1.0 - smoothstep(8.0, 14.0, s));
+    // patches stand ~0.5 m proud of the sand
+    h += 0.55 * patchMask(xz, s) * (0.7 + 0.3 * vnoise(xz * 2.3));
+    // gentle dunes on land
+    h += 0.5 * (fbm3(xz * 0.15) - 0.5) * (1.0 - smoothstep(-3.0, 0.0, s));
+    return h;
+}
+
+vec3 terrainNormal(vec2 xz, float h) {
+    const float e = 0.04;
+    float hx = terrainH(xz + vec2(e, 0.0));
+    float hz = terrainH(xz + vec2(0.0, e));
+    return normalize(vec3(h - hx, e, h - hz));
+}
+
+vec3 terrainAlbedo(vec2 xz, float h) {
+    float s = offshore(xz);
+    float grain = vnoise(xz * 9.0);
+    vec3 sand = mix(vec3(0.80, 0.71, 0.54), vec3(0.88, 0.80, 0.64), grain);
+    sand *= 0.88 + 0.12 * fbm3(xz * 0.5 + 20.0);                  // large-scale sand variation
+    // dark sea-grass / rock / coral patches
+    float pm = patchMask(xz, s);
+    float tint = vnoise(xz * 1.1 + 11.0);
+    vec3 patchCol = mix(vec3(0.20, 0.26, 0.12), vec3(0.45, 0.30, 0.22), tint);
+    vec3 c = mix(sand, patchCol, smoothstep(0.05, 0.5, pm));
+    // wet sand just above the water line, dry grass far inland
+    float above = h;
+    c *= mix(1.0, 0.62, smoothstep(0.35, 0.0, above) * step(0.0, above));
+    c = mix(c, vec3(0.42, 0.45, 0.22), smoothstep(1.1, 1.9, above) * smoothstep(0.45, 0.6, fbm3(xz * 0.4)));
+    return c;
+}
+
+// ---------------------------------------------------------------------------- sky --
+vec3 sky(vec3 rd) {
+    float y = max(rd.y, 0.0);
+    vec3 c = mix(vec3(0.64, 0.77, 0.92), vec3(0.12, 0.32, 0.78), sqrt(y));
+    float s = max(dot(rd, normalize(SUN_DIR)), 0.0);
+    c += vec3(1.0, 0.9, 0.7) * (0.25 * pow(s, 8.0) + 30.0 * pow(s, 900.0));
+    return c;
+}
+
+// ------------------------------------------------------------------------ water surface --
+// sum of directional waves with deep-water dispersion w = sqrt(g k); returns the normal
+vec3 waterNormal(vec2 p, float t, float fade) {
+    vec2 g = vec2(0.0);
+    float ang = 0.4, k = 1.3, amp = 0.020;
+    for (int i = 0; i < 5; i++) {
+        vec2 dir = vec2(cos(ang), sin(ang));
+        float w = sqrt(9.81 * k);
+        g += dir * (amp * k * cos(dot(p, dir) * k - w * t + float(i) * 1.7));
+        ang += 2.1;
+        k *= 1.55;
+        amp *= 0.72;
+    }
+    g *= fade;
+    return normalize(vec3(-g.x, 1.0, -g.y));
+}
+
+// cheap animated caustic net: two warped sine layers, bright where both are near a crest
+float causticLayer(vec2 q, float t) {
+    q += 0.8 * sin(q.yx * 0.9 + vec2(0.7, 1.0) * t);
+    q += 0.35 * sin(q.yx * 2.3 - vec2(1.1, 0.6) * t);
+    vec2 s = abs(sin(q));
+    return pow(1.0 - min(s.x, s.y), 5.0);
+}
+float caustic(vec2 p, float t) {
+    float c = causticLayer(p * 2.2, t) + causticLayer(mat2(0.8, 0.6, -0.6, 0.8) * p * 2.9 + 4.0, 1.2 * t);
+    return 0.45 + 1.6 * c;
+}
+
+// ---------------------------------------------------------------------------- march --
+// march a ray (ro, rd) against the height field from t0 to t1; returns t of the hit or -1
+float marchTerrain(vec3 ro, vec3 rd, float t0, float t1, int steps) {
+    float t = t0;
+    float tPrev = t0;
+    for (int i = 0; i < 96; i++) {
+        if (i >= steps || t > t1) break;
+        vec3 p = ro + rd * t;
+        float dh = p.y - terrainH(p.xz);
+        if (dh < 0.0) {
+            // bisection between the last point above and this one below
+            float a = tPrev, b = t;
+            for (int j = 0; j < 5; j++) {
+                float m = 0.5 * (a + b);
+                vec3 q = ro + rd * m;
+                if (q.y - terrainH(q.xz) < 0.0) b = m; else a = m;
+            }
+            return 0.5 * (a + b);
+        }
+        tPrev = t;
+        t += max(0.04, 0.45 * dh);
+    }
+    return -1.0;
+}
+
+// ------------------------------------------------------------------------- presets --
+void getPreset(int id, out vec3 K, out float b, out vec3 Cs) {
+    if (id == 1) {          // muddy river
+        K = vec3(1.05, 1.20, 1.55); b = 0.90; Cs = vec3(0.24, 0.17, 0.08);
+    } else if (id == 2) {   // tannin / peat lake
+        K = vec3(0.45, 0.80, 2.20); b = 0.04; Cs = vec3(0.055, 0.026, 0.007);
+    } else {                // tropical ocean (default)
+        K = vec3(0.46, 0.09, 0.06); b = 0.11; Cs = vec3(0.05, 0.05, 0.10);
+    }
+}
+
+vec3 shadeLand(vec3 p, vec3 rd) {
+    vec3 n = terrainNormal(p.xz, p.y);
+    vec3 alb = terrainAlbedo(p.xz, p.y);
+    vec3 L = normalize(SUN_DIR);
+    float dif = max(dot(n, L), 0.0);
+    vec3 amb = vec3(0.30, 0.36, 0.45) * (0.6 + 0.4 * n.y);
+    return alb * (SUN_COL * dif + amb);
+}
+
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    int preset = int(clamp(texelFetch(iChannel0, ivec2(0), 0).x + 0.5, 0.0, 2.0));
+    vec3 K, Cs; float b;
+    getPreset(preset, K, b, Cs);
+
+    float t = iTime;
+    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
+
+    // camera: 14 m above the water, looking down ~40 degrees across the shore
+    float yaw = 0.0;
+    if (iMouse.z > 0.0) yaw = (iMouse.x / iResolution.x - 0.5) * 1.2;
+    vec3 ro = vec3(-1.0, 14.0, -11.0);
+    vec3 ta = vec3(6.5, 0.0, 4.5);
+    vec3 fw0 = ta - ro;
+    fw0.xz = mat2(cos(yaw), -sin(yaw), sin(yaw), cos(yaw)) * fw0.xz;
+    vec3 fw = normalize(fw0);
+    vec3 rt = normalize(cross(vec3(0.0, 1.0, 0.0), fw));
+    vec3 up = cross(fw, rt);
+    vec3 rd = normalize(uv.x * rt + uv.y * up + 1.7 * fw);
+
+    vec3 col;
+    vec3 L = normalize(SUN_DIR);
+    if (rd.y >= -0.001) {
+        col = sky(rd);
+    } else {
+        float tW = ro.y / -rd.y;                            // water plane y = 0
+        float tTop = max((ro.y - 2.2) / -rd.y, 0.0);        // land is below y = 2.2
+        float tL = marchTerrain(ro, rd, tTop, tW, 48);
+        if (tL > 0.0) {
+            col = shadeLand(ro + rd * tL, rd);
+        } else {
+            vec3 P = ro + rd * tW;
+            float fade = 1.0 / (1.0 + tW * 0.04);           // calm the normal far away
+            vec3 n = waterNormal(P.xz, t, fade);
+            vec3 rr = refract(rd, n, 1.0 / WATER_IOR);
+
+            // march the refracted ray to the bottom (at most 45 m of water)
+            const float MAX_PATH = 45.0;
+            float tB = marchTerrain(P, rr, 0.0, MAX_PATH, 64);
+            float dAcc = tB >= 0.0 ? tB : MAX_PATH;
+            vec3 bottom = vec3(0.0);
+            if (tB >= 0.0) {
+                vec3 B = P + rr * tB;
+                float d = max(-B.y, 0.0);
+                vec3 nb = terrainNormal(B.xz, B.y);
+                vec3 alb = terrainAlbedo(B.xz, B.y);
+                // sunlight refracted into the water, with caustics that blur out with depth
+                vec3 Lw = -refract(-L, vec3(0.0, 1.0, 0.0), 1.0 / WATER_IOR);
+                float dif = max(dot(nb, Lw), 0.0);
+                float ca = mix(1.0, caustic(B.xz - Lw.xz / Lw.y * d, t), exp(-0.25 * d));
+                vec3 light = SUN_COL * dif * ca + vec3(0.25, 0.33, 0.42) * (0.5 + 0.5 * nb.y);
+                bottom = alb * light * exp(-K * (d + dAcc));
+            }
+            vec3 water = mix(Cs, bottom, exp(-b * dAcc));
+
+            // Fresnel (Schlick) blend with the reflected sky
+            float cosi = clamp(dot(-rd, n), 0.0, 1.0);
+            float F = 0.02 + 0.98 * pow(1.0 - cosi, 5.0);
+            vec3 rf = reflect(rd, n);
+            rf.y = abs(rf.y);
+            col = mix(water, sky(rf), F);
+
+            // a thin line of foam at the water's edge
+            float depthHere = -terrainH(P.xz);
+            float foam = smoothstep(0.10, 0.0, depthHere)
+                       * mix(0.5, smoothstep(0.3, 0.7, vnoise(P.xz * 2.5 + vec2(0.0, t * 0.5))), fade);
+            col = mix(col, vec3(0.9, 0.93, 0.95) * (SUN_COL * max(L.y, 0.0) + 0.3), 0.6 * foam);
+        }
+    }
+
+    col = pow(clamp(col, 0.0, 1.0), vec3(1.0 / 2.2));
+
+    // preset indicator: 1-3 small squares in the top-left corner
+    vec2 px = fragCoord - vec2(8.0, iResolution.y - 14.0);
+    float sz = max(4.0, iResolution.y / 90.0);
+    for (int i = 0; i < 3; i++) {
+        if (i > preset) break;
+        vec2 q = px - vec2(float(i) * sz * 1.8, 0.0);
+        if (q.x >= 0.0 && q.x < sz && q.y >= -sz && q.y < 0.0) col = vec3(1.0);
+    }
+
+    fragColor = vec4(col, 1.0);
+}

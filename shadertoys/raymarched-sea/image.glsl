@@ -1,0 +1,238 @@
+// raymarched-sea: an open sea under a late-afternoon sky (toyhost, original work, MIT licence).
+//
+// Technique
+// - The surface is a height field y = h(x, z): a sum of octaves of a choppy crest profile.
+//   Per octave, the domain is nudged by value noise, the profile is 1 - |sin| blended with |cos|
+//   (a peaked crest with a rounded trough), and the result is raised to a "choppiness" exponent
+//   that starts at 4 and relaxes towards 1 (x -> mix(x, 1, 0.2)) per octave, so the big swell is
+//   sharp and the ripples are soft. Each octave rotates its domain by a fixed 2x2 matrix that also
+//   doubles the frequency (scale 2, angle ~34 deg, so octaves never line up); amplitude x 0.24.
+// - The ray is marched against only 3 octaves (cheap, and the small ones barely move the hit
+//   point): from the crest plane it steps forward by the vertical gap until it is under the
+//   water, then refines that bracket with Illinois false position; normals come from 6 octaves
+//   by central differences whose step grows with distance (a cheap filter against shimmering
+//   at the horizon).
+// - Shading: sky gradient with a sun glow; water = deep colour with wrapped diffuse + back
+//   light through thin crests, mixed with the sky reflection by Schlick's Fresnel (F0 = 0.02),
+//   plus a sharp sun specular; exponential distance fog into the horizon colour.
+// - SUPERSAMPLE 1 renders a 3x3 grid per pixel (9x the cost); off by default.
+// - Camera cruises forward and turns slowly with time; dragging the mouse steers it
+//   (x = heading, y = pitch).
+
+#define SUPERSAMPLE 0
+
+const int   MARCH_OCTAVES = 3;
+const int   SHADE_OCTAVES = 6;
+const int   MARCH_STEPS   = 40;   // forward steps before giving up on a bracket
+const int   REFINE_ITERS  = 5;
+
+const float WAVE_HEIGHT = 0.6;   // amplitude of the first octave
+const float WAVE_FREQ   = 0.16;  // spatial frequency of the first octave
+const float WAVE_CHOP   = 4.0;   // choppiness exponent of the first octave
+const float WAVE_SPEED  = 0.8;
+
+// 2 * rotation(0.59 rad): doubles the frequency and turns each octave.
+const mat2 OCTAVE_TURN = mat2(1.662, 1.113, -1.113, 1.662);
+
+const vec3 SUN_DIR     = vec3(0.45, 0.2, 0.85);     // normalised where used
+const vec3 DEEP_WATER  = vec3(0.0, 0.07, 0.14);
+const vec3 CREST_TINT  = vec3(0.35, 0.62, 0.45);
+const vec3 ZENITH      = vec3(0.10, 0.27, 0.58);
+const vec3 HORIZON     = vec3(0.72, 0.80, 0.86);
+
+// ---------------------------------------------------------------- noise
+// Integer hash of a lattice point -> [0, 1): multiply-xor the coordinates with two odd
+// constants (golden-ratio and xxHash primes), then Wellons' "lowbias32" avalanche.
+float latticeHash(vec2 cell) {
+    uvec2 q = uvec2(ivec2(cell));
+    uint h = (q.x * 0x9E3779B1u) ^ (q.y * 0x85EBCA77u);
+    h ^= h >> 16; h *= 0x7FEB352Du;
+    h ^= h >> 15; h *= 0x846CA68Bu;
+    h ^= h >> 16;
+    return float(h) * (1.0 / 4294967296.0);
+}
+
+// value noise in [-1, 1], smoothstep-faded bilinear
+float valueNoise(vec2 p) {
+    vec2 cell = floor(p);
+    vec2 f = fract(p);
+    vec2 w = f * f * (3.0 - 2.0 * f);
+    float a = latticeHash(cell);
+    float b = latticeHash(cell + vec2(1.0, 0.0));
+    float c = latticeHash(cell + vec2(0.0, 1.0));
+    float d = latticeHash(cell + vec2(1.0, 1.0));
+    return 2.0 * mix(mix(a, b, w.x), mix(c, d, w.x), w.y) - 1.0;
+}
+
+// ---------------------------------------------------------------- waves
+// One octave of the crest profile at domain point p with choppiness k, in [0, 1].
+float crest(vec2 p, float k) {
+    p += valueNoise(p);
+    vec2 peak = 1.0 - abs(sin(p));       // 1 on crests, cusp-like
+    vec2 round_ = abs(cos(p));           // smooth where peak is low
+    vec2 prof = mix(peak, round_, peak);
+    return pow(1.0 - pow(prof.x * prof.y, 0.65), k);
+}
+
+float waterHeight(vec2 xz, int octaves) {
+    vec2 p = xz * WAVE_FREQ;
+    p.x *= 0.75;                          // slightly longer crests across the wind
+    float phase = 1.0 + iTime * WAVE_SPEED;
+    float amp = WAVE_HEIGHT;
+    float k = WAVE_CHOP;
+    float h = 0.0;
+    for (int i = 0; i < octaves; i++) {
+        // two trains moving in opposite directions give a standing, tumbling chop
+        h += amp * (crest(p + phase, k) + crest(p - phase, k));
+        p = OCTAVE_TURN * p;
+        amp *= 0.24;
+        k = mix(k, 1.0, 0.2);
+    }
+    return h;
+}
+
+// signed vertical distance from the surface
+float above(vec3 p, int octaves) { return p.y - waterHeight(p.xz, octaves); }
+
+// Height-field intersection in two phases. (1) Walk forward from the crest plane with steps
+// proportional to the vertical gap, divided by (|rd.y| + a slope bound) so a step cannot jump
+// through a wave; the steps grow with distance, so far rays reach the horizon in a few dozen
+// samples. (2) Once a sample lands under the water, refine the bracket with Illinois false
+// position (the stale end's value is halved so it cannot stall). Returns t; hit = found water.
+float traceSea(vec3 ro, vec3 rd, out bool hit) {
+    const float FAR = 1000.0;
+    float topY = 2.6 * WAVE_HEIGHT;                 // above any crest the march octaves make
+    hit = false;
+    float tLo = 0.0;
+    if (ro.y > topY) {
+        if (rd.y >= 0.0) return FAR;
+        tLo = (ro.y - topY) / -rd.y;
+    }
+    float fLo = above(ro + rd * tLo, MARCH_OCTAVES);
+    float tHi = tLo, fHi = fLo;
+    float stepScale = 1.0 / (abs(rd.y) + 0.6);
+    for (int i = 0; i < MARCH_STEPS; i++) {
+        tHi = tLo + max(fLo * stepScale, 0.002 * tLo + 0.02);
+        fHi = above(ro + rd * tHi, MARCH_OCTAVES);
+        if (fHi < 0.0) { hit = true; break; }
+        tLo = tHi; fLo = fHi;
+        if (tLo > FAR) return FAR;
+    }
+    if (!hit) {
+        // ran out of steps while still above: try one long bracket to the far distance
+        tHi = FAR;
+        fHi = above(ro + rd * tHi, MARCH_OCTAVES);
+        if (fHi >= 0.0) return FAR;
+        hit = true;
+    }
+    int side = 0;
+    float t = tHi;
+    for (int i = 0; i < REFINE_ITERS; i++) {
+        t = (tLo * fHi - tHi * fLo) / (fHi - fLo);
+        float f = above(ro + rd * t, MARCH_OCTAVES);
+        if (f < 0.0) {
+            tHi = t; fHi = f;
+            if (side == -1) fLo *= 0.5;
+            side = -1;
+        } else {
+            tLo = t; fLo = f;
+            if (side == 1) fHi *= 0.5;
+            side = 1;
+        }
+    }
+    return t;
+}
+
+vec3 waterNormal(vec3 p, float eps) {
+    float hx = waterHeight(p.xz + vec2(eps, 0.0), SHADE_OCTAVES) - waterHeight(p.xz - vec2(eps, 0.0), SHADE_OCTAVES);
+    float hz = waterHeight(p.xz + vec2(0.0, eps), SHADE_OCTAVES) - waterHeight(p.xz - vec2(0.0, eps), SHADE_OCTAVES);
+    return normalize(vec3(-hx, 2.0 * eps, -hz));
+}
+
+// ---------------------------------------------------------------- lighting
+vec3 skyColor(vec3 rd) {
+    vec3 sun = normalize(SUN_DIR);
+    float up = max(rd.y, 0.0);
+    vec3 col = mix(HORIZON, ZENITH, pow(up, 0.45));
+    float mu = max(dot(rd, sun), 0.0);
+    col += vec3(1.0, 0.72, 0.42) * (0.25 * pow(mu, 6.0) + 0.35 * pow(mu, 90.0));
+    col += vec3(1.0, 0.9, 0.75) * 4.0 * smoothstep(0.99975, 0.99988, mu);   // the disc
+    return col;
+}
+
+vec3 shadeWater(vec3 p, vec3 n, vec3 rd, float dist) {
+    vec3 sun = normalize(SUN_DIR);
+    float cosV = clamp(dot(n, -rd), 0.0, 1.0);
+    float F = 0.02 + 0.98 * pow(1.0 - cosV, 5.0);   // Schlick, water F0 ~ 0.02
+    F = min(F, 0.7);                                 // grazing: keep some body colour
+
+    vec3 refl = skyColor(reflect(rd, n));
+
+    float wrapDiff = pow(dot(n, sun) * 0.4 + 0.6, 40.0);
+    vec3 body = DEEP_WATER + 0.15 * wrapDiff * CREST_TINT;
+
+    // back light: sun through the thin top of a crest, seen against the light
+    float crestAmt = clamp(p.y / (2.0 * WAVE_HEIGHT), 0.0, 1.0);
+    float against = pow(max(dot(rd, sun), 0.0), 2.0) * (1.0 - 0.5 * max(n.y, 0.0));
+    body += CREST_TINT * 0.3 * crestAmt * crestAmt * (0.3 + against);
+
+    vec3 col = mix(body, refl, F);
+
+    // sun glint: normalised Blinn-Phong, sharp
+    vec3 hv = normalize(sun - rd);
+    float spec = pow(max(dot(n, hv), 0.0), 400.0) * (400.0 + 8.0) / (8.0 * 3.14159);
+    col += vec3(1.0, 0.92, 0.8) * spec * F * 1.5;
+
+    return col;
+}
+
+mat3 lookBasis(float yaw, float pitch) {
+    vec3 fwd = vec3(sin(yaw) * cos(pitch), sin(pitch), cos(yaw) * cos(pitch));
+    vec3 right = normalize(cross(vec3(0.0, 1.0, 0.0), fwd));
+    vec3 up = cross(fwd, right);
+    return mat3(right, up, fwd);
+}
+
+vec3 render(vec2 fragCoord) {
+    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
+
+    // slow orbit: the heading turns with time while the boat cruises along it
+    float t = iTime;
+    float yaw = 0.6 * sin(t * 0.06);
+    float pitch = -0.16 + 0.02 * sin(t * 0.5);
+    if (iMouse.z > 0.0) {
+        vec2 m = iMouse.xy / iResolution.xy - 0.5;
+        yaw += m.x * 3.0;
+        pitch = clamp(-0.16 + m.y * 1.2, -0.9, 0.4);
+    }
+    vec3 ro = vec3(30.0 * sin(t * 0.04), 3.4 + 0.15 * sin(t * 0.8), 5.0 * t);
+    mat3 cam = lookBasis(yaw, pitch);
+    vec3 rd = normalize(cam * vec3(uv, 2.0));
+
+    vec3 sky = skyColor(rd);
+    bool hit;
+    float dist = traceSea(ro, rd, hit);
+    if (!hit) return sky;
+
+    vec3 p = ro + rd * dist;
+    float eps = max(0.002, dist * 1.5 / iResolution.y);
+    vec3 n = waterNormal(p, eps);
+    vec3 col = shadeWater(p, n, rd, dist);
+
+    float fog = 1.0 - exp(-dist * 0.0045);
+    return mix(col, skyColor(normalize(vec3(rd.x, 0.0, rd.z))) , fog * fog);
+}
+
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+#if SUPERSAMPLE
+    vec3 col = vec3(0.0);
+    for (int j = -1; j <= 1; j++)
+        for (int i = -1; i <= 1; i++)
+            col += render(fragCoord + vec2(i, j) / 3.0);
+    col /= 9.0;
+#else
+    vec3 col = render(fragCoord);
+#endif
+    col = pow(clamp(col, 0.0, 1.0), vec3(0.75)); // mild display curve
+    fragColor = vec4(col, 1.0);
+}

@@ -1,0 +1,117 @@
+// ripple-pool / Buffer A: height-field wave simulation (one grid cell per pixel).
+//
+// Layout (RGBA32F, reads itself = previous frame):
+//   .x  surface height h(t)      in pixels (0 = calm)
+//   .y  surface height h(t-1)    (the leapfrog scheme keeps two time levels)
+//   .zw iMouse.xy of the previous frame (same value in every pixel), used to
+//       scale drag drops by the distance the pointer moved
+//
+// Update (explicit leapfrog for h_tt = c^2 * laplacian(h), damped velocity):
+//   h(t+1) = h + DAMPING * (h - h(t-1)) + C2 * (sum of 4 neighbours - 4h) - SPRING * h
+//   C2 = c^2 = 0.45: c ~ 0.67 px/frame, just inside the 2-D stability limit 0.5.
+//   DAMPING = 0.995: the velocity loses 0.5% per step, ripples fade in a few s.
+//   SPRING = 1e-3: a weak restoring force. Drops add water, and without it the
+//   whole pool level would creep up during long drags (by ~30 px over 1500
+//   frames); with it the mean level sways slowly back to 0. It changes the
+//   frequency of the ripples by under 1%, which is invisible.
+// The 4 neighbour heights are sorted before they are added, so the sum is the
+// same float whatever their order: a symmetric drop stays symmetric bit for bit
+// under 90-degree rotations and mirrors (float addition is not associative).
+// Walls: reflecting. texelFetch at a clamped coordinate returns the edge cell
+// itself, i.e. a zero-slope (Neumann) boundary that mirrors waves back.
+//
+// Drops: a raised cosine bump A*(0.5+0.5*cos(pi*r/R)), r < R, centred exactly on
+// the pointer's pixel centre floor(iMouse.xy)+0.5 (r comes from integer offsets,
+// so it is identical for the 4 or 8 symmetric cells). It is added to h(t) in
+// full and to h(t-1) at (1 - DROP_KICK): a displacement plus a small upward
+// velocity. A pure displacement leaves a deep negative dip behind the front in
+// 2-D; the kick fills it, so the outgoing ring is the highest point from about
+// 10 frames after the click on, moving out at a steady c.
+// Full strength on the click frame (iMouse.w > 0); on later frames of a drag the
+// strength is scaled by the distance moved (capped at 1), so a slow drag does not
+// pile up dozens of overlapping bumps and holding still adds nothing.
+
+const float C2        = 0.45;   // (wave speed in px/frame)^2
+const float DAMPING   = 0.995;  // velocity damping per step
+const float SPRING    = 1e-3;   // weak pull towards h = 0 (keeps the mean level at 0)
+const float DROP_R    = 8.0;    // drop radius in pixels
+const float DROP_AMP  = 1.0;    // drop height in pixels (slopes up to ~0.2)
+const float DROP_KICK = 0.2;    // fraction of the bump also given as velocity
+const float DRAG_STEP = 6.0;    // a drag adds a full drop every DRAG_STEP px moved
+
+// #define RAIN                 // deterministic automatic drops (off: tests see only the mouse)
+
+float dropShape(ivec2 cell, ivec2 centre, float radius)
+{
+    vec2 d = vec2(cell - centre);            // exact integers
+    float r = sqrt(d.x * d.x + d.y * d.y);
+    if (r >= radius) return 0.0;
+    return 0.5 + 0.5 * cos(3.14159265 * r / radius);
+}
+
+#ifdef RAIN
+float hashU(uint n)   // integer hash: the same on every GPU
+{
+    n = (n ^ 61u) ^ (n >> 16);
+    n *= 9u;
+    n ^= n >> 4;
+    n *= 0x27d4eb2du;
+    n ^= n >> 15;
+    return float(n & 0xffffu) / 65535.0;
+}
+#endif
+
+void mainImage(out vec4 fragColor, in vec2 fragCoord)
+{
+    ivec2 p   = ivec2(fragCoord);
+    ivec2 top = ivec2(iResolution.xy) - 1;
+
+    vec4 s = texelFetch(iChannel0, p, 0);
+    float h  = s.x;
+    float h0 = s.y;
+
+    // 4-neighbour Laplacian, reflecting walls via clamped coordinates.
+    float a = texelFetch(iChannel0, clamp(p + ivec2( 1, 0), ivec2(0), top), 0).x;
+    float b = texelFetch(iChannel0, clamp(p + ivec2(-1, 0), ivec2(0), top), 0).x;
+    float c = texelFetch(iChannel0, clamp(p + ivec2( 0, 1), ivec2(0), top), 0).x;
+    float d = texelFetch(iChannel0, clamp(p + ivec2( 0,-1), ivec2(0), top), 0).x;
+    // sorting network: the sum below no longer depends on neighbour order
+    float t;
+    t = min(a, b); b = max(a, b); a = t;
+    t = min(c, d); d = max(c, d); c = t;
+    t = min(a, c); c = max(a, c); a = t;
+    t = min(b, d); d = max(b, d); b = t;
+    t = min(b, c); c = max(b, c); b = t;
+    float nsum = ((a + b) + c) + d;
+
+    float hn = h + DAMPING * (h - h0) + C2 * (nsum - 4.0 * h) - SPRING * h;
+    float hp = h;
+
+    if (iFrame == 0) { hn = 0.0; hp = 0.0; }
+
+    // Mouse drops.
+    float strength = 0.0;
+    if (iMouse.w > 0.0) {
+        strength = 1.0;                                  // click frame
+    } else if (iMouse.z > 0.0) {
+        strength = min(1.0, length(iMouse.xy - s.zw) / DRAG_STEP);  // drag
+    }
+    if (strength > 0.0) {
+        float bump = DROP_AMP * strength * dropShape(p, ivec2(floor(iMouse.xy)), DROP_R);
+        hn += bump;
+        hp += bump * (1.0 - DROP_KICK);
+    }
+
+#ifdef RAIN
+    // one drop every 37 frames at a pseudo-random place (fixed by the frame number)
+    if (iFrame > 0 && iFrame % 37 == 0) {
+        uint k = uint(iFrame / 37);
+        ivec2 c0 = ivec2(vec2(hashU(2u * k), hashU(2u * k + 1u)) * (iResolution.xy - 40.0) + 20.0);
+        float bump = 0.7 * DROP_AMP * dropShape(p, c0, DROP_R);
+        hn += bump;
+        hp += bump * (1.0 - DROP_KICK);
+    }
+#endif
+
+    fragColor = vec4(hn, hp, iMouse.xy);
+}

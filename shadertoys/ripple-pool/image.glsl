@@ -1,0 +1,188 @@
+// ripple-pool / Image: a tiled swimming pool seen from straight above.
+//
+// iChannel0 = Buffer A (height field, .x = height in pixels, linear filtering).
+// The eye is a pinhole high above the pool centre and the water surface lies in
+// the image plane, so pixel p shows the water at p: where you click is where the
+// ripple appears.
+//  - normal from central differences of the height field
+//  - refraction (Snell, n = 1.333) of the view ray down to a tiled floor at
+//    DEPTH pixels; rays that leave the pool sideways hit the tiled walls
+//  - reflection of a procedural sky + sun, mixed in with Schlick's Fresnel
+//    (F0 = 0.02 for water)
+//  - Beer-Lambert absorption along the refracted path (red is absorbed most)
+//  - caustics by the refracted-area rule: sunlight bent by the surface moves a
+//    floor point by -alpha*DEPTH*grad(h) (alpha = 1 - 1/1.333, small slopes), the
+//    Jacobian is I - alpha*DEPTH*Hessian(h), light intensity ~ 1/|det J|
+//  - the sun is high, so a caustic sits only ~7 px from its ripple; the wall
+//    and deck on the sunny side shade a band of floor (the refracted sun ray
+//    from the floor point is traced up to the wall top)
+// All ripple optics use fixed pixel units (the simulation is one cell per pixel),
+// the tile pattern scales with the canvas height.
+
+const float GAIN     = 2.5;           // visual height exaggeration of the simulated field
+const float DEPTH    = 48.0;          // pool depth in pixels (optical)
+const float ETA      = 1.0 / 1.333;   // air -> water
+const float ALPHA    = 1.0 - 1.0 / 1.333;
+const vec2  DEPTH_M  = vec2(1.1, 3.4); // physical depth, shallow (left) to deep end, metres
+const vec3  SIGMA    = vec3(1.10, 0.26, 0.11);   // absorption per metre
+const vec3  WATER    = vec3(0.02, 0.16, 0.22);   // in-scattered water colour
+const vec3  SUN_DIR  = vec3(0.12, 0.16, 0.98);   // towards the sun (normalised below), high:
+                                                 // caustics sit close under their ripples
+const vec3  SUN_COL  = vec3(1.0, 0.93, 0.82);
+const float WALL_UP  = 4.0 * DEPTH;   // height of the shading wall + deck above the floor
+
+float H(ivec2 q)
+{
+    ivec2 top = ivec2(iResolution.xy) - 1;
+    return GAIN * texelFetch(iChannel0, clamp(q, ivec2(0), top), 0).x;
+}
+
+float Hs(vec2 pos)   // bilinear height at a pixel-space position
+{
+    return GAIN * texture(iChannel0, pos / iResolution.xy).x;
+}
+
+float hash21(vec2 q)
+{
+    q = fract(q * vec2(123.34, 456.21));
+    q += dot(q, q + 45.32);
+    return fract(q.x * q.y);
+}
+
+vec3 sky(vec3 r)
+{
+    vec3 sd = normalize(SUN_DIR);
+    float up = clamp(r.z, 0.0, 1.0);
+    vec3 c = mix(vec3(0.72, 0.84, 0.95), vec3(0.20, 0.42, 0.78), pow(up, 0.6));
+    // a few soft streaks of cloud, fixed in direction space
+    vec2 cp = r.xy / max(r.z, 0.15);
+    float cl = sin(cp.x * 3.1 + sin(cp.y * 2.3)) * sin(cp.y * 4.7 + 1.3);
+    c = mix(c, vec3(0.93, 0.95, 0.98), 0.25 * smoothstep(0.2, 0.9, cl));
+    float s = max(dot(r, sd), 0.0);
+    c += SUN_COL * (pow(s, 20000.0) * 60.0 + pow(s, 400.0) * 1.5 + pow(s, 40.0) * 0.3);
+    return c;
+}
+
+// Tile albedo at a 2-D tile-space coordinate (1 unit = 1 tile); aa = one pixel
+// in tile units (a constant: fwidth is not reliable inside the wall/floor branch).
+vec3 tiles(vec2 t, float grout, float aa)
+{
+    vec2 cell = floor(t);
+    vec2 f = fract(t);
+    vec2 e = min(f, 1.0 - f);
+    float g = smoothstep(grout - 0.5 * aa, grout + aa, min(e.x, e.y));
+    float v = hash21(cell);
+    vec3 tile = mix(vec3(0.80, 0.90, 0.92), vec3(0.92, 0.96, 0.97), v);
+    tile *= 0.94 + 0.06 * (1.0 - length(f - 0.5));          // slight glaze
+    return mix(vec3(0.50, 0.58, 0.60), tile, g);
+}
+
+vec3 floorAlbedo(vec2 q, float tileSize)
+{
+    vec2 t = q / tileSize;
+    float aa = 1.0 / tileSize;                        // one pixel, in tiles
+    vec3 c = tiles(t, 0.03, aa);
+    // lane line down the middle with a T at each end (edges antialiased)
+    vec2 ext = iResolution.xy / tileSize;
+    float mid = ext.y * 0.5;
+    float xs = min(t.x - 1.6, ext.x - 1.6 - t.x);     // distance to the T bars
+    float lane = min(1.0 - smoothstep(0.35 - aa, 0.35 + aa, abs(t.y - mid)),
+                     smoothstep(-aa, aa, xs));
+    float tbar = min(1.0 - smoothstep(1.3 - aa, 1.3 + aa, abs(t.y - mid)),
+                     1.0 - smoothstep(0.18 - aa, 0.18 + aa, abs(xs)));
+    float m = max(lane, tbar);
+    return mix(c, c * vec3(0.10, 0.16, 0.38), m);
+}
+
+void mainImage(out vec4 fragColor, in vec2 fragCoord)
+{
+    vec2 res = iResolution.xy;
+    ivec2 p = ivec2(fragCoord);
+    float tileSize = res.y / 11.0;
+
+    // --- surface ---------------------------------------------------------
+    float h = H(p);
+    float gx = 0.5 * (H(p + ivec2(1, 0)) - H(p - ivec2(1, 0)));
+    float gy = 0.5 * (H(p + ivec2(0, 1)) - H(p - ivec2(0, 1)));
+    vec3 n = normalize(vec3(-gx, -gy, 1.0));
+
+    vec3 eye = vec3(0.5 * res, 1.8 * res.y);
+    vec3 s = vec3(fragCoord, h);
+    vec3 v = normalize(s - eye);
+
+    vec3 sd = normalize(SUN_DIR);
+    vec3 tl0 = refract(-sd, vec3(0, 0, 1), ETA);      // sunlight below calm water
+    vec2 lightShift = tl0.xy / -tl0.z;                 // floor offset per px of depth
+
+    // --- refracted ray: floor or wall -------------------------------------
+    vec3 t = refract(v, n, ETA);
+    float lam = (DEPTH + h) / -t.z;                   // distance to the floor
+    // distance to the side walls along t.xy
+    vec2 bound = mix(vec2(0.0), res, step(0.0, t.xy));
+    vec2 td = vec2(abs(t.x) < 1e-6 ? 1e-6 : t.x, abs(t.y) < 1e-6 ? 1e-6 : t.y);
+    vec2 lw = (bound - s.xy) / td;
+    lw = max(lw, 0.0);
+    float lwall = min(lw.x, lw.y);
+
+    vec3 albedo;
+    float light;                                      // direct sun reaching the hit
+    float pathLen;
+    if (lwall < lam) {
+        // hit a wall: tile it in (along-wall, depth) coordinates
+        vec3 w = s + t * lwall;
+        float along = (lw.x < lw.y) ? w.y : w.x;
+        vec2 wt = vec2(along, -w.z) / tileSize;
+        albedo = tiles(wt, 0.03, 1.0 / tileSize) * 0.92;
+        bool sunny = (lw.x < lw.y) ? (t.x * sd.x < 0.0) : (t.y * sd.y < 0.0);
+        light = sunny ? 0.55 : 0.1;
+        pathLen = lwall;
+    } else {
+        vec2 q = s.xy + t.xy * lam;                   // floor hit
+        albedo = floorAlbedo(q, tileSize);
+
+        // where did the sunlight hitting q cross the surface?
+        vec2 sc = q - lightShift * DEPTH;
+        vec2 sw = q - lightShift * WALL_UP;           // top of the wall/deck line
+        vec2 inside = min(sw, res - sw);
+        float shade = smoothstep(-4.0, 4.0, min(inside.x, inside.y));
+
+        // caustics: Hessian of h at sc (bilinear samples)
+        float k = ALPHA * DEPTH;
+        float c0 = Hs(sc);
+        float hxx = Hs(sc + vec2(1, 0)) + Hs(sc - vec2(1, 0)) - 2.0 * c0;
+        float hyy = Hs(sc + vec2(0, 1)) + Hs(sc - vec2(0, 1)) - 2.0 * c0;
+        float hxy = 0.25 * (Hs(sc + vec2(1, 1)) + Hs(sc - vec2(1, 1))
+                          - Hs(sc + vec2(1, -1)) - Hs(sc + vec2(-1, 1)));
+        float det = (1.0 - k * hxx) * (1.0 - k * hyy) - k * k * hxy * hxy;
+        float caustic = 1.0 / (abs(det) + 0.12) * 1.12 / (1.0 + 0.12);
+        caustic = min(caustic, 6.0);
+
+        // soft darkening where floor meets walls
+        vec2 dq = min(q, res - q);
+        float ao = 0.72 + 0.28 * smoothstep(0.0, 0.8 * DEPTH, min(dq.x, dq.y));
+        albedo *= ao;
+        light = shade * caustic;
+        pathLen = lam;
+    }
+
+    vec3 lit = albedo * (vec3(0.30, 0.38, 0.45) + 1.5 * SUN_COL * light * sd.z);
+    // Beer-Lambert along the underwater path (plus the same distance up again
+    // for the light, roughly), with in-scattering towards the water colour
+    float depthM = mix(DEPTH_M.x, DEPTH_M.y, smoothstep(0.15, 0.85, fragCoord.x / res.x));
+    float metres = (pathLen + DEPTH) / DEPTH * depthM * 0.5;
+    vec3 T = exp(-SIGMA * metres);
+    vec3 refr = lit * T + WATER * (1.0 - T);
+
+    // --- reflection + Fresnel ----------------------------------------------
+    vec3 r = reflect(v, n);
+    vec3 refl = sky(r);
+    float cosi = clamp(dot(-v, n), 0.0, 1.0);
+    float F = 0.02 + 0.98 * pow(1.0 - cosi, 5.0);
+
+    vec3 col = mix(refr, refl, F);
+
+    // tone map + gamma
+    col = 1.0 - exp(-col * 1.3);
+    col = pow(col, vec3(1.0 / 2.2));
+    fragColor = vec4(col, 1.0);
+}

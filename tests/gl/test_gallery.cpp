@@ -1,0 +1,132 @@
+// The gallery (shadertoys/<name>/, our own water shaders): golden frames of each at 320x180 at
+// fixed times, with scripted mouse and keys where the shader takes input (Golden.h's tolerance),
+// and the checks on numbers that say the physics is what the README claims: ripple-pool's
+// simulation (symmetry, steady ring speed, damping) and lake-optics' presets (float dumps).
+#include "GlTestSupport.h"
+#include "Golden.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "image/ImageWriters.h"
+
+namespace toyhost::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct GalleryCase {
+    const char* name;       // golden file tests/golden/gallery/<name>.png
+    const char* shadertoy;  // folder under shadertoys/
+    const char* options;    // time, inputs
+    int frame = 0;          // the frame compared (the run renders frames 0..frame)
+    friend void PrintTo(const GalleryCase& c, std::ostream* os) { *os << c.name; }
+};
+
+class GalleryGolden : public ::testing::TestWithParam<GalleryCase> {};
+
+std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+
+TEST_P(GalleryGolden, MatchesCheckedInFrame) {
+    const GalleryCase& c = GetParam();
+    const fs::path dir = freshOutputDir(std::string("golden/gallery/") + c.name);
+    const fs::path folder = sourceDir() / "shadertoys" / c.shadertoy;
+    std::string options = c.options;
+    // Input scripts are named relative to the shadertoy's folder.
+    for (const char* flag : {"--mouse-script ", "--key-script "})
+        if (const auto at = options.find(flag); at != std::string::npos)
+            options.insert(at + std::string(flag).size(), folder.string() + "/");
+    auto run = runToyhost("run " + quoted(folder) + " --size 320x180 --quiet --frames " + std::to_string(c.frame + 1) +
+                          " --capture-every " + std::to_string(std::max(c.frame, 1)) + " " + options + " --out " +
+                          quoted(dir / (std::string(c.name) + "_%04d.png")));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    char file[64];
+    std::snprintf(file, sizeof file, "%s_%04d.png", c.name, c.frame);
+    expectMatchesGolden(sourceDir(), std::string("gallery/") + c.name + ".png", dir / file);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Shaders, GalleryGolden,
+    ::testing::Values(GalleryCase{"raymarched_sea_t4", "raymarched-sea", "--start-time 4"},
+                      GalleryCase{"raymarched_sea_t20", "raymarched-sea", "--start-time 20"},
+                      GalleryCase{"exp_sine_ocean_t3", "exp-sine-ocean", "--start-time 3"},
+                      GalleryCase{"exp_sine_ocean_t10", "exp-sine-ocean", "--start-time 10"},
+                      GalleryCase{"exp_sine_ocean_mouse", "exp-sine-ocean", "--start-time 10 --mouse 112,72"},
+                      GalleryCase{"ripple_pool_calm", "ripple-pool", ""},
+                      GalleryCase{"ripple_pool_drag_f30", "ripple-pool", "--mouse-script drag.json", 30},
+                      GalleryCase{"ripple_pool_drag_f90", "ripple-pool", "--mouse-script drag.json", 90}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+// ---------------------------------------------------------------------------------------------
+// ripple-pool: Buffer A's height field (.x) after one click, as numbers
+
+class RipplePool : public GlTest {};
+
+constexpr int kWidth = 320, kHeight = 180;
+constexpr int kDropX = 160, kDropY = 90;  // pixel; the drop is centred on its centre
+
+float height(const std::vector<float>& rgba, int x, int y) {
+    return rgba[(static_cast<std::size_t>(y) * kWidth + x) * 4];
+}
+
+TEST_F(RipplePool, OneDropSpreadsSymmetricallyAtSteadySpeedAndDecays) {
+    auto player = loadPlayer(context_, sourceDir() / "shadertoys/ripple-pool", kWidth, kHeight);
+    ASSERT_TRUE(player);
+    stepAt(*player);
+    stepAt(*player);
+    const InputEvent click[] = {InputEvent::mouseDown(kDropX + 0.25f, kDropY + 0.75f), InputEvent::mouseUp()};
+    stepAt(*player, click);  // frame 2: the drop lands
+
+    std::vector<float> field;
+    std::vector<int> radii;
+    std::vector<float> peaks;
+    for (int after = 1; after <= 40; ++after) {
+        stepAt(*player);
+        if (after % 10) continue;
+        player->readRgba32f(PassId::BufferA, field);
+        // Four-fold symmetry about the drop's pixel centre (and the diagonal), out to the ring
+        // and beyond, until reflections from the walls (70+ px away) could arrive.
+        float peak = 0.0f;
+        int radius = 0;
+        for (int r = 0; r <= 60; ++r) {
+            const float east = height(field, kDropX + r, kDropY);
+            const float tolerance = 1e-5f;
+            EXPECT_NEAR(height(field, kDropX - r, kDropY), east, tolerance) << "west, r " << r << ", " << after << " frames after";
+            EXPECT_NEAR(height(field, kDropX, kDropY + r), east, tolerance) << "north, r " << r << ", " << after << " frames after";
+            EXPECT_NEAR(height(field, kDropX, kDropY - r), east, tolerance) << "south, r " << r << ", " << after << " frames after";
+            if (r <= 40)
+                EXPECT_NEAR(height(field, kDropX + r / 2, kDropY + r), height(field, kDropX + r, kDropY + r / 2), tolerance)
+                    << "diagonal mirror, r " << r;
+            if (std::abs(east) > peak) {
+                peak = std::abs(east);
+                radius = r;
+            }
+        }
+        radii.push_back(radius);
+        peaks.push_back(peak);
+        std::printf("%d frames after the drop: ring at %d px, peak %.6f\n", after, radius, peak);
+    }
+    ASSERT_EQ(radii.size(), 4u);
+    // The ring moves out at a steady speed (the wave speed, about 0.7 px a frame): each 10 frames
+    // add the same distance within a pixel.
+    for (std::size_t i = 1; i < radii.size(); ++i) {
+        const int step = radii[i] - radii[i - 1];
+        EXPECT_GE(step, 5) << "frames " << 10 * i << " -> " << 10 * (i + 1);
+        EXPECT_LE(step, 9) << "frames " << 10 * i << " -> " << 10 * (i + 1);
+        EXPECT_LE(std::abs(step - (radii[1] - radii[0])), 1) << "the ring's speed changes";
+        // Damping (and spreading): the peak height falls every 10 frames.
+        EXPECT_LT(peaks[i], peaks[i - 1]) << "frames " << 10 * i << " -> " << 10 * (i + 1);
+    }
+}
+
+TEST_F(RipplePool, CalmPoolStaysFlatWithoutInput) {
+    auto player = loadPlayer(context_, sourceDir() / "shadertoys/ripple-pool", 64, 36);
+    ASSERT_TRUE(player);
+    for (int i = 0; i < 30; ++i) stepAt(*player);
+    std::vector<float> field;
+    player->readRgba32f(PassId::BufferA, field);
+    for (std::size_t i = 0; i < field.size(); i += 4) ASSERT_EQ(field[i], 0.0f) << "pixel " << i / 4;
+}
+
+}  // namespace
+}  // namespace toyhost::testing
