@@ -43,7 +43,7 @@ void mainImage( out vec4 fragColor, in vec2 fragCoord )
     vec3 previous = texture(iChannel0, uv).rgb;
     vec2 centre = iMouse.z > 0.0 ? iMouse.xy
                                  : iResolution.xy*(0.5 + 0.35*vec2(cos(iTime), sin(1.3*iTime)));
-    float ink = smoothstep(0.03, 0.02, length(fragCoord - centre)/iResolution.y);
+    float ink = smoothstep(0.04, 0.03, length(fragCoord - centre)/iResolution.y);
     vec3 col = 0.5 + 0.5*cos(iTime+vec3(0,2,4));
     fragColor = vec4(mix(previous*0.985, col, ink), 1.0);
 }
