@@ -100,15 +100,22 @@ float rockH(vec2 p, int oct) {
 vec3 rockNormal(vec2 p) {
     const float e = 0.03;
     float h = rockH(p, 6);
-    return normalize(vec3(h - rockH(p + vec2(e, 0.0), 6), e, h - rockH(p + vec2(0.0, e), 6)));
+    vec3 n = normalize(vec3(h - rockH(p + vec2(e, 0.0), 6), e, h - rockH(p + vec2(0.0, e), 6)));
+    // granular bump (shading only): gradient of a fine ridged noise
+    vec2 q = p * 9.0;
+    float b0 = ridgedFbm(q, 2);
+    vec2 g = vec2(ridgedFbm(q + vec2(0.15, 0.0), 2) - b0, ridgedFbm(q + vec2(0.0, 0.15), 2) - b0) / 0.15;
+    return normalize(n - 0.06 * vec3(g.x, 0.0, g.y));
 }
 
 // ----------------------------------------------------------------------------- water --
 #ifdef LAKE
 float waterH(vec2 p, float t, int oct) {
     // calm lake: slow drifting value-noise FBM, 4 cm amplitude
-    return 0.08 * (fbm(p * 0.45 + vec2(0.05, 0.03) * t, oct) - 0.5)
-         + 0.02 * (vnoise(p * 2.1 - vec2(0.2, 0.1) * t) - 0.5);
+    float h = 0.08 * (fbm(p * 0.45 + vec2(0.05, 0.03) * t, oct) - 0.5)
+            + 0.02 * (vnoise(p * 2.1 - vec2(0.2, 0.1) * t) - 0.5);
+    if (oct > 3) h += 0.006 * (fbm(p * 7.0 + vec2(0.6, -0.4) * t, 2) - 0.5);   // cat's-paw ripples (normals only)
+    return h;
 }
 float swellRidge(vec2 p, float t) { return 0.0; }
 #else
@@ -128,9 +135,9 @@ float waterH(vec2 p, float t, int oct) {
     float r = swellRidge(p, t);
     float h = A * (r * r * r - 0.25);
     // ridge-noise chop, advected in the wave direction
-    float amp = 0.10;
+    float amp = 0.085;
     vec2 q = p * 0.6;
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 5; i++) {
         if (i >= oct) break;
         float n = 1.0 - abs(2.0 * vnoise(q + vec2(1.2, 0.3) * t * (1.0 + 0.5 * float(i))) - 1.0);
         h += amp * (n * n - 0.45);
@@ -142,8 +149,8 @@ float waterH(vec2 p, float t, int oct) {
 #endif
 
 vec3 waterNormal(vec2 p, float t, float e) {
-    float h = waterH(p, t, 3);
-    return normalize(vec3(h - waterH(p + vec2(e, 0.0), t, 3), e, h - waterH(p + vec2(0.0, e), t, 3)));
+    float h = waterH(p, t, 5);
+    return normalize(vec3(h - waterH(p + vec2(e, 0.0), t, 5), e, h - waterH(p + vec2(0.0, e), t, 5)));
 }
 
 // ----------------------------------------------------------------------------- march --
@@ -211,7 +218,7 @@ vec3 sky(vec3 rd) {
 vec3 rockAlbedo(vec2 p, float h, vec3 n) {
     vec2 q = p + vec2(h, -h) * 0.8;                              // h term: less streaking on cliffs
     float v = fbm(q * 1.7, 3);
-    vec3 c = mix(vec3(0.17, 0.15, 0.14), vec3(0.46, 0.41, 0.35), v);
+    vec3 c = mix(vec3(0.13, 0.12, 0.11), vec3(0.52, 0.46, 0.38), smoothstep(0.25, 0.75, v));
     c *= 0.7 + 0.3 * ridgedFbm(q * 6.0, 2);                       // cracks and grain
     c = mix(c, vec3(0.62, 0.52, 0.30), 0.45 * smoothstep(0.68, 0.8, vnoise(q * 3.1)) * smoothstep(1.0, 2.0, h)); // lichen
     c = mix(c, vec3(0.52, 0.48, 0.40), smoothstep(0.75, 0.95, n.y) * smoothstep(1.2, 2.5, h) * 0.6);
@@ -301,10 +308,12 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     if (tr > 0.0) {
         vec3 p = ro + rd * tr;
         col = shadeRock(p, rd);
-        // wet sheen / thin wash film where the rock is just above the water
+        // wet rock just above the water: darker, with a sky sheen
         float hw = waterH(p.xz, t, 3);
-        float film = smoothstep(0.25, 0.0, p.y - hw);
-        col = mix(col, col * 0.7 + 0.08, 0.5 * film);
+        float film = smoothstep(0.4, 0.0, p.y - hw);
+        vec3 nr = rockNormal(p.xz);
+        float sheen = 0.04 + 0.96 * pow(1.0 - clamp(dot(-rd, nr), 0.0, 1.0), 5.0);
+        col = mix(col, col * 0.55 + sky(reflect(rd, nr)) * sheen * 0.5, film);
         col = mix(col, sky(vec3(rd.x, 0.02, rd.z)), 1.0 - exp(-0.00002 * tr * tr));
     } else if (tw < FAR && rd.y < 0.0) {
         vec3 p = ro + rd * tw;
@@ -338,7 +347,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         vec3 rf = reflect(rd, n);
         rf.y = abs(rf.y);
         col = mix(body, sky(rf), F);
-        col += SUN_COL * 1.8 * pow(max(dot(rf, L), 0.0), 220.0);
+        col += SUN_COL * 1.2 * pow(max(dot(rf, L), 0.0), 300.0);
 
         // ----- foam
         float s = shoreS(p.xz);
@@ -360,7 +369,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
                      + 0.8 * exp(-5.0 * behind) * smoothstep(-15.0, -6.0, s)     // trail
                      + 0.7 * exp(-14.0 * ahead) * smoothstep(-11.0, -4.0, s));   // spilling face
         crestF *= 0.3 + 0.7 * smoothstep(0.3, 0.8, vnoise(p.xz * vec2(0.35, 0.12) + 3.0));  // breaks in patches
-        float foam = foamCover(clamp(contact + crestF, 0.0, 1.0), ft);
+        float foam = foamCover(clamp(contact + crestF, 0.0, 0.93), ft);
 #endif
         foam *= fade;
         // thick foam is brighter; thin foam lets a little of the water through

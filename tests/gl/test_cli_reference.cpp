@@ -43,7 +43,8 @@ TEST(CliReference, DocsCliMdIsTheHelpOfEveryCommand) {
         EXPECT_EQ(help.output, text) << "docs/cli.md is out of date for `" << heading
                                      << " --help`: run scripts/update-cli-doc.sh";
     }
-    EXPECT_EQ(headings, (std::vector<std::string>{"toyhost", "toyhost run", "toyhost import", "toyhost inspect"}));
+    EXPECT_EQ(headings, (std::vector<std::string>{"toyhost", "toyhost run", "toyhost import", "toyhost inspect",
+                                                 "toyhost new", "toyhost media"}));
 }
 
 }  // namespace

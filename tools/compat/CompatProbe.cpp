@@ -50,7 +50,9 @@ void judgeOutput(const Player& player, ProbeResult& result) {
 ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) {
     ProbeResult result;
     result.file = exportFile.filename().string();
-    result.id = exportFile.stem().string();
+    // An export is known by its file name (<id>.json); a manifest folder by the folder's name.
+    std::error_code ec;
+    result.id = fs::is_directory(exportFile, ec) ? exportFile.filename().string() : exportFile.stem().string();
     Result<ManifestDesc> manifest = loadShadertoy(exportFile);
     if (!manifest) {
         result.error = firstLines(manifest.error().text(), 3);

@@ -163,7 +163,9 @@ int main(int argc, char** argv) {
     int timeout = 60;
     double minPassRate = 0;
     std::vector<std::string> mediaFolders;
-    app.add_option("folder", dir, "Folder of <id>.json exports")->required();
+    app.add_option("folder", dir,
+                   "Folder of <id>.json exports, or one shadertoy: an export file or a manifest folder")
+        ->required();
     app.add_option("--size", size, "Canvas WxH")->capture_default_str();
     app.add_option("--frames", settings.frames, "Frames per shader")->capture_default_str();
     app.add_option("--timeout", timeout, "Seconds before a shader is killed")->capture_default_str();
@@ -182,8 +184,11 @@ int main(int argc, char** argv) {
 
     std::vector<fs::path> files;
     std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(dir, ec))
-        if (entry.path().extension() == ".json") files.push_back(entry.path());
+    if (fs::is_regular_file(dir, ec) || fs::is_regular_file(fs::path(dir) / "manifest.json", ec))
+        files.push_back(fs::path(dir));  // one shadertoy: a port being checked
+    else
+        for (const auto& entry : fs::directory_iterator(dir, ec))
+            if (entry.path().extension() == ".json") files.push_back(entry.path());
     if (ec || files.empty()) {
         std::cerr << "toyhost-compat: " << dir << ": no .json exports found\n";
         return 2;
