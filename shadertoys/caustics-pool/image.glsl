@@ -7,7 +7,8 @@
 //     k1, k2, so q - p is periodic: the whole pattern tiles over one period (CAUSTIC_TILE m).
 //     Bright, thin lines sit where the warped lattice sin(2 q.x), sin(2 q.y), sin(q.x + q.y)
 //     crosses zero (1 - |sin| raised to a high power); the warp (amplitude 0.75 falling off per
-//     step) bends the lattice into the irregular cells of real pool caustics. Sampled three
+//     step) bends the lattice into the irregular cells of real pool caustics. Mapped onto the
+//     water rotated by 37 degrees (so it never lines up with the tiles) and sampled three
 //     times with a depth-proportional offset for a little chromatic dispersion.
 //   * Projection: a floor/wall point H is lit by the sun ray refracted into the water (Snell,
 //     n = 1.33); the caustic is looked up where that ray entered the surface, S = H + Lw s

@@ -7,18 +7,21 @@
 //     boulders in the surf zone) and the water h_w. The nearer hit wins.
 //   * Sea: a swell of wavelength ~9 m (k = 0.7 rad/m, deep-water w = sqrt(g k) = 2.6 rad/s)
 //     shaped as a ridge, s = 1 - |sin(theta/2)|: the cusp gives the sharp crest and broad trough
-//     of real waves; the crest lines are bent by low-frequency noise. Three octaves of ridge
-//     noise (1 - |2 n - 1|) add chop. The swell grows as the water shoals (amplitude x2.2 toward
-//     the shore) and dies where it breaks on the rock.
+//     of real waves; the crest lines are bent by low-frequency noise. Octaves of ridge noise
+//     (1 - |2 n - 1|) add chop: 2 while marching, 5 for the normal (cheap march, fine detail).
+//     The swell grows as the water shoals (amplitude x2.2 toward the shore) and dies where it
+//     breaks on the rock. Rock terraces (0.45 m steps, 55 %) give the ledges of bedded rock.
 //   * Foam: (1) contact foam where the water thickness h_w - h_r is near zero, i.e. where the
 //     surface meets the rock, widened when a crest arrives (wash); (2) crest foam where the
-//     ridge s is near 1 inside the surf zone, with a decaying trail behind each crest. Both are
-//     broken up by an advected bubbly noise so the foam has holes and streaks.
+//     ridge s is near 1 inside the surf zone, on the spilling front face and in a decaying trail
+//     behind each crest. A foam density is turned into coverage against an advected texture
+//     (FBM punched with random-size round holes, like bursting bubbles): dense foam is solid,
+//     thin foam breaks into lace.
 //   * Water colour: vertical water thickness over the rock gives a Beer-law mix from the
 //     rock's colour (submerged ledges) to deep sea green-blue; thin crests get a back-lit
 //     sub-surface tint; sky reflection by Schlick Fresnel (F0 = 0.02) plus a sun glitter lobe.
-//   * LAKE: the water becomes 4 octaves of slow value-noise FBM (amplitude 4 cm), darker and
-//     greener, with only a thin contact line of foam and no breaking crests.
+//   * LAKE: the water becomes slow value-noise FBM (+-4 cm) with fine cat's-paw ripples in the
+//     normal, darker and greener, with only a thin contact line of foam and no breaking crests.
 //   iMouse: drag horizontally to turn the camera.
 
 // #define LAKE
