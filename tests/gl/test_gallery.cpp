@@ -52,6 +52,14 @@ INSTANTIATE_TEST_SUITE_P(
                       GalleryCase{"exp_sine_ocean_t3", "exp-sine-ocean", "--start-time 3"},
                       GalleryCase{"exp_sine_ocean_t10", "exp-sine-ocean", "--start-time 10"},
                       GalleryCase{"exp_sine_ocean_mouse", "exp-sine-ocean", "--start-time 10 --mouse 112,72"},
+                      GalleryCase{"lake_optics_t2", "lake-optics", "--start-time 2"},
+                      GalleryCase{"lake_optics_t7_5", "lake-optics", "--start-time 7.5"},
+                      GalleryCase{"lake_optics_muddy", "lake-optics", "--start-time 2 --key-script keys-muddy.json", 3},
+                      GalleryCase{"lake_optics_tannin", "lake-optics", "--start-time 2 --key-script keys-tannin.json", 3},
+                      GalleryCase{"caustics_pool_t2", "caustics-pool", "--start-time 2"},
+                      GalleryCase{"caustics_pool_t6_5", "caustics-pool", "--start-time 6.5"},
+                      GalleryCase{"coastal_foam_t2", "coastal-foam", "--start-time 2"},
+                      GalleryCase{"coastal_foam_t5_5", "coastal-foam", "--start-time 5.5"},
                       GalleryCase{"ripple_pool_calm", "ripple-pool", ""},
                       GalleryCase{"ripple_pool_drag_f30", "ripple-pool", "--mouse-script drag.json", 30},
                       GalleryCase{"ripple_pool_drag_f90", "ripple-pool", "--mouse-script drag.json", 90}),
@@ -126,6 +134,80 @@ TEST_F(RipplePool, CalmPoolStaysFlatWithoutInput) {
     std::vector<float> field;
     player->readRgba32f(PassId::BufferA, field);
     for (std::size_t i = 0; i < field.size(); i += 4) ASSERT_EQ(field[i], 0.0f) << "pixel " << i / 4;
+}
+
+// ---------------------------------------------------------------------------------------------
+// lake-optics: the Image's float output (before 8-bit rounding) in a shallow and a deep region
+
+class LakeOptics : public GlTest {};
+
+struct Rgb {
+    double r = 0, g = 0, b = 0;
+    double blueShare() const { return b / (r + g + b); }
+    double distance(const Rgb& o) const { return std::sqrt((r - o.r) * (r - o.r) + (g - o.g) * (g - o.g) + (b - o.b) * (b - o.b)); }
+};
+
+Rgb meanColour(const std::vector<float>& rgba, int width, int x0, int y0, int w, int h) {
+    Rgb sum;
+    for (int y = y0; y < y0 + h; ++y)
+        for (int x = x0; x < x0 + w; ++x) {
+            const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 4;
+            sum.r += rgba[i];
+            sum.g += rgba[i + 1];
+            sum.b += rgba[i + 2];
+        }
+    const double n = double(w) * h;
+    return {sum.r / n, sum.g / n, sum.b / n};
+}
+
+struct LakeColours {
+    Rgb shallow, deep;
+};
+
+// Each key of `keys` is pressed for one frame, one after the other (frames 1, 3, ...), then one
+// more frame is rendered and read. Every frame is at iTime 2 so that only the keys differ.
+LakeColours lakeColours(const std::shared_ptr<GlContext>& context, std::initializer_list<int> keys) {
+    auto player = loadPlayer(context, sourceDir() / "shadertoys/lake-optics", kWidth, kHeight, /*floatImage=*/true);
+    EXPECT_TRUE(player);
+    if (!player) return {};
+    const FrameTime atTwo{2.0, 1.0 / 60.0, 60.0, glm::vec4(0.0f)};
+    stepAt(*player);
+    for (int key : keys) {
+        const InputEvent down[] = {InputEvent::keyDown(key)}, up[] = {InputEvent::keyUp(key)};
+        player->step(atTwo, down);
+        player->step(atTwo, up);
+    }
+    player->step(atTwo);
+    std::vector<float> image;
+    player->readRgba32f(PassId::Image, image);
+    // Regions at 320x180 (x, y, w, h; origin bottom-left) from the shader's README: water 0.2-1.4 m
+    // deep over sand, and water whose floor lies 29 m down.
+    return {meanColour(image, kWidth, 160, 30, 40, 22), meanColour(image, kWidth, 210, 80, 80, 40)};
+}
+
+TEST_F(LakeOptics, PresetsGiveDifferentWaterAndTropicalDeepIsBluerThanShallow) {
+    const LakeColours tropical = lakeColours(context_, {});
+    const LakeColours muddy = lakeColours(context_, {'2'});
+    const LakeColours tannin = lakeColours(context_, {'3'});
+    const LakeColours tropicalAgain = lakeColours(context_, {'3', '1'});
+    for (const auto& [name, c] : {std::pair{"tropical", tropical}, {"muddy", muddy}, {"tannin", tannin}})
+        std::printf("%-8s shallow %.3f %.3f %.3f  deep %.3f %.3f %.3f  (deep blue share %.3f, shallow %.3f)\n", name,
+                    c.shallow.r, c.shallow.g, c.shallow.b, c.deep.r, c.deep.g, c.deep.b, c.deep.blueShare(),
+                    c.shallow.blueShare());
+    // The choice stays after the key is released, and key 1 brings the default back.
+    EXPECT_LT(tropicalAgain.deep.distance(tropical.deep), 1e-6);
+    // Three kinds of water: clearly different colours at the same place, deep and shallow.
+    EXPECT_GT(tropical.deep.distance(muddy.deep), 0.1);
+    EXPECT_GT(tropical.deep.distance(tannin.deep), 0.1);
+    EXPECT_GT(muddy.deep.distance(tannin.deep), 0.1);
+    EXPECT_GT(tropical.shallow.distance(muddy.shallow), 0.1);
+    EXPECT_GT(tropical.shallow.distance(tannin.shallow), 0.1);
+    // Clear tropical water absorbs red first: the long path of the deep water leaves it bluer.
+    EXPECT_GT(tropical.deep.blueShare(), tropical.shallow.blueShare() + 0.03);
+    // Muddy water is brown (red over blue); tannin water absorbs blue most: amber shallows.
+    EXPECT_GT(muddy.deep.r, muddy.deep.b);
+    EXPECT_GT(tannin.shallow.r, tannin.shallow.g);
+    EXPECT_GT(tannin.shallow.g, tannin.shallow.b);
 }
 
 }  // namespace
