@@ -8,7 +8,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/AtomicFile.h"
 #include "image/ImageWriters.h"
+#include "input/InputScript.h"
+#include "input/InputScriptPlayer.h"
 
 namespace toyhost::testing {
 namespace {
@@ -125,6 +128,36 @@ TEST_F(RipplePool, OneDropSpreadsSymmetricallyAtSteadySpeedAndDecays) {
         // Damping (and spreading): the peak height falls every 10 frames.
         EXPECT_LT(peaks[i], peaks[i - 1]) << "frames " << 10 * i << " -> " << 10 * (i + 1);
     }
+}
+
+// shadertoys/ripple-pool/drag.json, the script of the golden frames, as a user runs it: the
+// height field is disturbed along the drag and still flat far from it.
+TEST_F(RipplePool, ScriptedDragDisturbsTheWaterAlongItsPathOnly) {
+    auto player = loadPlayer(context_, sourceDir() / "shadertoys/ripple-pool", kWidth, kHeight);
+    ASSERT_TRUE(player);
+    auto text = readTextFile(sourceDir() / "shadertoys/ripple-pool/drag.json");
+    ASSERT_TRUE(text.ok());
+    auto script = parseMouseScript(*text, "drag.json");
+    ASSERT_TRUE(script.ok()) << script.error().text();
+    MouseScriptPlayer mouse(*script);
+    std::vector<InputEvent> events;
+    for (int frame = 0; frame <= 45; ++frame) {  // the drag ends on frame 43
+        events.clear();
+        mouse.eventsBeforeFrame(frame, frame / 60.0, events);
+        stepAt(*player, events);
+    }
+    std::vector<float> field;
+    player->readRgba32f(PassId::BufferA, field);
+    // Points of the drag: the start (60, 70), the turn (150, 100), the end (260, 40).
+    for (auto [x, y] : {std::pair{60, 70}, {105, 85}, {150, 100}, {205, 70}, {260, 40}}) {
+        float largest = 0.0f;
+        for (int dy = -6; dy <= 6; ++dy)
+            for (int dx = -6; dx <= 6; ++dx) largest = std::max(largest, std::abs(height(field, x + dx, y + dy)));
+        EXPECT_GT(largest, 0.05f) << "no ripple near (" << x << ", " << y << ")";
+    }
+    // More than 45 frames * 0.7 px + the drop radius away from every point of the path: flat.
+    for (auto [x, y] : {std::pair{300, 160}, {20, 160}, {60, 5}, {150, 10}, {310, 120}})
+        EXPECT_EQ(height(field, x, y), 0.0f) << "ripple far from the drag at (" << x << ", " << y << ")";
 }
 
 TEST_F(RipplePool, CalmPoolStaysFlatWithoutInput) {

@@ -42,12 +42,20 @@ protected:
         }
     }
 
-    // Starts toyhost in a window on the probe and waits until the window is there.
-    void start(std::vector<std::string> extra = {}) {
-        std::vector<std::string> args = {"run", dir_.string(), "--window", "--size", "200x100"};
+    // Starts toyhost in a window on the probe (or on a copy of shadertoys/`gallery` in the test's
+    // folder, where F12 then writes) and waits until the window is there.
+    void start(std::vector<std::string> extra = {}, const std::string& gallery = "") {
+        fs::path toy = dir_;
+        if (!gallery.empty()) {
+            toy = dir_ / gallery;
+            fs::copy(kSource / "shadertoys" / gallery, toy, fs::copy_options::recursive);
+            shots_ = toy;
+        }
+        std::vector<std::string> args = {"run", toy.string(), "--window", "--size", "200x100"};
         args.insert(args.end(), extra.begin(), extra.end());
         toyhost_.emplace(kToyhost, args, dir_ / "toyhost.log");
-        auto [code, id] = shell("timeout 20 xdotool search --sync --onlyvisible --name '^window-probe' | head -n1");
+        const std::string name = gallery.empty() ? "window-probe" : gallery;
+        auto [code, id] = shell("timeout 20 xdotool search --sync --onlyvisible --name '^" + name + "' | head -n1");
         ASSERT_EQ(code, 0) << toyhost_->log();
         window_ = id.substr(0, id.find('\n'));
         ASSERT_FALSE(window_.empty()) << toyhost_->log();
@@ -60,13 +68,14 @@ protected:
     }
     // F12, then the screenshot it wrote.
     Image8 screenshot() {
-        for (const auto& entry : fs::directory_iterator(dir_))
+        const fs::path shots = shots_.empty() ? dir_ : shots_;
+        for (const auto& entry : fs::directory_iterator(shots))
             if (entry.path().extension() == ".png") fs::remove(entry.path());
         pause(0.3);  // let the frames after the last input render
         xdo("key F12");
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
         while (std::chrono::steady_clock::now() < deadline) {
-            for (const auto& entry : fs::directory_iterator(dir_))
+            for (const auto& entry : fs::directory_iterator(shots))
                 if (entry.path().extension() == ".png") {
                     Result<Image8> image = readPng(entry.path());
                     EXPECT_TRUE(image.ok()) << image.error().text();
@@ -89,6 +98,7 @@ protected:
     std::string title() { return shell("xdotool getwindowname " + window_).second; }
 
     fs::path dir_;
+    fs::path shots_;  // where F12 writes, when not dir_
     std::optional<BackgroundProcess> toyhost_;
     std::string window_;
 };
@@ -109,6 +119,55 @@ TEST_F(WindowMode, FramesArePixelIdenticalToHeadless) {
         EXPECT_FALSE(windowBytes.empty());
         EXPECT_EQ(windowBytes, headlessBytes) << "frame " << frame;
     }
+}
+
+// Every gallery shader runs in a window too, and with --fps its frames equal the headless ones.
+TEST_F(WindowMode, GalleryShadersRenderTheSameInAWindow) {
+    for (const char* gallery : {"raymarched-sea", "exp-sine-ocean", "lake-optics", "caustics-pool", "ripple-pool",
+                                "coastal-foam"}) {
+        SCOPED_TRACE(gallery);
+        std::string bytes[2];
+        int i = 0;
+        for (const char* mode : {"--window", "--headless"}) {
+            const fs::path out = dir_ / (std::string(gallery) + mode + ".png");
+            auto run = shell("'" + kToyhost.string() + "' run '" + (kSource / "shadertoys" / gallery).string() + "' " + mode +
+                             " --size 96x54 --frames 3 --capture-every 2 --start-time 2 --fps 30 --quiet --out '" +
+                             (dir_ / (std::string(gallery) + mode + "_%d.png")).string() + "' 2>&1");
+            ASSERT_EQ(run.first, 0) << run.second;
+            std::ifstream file(dir_ / (std::string(gallery) + mode + "_2.png"), std::ios::binary);
+            bytes[i++].assign(std::istreambuf_iterator<char>(file), {});
+        }
+        EXPECT_FALSE(bytes[0].empty());
+        EXPECT_EQ(bytes[0], bytes[1]) << "window and headless frames differ";
+    }
+}
+
+// ripple-pool with a real drag: the ripples are where the pointer went, and nowhere else.
+TEST_F(WindowMode, RipplePoolDragLeavesRipplesWhereThePointerWent) {
+    start({}, "ripple-pool");
+    const Image8 calm = screenshot();
+    xdo("mousemove --window " + window_ + " 30 70 mousedown 1");
+    for (int x = 40; x <= 100; x += 10) {
+        xdo("mousemove --window " + window_ + " " + std::to_string(x) + " 70");
+        pause(0.03);
+    }
+    xdo("mouseup 1");
+    xdo("key F6");  // pause: the rings stop spreading
+    const Image8 dragged = screenshot();
+    ASSERT_EQ(calm.rgba.size(), dragged.rgba.size());
+    // Window y 70 is canvas row 100 - 70 = 30 (origin bottom-left). Count changed pixels near
+    // the drag's path and in the far corner (x 150.., y 70..: more than 50 px from any drop).
+    auto changed = [&](int x0, int y0, int x1, int y1) {
+        int n = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                const std::size_t i = (static_cast<std::size_t>(y) * calm.width + x) * 4;
+                n += std::abs(calm.rgba[i] - dragged.rgba[i]) + std::abs(calm.rgba[i + 1] - dragged.rgba[i + 1]) > 6;
+            }
+        return n;
+    };
+    EXPECT_GT(changed(30, 22, 100, 38), 100) << "no ripples along the drag";
+    EXPECT_EQ(changed(170, 75, 200, 100), 0) << "ripples far from the drag";
 }
 
 TEST_F(WindowMode, MouseFollowsTheSitesIMouseRules) {
