@@ -30,6 +30,24 @@ MouseScriptPlayer::MouseScriptPlayer(MouseScript script)
 }
 
 void MouseScriptPlayer::eventsBeforeFrame(std::int64_t frame, double iTime, std::vector<InputEvent>& out) {
+    // Glides already under way move first, by the fraction of the way on their own clock (so a
+    // glide that fires late, in a run that starts later, is where it would have been); a glide
+    // that arrives now leaves the pointer at its end before this frame's events, so a glide that
+    // starts here, or an "up", starts from there.
+    // One step of `glide` for this frame; true when it has arrived.
+    auto stepGlide = [&](const ActiveGlide& glide) {
+        const bool byFrame = glide.start.clock == ScriptMoment::Clock::Frame;
+        const double done = byFrame ? double(frame - glide.start.frame) / double(glide.end.end.frame - glide.start.frame)
+                                    : (iTime - glide.start.seconds) / (glide.end.end.seconds - glide.start.seconds);
+        const bool arrived = glide.end.end.dueBefore(frame, iTime);
+        const float t = arrived ? 1.0f : static_cast<float>(std::clamp(done, 0.0, 1.0));
+        const glm::vec2 at = glide.from + (glide.end.position - glide.from) * t;
+        out.push_back(InputEvent::mouseMove(at.x, at.y));
+        pointerAt(at);
+        return arrived;
+    };
+    for (auto it = glides_.begin(); it != glides_.end();) it = stepGlide(*it) ? glides_.erase(it) : it + 1;
+
     using Type = MouseScriptEvent::Type;
     cursor_.takeDue(frame, iTime, [&](std::size_t i) {
         const MouseScriptEvent& e = script_.events[i];
@@ -37,8 +55,13 @@ void MouseScriptPlayer::eventsBeforeFrame(std::int64_t frame, double iTime, std:
         switch (e.type) {
         case Type::Down: out.push_back(InputEvent::mouseDown(e.position->x, e.position->y)); break;
         case Type::Move:
-            if (e.to) glides_.push_back(ActiveGlide{e.at, *e.to, pointer_});
-            else out.push_back(InputEvent::mouseMove(e.position->x, e.position->y));
+            if (e.to) {
+                // From where the pointer is (its own x, y when given); its first step is now.
+                const ActiveGlide glide{e.at, *e.to, pointer_};
+                if (!stepGlide(glide)) glides_.push_back(glide);
+            } else {
+                out.push_back(InputEvent::mouseMove(e.position->x, e.position->y));
+            }
             break;
         case Type::Up:
             if (e.position) out.push_back(InputEvent::mouseMove(e.position->x, e.position->y));
@@ -50,19 +73,6 @@ void MouseScriptPlayer::eventsBeforeFrame(std::int64_t frame, double iTime, std:
             break;
         }
     });
-    // Glides: the fraction of the way by the event's own clock, so a glide that fires late (a
-    // run that starts later) is where it would have been.
-    for (auto it = glides_.begin(); it != glides_.end();) {
-        const bool byFrame = it->start.clock == ScriptMoment::Clock::Frame;
-        const double done = byFrame ? double(frame - it->start.frame) / double(it->end.end.frame - it->start.frame)
-                                    : (iTime - it->start.seconds) / (it->end.end.seconds - it->start.seconds);
-        const bool arrived = it->end.end.dueBefore(frame, iTime);
-        const float t = arrived ? 1.0f : static_cast<float>(std::clamp(done, 0.0, 1.0));
-        const glm::vec2 at = it->from + (it->end.position - it->from) * t;
-        out.push_back(InputEvent::mouseMove(at.x, at.y));
-        pointerAt(at);
-        it = arrived ? glides_.erase(it) : it + 1;
-    }
 }
 
 void MouseScriptPlayer::applyBeforeFrame(std::int64_t frame, double iTime, MouseState& mouse) {

@@ -40,7 +40,8 @@ private:
 // Call eventsBeforeFrame(n, iTime) once per frame, with increasing n, before rendering frame n:
 // it appends the events due to `out`. "click" presses and releases before the same frame.
 // applyBeforeFrame does the same straight into a MouseState. A gliding "move" adds one move per
-// frame, after that frame's own events, until it arrives.
+// frame, before that frame's own events, until it arrives (so a glide that arrives on the frame
+// another starts, or an "up" fires, hands over at its end point).
 class MouseScriptPlayer {
 public:
     explicit MouseScriptPlayer(MouseScript script);

@@ -1,6 +1,7 @@
 #include "manifest/ManifestLoader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -161,7 +162,8 @@ private:
             bool parsed = false;
             if (size->is_string()) {
                 char x = 0, extra = 0;
-                const std::string text = size->get<std::string>();
+                std::string text = size->get<std::string>();
+                while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
                 parsed = std::sscanf(text.c_str(), "%lld%c%lld%c", &w, &x, &h, &extra) == 3 && (x == 'x' || x == 'X');
             } else if (size->is_array() && size->size() == 2 && (*size)[0].is_number_integer() &&
                        (*size)[1].is_number_integer()) {

@@ -114,7 +114,8 @@ Result<StarterLayout> parseStarterLayout(std::string_view text) {
         if (comma == std::string::npos) comma = all.size();
         std::string word = trimmed(std::string_view(all).substr(start, comma - start));
         if (word.rfind("buffer ", 0) == 0) word = trimmed(word.substr(7));
-        if (word == "common") layout.common = true;
+        if (word.empty()) {  // "image," or "a,,image": nothing between the commas
+        } else if (word == "common") layout.common = true;
         else if (word == "image") {
         } else if (word.size() == 1 && word[0] >= 'a' && word[0] <= 'd') layout.buffers[word[0] - 'a'] = true;
         else

@@ -130,8 +130,11 @@ const StockMediaInfo* nearStockMedia(std::string_view ref) {
     if (const auto dot = ref.rfind('.'); dot != std::string_view::npos) ref.remove_suffix(ref.size() - dot);
     // A hash is 64 hex digits: a typo changes a few, a different texture changes most of them.
     constexpr std::size_t kHashTypos = 3;
+    std::string lowered(ref);
+    for (char& c : lowered) c = lowerAscii(c);  // hashes match whatever their case, as in findStockMedia
     for (const StockMediaInfo& info : kStockMedia)
-        if (ref.size() + kHashTypos >= info.hash.size() && editDistance(ref, info.hash) <= kHashTypos) return &info;
+        if (lowered.size() + kHashTypos >= info.hash.size() && editDistance(lowered, info.hash) <= kHashTypos)
+            return &info;
     std::vector<std::string> names;
     for (const StockMediaInfo& info : kStockMedia) names.emplace_back(info.name);
     if (std::optional<std::string> name = closestMatch(ref, names)) return findStockMedia(*name);
