@@ -62,14 +62,18 @@ EncoderPool::EncoderPool(FrameSink& sink, int threads, std::size_t memoryCapByte
 }
 
 EncoderPool::~EncoderPool() {
-    if (!finished_) {
-        queue_.abort();
-        // A thread blocked inside the sink (a reader that stopped reading, a stalled ffmpeg) is
-        // released first, so joining it cannot hang the process.
-        sink_.cancel();
-        stop();
-        sink_.discard();
-    }
+    if (!finished_) abandon();
+}
+
+void EncoderPool::abandon() {
+    if (abandoned_ || finished_) return;
+    abandoned_ = true;
+    queue_.abort();
+    // A thread blocked inside the sink (a reader that stopped reading, a stalled ffmpeg) is
+    // released first, so joining it cannot hang the process.
+    sink_.cancel();
+    stop();
+    sink_.discard();
 }
 
 void EncoderPool::work() {
@@ -83,6 +87,7 @@ void EncoderPool::work() {
     EncodeScratch scratch;
     while (std::optional<CapturedFrame> frame = queue_.pop()) {
         Status written = writeGuarded(*frame, scratch);
+        if (written) ++framesWritten_;
         queue_.recycle(std::move(frame->pixels));
         if (!written) {
             fail(written.error());
@@ -143,6 +148,7 @@ Status EncoderPool::submit(CapturedFrame frame) {
             PipeSignalBlock noSigpipe;
             return writeGuarded(frame, inlineScratch_);
         }();
+        if (written) ++framesWritten_;
         queue_.recycle(std::move(frame.pixels));
         if (!written) fail(written.error());
         return written;

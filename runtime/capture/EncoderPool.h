@@ -5,6 +5,8 @@
 // returned to the producer at its next call. No GL needed.
 #pragma once
 
+#include <atomic>
+
 #include <cstddef>
 #include <memory>
 #include <mutex>
@@ -43,6 +45,12 @@ public:
 
     int threads() const { return static_cast<int>(workers_.size()); }
     std::uint64_t bytesWritten() const { return sink_.bytesWritten(); }
+    // Frames the sink has written completely so far.
+    int framesWritten() const { return framesWritten_.load(); }
+    // Gives up: frames still queued are dropped, the threads stop (a thread blocked in the sink is
+    // released first) and the sink discards what is incomplete. Idempotent; the destructor calls
+    // it when finish() did not succeed.
+    void abandon();
     const FrameQueue& queue() const { return queue_; }
 
 private:
@@ -58,6 +66,8 @@ private:
     std::vector<std::thread> workers_;
     mutable std::mutex errorMutex_;
     std::optional<Error> error_;
+    std::atomic<int> framesWritten_{0};
+    bool abandoned_ = false;
     bool finished_ = false;
 };
 

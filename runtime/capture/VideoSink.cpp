@@ -1,5 +1,10 @@
 #include "capture/VideoSink.h"
 
+#include <atomic>
+#include <unistd.h>
+
+#include "core/InFlight.h"
+
 #include <algorithm>
 #include <cctype>
 #include <sstream>
@@ -85,7 +90,15 @@ Result<std::unique_ptr<VideoSink>> VideoSink::start(const fs::path& path, int wi
         if (ec) return fileError(path.parent_path().string(), "cannot create folder: " + ec.message(), "io.write");
     }
     sink->temp_ = temporarySibling(path);
-    sink->log_ = temporarySibling(path.string() + ".ffmpeg-log");
+    // ffmpeg's log goes to the temporary folder, not beside the video: when the output's disk is
+    // full, the log must still say so.
+    static std::atomic<unsigned> logs{0};
+    sink->log_ = fs::temp_directory_path(ec) /
+                 ("toyhost-ffmpeg-" + std::to_string(::getpid()) + "-" + std::to_string(logs++) + ".log");
+    // Both are removed by an emergency exit (core/InFlight.h); ffmpeg is killed first.
+    if (!inflight::addFile(sink->temp_) || !inflight::addFile(sink->log_))
+        return fileError(path.string(), "not started: toyhost is stopping", "interrupted");
+    sink->registered_ = true;
     VideoRequest request{sink->temp_, lowerExtension(path), width, height, fps, settings};
     Result<ChildProcess> ffmpeg = ChildProcess::spawn(ffmpegArguments(request), sink->log_);
     if (!ffmpeg) {
@@ -98,6 +111,10 @@ Result<std::unique_ptr<VideoSink>> VideoSink::start(const fs::path& path, int wi
 
 VideoSink::~VideoSink() {
     if (!closed_) discard();
+    if (registered_) {
+        inflight::removeFile(temp_);
+        inflight::removeFile(log_);
+    }
 }
 
 Error VideoSink::ffmpegFailed(const std::string& what) const {

@@ -55,6 +55,7 @@ private:
     std::filesystem::path temp_;
     std::filesystem::path log_;
     std::optional<ChildProcess> ffmpeg_;
+    bool registered_ = false;  // temp_ and log_ are in core/InFlight.h
     bool closed_ = false;
 };
 

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "core/FileDescriptor.h"
+#include "core/InFlight.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -47,17 +48,22 @@ Status writeFileAtomically(const fs::path& path,
         if (ec) return fileError(path.parent_path().string(), "cannot create folder: " + ec.message(), "io.write");
     }
     const fs::path temp = temporarySibling(path);
+    // Registered while it exists, so an emergency exit removes it (core/InFlight.h).
+    if (!inflight::addFile(temp)) return fileError(path.string(), "not written: toyhost is stopping", "interrupted");
     Status written = write(temp);
     if (!written) {
         fs::remove(temp, ec);
+        inflight::removeFile(temp);
         return written;
     }
     fs::rename(temp, path, ec);
     if (ec) {
         std::error_code ignored;  // `ec` carries the rename's reason into the message
         fs::remove(temp, ignored);
+        inflight::removeFile(temp);
         return fileError(path.string(), "cannot rename the temporary file into place: " + ec.message(), "io.write");
     }
+    inflight::removeFile(temp);
     return okStatus();
 }
 

@@ -1,5 +1,7 @@
 #include "core/ChildProcess.h"
 
+#include "core/InFlight.h"
+
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
@@ -70,7 +72,10 @@ Result<ChildProcess> ChildProcess::spawn(const std::vector<std::string>& argv, c
     sigemptyset(&none);
     posix_spawnattr_setsigdefault(&attributes, &defaults);
     posix_spawnattr_setsigmask(&attributes, &none);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+    // Its own process group: Ctrl-C in a terminal signals the foreground group, and the encoder
+    // must hear about it from toyhost (which finishes or discards the output), not on its own.
+    posix_spawnattr_setpgroup(&attributes, 0);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETPGROUP);
 
     std::vector<char*> args;
     for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
@@ -80,6 +85,7 @@ Result<ChildProcess> ChildProcess::spawn(const std::vector<std::string>& argv, c
     posix_spawn_file_actions_destroy(&actions);
     posix_spawnattr_destroy(&attributes);
     if (spawned != 0) return Error(name + ": cannot start: " + std::strerror(spawned), "process");
+    inflight::addChild(pid);  // an emergency exit kills it (core/InFlight.h)
 
     ChildProcess child;
     child.pid_ = pid;
@@ -120,6 +126,7 @@ Result<int> ChildProcess::closeAndWait() {
     pid_t waited;
     do waited = ::waitpid(pid_, &status, 0);
     while (waited < 0 && errno == EINTR);
+    inflight::removeChild(pid_);
     pid_ = -1;
     if (waited < 0) return Error(name_ + ": waitpid failed: " + std::strerror(errno), "process");
     if (WIFSIGNALED(status)) return Error(name_ + ": killed by signal " + std::to_string(WTERMSIG(status)), "process");
@@ -137,6 +144,7 @@ void ChildProcess::kill() {
     int status = 0;
     while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
+    inflight::removeChild(pid_);
     pid_ = -1;
 }
 

@@ -18,5 +18,14 @@ inline constexpr int kMaxCanvasSide = 16384;     // --size limit, before asking 
 // iTimeDelta the site uses on the frame after a restart and while paused (1/60 s).
 inline constexpr double kRestartTimeDelta = 1.0 / 60.0;
 inline constexpr double kSampleRate = 44100.0;   // iSampleRate in every pass
+// The watchdog (headless runs; a window has no frame limit): a frame whose passes take longer
+// than this ends the run (--frame-timeout), and so does a pass that takes longer to compile
+// (--compile-timeout). 0 turns either off.
+inline constexpr double kFrameTimeoutSeconds = 60.0;
+inline constexpr double kCompileTimeoutSeconds = 120.0;
+// After Ctrl-C or SIGTERM the run stops before its next frame; when the render thread is stuck
+// in GL (a long draw, a stalled encoder) for longer than this, toyhost removes its unfinished
+// files, stops its child processes and exits anyway.
+inline constexpr double kStopGraceSeconds = 3.0;
 
 }  // namespace toyhost::defaults

@@ -23,6 +23,8 @@ RendererDesc rendererDesc(const PlayerDesc& desc, int width, int height) {
     r.height = height;
     r.floatImageTarget = desc.floatImage;
     r.allocate = desc.allocate;
+    r.activity = desc.activity;
+    r.watchDraws = desc.watchDraws;
     return r;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/Result.h"
+#include "core/RunActivity.h"
 #include "graph/PassGraph.h"
 #include "manifest/ManifestDesc.h"
 #include "media/ChannelImages.h"
@@ -20,6 +21,10 @@ struct PlayerDesc {
     int height = 0;
     // Render the Image pass into RGBA32F instead of RGBA8 (EXR capture of Image, float checks).
     bool floatImage = false;
+    // Published for a watchdog (compiling, and with watchDraws the pass being drawn); see
+    // RendererDesc::activity.
+    RunActivity* activity = nullptr;
+    bool watchDraws = false;
     // Tests make allocations fail here to check that resize is all-or-nothing; empty: real GL.
     TextureAllocator allocate;
 };

@@ -43,6 +43,16 @@ struct Renderer::Impl {
     std::map<std::tuple<std::string, bool, bool>, InputTexture> inputs;
     std::vector<PassRuntime> passes;
     std::uint64_t lastStep = 0;
+    RunActivity* activity = nullptr;
+    bool watchDraws = false;
+
+    // Compiles `pass`, telling the watchdog which pass is compiling.
+    Result<PassProgram> compile(const ManifestDesc& manifest, const PassDesc& pass) {
+        if (activity) activity->begin(RunActivity::Phase::Compiling, passName(pass.id));
+        Result<PassProgram> program = compilePassProgram(manifest, pass);
+        if (activity) activity->idle();
+        return program;
+    }
 
     GLenum imageFormat() const { return floatImage ? GL_RGBA32F : GL_RGBA8; }
 
@@ -70,6 +80,22 @@ struct Renderer::Impl {
     }
 };
 
+namespace {
+// Waits until the GPU has drawn everything issued so far, publishing `pass` as the one being drawn.
+void waitForPass(RunActivity* activity, const char* pass, int frame) {
+    activity->begin(RunActivity::Phase::Drawing, pass, frame);
+    GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    if (fence) {
+        constexpr GLuint64 kSecond = 1000000000;
+        GLenum waited;
+        do waited = glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, kSecond);
+        while (waited == GL_TIMEOUT_EXPIRED);
+        glDeleteSync(fence);
+    }
+    activity->idle();
+}
+}  // namespace
+
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Renderer::~Renderer() = default;
 
@@ -78,6 +104,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
     if (Status features = checkRequiredGlFeatures(); !features) return features.error();
     auto impl = std::make_unique<Impl>();
     impl->allocate = desc.allocate ? desc.allocate : TextureAllocator(createRenderTexture);
+    impl->activity = desc.activity;
+    impl->watchDraws = desc.watchDraws && desc.activity;
     const int w = desc.width, h = desc.height;
     const std::array<float, 3> canvas{float(w), float(h), 1.0f};
 
@@ -86,7 +114,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
     std::vector<Diagnostic> problems;
     std::vector<PassProgram> programs;
     for (size_t p = 0; p < graph.passes.size(); ++p) {
-        Result<PassProgram> program = compilePassProgram(manifest, manifest.passes[p]);
+        Result<PassProgram> program = impl->compile(manifest, manifest.passes[p]);
         if (!program) {
             problems.insert(problems.end(), program.error().diagnostics.begin(), program.error().diagnostics.end());
             continue;
@@ -184,6 +212,7 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
         glDrawArrays(GL_TRIANGLES, 0, 3);
         // Mipmaps of a buffer are regenerated only when some channel samples it with `mipmap`.
         if (!isImage) s.buffers[pass.plan.targetBuffer]->generateMipmaps(slotWritten(step));
+        if (s.watchDraws) waitForPass(s.activity, passName(pass.plan.id), u.frame);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     s.lastStep = step;
@@ -229,7 +258,7 @@ void Renderer::clearBuffers() {
 }
 
 Status Renderer::replaceProgram(std::size_t index, const ManifestDesc& manifest, const PassDesc& pass) {
-    Result<PassProgram> program = compilePassProgram(manifest, pass);
+    Result<PassProgram> program = impl_->compile(manifest, pass);
     if (!program) return program.error();
     PassRuntime& runtime = impl_->passes.at(index);
     runtime.program = std::move(*program);

@@ -15,6 +15,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/Result.h"
+#include "core/RunActivity.h"
 #include "graph/PassGraph.h"
 #include "image/Image.h"
 #include "manifest/ManifestDesc.h"
@@ -30,6 +31,12 @@ struct RendererDesc {
     // wanted (EXR capture of Image, tests).
     bool floatImageTarget = false;
     TextureAllocator allocate;     // empty: createRenderTexture
+    // For a watchdog (set by runs with a frame or compile time limit): compiling publishes the
+    // pass; with `watchDraws`, each pass of a frame is also waited for before the next is drawn,
+    // publishing the pass being drawn, so a runaway shader can be named (a GPU round trip per
+    // pass: docs/performance.md measures it).
+    RunActivity* activity = nullptr;
+    bool watchDraws = false;
 };
 
 // Per-frame uniform values; the caller owns the clock and the inputs.

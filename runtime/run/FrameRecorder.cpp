@@ -50,7 +50,7 @@ FrameRecorder::~FrameRecorder() {
     ring_.reset();
 }
 
-RecorderSettings recorderSettings(const PreparedRun& run) {
+RecorderSettings recorderSettings(const PreparedRun& run, RunActivity* activity) {
     const RunOptions& o = run.options;
     RecorderSettings settings;
     settings.output = *run.output;
@@ -63,6 +63,7 @@ RecorderSettings recorderSettings(const PreparedRun& run) {
     settings.fps = o.fps.value_or(defaults::kFps);
     settings.rawStreamFd = o.rawStreamFd;
     settings.dropWhenBusy = o.interactive && !o.fps;
+    settings.activity = activity;
     return settings;
 }
 
@@ -78,12 +79,14 @@ Status FrameRecorder::capture(const Player& player, int frame) {
         if (!pixels) return pixels.error();
         if (!*pixels) return okStatus();  // dropped
         readFramebuffer(output.framebuffer, width_, height_, format_, **pixels);
+        ++captured_;
         scanFloatFrame(frame, **pixels);
         return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(**pixels)});
     }
     if (ring_->full())
         if (Status collected = collectOldest(); !collected) return collected;
     ring_->start(output.framebuffer, frame);
+    ++captured_;
     return poll();
 }
 
@@ -100,7 +103,9 @@ Result<std::optional<std::vector<std::byte>>> FrameRecorder::takeBuffer(std::siz
         return buffer;
     }
     // Blocks while the encoders hold the memory cap: back-pressure reaches the render loop here.
+    if (settings_.activity) settings_.activity->begin(RunActivity::Phase::WaitingForOutput);
     Result<std::vector<std::byte>> buffer = pool_->acquire(bytes);
+    if (settings_.activity) settings_.activity->idle();
     if (!buffer) return buffer.error();
     return std::optional<std::vector<std::byte>>(std::move(*buffer));
 }
@@ -123,6 +128,12 @@ void FrameRecorder::scanFloatFrame(int frame, const std::vector<std::byte>& pixe
     const std::span<const float> values(reinterpret_cast<const float*>(pixels.data()), pixels.size() / sizeof(float));
     const NonFiniteFind found = findNonFinite(values, width_);
     if (found.count()) firstNonFinite_.emplace(frame, found);
+}
+
+FrameRecorder::Abandoned FrameRecorder::abandon() {
+    pool_->abandon();
+    const int written = pool_->framesWritten();
+    return {written, captured_ - written - dropped_};
 }
 
 Status FrameRecorder::finish() {

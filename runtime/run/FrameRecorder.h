@@ -36,12 +36,14 @@ struct RecorderSettings {
     // Real-time window runs: when the encoders are behind by the memory cap, drop the frame
     // instead of making the render (UI) thread wait. Off: every frame is written (back-pressure).
     bool dropWhenBusy = false;
+    // Published while the render thread waits for the encoders (a stalled ffmpeg shows here).
+    RunActivity* activity = nullptr;
 };
 
 // The recorder settings a run asks for: its output, pass, PNG level, encoders, memory cap, video
 // settings and frame rate (the default rate when a window runs in real time, which then also
 // drops frames rather than wait for the encoders).
-RecorderSettings recorderSettings(const PreparedRun& run);
+RecorderSettings recorderSettings(const PreparedRun& run, RunActivity* activity = nullptr);
 
 class FrameRecorder {
 public:
@@ -58,6 +60,13 @@ public:
     Status finish();
 
     std::uint64_t bytesWritten() const { return pool_->bytesWritten(); }
+    // Stops without completing (an interrupted run): frames read back or queued but not written
+    // are dropped, a stream's output is discarded, complete image files stay.
+    struct Abandoned {
+        int written = 0;  // frames the sink completed
+        int dropped = 0;  // captured frames that were never written
+    };
+    Abandoned abandon();
     int encoderThreads() const { return pool_->threads(); }
     int droppedFrames() const { return dropped_; }
     // Float captures (EXR of a buffer, or of Image): the first captured frame that held NaN or Inf,
@@ -77,6 +86,7 @@ private:
     RecorderSettings settings_;
     int width_ = 0, height_ = 0;
     int dropped_ = 0;
+    int captured_ = 0;  // capture() calls that took a frame
     std::optional<std::pair<int, NonFiniteFind>> firstNonFinite_;
     // A pixel buffer for a frame: waits for one, or (dropWhenBusy) gives nothing when none is free.
     Result<std::optional<std::vector<std::byte>>> takeBuffer(std::size_t bytes);

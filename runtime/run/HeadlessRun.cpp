@@ -25,6 +25,27 @@ std::vector<std::filesystem::path> capturedFiles(const OutputPattern& output, in
 
 namespace {
 
+// The error of a run stopped by a signal before frame `frame` of `frames`: what was written and
+// what was not (queued frames are dropped).
+Error interrupted(int frame, int frames, FrameRecorder* recorder, const PreparedRun& run) {
+    std::string message = frame < frames
+                              ? "interrupted after " + std::to_string(frame) + " of " + std::to_string(frames) + " frames"
+                              : "interrupted while the last captured frames were written";
+    if (recorder) {
+        const FrameRecorder::Abandoned a = recorder->abandon();
+        const auto plural = [](int n, const char* what) {
+            return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+        };
+        switch (run.output->format()) {
+            case OutputFormat::Video: message += "; the unfinished video was discarded"; break;
+            case OutputFormat::RawStream: message += "; " + plural(a.written, "frame") + " went to stdout"; break;
+            default: message += "; " + plural(a.written, "file") + " written"; break;
+        }
+        if (a.dropped > 0) message += ", " + plural(a.dropped, "captured frame") + " not written (dropped)";
+    }
+    return Error(message, "interrupted");
+}
+
 // Renders frames 0..frames-1 of `player` (from iFrame 0) with the fixed clock, the input scripts
 // and, when `run` has an output, a new FrameRecorder; fills `report`.
 Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observer, RunReport& report,
@@ -33,7 +54,7 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
     const RunOptions& o = run.options;
     std::unique_ptr<FrameRecorder> recorder;
     if (run.output) {
-        Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(recorderSettings(run), player);
+        Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(recorderSettings(run, observer.activity()), player);
         if (!created) return created.error();
         recorder = std::move(*created);
     }
@@ -67,9 +88,7 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
 
     const auto loopStart = Clock::now();
     for (int frame = 0; frame < *o.frames; ++frame) {
-        if (observer.stopRequested())
-            return Error("interrupted after " + std::to_string(frame) + " of " + std::to_string(*o.frames) + " frames",
-                         "interrupted");
+        if (observer.stopRequested()) return interrupted(frame, *o.frames, recorder.get(), run);
         const double time = clock.time(frame);
         events.clear();
         mouseScript.eventsBeforeFrame(frame, time, events);
@@ -97,7 +116,11 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
         observer.progress(progress);
     }
     if (recorder) {
-        if (Status finished = recorder->finish(); !finished) return finished;
+        Status finished = recorder->finish();
+        // A signal during the final writes still ends the run as interrupted (exit 130/143),
+        // whatever the encoders managed.
+        if (observer.stopRequested()) return interrupted(*o.frames, *o.frames, recorder.get(), run);
+        if (!finished) return finished;
         report.bytesWritten = recorder->bytesWritten();
         report.encoderThreads = recorder->encoderThreads();
         if (const auto& nonFinite = recorder->firstNonFinite())
@@ -131,6 +154,8 @@ Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) 
     desc.width = *o.width;
     desc.height = *o.height;
     desc.floatImage = run.output && run.output->format() == OutputFormat::Exr && o.capturePass == PassId::Image;
+    desc.activity = observer.activity();
+    desc.watchDraws = *o.frameTimeout > 0;
     std::optional<ShadertoyWatcher> watcher;
     if (o.watch) watcher.emplace(o.target, o.media, run.plan.manifest);
     auto stop = [&] { return observer.stopRequested(); };

@@ -10,6 +10,7 @@
 
 #include "core/Diagnostic.h"
 #include "core/Result.h"
+#include "core/RunActivity.h"
 #include "timing/ProgressLine.h"
 
 namespace toyhost {
@@ -40,6 +41,9 @@ public:
     // --watch: a round of frames ended (`report`) or failed (`error`); the run now waits for the
     // next change of the shadertoy's files.
     virtual void roundFinished(const Result<RunReport>& round) { (void)round; }
+    // Where the run publishes what its render thread is doing, for a watchdog on another thread
+    // (core/RunActivity.h); nullptr when nobody watches (then passes are not waited for one by one).
+    virtual RunActivity* activity() { return nullptr; }
 };
 
 }  // namespace toyhost

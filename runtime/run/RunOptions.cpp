@@ -29,6 +29,8 @@ RunOptions withDefaults(RunOptions o) {
     if (!o.captureEvery) o.captureEvery = defaults::kCaptureEvery;
     if (!o.pngLevel) o.pngLevel = defaults::kPngLevel;
     if (!o.captureMemoryBytes) o.captureMemoryBytes = defaults::kCaptureMemoryMiB << 20;
+    if (!o.frameTimeout) o.frameTimeout = o.interactive ? 0.0 : defaults::kFrameTimeoutSeconds;
+    if (!o.compileTimeout) o.compileTimeout = defaults::kCompileTimeoutSeconds;
     return o;
 }
 
@@ -54,6 +56,9 @@ Result<PreparedRun> prepareRun(const RunOptions& options) {
     if (o.fps && (!(*o.fps > 0) || !std::isfinite(*o.fps))) return usage("--fps must be a positive number");
     if (!std::isfinite(o.startTime)) return usage("--start-time must be a finite number");
     if (*o.captureEvery < 1) return usage("--capture-every must be at least 1");
+    for (const auto& [name, value] : {std::pair{"--frame-timeout", *o.frameTimeout}, {"--compile-timeout", *o.compileTimeout}})
+        if (!std::isfinite(value) || value < 0 || value > 1e6)
+            return usage(std::string(name) + " must be a number of seconds from 0 (off) to 1000000");
     if (*o.captureMemoryBytes == 0) return usage("--capture-memory must be at least 1 (MiB)");
     if (o.mouse && o.mouseScript) return usage("--mouse and --mouse-script cannot be combined");
     if (*o.pngLevel < 0 || *o.pngLevel > 9) return usage("--png-level must be 0..9");

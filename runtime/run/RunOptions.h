@@ -60,6 +60,10 @@ struct RunOptions {
     // buffer and frame). Without it, buffers are checked at the end of the run and on captured
     // float frames.
     bool checkFinite = false;
+    // Watchdog limits in seconds (0: off); defaults from core/Defaults.h, no frame limit in a
+    // window. Enforced by whoever watches RunObserver::activity() (the CLI).
+    std::optional<double> frameTimeout;
+    std::optional<double> compileTimeout;
 };
 
 // `options` with every absent field set to its default (frames 0 then means "no end"; an

@@ -150,6 +150,8 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
     desc.width = recording ? *o.width : fb.width;
     desc.height = recording ? *o.height : fb.height;
     desc.floatImage = recording && run.output->format() == OutputFormat::Exr && o.capturePass == PassId::Image;
+    desc.activity = observer.activity();
+    desc.watchDraws = *o.frameTimeout > 0;
     const std::string manifestName = run.plan.manifest.name;
     const fs::path manifestFolder = run.plan.manifest.manifestPath.parent_path();
     std::optional<ShadertoyWatcher> watcher;
@@ -161,7 +163,7 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
 
     std::unique_ptr<FrameRecorder> recorder;
     if (recording) {
-        Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(recorderSettings(run), player);
+        Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(recorderSettings(run, observer.activity()), player);
         if (!created) return created.error();
         recorder = std::move(*created);
     }

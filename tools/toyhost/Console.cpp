@@ -1,5 +1,7 @@
 #include "Console.h"
 
+#include <cerrno>
+#include <fcntl.h>
 #include <iostream>
 #include <unistd.h>
 
@@ -8,12 +10,17 @@
 namespace toyhost::cli {
 
 namespace {
-// Set by SIGINT/SIGTERM: the run stops before its next frame and cleans up (a second signal
-// kills the process at once).
+// Set by SIGINT/SIGTERM: the run stops before its next frame. Every signal is also written to a
+// pipe that the StopWatcher thread reads: it acknowledges the signal, and ends the process (after
+// removing unfinished files) at a second signal or when the run does not stop in time.
 volatile std::sig_atomic_t stopSignalNumber = 0;
+int signalPipe[2] = {-1, -1};
 extern "C" void onStopSignal(int signal) {
-    stopSignalNumber = signal;
-    std::signal(signal, SIG_DFL);
+    const int savedErrno = errno;
+    if (!stopSignalNumber) stopSignalNumber = signal;
+    const unsigned char byte = static_cast<unsigned char>(signal);
+    (void)!::write(signalPipe[1], &byte, 1);
+    errno = savedErrno;
 }
 }  // namespace
 
@@ -34,14 +41,21 @@ int usage(const std::string& message) {
 }
 
 void installStopSignals() {
-    std::signal(SIGINT, onStopSignal);
-    std::signal(SIGTERM, onStopSignal);
+    if (signalPipe[0] < 0 && ::pipe2(signalPipe, O_CLOEXEC | O_NONBLOCK) != 0) signalPipe[0] = signalPipe[1] = -1;
+    struct sigaction action {};
+    action.sa_handler = onStopSignal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    ::sigaction(SIGINT, &action, nullptr);
+    ::sigaction(SIGTERM, &action, nullptr);
 }
+
+int stopSignalFd() { return signalPipe[0]; }
 
 int stopSignal() { return stopSignalNumber; }
 
-ConsoleObserver::ConsoleObserver(bool quiet, std::function<void(const RunReport&)> summary)
-    : summary_(std::move(summary)), quiet_(quiet), show_(!quiet && isatty(STDERR_FILENO)) {}
+ConsoleObserver::ConsoleObserver(bool quiet, std::function<void(const RunReport&)> summary, RunActivity* activity)
+    : summary_(std::move(summary)), activity_(activity), quiet_(quiet), show_(!quiet && isatty(STDERR_FILENO)) {}
 
 void ConsoleObserver::roundFinished(const Result<RunReport>& round) {
     if (shown_) std::cerr << "\r\033[K";

@@ -27,15 +27,19 @@ int fail(const Error& error);
 // A usage error with one message; returns 2.
 int usage(const std::string& message);
 
-// SIGINT/SIGTERM set a flag that stopRequested() reads; a second signal ends the process at once.
+// SIGINT/SIGTERM set a flag that stopRequested() reads, and wake the StopWatcher (readable on
+// stopSignalFd()), which acknowledges them and ends the process if the run cannot stop in time.
 void installStopSignals();
 int stopSignal();
+int stopSignalFd();
 
 class ConsoleObserver final : public RunObserver {
 public:
     // `summary` prints a finished round of a --watch run. `quiet`: no progress line and no
     // notices (warnings and errors still print).
-    explicit ConsoleObserver(bool quiet, std::function<void(const RunReport&)> summary = {});
+    explicit ConsoleObserver(bool quiet, std::function<void(const RunReport&)> summary = {},
+                             RunActivity* activity = nullptr);
+    RunActivity* activity() override { return activity_; }
     void notice(const Diagnostic& notice) override;
     bool stopRequested() const override { return stopSignal() != 0; }
     void progress(const RunProgress& p) override;
@@ -43,6 +47,7 @@ public:
 
 private:
     std::function<void(const RunReport&)> summary_;
+    RunActivity* activity_;
     bool quiet_;
     bool show_;
     bool shown_ = false;

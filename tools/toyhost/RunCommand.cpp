@@ -4,6 +4,7 @@
 
 #include "Commands.h"
 #include "Console.h"
+#include "StopWatcher.h"
 #include "core/Defaults.h"
 #include "gl/WindowContext.h"
 #include "run/HeadlessRun.h"
@@ -100,6 +101,13 @@ void RunCommand::define(CLI::App& run) {
     run.add_option("--media", mediaFolders_,
                    "Folder with real stock media files, by hash or name (repeatable; also $TOYHOST_MEDIA)");
     run.add_option("--date", date_, "iDate at frame 0, YYYY-MM-DDTHH:MM:SS (default: now, local time)");
+    run.add_option("--frame-timeout", options_.frameTimeout,
+                   "Watchdog: end the run (exit 124) when one pass of a frame draws for longer than this many "
+                   "seconds, or the encoders take no frame for that long (default " +
+                       number(defaults::kFrameTimeoutSeconds) + " headless, off in a window; 0: off)");
+    run.add_option("--compile-timeout", options_.compileTimeout,
+                   "Watchdog: end the run (exit 124) when compiling one pass takes longer than this many seconds "
+                   "(default " + number(defaults::kCompileTimeoutSeconds) + "; 0: off)");
     run.add_flag("--check-finite", options_.checkFinite,
                  "Read every buffer back after every frame and warn at the first NaN/Inf, naming the pass and the "
                  "frame (without it: buffers are checked after the last frame and in captured EXR frames)");
@@ -175,7 +183,9 @@ int RunCommand::execute() {
     o.watch = watch_;
 
     const char* mode = windowMode ? "in a window" : "headless";
-    ConsoleObserver observer(quiet_, [&](const RunReport& report) { printSummary(report, mode, o); });
+    const RunOptions limits = withDefaults(o);
+    StopWatcher watcher(*limits.frameTimeout, *limits.compileTimeout, defaults::kStopGraceSeconds);
+    ConsoleObserver observer(quiet_, [&](const RunReport& report) { printSummary(report, mode, o); }, watcher.activity());
     Result<RunReport> report = windowMode ? runWindow(o, observer) : runHeadless(o, observer);
     if (!report) return fail(report.error());
     if (!o.watch) printSummary(*report, mode, o);

@@ -1,0 +1,46 @@
+// RunActivity: what the render thread is doing right now (compiling a pass, waiting for a pass to
+// finish drawing, waiting for the encoders), and since when, published for a watchdog on another
+// thread: GL cannot be interrupted, so a runaway shader can only be noticed from outside. The
+// render thread updates it without allocating; any thread reads it. No GL needed.
+#pragma once
+
+#include <chrono>
+#include <mutex>
+
+namespace toyhost {
+
+class RunActivity {
+public:
+    enum class Phase { Idle, Compiling, Drawing, WaitingForOutput };
+
+    struct Snapshot {
+        Phase phase = Phase::Idle;
+        const char* pass = "";  // a pass name ("Buffer A" .. "Image"), or "" when none
+        int frame = -1;         // iFrame being drawn, or -1
+        double seconds = 0;     // how long the phase has lasted
+    };
+
+    // `pass` must be a string that lives for the whole run (passName() returns such).
+    void begin(Phase phase, const char* pass = "", int frame = -1) {
+        std::lock_guard lock(mutex_);
+        phase_ = phase;
+        pass_ = pass;
+        frame_ = frame;
+        since_ = std::chrono::steady_clock::now();
+    }
+    void idle() { begin(Phase::Idle); }
+
+    Snapshot snapshot() const {
+        std::lock_guard lock(mutex_);
+        return {phase_, pass_, frame_, std::chrono::duration<double>(std::chrono::steady_clock::now() - since_).count()};
+    }
+
+private:
+    mutable std::mutex mutex_;
+    Phase phase_ = Phase::Idle;
+    const char* pass_ = "";
+    int frame_ = -1;
+    std::chrono::steady_clock::time_point since_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace toyhost
