@@ -10,6 +10,7 @@ packages=(
   libgtest-dev                                           # tests
   ffmpeg                                                 # video output (--out x.mp4); ffprobe for its tests
   xvfb xauth xdotool                                     # window-mode tests: a virtual X server and real X input
+  parallel                                               # the render-farm shard test (GNU parallel)
 )
 
 missing=()

@@ -22,6 +22,11 @@ public:
     }
     // iFrame back to 0; the step goes on.
     void restart() { frame_ = 0; }
+    // Both counters as a checkpoint saved them.
+    void restore(int frame, std::uint64_t step) {
+        frame_ = frame;
+        step_ = step;
+    }
 
 private:
     int frame_ = 0;

@@ -3,6 +3,7 @@
 // texels() as a single-channel 8-bit texture when revision() changed.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -41,6 +42,12 @@ public:
     // uploaded last and uploads again only when this differs, so an idle keyboard costs nothing
     // per frame; several consumers can each keep their own copy of the number.
     std::uint64_t revision() const { return revision_; }
+
+    // Sets every texel (a resumed checkpoint); counts as a change.
+    void restore(std::span<const std::uint8_t, kWidth * kHeight> texels) {
+        std::copy(texels.begin(), texels.end(), texels_.begin());
+        ++revision_;
+    }
 
 private:
     std::uint8_t& at(int keyCode, Row row) { return texels_[row * kWidth + keyCode]; }

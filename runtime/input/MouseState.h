@@ -36,6 +36,23 @@ public:
 
     bool held() const { return held_; }
 
+    // The whole state, for checkpoints (a resumed run continues exactly where it stopped).
+    struct Saved {
+        glm::vec2 position{0.0f};
+        glm::vec2 clickOrigin{0.0f};
+        bool held = false;
+        bool clickedThisFrame = false;
+        bool everClicked = false;
+    };
+    Saved save() const { return {position_, clickOrigin_, held_, clickedThisFrame_, everClicked_}; }
+    void restore(const Saved& s) {
+        position_ = s.position;
+        clickOrigin_ = s.clickOrigin;
+        held_ = s.held;
+        clickedThisFrame_ = s.clickedThisFrame;
+        everClicked_ = s.everClicked;
+    }
+
 private:
     glm::vec2 position_{0.0f};
     glm::vec2 clickOrigin_{0.0f};

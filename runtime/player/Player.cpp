@@ -1,5 +1,6 @@
 #include "player/Player.h"
 
+#include <algorithm>
 #include <string>
 
 namespace toyhost {
@@ -81,6 +82,60 @@ void Player::step(const FrameTime& time, std::span<const InputEvent> events, boo
     renderer_->renderFrame(uniforms, sequence_.step(), renderImage);
     mouse_.endFrame();
     keyboard_.endFrame();  // its change is uploaded before the next frame renders
+    sequence_.advance();
+}
+
+PlayerState Player::saveState() const {
+    PlayerState state;
+    state.frame = sequence_.frame();
+    state.step = sequence_.step();
+    state.width = renderer_->width();
+    state.height = renderer_->height();
+    state.mouse = mouse_.save();
+    std::copy(keyboard_.texels().begin(), keyboard_.texels().end(), state.keyboard.begin());
+    for (int b = 0; b < kBufferCount; ++b) {
+        if (!renderer_->hasBuffer(b)) continue;
+        PlayerState::Buffer buffer;
+        buffer.index = b;
+        for (int slot = 0; slot < 2; ++slot) renderer_->readBufferSlot(b, slot, buffer.slots[slot]);
+        state.buffers.push_back(std::move(buffer));
+    }
+    return state;
+}
+
+Status Player::restoreState(const PlayerState& state) {
+    if (state.width != renderer_->width() || state.height != renderer_->height())
+        return Error("the state is for a " + std::to_string(state.width) + "x" + std::to_string(state.height) +
+                         " canvas, this one is " + std::to_string(renderer_->width()) + "x" +
+                         std::to_string(renderer_->height()),
+                     "state.size");
+    std::array<bool, kBufferCount> saved{};
+    const std::size_t values = static_cast<std::size_t>(state.width) * state.height * 4;
+    for (const PlayerState::Buffer& buffer : state.buffers) {
+        if (buffer.index < 0 || buffer.index >= kBufferCount || !renderer_->hasBuffer(buffer.index))
+            return Error(std::string("the state holds ") + passName(bufferPass(std::clamp(buffer.index, 0, 3))) +
+                             ", which this shadertoy does not render",
+                         "state.buffers");
+        for (const std::vector<float>& slot : buffer.slots)
+            if (slot.size() != values) return Error("a buffer of the state has the wrong size", "state.buffers");
+        saved[buffer.index] = true;
+    }
+    for (int b = 0; b < kBufferCount; ++b)
+        if (renderer_->hasBuffer(b) && !saved[b])
+            return Error(std::string("the state has no ") + passName(bufferPass(b)) + ", which this shadertoy renders",
+                         "state.buffers");
+    for (const PlayerState::Buffer& buffer : state.buffers)
+        for (int slot = 0; slot < 2; ++slot) renderer_->writeBufferSlot(buffer.index, slot, buffer.slots[slot]);
+    sequence_.restore(state.frame, state.step);
+    mouse_.restore(state.mouse);
+    keyboard_.restore(state.keyboard);
+    return okStatus();
+}
+
+void Player::skipFrame(std::span<const InputEvent> events) {
+    for (const InputEvent& event : events) applyInput(event, mouse_, keyboard_);
+    mouse_.endFrame();
+    keyboard_.endFrame();
     sequence_.advance();
 }
 

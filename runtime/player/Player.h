@@ -6,6 +6,7 @@
 // holds the context, so its GL objects are destroyed before the context by ownership.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -33,6 +34,22 @@ struct ReloadReport {
     std::vector<Diagnostic> problems;
 };
 
+// Everything a running shadertoy holds that the next frames depend on, besides its code and
+// images: the frame counters, the inputs and both slots of every buffer. A checkpoint is this
+// plus what the run needs to continue (run/Checkpoint.h).
+struct PlayerState {
+    int frame = 0;                 // iFrame of the next frame
+    std::uint64_t step = 0;        // its ping-pong step
+    int width = 0, height = 0;     // canvas
+    MouseState::Saved mouse;
+    std::array<std::uint8_t, KeyboardState::kWidth * KeyboardState::kHeight> keyboard{};
+    struct Buffer {
+        int index = 0;                        // 0..3 = A..D
+        std::array<std::vector<float>, 2> slots;  // RGBA32F, rows bottom first
+    };
+    std::vector<Buffer> buffers;
+};
+
 class Player {
 public:
     // Makes `context` current and builds everything; every shader error is reported at once.
@@ -57,6 +74,16 @@ public:
     void restart();
     // Switches to `next` (made by planPlayer, possibly on another thread): see ReloadReport.
     ReloadReport reload(PlayerPlan next);
+
+    // The state the next frame starts from (reads every buffer back: not for every frame).
+    PlayerState saveState() const;
+    // Continues from `state`: canvas size and buffers must match this shadertoy (errors say which
+    // does not); nothing changes on failure.
+    Status restoreState(const PlayerState& state);
+    // Advances one frame without rendering anything: inputs are applied and end their frame, the
+    // counters advance. Only for shadertoys without buffers (nothing carries over between their
+    // frames), to start a run at a later frame.
+    void skipFrame(std::span<const InputEvent> events = {});
 
     // Where a pass's latest output is (readback, presenting).
     PassOutput output(PassId pass) const { return renderer_->output(pass); }

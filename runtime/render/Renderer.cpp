@@ -218,6 +218,26 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
     s.lastStep = step;
 }
 
+bool Renderer::hasBuffer(int index) const { return impl_->buffers[index].has_value(); }
+
+void Renderer::readBufferSlot(int index, int slot, std::vector<float>& out) const {
+    const RenderTexture& target = impl_->buffers[index]->slot(slot);
+    out.resize(static_cast<std::size_t>(width_) * height_ * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer.id());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, out.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+}
+
+void Renderer::writeBufferSlot(int index, int slot, std::span<const float> rgba) {
+    const PingPongTarget& buffer = *impl_->buffers[index];
+    glBindTexture(GL_TEXTURE_2D, buffer.slot(slot).texture.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    buffer.generateMipmaps(slot);
+}
+
 void Renderer::updateKeyboard(std::span<const std::uint8_t> texels) {
     if (impl_->keyboard) impl_->keyboard->update(texels);
 }

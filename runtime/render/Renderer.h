@@ -84,6 +84,12 @@ public:
     // `old` also has (moving the textures when their layout is the same, else copying).
     void takeBuffersFrom(Renderer& old);
 
+    // One slot of buffer `index` (0..3, must exist) as RGBA floats, rows bottom first; and the
+    // same written back (level 0; its mip levels are rebuilt). For checkpoints.
+    bool hasBuffer(int index) const;
+    void readBufferSlot(int index, int slot, std::vector<float>& out) const;
+    void writeBufferSlot(int index, int slot, std::span<const float> rgba);
+
     int width() const { return width_; }
     int height() const { return height_; }
 

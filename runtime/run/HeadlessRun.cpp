@@ -12,10 +12,11 @@
 
 namespace toyhost {
 
-std::vector<std::filesystem::path> capturedFiles(const OutputPattern& output, int frames, int captureEvery) {
+std::vector<std::filesystem::path> capturedFiles(const OutputPattern& output, int first, int end, int frames,
+                                                 int captureEvery) {
     std::vector<std::filesystem::path> files;
     if (output.format() == OutputFormat::RawStream) return files;
-    for (int frame = 0; frame < frames; ++frame) {
+    for (int frame = first; frame < end; ++frame) {
         if (!isCapturedFrame(frame, frames, captureEvery)) continue;
         files.push_back(output.pathFor(frame));
         if (output.streamed()) break;
@@ -65,11 +66,34 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
     report.height = player.height();
     report.framesRendered = 0;
 
-    const FrameClock clock(*o.fps, o.startTime, o.wallClock ? *o.wallClock : localWallClockNow());
+    const double wallClock = o.wallClock ? *o.wallClock : localWallClockNow();
+    const FrameClock clock(*o.fps, o.startTime, wallClock);
     MouseScriptPlayer mouseScript(run.mouse);
     KeyScriptPlayer keyScript(run.keys);
     std::vector<InputEvent> events;
     events.reserve(64);
+
+    // --resume: the player continues from the checkpoint; the scripts are replayed up to it
+    // (their events are already in the saved mouse and keyboard state).
+    int start = 0;
+    if (run.resume) {
+        if (Status restored = player.restoreState(run.resume->state); !restored)
+            return inFile(o.resume->string(), restored.error());
+        start = run.resume->state.frame;
+        for (int frame = 0; frame < start; ++frame) {
+            events.clear();
+            mouseScript.eventsBeforeFrame(frame, clock.time(frame), events);
+            keyScript.eventsBeforeFrame(frame, clock.time(frame), events);
+        }
+    }
+    auto saveCheckpoint = [&]() -> Status {
+        if (!o.checkpoint) return okStatus();
+        Checkpoint c{player.saveState(), *o.fps, o.startTime, wallClock, player.manifest().name,
+                     codeHash(player.manifest()), channelMedia(player.manifest())};
+        return writeCheckpoint(*o.checkpoint, c);
+    };
+    bool hasBuffers = false;
+    for (const PassDesc& pass : player.manifest().passes) hasBuffers = hasBuffers || isBuffer(pass.id);
     FiniteCheck finite;
     using Coverage = FiniteCheck::Coverage;
     std::vector<float> bufferPixels;
@@ -84,15 +108,27 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
         }
     };
     RunProgress progress;
-    progress.frames = *o.frames;
+    progress.frames = run.end - run.first;
 
     const auto loopStart = Clock::now();
-    for (int frame = 0; frame < *o.frames; ++frame) {
-        if (observer.stopRequested()) return interrupted(frame, *o.frames, recorder.get(), run);
+    for (int frame = start; frame < run.end; ++frame) {
+        if (observer.stopRequested()) {
+            (void)saveCheckpoint();  // best effort: the run is ending anyway
+            return interrupted(frame, run.end, recorder.get(), run);
+        }
         const double time = clock.time(frame);
         events.clear();
         mouseScript.eventsBeforeFrame(frame, time, events);
         keyScript.eventsBeforeFrame(frame, time, events);
+        if (frame < run.first) {
+            // Before the frame range: buffers must still run (their state carries over); a
+            // shadertoy without buffers only needs its inputs and counters to advance.
+            if (hasBuffers) player.step(clock.frameTime(frame), events, /*renderImage=*/false);
+            else player.skipFrame(events);
+            if (o.checkpointEvery && (frame + 1) % *o.checkpointEvery == 0)
+                if (Status saved = saveCheckpoint(); !saved) return saved;
+            continue;
+        }
         const bool captured = run.output && isCapturedFrame(frame, *o.frames, *o.captureEvery);
         // Nothing reads the Image pass, so a run that captures renders it only on the frames it
         // captures: long simulations captured every K frames run at buffer speed. A run without
@@ -107,10 +143,12 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
         }
         if (o.checkFinite) checkBuffers(frame);
         // Frame 0 waits for the GPU once so that the time to the first frame is real.
-        if (o.finishEachFrame || frame == 0) player.finish();
-        if (frame == 0) report.firstFrameSeconds = std::chrono::duration<double>(Clock::now() - started).count();
-        report.framesRendered = frame + 1;
-        progress.framesDone = frame + 1;
+        if (o.finishEachFrame || frame == run.first) player.finish();
+        if (frame == run.first) report.firstFrameSeconds = std::chrono::duration<double>(Clock::now() - started).count();
+        if (o.checkpointEvery && (frame + 1) % *o.checkpointEvery == 0)
+            if (Status saved = saveCheckpoint(); !saved) return saved;
+        report.framesRendered = frame + 1 - run.first;
+        progress.framesDone = frame + 1 - run.first;
         progress.seconds = std::chrono::duration<double>(Clock::now() - loopStart).count();
         progress.bytesWritten = recorder ? recorder->bytesWritten() : 0;
         observer.progress(progress);
@@ -119,7 +157,7 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
         Status finished = recorder->finish();
         // A signal during the final writes still ends the run as interrupted (exit 130/143),
         // whatever the encoders managed.
-        if (observer.stopRequested()) return interrupted(*o.frames, *o.frames, recorder.get(), run);
+        if (observer.stopRequested()) return interrupted(run.end, run.end, recorder.get(), run);
         if (!finished) return finished;
         report.bytesWritten = recorder->bytesWritten();
         report.encoderThreads = recorder->encoderThreads();
@@ -127,10 +165,11 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
             if (auto warning = finite.check(o.capturePass, nonFinite->first, nonFinite->second, Coverage::CapturedFrames))
                 observer.notice(*warning);
     }
-    if (!o.checkFinite && *o.frames > 0) checkBuffers(*o.frames - 1);
+    if (!o.checkFinite && run.end > 0) checkBuffers(run.end - 1);
+    if (Status saved = saveCheckpoint(); !saved) return saved;
     player.finish();  // the reported time includes the GPU's work
     report.seconds = std::chrono::duration<double>(Clock::now() - loopStart).count();
-    report.files = run.output ? capturedFiles(*run.output, *o.frames, *o.captureEvery)
+    report.files = run.output ? capturedFiles(*run.output, run.first, run.end, *o.frames, *o.captureEvery)
                               : std::vector<std::filesystem::path>{};
     return okStatus();
 }

@@ -18,7 +18,9 @@ namespace toyhost {
 
 Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer);
 
-// The files a run with `output` writes for frames 0..frames-1 (one for a video, none for raw).
-std::vector<std::filesystem::path> capturedFiles(const OutputPattern& output, int frames, int captureEvery);
+// The files a run with `output` writes for frames [first, end) of 0..frames-1 (one for a video,
+// none for raw).
+std::vector<std::filesystem::path> capturedFiles(const OutputPattern& output, int first, int end, int frames,
+                                                 int captureEvery);
 
 }  // namespace toyhost

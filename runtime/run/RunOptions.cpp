@@ -11,10 +11,10 @@ namespace toyhost {
 namespace fs = std::filesystem;
 
 namespace {
-int countCaptured(int frames, int every) {
+int countCaptured(int first, int end, int frames, int every) {
     if (frames == 0) return 2;  // no end: as many as the user lets run
     int n = 0;
-    for (int f = 0; f < frames; ++f) n += isCapturedFrame(f, frames, every);
+    for (int f = first; f < end && n < 2; ++f) n += isCapturedFrame(f, frames, every);
     return n;
 }
 
@@ -47,11 +47,49 @@ RunOptions withManifestDefaults(RunOptions o, const RunDefaults& manifest) {
     return o;
 }
 
+// --resume: the clock and canvas come from the checkpoint unless given, and must then agree.
+Result<RunOptions> withCheckpointSettings(RunOptions o, const Checkpoint& c) {
+    const std::string file = o.resume->string();
+    auto differs = [&](const std::string& option, const std::string& value) {
+        return fileError(file, "the checkpoint was made with " + option + " " + value +
+                                   "; resume with the same (or leave the option out)",
+                         "usage.resume");
+    };
+    if (o.width && (*o.width != c.state.width || *o.height != c.state.height))
+        return differs("--size", std::to_string(c.state.width) + "x" + std::to_string(c.state.height));
+    if (o.fps && *o.fps != c.fps) return differs("--fps", std::to_string(c.fps));
+    if (o.startTime != 0 && o.startTime != c.startTime) return differs("--start-time", std::to_string(c.startTime));
+    if (o.wallClock && *o.wallClock != c.wallClock) return differs("--date", "(another date)");
+    o.width = c.state.width;
+    o.height = c.state.height;
+    o.fps = c.fps;
+    o.startTime = c.startTime;
+    o.wallClock = c.wallClock;
+    return o;
+}
+
 Result<PreparedRun> prepareRun(const RunOptions& options) {
     if (options.frames && *options.frames < 1) return usage("--frames must be at least 1");
+    if (options.checkpointEvery && *options.checkpointEvery < 1) return usage("--checkpoint-every must be at least 1");
+    if (options.checkpointEvery && !options.checkpoint) return usage("--checkpoint-every needs --checkpoint FILE");
+    if (options.frameRange && options.shard) return usage("--frame-range and --shard cannot be combined");
+    if (options.interactive && (options.checkpoint || options.resume || options.frameRange || options.shard))
+        return usage("--checkpoint, --resume, --frame-range and --shard are for headless runs");
+    if (options.watch && (options.checkpoint || options.resume || options.frameRange || options.shard))
+        return usage("--checkpoint, --resume, --frame-range and --shard cannot be combined with --watch");
     Result<ManifestDesc> manifest = loadShadertoy(options.target);
     if (!manifest) return manifest.error();
-    const RunOptions o = withDefaults(withManifestDefaults(options, manifest->runDefaults));
+    std::optional<Checkpoint> resume;
+    RunOptions given = withManifestDefaults(options, manifest->runDefaults);
+    if (options.resume) {
+        Result<Checkpoint> read = readCheckpoint(*options.resume);
+        if (!read) return read.error();
+        Result<RunOptions> merged = withCheckpointSettings(std::move(given), *read);
+        if (!merged) return merged.error();
+        given = std::move(*merged);
+        resume = std::move(*read);
+    }
+    const RunOptions o = withDefaults(std::move(given));
     if (Status size = checkCanvasSize(*o.width, *o.height); !size) return size.error();
     if (o.fps && (!(*o.fps > 0) || !std::isfinite(*o.fps))) return usage("--fps must be a positive number");
     if (!std::isfinite(o.startTime)) return usage("--start-time must be a finite number");
@@ -70,11 +108,44 @@ Result<PreparedRun> prepareRun(const RunOptions& options) {
         return usage(std::string("--capture-pass ") + passName(o.capturePass) + ": " +
                      manifest->manifestPath.string() + " has no such pass");
 
-    PreparedRun run{o, {}, std::nullopt, {}, {}};
+    PreparedRun run{o, {}, std::nullopt, {}, {}, 0, *o.frames, std::nullopt};
+    if (o.frameRange) {
+        const auto [first, end] = *o.frameRange;
+        if (first < 0 || end <= first || end > *o.frames)
+            return usage("--frame-range " + std::to_string(first) + ":" + std::to_string(end) +
+                         ": expected A:B with 0 <= A < B <= --frames (" + std::to_string(*o.frames) + ")");
+        run.first = first;
+        run.end = end;
+    }
+    if (o.shard) {
+        const auto [index, count] = *o.shard;
+        if (count < 1 || index < 0 || index >= count || count > *o.frames)
+            return usage("--shard " + std::to_string(index) + "/" + std::to_string(count) +
+                         ": expected i/n with 0 <= i < n <= --frames (" + std::to_string(*o.frames) + ")");
+        run.first = static_cast<int>(static_cast<long long>(*o.frames) * index / count);
+        run.end = static_cast<int>(static_cast<long long>(*o.frames) * (index + 1) / count);
+    }
+    if (resume) {
+        // Without a range, a resumed run renders from the checkpoint's frame on.
+        if (!o.frameRange && !o.shard) run.first = std::min(resume->state.frame, run.end);
+        if (resume->state.frame > run.first)
+            return fileError(o.resume->string(),
+                             "the checkpoint is at frame " + std::to_string(resume->state.frame) +
+                                 ", after the first frame this run must render (" + std::to_string(run.first) + ")",
+                             "usage.resume");
+        if (resume->shadertoy != manifest->name || resume->codeHash != codeHash(*manifest))
+            return fileError(o.resume->string(),
+                             "the checkpoint was made from other code (shadertoy \"" + resume->shadertoy +
+                                 "\"): a resumed run would not continue the same frames",
+                             "checkpoint.mismatch");
+        if (resume->media != channelMedia(*manifest))
+            return fileError(o.resume->string(), "the checkpoint was made with other channel inputs", "checkpoint.mismatch");
+        run.resume = std::move(resume);
+    }
     if (o.outPattern) {
         Result<OutputPattern> pattern = OutputPattern::parse(*o.outPattern);
         if (!pattern) return pattern.error();
-        if (!pattern->numbered() && !pattern->streamed() && countCaptured(*o.frames, *o.captureEvery) > 1)
+        if (!pattern->numbered() && !pattern->streamed() && countCaptured(run.first, run.end, *o.frames, *o.captureEvery) > 1)
             return usage("--out " + *o.outPattern + ": more than one frame is captured, so the "
                          "pattern needs a frame number placeholder such as %04d");
         if (pattern->format() == OutputFormat::Video && !findExecutable("ffmpeg"))

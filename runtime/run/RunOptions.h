@@ -21,6 +21,7 @@
 #include "manifest/ManifestDesc.h"
 #include "media/ChannelImages.h"
 #include "player/PlayerDesc.h"
+#include "run/Checkpoint.h"
 
 namespace toyhost {
 
@@ -64,6 +65,19 @@ struct RunOptions {
     // window. Enforced by whoever watches RunObserver::activity() (the CLI).
     std::optional<double> frameTimeout;
     std::optional<double> compileTimeout;
+
+    // Long runs (headless only). --checkpoint FILE: the full state is written to FILE (atomically)
+    // every `checkpointEvery` frames, when the run is interrupted and when it ends; --resume FILE
+    // continues from such a file with byte-identical frames.
+    std::optional<std::filesystem::path> checkpoint;
+    std::optional<int> checkpointEvery;
+    std::optional<std::filesystem::path> resume;
+    // Render farms: only frames [first, end) of the run are captured (--frame-range A:B), or
+    // shard i of n (--shard i/n: the frames split into n contiguous ranges, i from 0). Frames
+    // before the range are simulated (buffers run, nothing is captured; a shadertoy without
+    // buffers skips them), so the union of the ranges equals the whole run byte for byte.
+    std::optional<std::pair<int, int>> frameRange;
+    std::optional<std::pair<int, int>> shard;
 };
 
 // `options` with every absent field set to its default (frames 0 then means "no end"; an
@@ -86,6 +100,9 @@ struct PreparedRun {
     std::optional<OutputPattern> output;
     MouseScript mouse;
     KeyScript keys;
+    int first = 0;                         // frames [first, end) are captured (the frame range)
+    int end = 0;
+    std::optional<Checkpoint> resume;      // --resume: the state the run continues from
 };
 
 // Validates `options` (after withDefaults), loads the shadertoy and decodes its images, parses

@@ -108,6 +108,18 @@ void RunCommand::define(CLI::App& run) {
     run.add_option("--compile-timeout", options_.compileTimeout,
                    "Watchdog: end the run (exit 124) when compiling one pass takes longer than this many seconds "
                    "(default " + number(defaults::kCompileTimeoutSeconds) + "; 0: off)");
+    run.add_option("--checkpoint", options_.checkpoint,
+                   "Write the run's full state (every buffer, iFrame, time, mouse, keys) to FILE, atomically: "
+                   "every --checkpoint-every frames, when interrupted and at the end");
+    run.add_option("--checkpoint-every", options_.checkpointEvery, "Frames between checkpoints (with --checkpoint)");
+    run.add_option("--resume", options_.resume,
+                   "Continue from a --checkpoint FILE: the frames after it are byte-identical to an uninterrupted run");
+    run.add_option("--frame-range", frameRange_,
+                   "A:B: capture only frames A..B-1 of the run (earlier frames are simulated without capture; "
+                   "numbering and iTime as in the whole run)");
+    run.add_option("--shard", shard_,
+                   "i/n: capture the i-th of n equal contiguous parts of the frames (i from 0), for render farms "
+                   "(docs/farm.md)");
     run.add_flag("--check-finite", options_.checkFinite,
                  "Read every buffer back after every frame and warn at the first NaN/Inf, naming the pass and the "
                  "frame (without it: buffers are checked after the last frame and in captured EXR frames)");
@@ -165,6 +177,22 @@ int RunCommand::execute() {
         if (name == "device") o.eglPlatform = EglPlatform::Device;
         else if (name == "surfaceless") o.eglPlatform = EglPlatform::Surfaceless;
         else if (name != "automatic") return usage("TOYHOST_EGL_PLATFORM=" + name + ": expected surfaceless, device or automatic");
+    }
+    auto pair = [](const std::string& text, char separator) -> std::optional<std::pair<int, int>> {
+        long long a = 0, b = 0;
+        char sep = 0, extra = 0;
+        if (std::sscanf(text.c_str(), "%lld%c%lld%c", &a, &sep, &b, &extra) != 3 || sep != separator || a < 0 ||
+            b < 0 || a > INT32_MAX || b > INT32_MAX)
+            return std::nullopt;
+        return std::pair{static_cast<int>(a), static_cast<int>(b)};
+    };
+    if (!frameRange_.empty()) {
+        o.frameRange = pair(frameRange_, ':');
+        if (!o.frameRange) return usage("--frame-range " + frameRange_ + ": expected A:B (frames A to B-1)");
+    }
+    if (!shard_.empty()) {
+        o.shard = pair(shard_, '/');
+        if (!o.shard) return usage("--shard " + shard_ + ": expected i/n (part i of n, from 0)");
     }
     if (!codec_.empty()) o.video.codec = codec_;
     if (videoQuality_) o.video.quality = *videoQuality_;
