@@ -15,6 +15,12 @@ inline constexpr int kPngLevel = 1;              // zlib level of captured PNG f
 inline constexpr std::size_t kCaptureMemoryMiB = 256;  // frames waiting for the encoders
 inline constexpr int kCaptureEvery = 1;
 inline constexpr int kMaxCanvasSide = 16384;     // --size limit, before asking GL for its own
+// Numbers a user may give: beyond these a float uniform is no longer a usable number (iTime, iMouse
+// become Inf or lose every fraction), so they are usage errors, not silent Inf in the shader.
+inline constexpr double kMinFps = 0.001;
+inline constexpr double kMaxFps = 1e6;
+inline constexpr double kMaxSeconds = 1e9;          // --start-time, script "time"
+inline constexpr double kMaxPixelCoordinate = 1e6;  // --mouse, script "x"/"y"
 // iTimeDelta the site uses on the frame after a restart and while paused (1/60 s).
 inline constexpr double kRestartTimeDelta = 1.0 / 60.0;
 inline constexpr double kSampleRate = 44100.0;   // iSampleRate in every pass

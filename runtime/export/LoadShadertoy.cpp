@@ -15,7 +15,12 @@ Result<ManifestDesc> loadShadertoy(const fs::path& target) {
     Result<std::string> text = readTextFile(target);
     if (!text) return text.error();
     // Exports and manifests are both JSON; malformed JSON is reported by the manifest parser.
-    const nlohmann::json document = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
+    nlohmann::json document;
+    try {
+        document = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
+    } catch (const nlohmann::json::exception&) {
+        document = nlohmann::json(nlohmann::json::value_t::discarded);  // reported by the parser below
+    }
     if (!document.is_discarded() && isShadertoyExport(document)) return parseShadertoyExport(*text, target);
     return parseManifest(*text, target);
 }

@@ -1,5 +1,7 @@
 #include "export/ShadertoyExport.h"
 
+#include "core/JsonText.h"
+
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -23,6 +25,27 @@ const json* shaderObject(const json& document) {
     if (auto it = d->find("Shader"); it != d->end()) d = &*it;
     if (!d->is_object() || !d->contains("renderpass") || !(*d)["renderpass"].is_array()) return nullptr;
     return d;
+}
+
+// Why `document` is not an export, in the export's own terms.
+std::string shapeProblem(const json& document) {
+    const json* d = &document;
+    std::string where;
+    if (d->is_array()) {
+        if (d->size() != 1)
+            return "the site's form is an array of one shader object, this one has " + std::to_string(d->size());
+        d = &(*d)[0];
+        where = "[0].";
+    }
+    if (!d->is_object()) return "expected {\"Shader\": {\"renderpass\": [...]}}";
+    if (auto it = d->find("Shader"); it != d->end()) {
+        if (!it->is_object()) return where + "Shader: must be an object, not " + std::string(it->type_name());
+        d = &*it;
+        where += "Shader.";
+    }
+    auto passes = d->find("renderpass");
+    if (passes == d->end()) return where + "renderpass: is missing (the list of passes)";
+    return where + "renderpass: must be an array of passes, not " + std::string(passes->type_name());
 }
 
 std::string text(const json& object, const char* key) {
@@ -134,6 +157,12 @@ private:
         if (auto inputs = pass.find("inputs"); inputs != pass.end() && inputs->is_array())
             for (size_t k = 0; k < inputs->size(); ++k)
                 readInput(out, (*inputs)[k], place + ".inputs[" + std::to_string(k) + "]");
+        else if (inputs != pass.end() && !inputs->is_null())
+            problem(place + ".inputs", std::string("must be an array of inputs, not ") + inputs->type_name(),
+                    "export.value", *id);
+        if (auto outputs = pass.find("outputs"); outputs != pass.end() && !outputs->is_array() && !outputs->is_null())
+            problem(place + ".outputs", std::string("must be an array of outputs, not ") + outputs->type_name(),
+                    "export.value", *id);
         desc_.passes.push_back(std::move(out));
     }
 
@@ -232,20 +261,21 @@ int bufferIndexFromExportId(const json& id) {
     return -1;
 }
 
-bool isShadertoyExport(const json& document) { return shaderObject(document) != nullptr; }
+// An export by its shape, even a broken one: {"Shader": ...}, {"renderpass": ...}, or one such
+// object in an array (the site's form). Its problems are then reported as an export's.
+bool isShadertoyExport(const json& document) {
+    const json* d = &document;
+    if (d->is_array() && d->size() == 1) d = &(*d)[0];
+    return d->is_object() && (d->contains("Shader") || d->contains("renderpass"));
+}
 
 Result<ManifestDesc> parseShadertoyExport(std::string_view jsonText, const fs::path& exportPath) {
     const fs::path path = fs::absolute(exportPath).lexically_normal();
-    json document;
-    try {
-        document = json::parse(jsonText);
-    } catch (const json::parse_error& e) {
-        return fileError(path.string(), std::string("invalid JSON: ") + e.what(), "export.json");
-    }
+    Result<json> parsed = parseJsonStrictly(jsonText, path.string(), "export.json");
+    if (!parsed) return parsed.error();
+    const json document = std::move(*parsed);
     const json* shader = shaderObject(document);
-    if (!shader)
-        return fileError(path.string(), "not a Shadertoy export (expected {\"Shader\": {\"renderpass\": [...]}})",
-                         "export.shape");
+    if (!shader) return fileError(path.string(), "not a Shadertoy export: " + shapeProblem(document), "export.shape");
     return ExportReader(path).read(*shader);
 }
 

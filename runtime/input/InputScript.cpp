@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/Defaults.h"
+#include "core/JsonText.h"
 #include "input/KeyCodes.h"
 
 namespace toyhost {
@@ -53,12 +55,9 @@ private:
 };
 
 Result<json> parseArray(std::string_view text, std::string_view source) {
-    json doc;
-    try {
-        doc = json::parse(text);
-    } catch (const json::parse_error& e) {
-        return fileError(std::string(source), std::string("invalid JSON: ") + e.what(), "script.json");
-    }
+    Result<json> parsed = parseJsonStrictly(text, std::string(source), "script.json");
+    if (!parsed) return parsed.error();
+    json doc = std::move(*parsed);
     if (!doc.is_array())
         return fileError(std::string(source), std::string("expected a JSON array of events, got ") + doc.type_name(),
                          "script.json");
@@ -93,9 +92,10 @@ Result<ScriptMoment> readMoment(const json& event, const EventContext& ctx) {
         return ctx.error("\"frame\" must be an integer >= 0, got " + describe(v));
     }
     const json& v = event["time"];
-    if (v.is_number() && std::isfinite(v.get<double>()) && v.get<double>() >= 0.0)
+    if (v.is_number() && std::isfinite(v.get<double>()) && v.get<double>() >= 0.0 &&
+        v.get<double>() <= defaults::kMaxSeconds)
         return ScriptMoment::atTime(v.get<double>());
-    return ctx.error("\"time\" must be a number of seconds >= 0, got " + describe(v));
+    return ctx.error("\"time\" must be a number of seconds from 0 to 1e9, got " + describe(v));
 }
 
 Result<std::string> readType(const json& event, const EventContext& ctx) {
@@ -108,8 +108,8 @@ Result<std::string> readType(const json& event, const EventContext& ctx) {
 Result<float> readCoordinate(const json& event, const char* field, const EventContext& ctx) {
     if (!event.contains(field)) return ctx.error(inQuotes(field) + " is missing");
     const json& v = event[field];
-    if (!v.is_number() || !std::isfinite(v.get<double>()))
-        return ctx.error(inQuotes(field) + " must be a number, got " + describe(v));
+    if (!v.is_number() || !std::isfinite(v.get<double>()) || std::abs(v.get<double>()) > defaults::kMaxPixelCoordinate)
+        return ctx.error(inQuotes(field) + " must be a number of pixels within +-1000000, got " + describe(v));
     return v.get<float>();
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/AtomicFile.h"
+#include "core/JsonText.h"
 #include "core/Defaults.h"
 #include "core/Suggest.h"
 #include "manifest/StockMedia.h"
@@ -86,12 +87,9 @@ public:
         : path_(manifestPath), dir_(manifestPath.parent_path()), problems_(manifestPath.string()) {}
 
     Result<ManifestDesc> load(std::string_view text) {
-        json root;
-        try {
-            root = json::parse(text);
-        } catch (const json::parse_error& e) {
-            return fileError(path_.string(), std::string("invalid JSON: ") + e.what(), "manifest.json");
-        }
+        Result<json> parsed = parseJsonStrictly(text, path_.string(), "manifest.json");
+        if (!parsed) return parsed.error();
+        const json root = std::move(*parsed);
         if (!root.is_object()) return fileError(path_.string(), "the manifest must be a JSON object", "manifest.json");
 
         desc_.manifestPath = path_;
@@ -182,8 +180,8 @@ private:
             }
         }
         if (auto fps = it->find("fps"); fps != it->end()) {
-            if (!fps->is_number() || !std::isfinite(fps->get<double>()) || fps->get<double>() < 0.001 ||
-                fps->get<double>() > 1e6)
+            if (!fps->is_number() || !std::isfinite(fps->get<double>()) || fps->get<double>() < defaults::kMinFps ||
+                fps->get<double>() > defaults::kMaxFps)
                 problems_.add("defaults.fps", "must be a number of frames per second (0.001 .. 1000000), not " + fps->dump(),
                               "manifest.value");
             else d.fps = fps->get<double>();

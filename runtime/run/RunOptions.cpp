@@ -91,8 +91,12 @@ Result<PreparedRun> prepareRun(const RunOptions& options) {
     }
     const RunOptions o = withDefaults(std::move(given));
     if (Status size = checkCanvasSize(*o.width, *o.height); !size) return size.error();
-    if (o.fps && (!(*o.fps > 0) || !std::isfinite(*o.fps))) return usage("--fps must be a positive number");
-    if (!std::isfinite(o.startTime)) return usage("--start-time must be a finite number");
+    if (o.fps && (!std::isfinite(*o.fps) || *o.fps < defaults::kMinFps || *o.fps > defaults::kMaxFps))
+        return usage("--fps must be a number of frames per second from 0.001 to 1000000");
+    if (!std::isfinite(o.startTime) || std::abs(o.startTime) > defaults::kMaxSeconds)
+        return usage("--start-time must be a number of seconds between -1e9 and 1e9");
+    if (o.mouse && (std::abs(o.mouse->x) > defaults::kMaxPixelCoordinate || std::abs(o.mouse->y) > defaults::kMaxPixelCoordinate))
+        return usage("--mouse: coordinates must be within +-1000000 pixels");
     if (*o.captureEvery < 1) return usage("--capture-every must be at least 1");
     for (const auto& [name, value] : {std::pair{"--frame-timeout", *o.frameTimeout}, {"--compile-timeout", *o.compileTimeout}})
         if (!std::isfinite(value) || value < 0 || value > 1e6)

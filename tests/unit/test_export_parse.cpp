@@ -500,10 +500,13 @@ TEST(ExportIds, IsShadertoyExport) {
                             R"({"Shader": {"info": {}, "renderpass": [{"type": "image"}]}})",
                             R"({"ver": "0.1", "info": {}, "renderpass": []})",
                             R"([{"ver": "0.1", "info": {}, "renderpass": []}])",
-                            R"([{"Shader": {"renderpass": []}}])"})
+                            R"([{"Shader": {"renderpass": []}}])",
+                            // Broken exports are still exports: their problems are reported in
+                            // export terms (renderpass: must be an array), not as a bad manifest.
+                            R"({"Shader": {}})", R"({"Shader": {"renderpass": {}}})", R"({"Shader": []})",
+                            R"({"renderpass": "image"})"})
         EXPECT_TRUE(isShadertoyExport(json::parse(yes))) << yes;
-    for (const char* no : {R"({"foo": 1})", R"({"Shader": {}})", R"({"Shader": {"renderpass": {}}})",
-                           R"({"Shader": []})", R"({"renderpass": "image"})", "[]",
+    for (const char* no : {R"({"foo": 1})", "[]",
                            R"([{"renderpass": []}, {"renderpass": []}])", R"([[{"renderpass": []}]])", "42",
                            "null", R"("renderpass")",
                            R"({"name": "m", "passes": {"Image": {"source": "image.glsl"}}})"})

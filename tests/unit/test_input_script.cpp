@@ -121,13 +121,13 @@ TEST(InputScriptParse, MissingCoordinateNamesEventAndField) {
 
 TEST(InputScriptParse, WrongTypesAreNamed) {
     EXPECT_EQ(mouseError(R"([{"frame": 0, "type": "down", "x": 1, "y": "80"}])"),
-              "mouse.json: event 0: \"y\" must be a number, got string \"80\"");
+              "mouse.json: event 0: \"y\" must be a number of pixels within +-1000000, got string \"80\"");
     EXPECT_EQ(mouseError(R"([{"frame": 0, "type": 3}])"),
               "mouse.json: event 0: \"type\" must be a string, got 3");
     EXPECT_EQ(mouseError(R"([{"frame": "2", "type": "up"}])"),
               "mouse.json: event 0: \"frame\" must be an integer >= 0, got string \"2\"");
     EXPECT_EQ(mouseError(R"([{"time": true, "type": "up"}])"),
-              "mouse.json: event 0: \"time\" must be a number of seconds >= 0, got boolean");
+              "mouse.json: event 0: \"time\" must be a number of seconds from 0 to 1e9, got boolean");
     EXPECT_EQ(keyError(R"([{"frame": 0, "type": "down", "key": null}])"),
               "keys.json: event 0: \"key\" must be a key name or a keyCode, got null");
 }
@@ -146,7 +146,7 @@ TEST(InputScriptParse, NegativeAndFractionalMomentsAreRejected) {
     EXPECT_EQ(mouseError(R"([{"frame": 2.5, "type": "up"}])"),
               "mouse.json: event 0: \"frame\" must be an integer >= 0, got 2.5");
     EXPECT_EQ(mouseError(R"([{"time": -0.5, "type": "up"}])"),
-              "mouse.json: event 0: \"time\" must be a number of seconds >= 0, got -0.5");
+              "mouse.json: event 0: \"time\" must be a number of seconds from 0 to 1e9, got -0.5");
     EXPECT_TRUE(parseMouseScript(R"([{"time": 0, "type": "up"}])", "m").ok());
 }
 

@@ -766,7 +766,7 @@ TEST(PortToolsGlide, ErrorsNameTheEvent) {
     EXPECT_EQ(mouseError(first + R"({"frame": 1, "type": "move", "to": {"x": 0, "y": 0}}])"),
               "mouse.json: event 1: \"to\": \"frame\" or \"time\" is missing");
     EXPECT_EQ(mouseError(first + R"({"frame": 1, "type": "move", "to": {"frame": 5, "x": "a", "y": 0}}])"),
-              "mouse.json: event 1: \"to\": \"x\" must be a number, got string \"a\"");
+              "mouse.json: event 1: \"to\": \"x\" must be a number of pixels within +-1000000, got string \"a\"");
     EXPECT_EQ(mouseError(first + R"({"frame": 1, "type": "move", "to": [5, 0, 0]}])"),
               "mouse.json: event 1: \"to\" must be an object such as {\"frame\": 60, \"x\": 10, \"y\": 20}, got array");
     // The start of a glide is "x" and "y" together or neither.

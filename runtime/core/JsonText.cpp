@@ -1,0 +1,78 @@
+#include "core/JsonText.h"
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace toyhost {
+
+using nlohmann::json;
+
+namespace {
+// Where the parser is: one entry per open object or array.
+struct Level {
+    bool array = false;
+    long index = -1;              // arrays: the element being read
+    std::string key;              // objects: the key being read
+    std::set<std::string> keys;   // objects: the keys seen so far
+};
+
+std::string pathOf(const std::vector<Level>& levels, std::size_t upTo) {
+    std::string path;
+    for (std::size_t i = 0; i < upTo; ++i) {
+        if (levels[i].array) path += "[" + std::to_string(levels[i].index) + "]";
+        else path += (path.empty() ? "" : ".") + levels[i].key;
+    }
+    return path;
+}
+}  // namespace
+
+Result<json> parseJsonStrictly(std::string_view text, const std::string& file, const std::string& code) {
+    std::vector<Level> levels;
+    std::vector<Diagnostic> duplicates;
+    auto elementStarts = [&] {
+        if (!levels.empty() && levels.back().array) ++levels.back().index;
+    };
+    const json::parser_callback_t track = [&](int, json::parse_event_t event, json& parsed) {
+        switch (event) {
+            case json::parse_event_t::object_start:
+                elementStarts();
+                levels.push_back({});
+                break;
+            case json::parse_event_t::array_start:
+                elementStarts();
+                levels.push_back({true});
+                break;
+            case json::parse_event_t::object_end:
+            case json::parse_event_t::array_end:
+                if (!levels.empty()) levels.pop_back();
+                break;
+            case json::parse_event_t::key: {
+                Level& level = levels.back();
+                level.key = parsed.get<std::string>();
+                if (!level.keys.insert(level.key).second && duplicates.size() < 100) {
+                    Diagnostic d;
+                    d.code = "json.duplicate-key";
+                    d.file = file;
+                    d.field = pathOf(levels, levels.size());
+                    d.message = "this key appears more than once in its object (JSON keeps only one; remove the other)";
+                    duplicates.push_back(std::move(d));
+                }
+                break;
+            }
+            case json::parse_event_t::value: elementStarts(); break;
+        }
+        return true;
+    };
+    json document;
+    try {
+        document = json::parse(text, track);
+    } catch (const json::exception& e) {
+        // parse_error (syntax), out_of_range (a number beyond double: 1e400), ...
+        return fileError(file, std::string("invalid JSON: ") + e.what(), code);
+    }
+    if (!duplicates.empty()) return Error(std::move(duplicates));
+    return document;
+}
+
+}  // namespace toyhost

@@ -1,0 +1,18 @@
+// JsonText: parsing the JSON a user wrote (manifests, exports, input scripts) strictly: a syntax
+// error or a number out of range (1e400) is an error, never an exception that escapes, and a key
+// that appears twice in one object is an error naming its path, where a plain parser would keep
+// the last one silently. No GL needed.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string_view>
+
+#include "core/Result.h"
+
+namespace toyhost {
+
+// `file` names the text in errors; `code` is the diagnostic code of a syntax error ("manifest.json",
+// "export.json", ...). Duplicate keys are reported with code "json.duplicate-key", all at once.
+Result<nlohmann::json> parseJsonStrictly(std::string_view text, const std::string& file, const std::string& code);
+
+}  // namespace toyhost
