@@ -80,18 +80,40 @@ Status writeBytesAtomically(const fs::path& path, std::span<const std::byte> byt
     });
 }
 
+namespace {
+// stat() with the reasons a user can act on; fills `info` when it is a regular file.
+Status statRegularFile(const fs::path& path, const std::string& what, struct stat& info) {
+    const std::string name = path.string();
+    const std::string prefix = what.empty() ? "" : what + " ";
+    if (::stat(path.c_str(), &info) != 0) {
+        const int cause = errno;
+        if (cause == ENOENT) {
+            struct stat link {};
+            if (::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode))
+                return fileError(name, prefix + "is a symbolic link to nothing (its target is missing)", "io.not-found");
+            return fileError(name, prefix + "file not found", "io.not-found");
+        }
+        if (cause == ELOOP) return fileError(name, prefix + "is a symbolic link loop", "io.link-loop");
+        if (cause == ENOTDIR) return fileError(name, prefix + "file not found (a folder in its path is a file)", "io.not-found");
+        return fileError(name, prefix + "cannot be read: " + std::strerror(cause), "io.read");
+    }
+    // A folder opens like a file on Linux and reads as ""; a device or FIFO may never end.
+    if (S_ISDIR(info.st_mode)) return fileError(name, prefix + "is a folder, not a file", "io.not-a-file");
+    if (!S_ISREG(info.st_mode))
+        return fileError(name, prefix + "is not a regular file (a device, FIFO or socket)", "io.not-a-file");
+    return okStatus();
+}
+}  // namespace
+
+Status checkRegularFile(const fs::path& path, const std::string& what) {
+    struct stat info {};
+    return statRegularFile(path, what, info);
+}
+
 Result<std::string> readTextFile(const fs::path& path, std::size_t limitBytes) {
     const std::string name = path.string();
     struct stat info {};
-    if (::stat(path.c_str(), &info) != 0) {
-        const int cause = errno;
-        if (cause == ENOENT) return fileError(name, "file not found", "io.not-found");
-        if (cause == ELOOP) return fileError(name, "too many levels of symbolic links (a link loop)", "io.read");
-        return fileError(name, std::string("cannot read: ") + std::strerror(cause), "io.read");
-    }
-    // A folder opens like a file on Linux and reads as ""; a device or FIFO may never end.
-    if (S_ISDIR(info.st_mode)) return fileError(name, "is a folder, not a file", "io.not-a-file");
-    if (!S_ISREG(info.st_mode)) return fileError(name, "is not a regular file", "io.not-a-file");
+    if (Status regular = statRegularFile(path, "", info); !regular) return regular.error();
     if (static_cast<std::uintmax_t>(info.st_size) > limitBytes)
         return fileError(name,
                          "is " + std::to_string(info.st_size) + " bytes, more than the limit of " +

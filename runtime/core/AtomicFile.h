@@ -30,6 +30,10 @@ Status writeBytesAtomically(const std::filesystem::path& path, std::span<const s
 // sources are far smaller; a larger file is refused instead of filling memory.
 inline constexpr std::size_t kDefaultReadLimitBytes = std::size_t(64) << 20;
 
+// Ok when `path` is a regular file that exists; else an error that says what it is instead:
+// missing, a folder, a link loop, a device or FIFO (`what` names it in the message: "texture").
+Status checkRegularFile(const std::filesystem::path& path, const std::string& what = "");
+
 // Reads a whole regular file (a folder, a device such as /dev/zero or a FIFO is refused, so is a
 // file over `limitBytes`); errors name the path and the cause.
 Result<std::string> readTextFile(const std::filesystem::path& path, std::size_t limitBytes = kDefaultReadLimitBytes);

@@ -8,6 +8,8 @@
 
 #include <stb_image.h>
 
+#include "core/AtomicFile.h"
+
 namespace toyhost {
 namespace fs = std::filesystem;
 
@@ -21,11 +23,7 @@ struct StbFree {
 }  // namespace
 
 Result<Image8> loadImageFile(const fs::path& path) {
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (!fs::exists(status)) return fileError(path.string(), "file not found", "io.not-found");
-    if (fs::is_directory(status)) return fileError(path.string(), "is a folder, not an image", "io.not-a-file");
-    if (!fs::is_regular_file(status)) return fileError(path.string(), "is not a regular file", "io.not-a-file");
+    if (Status regular = checkRegularFile(path); !regular) return regular.error();
 
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) return fileError(path.string(), std::string("cannot open: ") + std::strerror(errno), "io.read");

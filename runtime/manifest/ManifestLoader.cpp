@@ -218,9 +218,9 @@ private:
                 continue;
             }
             fs::path resolved = resolve(file.get<std::string>());
-            std::error_code ec;
-            if (!fs::is_regular_file(resolved, ec))
-                problems_.add(where, resolved.string() + ": file not found", "io.not-found");
+            if (Status regular = checkRegularFile(resolved); !regular)
+                problems_.add(where, resolved.string() + ": " + regular.error().first().message,
+                              regular.error().first().code.c_str());
             desc_.mediaOverrides[id] = resolved;
         }
     }
@@ -348,10 +348,9 @@ private:
         } else if (auto texture = readString(value, "texture", where)) {
             channel.kind = ChannelKind::ImageFile;
             channel.file = resolve(*texture);
-            std::error_code ec;
-            if (!fs::is_regular_file(channel.file, ec))
-                problems_.add(where, "texture " + channel.file.string() + ": file not found", "io.not-found", pass.id,
-                              index);
+            if (Status regular = checkRegularFile(channel.file); !regular)
+                problems_.add(where, "texture " + channel.file.string() + ": " + regular.error().first().message,
+                              regular.error().first().code.c_str(), pass.id, index);
         } else if (auto media = readString(value, "media", where)) {
             channel.kind = ChannelKind::StockMedia;
             channel.media = *media;

@@ -4,6 +4,7 @@
 
 #include "core/Defaults.h"
 #include "shader/ChannelUse.h"
+#include "shader/SourceText.h"
 
 namespace toyhost {
 
@@ -22,6 +23,11 @@ Status checkCanvasSize(int width, int height) {
 }
 
 Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media) {
+    // Bytes GL would drop or misread: every pass and Common, all reported together.
+    std::vector<Diagnostic> textProblems;
+    if (manifest.commonSource) checkShaderText(manifest.commonCode, manifest.commonName, "Common", textProblems);
+    for (PassDesc& pass : manifest.passes) checkShaderText(pass.code, pass.sourceName, passName(pass.id), textProblems);
+    if (!textProblems.empty()) return Error(std::move(textProblems));
     const MediaResolver resolver = makeMediaResolver(manifest, media);
     Result<ChannelImages> images = ChannelImages::load(manifest, resolver);
     if (!images) return images.error();

@@ -176,8 +176,11 @@ Result<PreparedRun> prepareRun(const RunOptions& options) {
         run.keys = std::move(*script);
     }
     for (const auto& [id, file] : o.media.files) {
-        std::error_code ec;
-        if (!fs::is_regular_file(file, ec)) return fileError(file.string(), "file not found (--media-file " + id + ")", "io.not-found");
+        if (Status regular = checkRegularFile(file); !regular) {
+            Error error = regular.error();
+            error.diagnostics.front().message += " (--media-file " + id + ")";
+            return error;
+        }
     }
     Result<PlayerPlan> plan = planPlayer(std::move(*manifest), o.media);
     if (!plan) return plan.error();

@@ -61,15 +61,20 @@ long)
         extra=()
         [ "${KEEP_GOING:-0}" = 1 ] && extra=(-fork=1 -ignore_crashes=1 -ignore_ooms=1 -ignore_timeouts=1)
         echo "== $t: ${seconds}s (log: $build/fuzz-logs/$t.log)"
+        touch "$build/fuzz-logs/$t.log.start"
         set +e
         (cd "$artifacts" && "$build/tests/fuzz/$t" "${options[@]}" $(dict_of "$t") "${extra[@]}" \
             -artifact_prefix="$artifacts/" -max_total_time="$seconds" "$here/corpus/$t") \
             >"$build/fuzz-logs/$t.log" 2>&1
         rc=$?
         set -e
-        grep -E '^(stat::|Done|#[0-9]+ +DONE|SUMMARY|==[0-9]+==ERROR)' "$build/fuzz-logs/$t.log" || true
-        if [ "$rc" -ne 0 ]; then
-            echo "== $t: FAILED (exit $rc); see the log and $artifacts" >&2
+        # The last progress line (fork mode: "#N: cov: ... oom/timeout/crash: a/b/c"), the final stats.
+        grep -E '^#[0-9]+' "$build/fuzz-logs/$t.log" | tail -1 || true
+        grep -E '^(stat::|Done )' "$build/fuzz-logs/$t.log" || true
+        echo "   corpus/$t: $(ls "$here/corpus/$t" | wc -l) inputs, $(du -sh "$here/corpus/$t" | cut -f1)"
+        found=$(find "$artifacts" -newer "$build/fuzz-logs/$t.log.start" -type f | wc -l)
+        if [ "$rc" -ne 0 ] || [ "$found" -ne 0 ]; then
+            echo "== $t: FAILED (exit $rc, $found new findings in $artifacts)" >&2
             failed=1
         fi
     done

@@ -212,7 +212,17 @@ TEST(ManifestErrors, TextureFileNotFound) {
     // A folder is not a texture file.
     fs::create_directories(f.dir / "folder.png");
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"texture": "folder.png"}})"))),
-              f.line(kImageCh0, "texture " + (f.dir / "folder.png").string() + ": file not found"));
+              f.line(kImageCh0, "texture " + (f.dir / "folder.png").string() + ": is a folder, not a file"));
+    // Links that lead nowhere say so; a device is not a texture either.
+    fs::create_symlink("loop.png", f.dir / "loop.png");
+    EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"texture": "loop.png"}})"))),
+              f.line(kImageCh0, "texture " + (f.dir / "loop.png").string() + ": is a symbolic link loop"));
+    fs::create_symlink("gone.png", f.dir / "dangling.png");
+    EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"texture": "dangling.png"}})"))),
+              f.line(kImageCh0, "texture " + (f.dir / "dangling.png").string() +
+                                    ": is a symbolic link to nothing (its target is missing)"));
+    EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"texture": "/dev/zero"}})"))),
+              f.line(kImageCh0, "texture /dev/zero: is not a regular file (a device, FIFO or socket)"));
 }
 
 TEST(ManifestErrors, UnknownStockMediaId) {
