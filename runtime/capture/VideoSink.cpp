@@ -71,6 +71,8 @@ std::vector<std::string> ffmpegArguments(const VideoRequest& r) {
     } else if (r.settings.quality) {
         args.insert(args.end(), {"-crf", std::to_string(*r.settings.quality)});
     }
+    // The same frames give the same bytes: no random Matroska UIDs, no version strings.
+    args.insert(args.end(), {"-fflags", "+bitexact", "-flags:v", "+bitexact"});
     // The output is a temporary name without the real extension, so the container is explicit.
     if (r.container == ".mp4") args.insert(args.end(), {"-movflags", "+faststart", "-f", "mp4"});
     else if (r.container == ".mov") args.insert(args.end(), {"-f", "mov"});
@@ -147,6 +149,9 @@ Status VideoSink::close() {
     Result<int> exit = ffmpeg_->closeAndWait();
     if (!exit) return ffmpegFailed(exit.error().first().message);
     if (*exit != 0) return ffmpegFailed("ffmpeg failed (exit code " + std::to_string(*exit) + ")");
+    // ffmpeg logs only errors here, and a few (writing the trailer on a full disk, with webm and
+    // mkv) still end with exit code 0 and a truncated file: any error line fails the video.
+    if (!logTail(log_).empty()) return ffmpegFailed("ffmpeg reported an error while finishing the video");
     std::error_code ec;
     fs::rename(temp_, path_, ec);
     if (ec) return fileError(path_.string(), "cannot rename the finished video into place: " + ec.message(), "io.write");

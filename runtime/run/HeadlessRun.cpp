@@ -7,6 +7,7 @@
 #include "player/Player.h"
 #include "timing/FrameClock.h"
 #include "run/FiniteCheck.h"
+#include "run/AllProblems.h"
 #include "run/FrameRecorder.h"
 #include "run/ShadertoyWatcher.h"
 
@@ -179,7 +180,7 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
 Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) {
     const auto started = std::chrono::steady_clock::now();
     Result<PreparedRun> prepared = prepareRun(options);
-    if (!prepared) return prepared.error();
+    if (!prepared) return withCompileProblems(options, prepared.error());
     PreparedRun& run = *prepared;
     const RunOptions& o = run.options;
     for (const Diagnostic& line : run.plan.notices) observer.notice(line);

@@ -152,6 +152,12 @@ Result<PreparedRun> prepareRun(const RunOptions& options) {
         if (!pattern->numbered() && !pattern->streamed() && countCaptured(run.first, run.end, *o.frames, *o.captureEvery) > 1)
             return usage("--out " + *o.outPattern + ": more than one frame is captured, so the "
                          "pattern needs a frame number placeholder such as %04d");
+        if (pattern->format() != OutputFormat::RawStream) {
+            const std::string name = pattern->pathFor(run.end - 1).filename().string();
+            if (name.size() > 255)
+                return usage("--out " + *o.outPattern + ": the file name is " + std::to_string(name.size()) +
+                             " bytes long, more than the 255 a file system allows");
+        }
         if (pattern->format() == OutputFormat::Video && !findExecutable("ffmpeg"))
             return Error("--out " + *o.outPattern + ": video needs ffmpeg, which is not in PATH "
                          "(Debian: apt-get install ffmpeg)",

@@ -15,6 +15,7 @@
 #include "input/WindowInput.h"
 #include "player/Player.h"
 #include "render/Present.h"
+#include "run/AllProblems.h"
 #include "run/FrameRecorder.h"
 #include "run/ShadertoyWatcher.h"
 #include "timing/FrameClock.h"
@@ -129,7 +130,7 @@ Diagnostic notice(std::string message, std::string code, std::string file = {}) 
 Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
     const auto started = std::chrono::steady_clock::now();
     Result<PreparedRun> prepared = prepareRun(options);
-    if (!prepared) return prepared.error();
+    if (!prepared) return withCompileProblems(options, prepared.error());
     PreparedRun& run = *prepared;
     const RunOptions& o = run.options;
     for (const Diagnostic& line : run.plan.notices) observer.notice(line);

@@ -53,8 +53,8 @@ int inspectCommand(const std::vector<std::string>& files, const std::string& reg
         char extra = 0;
         long long x, y, w, h;
         if (std::sscanf(regionText.c_str(), "%lld,%lld,%lld,%lld%c", &x, &y, &w, &h, &extra) != 4 || x < 0 || y < 0 ||
-            w < 0 || h < 0 || x > INT32_MAX || y > INT32_MAX || w > INT32_MAX || h > INT32_MAX)
-            return usage("--region " + regionText + ": expected X,Y,W,H (non-negative whole numbers)");
+            w < 1 || h < 1 || x > INT32_MAX || y > INT32_MAX || w > INT32_MAX || h > INT32_MAX)
+            return usage("--region " + regionText + ": expected X,Y,W,H (whole numbers, W and H at least 1)");
         region = {static_cast<int>(x), static_cast<int>(y), static_cast<int>(w), static_cast<int>(h)};
     }
     for (const std::string& file : files) {

@@ -39,10 +39,12 @@ StopWatcher::~StopWatcher() {
 void StopWatcher::endNow(int exitCode, const char* why) {
     const inflight::CleanupReport cleaned = inflight::emergencyCleanup();
     std::string line = std::string("toyhost: ") + why;
+    if (exitCode != kExitTimeout) line = "toyhost: error: interrupted: " + std::string(why);
     if (cleaned.files || cleaned.children)
         line += " (removed " + std::to_string(cleaned.files) + " unfinished file" + (cleaned.files == 1 ? "" : "s") +
                 ", stopped " + std::to_string(cleaned.children) + " child process" + (cleaned.children == 1 ? "" : "es") +
                 ")";
+    if (exitCode != kExitTimeout) line += " [interrupted]";
     say(line);
     ::_exit(exitCode);
 }
