@@ -157,8 +157,15 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
     if (recorder) {
         Status finished = recorder->finish();
         // A signal during the final writes still ends the run as interrupted (exit 130/143),
-        // whatever the encoders managed.
-        if (observer.stopRequested()) return interrupted(run.end, run.end, recorder.get(), run);
+        // whatever the encoders managed; an interrupted video is discarded even if it was just
+        // completed, as every interrupted video is.
+        if (observer.stopRequested()) {
+            if (finished && run.output->format() == OutputFormat::Video) {
+                std::error_code ec;
+                std::filesystem::remove(run.output->pathFor(0), ec);
+            }
+            return interrupted(run.end, run.end, recorder.get(), run);
+        }
         if (!finished) return finished;
         report.bytesWritten = recorder->bytesWritten();
         report.encoderThreads = recorder->encoderThreads();

@@ -1,0 +1,292 @@
+// Long unattended runs, through the CLI as a farm or a user runs them: checkpoints that resume
+// byte-identically (Mountains & Lakes: its water total and its pixels), render-farm shards whose
+// union is the single run (GNU parallel, 4 shards), signals that stop a run stuck in a long draw
+// within the grace period, and SIGTERM at random moments of PNG, EXR, raw and video captures
+// leaving only complete files.
+#include "GlTestSupport.h"
+
+#include <chrono>
+#include <fstream>
+#include <random>
+#include <thread>
+
+#include "Processes.h"
+#include "image/ImageFile.h"
+#include "image/ImageWriters.h"
+
+namespace toyhost::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+
+std::string bytesOf(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+void writeFile(const fs::path& path, const std::string& text) {
+    fs::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+// Every entry of `dir` (hidden ones included), by name.
+std::vector<std::string> entries(const fs::path& dir) {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// The summed water depth (.y) over Mountains & Lakes' 256x256 simulation grid.
+double waterTotal(const ImageF32& bufferC) {
+    double sum = 0;
+    for (int y = 0; y < 256; ++y)
+        for (int x = 0; x < 256; ++x) sum += bufferC.rgba[(static_cast<std::size_t>(y) * bufferC.width + x) * 4 + 1];
+    return sum;
+}
+
+// ---- checkpoints ------------------------------------------------------------------------------
+
+class Checkpoints : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (!fs::exists(sharedDir() / "shadertoys/7tSSDD/bufferC.glsl")) GTEST_SKIP() << "needs ../shared/shadertoys/7tSSDD";
+        dir_ = freshOutputDir(std::string("reliability/") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    }
+    // Mountains & Lakes at the size of its 256x256 grid, 48 frames; extra options appended.
+    CommandResult run(const std::string& options) {
+        return runToyhost("run " + quoted(sourceDir() / "shadertoys/mountains-lakes") +
+                          " --size 320x256 --frames 48 --quiet " + options);
+    }
+    fs::path dir_;
+};
+
+TEST_F(Checkpoints, ResumedFramesAreByteIdenticalAndTheWaterIsConserved) {
+    // The uninterrupted run: Buffer C (the water) as raw floats and the picture, frames 40 and 47.
+    ASSERT_EQ(run("--capture-every 40 --capture-pass C --out " + quoted(dir_ / "full/c_%04d.exr")).exitCode, 0);
+    ASSERT_EQ(run("--capture-every 40 --out " + quoted(dir_ / "full/i_%04d.png")).exitCode, 0);
+    // Stopped at frame 25 with a checkpoint (written at the end of a run), then resumed.
+    auto first = runToyhost("run " + quoted(sourceDir() / "shadertoys/mountains-lakes") +
+                            " --size 320x256 --frames 25 --quiet --checkpoint " + quoted(dir_ / "state.ckpt"));
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    auto resumed = run("--resume " + quoted(dir_ / "state.ckpt") + " --capture-every 40 --capture-pass C --out " +
+                       quoted(dir_ / "resumed/c_%04d.exr"));
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
+    ASSERT_EQ(run("--resume " + quoted(dir_ / "state.ckpt") + " --capture-every 40 --out " +
+                  quoted(dir_ / "resumed/i_%04d.png"))
+                  .exitCode,
+              0);
+    // A resumed run renders from the checkpoint's frame: nothing before it is written.
+    EXPECT_EQ(entries(dir_ / "resumed"),
+              (std::vector<std::string>{"c_0040.exr", "c_0047.exr", "i_0040.png", "i_0047.png"}));
+    for (const char* file : {"c_0040.exr", "c_0047.exr", "i_0040.png", "i_0047.png"})
+        EXPECT_EQ(bytesOf(dir_ / "resumed" / file), bytesOf(dir_ / "full" / file)) << file << " differs after resume";
+    auto water = readExr(dir_ / "resumed/c_0047.exr");
+    ASSERT_TRUE(water.ok()) << water.error().text();
+    const double expected = 256.0 * 256.0 * 0.05;
+    EXPECT_LT(std::abs(waterTotal(*water) - expected) / expected, 1e-4) << "water total " << waterTotal(*water);
+}
+
+TEST_F(Checkpoints, CheckpointEveryKAndOnSigtermThenResumeGivesTheSameFrame) {
+    ASSERT_EQ(run("--capture-every 1000 --out " + quoted(dir_ / "full/i_%04d.png")).exitCode, 0);
+    // A run that writes a checkpoint every 8 frames and is stopped by SIGTERM part-way: the
+    // checkpoint holds the state after the last frame it finished, wherever that was.
+    BackgroundProcess killed(toyhostBinary(),
+                             {"run", (sourceDir() / "shadertoys/mountains-lakes").string(), "--headless", "--size",
+                              "320x256", "--frames", "100000", "--quiet", "--checkpoint",
+                              (dir_ / "state.ckpt").string(), "--checkpoint-every", "8"},
+                             dir_ / "killed.log");
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (!fs::exists(dir_ / "state.ckpt") && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ASSERT_TRUE(fs::exists(dir_ / "state.ckpt")) << killed.log();
+    killed.signal(SIGTERM);
+    EXPECT_EQ(killed.wait(20), 143) << killed.log();
+    EXPECT_EQ(entries(dir_), (std::vector<std::string>{"full", "killed.log", "state.ckpt"})) << "no partial files";
+    auto resumed = run("--resume " + quoted(dir_ / "state.ckpt") + " --capture-every 1000 --out " +
+                       quoted(dir_ / "resumed/i_%04d.png"));
+    // The checkpoint may be past frame 47 if the machine was fast: then there is nothing to resume.
+    if (resumed.output.find("after the first frame") != std::string::npos ||
+        resumed.output.find("is at frame") != std::string::npos)
+        GTEST_SKIP() << "the run passed frame 47 before SIGTERM: " << resumed.output;
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
+    EXPECT_EQ(bytesOf(dir_ / "resumed/i_0047.png"), bytesOf(dir_ / "full/i_0047.png"));
+}
+
+TEST_F(Checkpoints, ResumeRefusesAnotherShadertoyOrAnotherClock) {
+    ASSERT_EQ(runToyhost("run " + quoted(sourceDir() / "shadertoys/mountains-lakes") +
+                         " --size 320x256 --frames 4 --quiet --checkpoint " + quoted(dir_ / "state.ckpt"))
+                  .exitCode,
+              0);
+    auto other = runToyhost("run " + quoted(sourceDir() / "shadertoys/ripple-pool") + " --frames 8 --resume " +
+                            quoted(dir_ / "state.ckpt"));
+    EXPECT_EQ(other.exitCode, 1) << other.output;
+    EXPECT_NE(other.output.find("the checkpoint was made from other code"), std::string::npos) << other.output;
+    auto clock = run("--fps 30 --resume " + quoted(dir_ / "state.ckpt"));
+    EXPECT_EQ(clock.exitCode, 2) << clock.output;
+    EXPECT_NE(clock.output.find("the checkpoint was made with --fps 60"), std::string::npos) << clock.output;
+    writeFile(dir_ / "bad.ckpt", "TOYHOST-CHECKPOINT 1\n{\"shadertoy\": 1}\n");
+    auto bad = run("--resume " + quoted(dir_ / "bad.ckpt"));
+    EXPECT_EQ(bad.exitCode, 1) << bad.output;
+    EXPECT_NE(bad.output.find((dir_ / "bad.ckpt").string() + ": error: not a usable checkpoint"), std::string::npos)
+        << bad.output;
+    // Truncated: the header promises more floats than the file holds.
+    const std::string whole = bytesOf(dir_ / "state.ckpt");
+    writeFile(dir_ / "short.ckpt", whole.substr(0, whole.size() - 100));
+    auto truncated = run("--resume " + quoted(dir_ / "short.ckpt"));
+    EXPECT_EQ(truncated.exitCode, 1) << truncated.output;
+    EXPECT_NE(truncated.output.find("truncated"), std::string::npos) << truncated.output;
+}
+
+// ---- render-farm shards -----------------------------------------------------------------------
+
+// Four shards run by GNU parallel (as docs/farm.md shows), compared file by file with one run.
+TEST(Shards, FourParallelShardsEqualTheSingleRunByteForByte) {
+    if (shell("command -v parallel").first != 0) GTEST_SKIP() << "GNU parallel is not installed";
+    const fs::path dir = freshOutputDir("reliability/shards");
+    const fs::path pool = sourceDir() / "shadertoys/ripple-pool";
+    const fs::path ocean = sourceDir() / "shadertoys/exp-sine-ocean";
+    struct Case {
+        const char* name;
+        fs::path shadertoy;
+    };
+    // ripple-pool has a simulation buffer (earlier frames are simulated); exp-sine-ocean has none
+    // (a shard starts at its first frame).
+    for (const Case& c : {Case{"pool", pool}, Case{"ocean", ocean}}) {
+        SCOPED_TRACE(c.name);
+        const std::string common = " --size 96x54 --frames 40 --quiet --mouse-script " + quoted(pool / "drag.json");
+        auto single = runToyhost("run " + quoted(c.shadertoy) + common + " --out " +
+                                 quoted(dir / c.name / "single/f_%04d.png"));
+        ASSERT_EQ(single.exitCode, 0) << single.output;
+        auto shards = shell("parallel --will-cite --halt now,fail=1 -j 2 " + quoted(toyhostBinary()) + " run " +
+                            quoted(c.shadertoy) + common + " --headless --shard {}/4 --out " +
+                            quoted(dir / c.name / "shards/f_%04d.png") + " ::: 0 1 2 3 2>&1");
+        ASSERT_EQ(shards.first, 0) << shards.second;
+        const std::vector<std::string> files = entries(dir / c.name / "single");
+        ASSERT_EQ(files.size(), 40u);
+        EXPECT_EQ(entries(dir / c.name / "shards"), files);
+        for (const std::string& file : files)
+            EXPECT_EQ(bytesOf(dir / c.name / "shards" / file), bytesOf(dir / c.name / "single" / file)) << file;
+    }
+}
+
+TEST(Shards, FrameRangeCapturesOnlyItsFrames) {
+    const fs::path dir = freshOutputDir("reliability/frame-range");
+    auto run = runToyhost("run " + quoted(sourceDir() / "shadertoys/ripple-pool") +
+                          " --size 32x18 --frames 20 --frame-range 12:15 --quiet --out " + quoted(dir / "f_%04d.png"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_EQ(entries(dir), (std::vector<std::string>{"f_0012.png", "f_0013.png", "f_0014.png"}));
+}
+
+// ---- signals ------------------------------------------------------------------------------------
+
+// A pass whose single frame takes far longer than the test (llvmpipe caps each loop near 65535
+// iterations, so the work is in the loop body).
+void writeHeavyShadertoy(const fs::path& dir) {
+    writeFile(dir / "manifest.json", R"({"passes": {"Image": {"source": "image.glsl"}}})");
+    std::string body;
+    for (int k = 1; k <= 20; ++k) body += "        s += sin(x * " + std::to_string(k) + ".0 + s);\n";
+    writeFile(dir / "image.glsl", "void mainImage(out vec4 c, in vec2 f) {\n    float s = 0.0;\n"
+                                  "    for (int i = 0; i < int(iResolution.x) * 200; i++) {\n"
+                                  "        float x = float(i) * f.x;\n" + body + "    }\n    c = vec4(s);\n}\n");
+}
+
+TEST(Signals, SigintDuringALongDrawIsAcknowledgedAndEndsWithinTheGracePeriod) {
+    const fs::path dir = freshOutputDir("reliability/long-draw");
+    writeHeavyShadertoy(dir / "heavy");
+    for (const char* out : {"f_%d.png", "movie.mp4"}) {
+        SCOPED_TRACE(out);
+        fs::remove_all(dir / "out");
+        BackgroundProcess run(toyhostBinary(),
+                              {"run", (dir / "heavy").string(), "--headless", "--size", "320x180", "--frames", "3",
+                               "--frame-timeout", "0", "--out", (dir / "out" / out).string()},
+                              dir / "run.log");
+        std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+        const auto signalled = std::chrono::steady_clock::now();
+        run.signal(SIGINT);
+        EXPECT_TRUE(run.waitForLog("SIGINT: stopping before the next frame", 1.0)) << run.log();
+        EXPECT_EQ(run.wait(10), 130) << run.log();
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - signalled).count();
+        EXPECT_LT(seconds, 6.0) << "the run did not end within the grace period";
+        EXPECT_TRUE(entries(dir / "out").empty()) << "left behind: " << entries(dir / "out").size() << " entries";
+    }
+    // A second signal ends it at once.
+    BackgroundProcess run(toyhostBinary(),
+                          {"run", (dir / "heavy").string(), "--headless", "--size", "320x180", "--frames", "3",
+                           "--frame-timeout", "0", "--out", (dir / "out2" / "movie.mp4").string()},
+                          dir / "run2.log");
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    run.signal(SIGTERM);
+    ASSERT_TRUE(run.waitForLog("SIGTERM: stopping", 1.0)) << run.log();
+    const auto second = std::chrono::steady_clock::now();
+    run.signal(SIGTERM);
+    EXPECT_EQ(run.wait(10), 143) << run.log();
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - second).count(), 2.0);
+    EXPECT_TRUE(entries(dir / "out2").empty()) << "a second signal left files";
+    EXPECT_EQ(shell("pgrep -a ffmpeg").second.find((dir / "out2").string()), std::string::npos)
+        << "an ffmpeg was left running";
+}
+
+// SIGTERM at random moments of captures of every kind: what is left is complete, or nothing.
+TEST(Signals, SigtermAtRandomMomentsLeavesOnlyCompleteFiles) {
+    const fs::path dir = freshOutputDir("reliability/sigterm-loop");
+    const fs::path toy = sourceDir() / "shadertoys/ripple-pool";
+    std::mt19937 random(20261123);
+    std::uniform_int_distribution<int> delayMs(30, 1000);
+    const char* kinds[] = {"png", "exr", "raw", "mp4", "webm"};
+    constexpr int kRuns = 55;
+    int interrupted = 0;
+    for (int i = 0; i < kRuns; ++i) {
+        const std::string kind = kinds[i % 5];
+        const fs::path out = dir / ("run" + std::to_string(i));
+        fs::create_directories(out);
+        const std::string target = kind == "raw" ? "-" : kind == "png" || kind == "exr" ? (out / ("f_%04d." + kind)).string()
+                                                                                          : (out / ("movie." + kind)).string();
+        std::vector<std::string> args = {"run", toy.string(), "--headless", "--size", "160x90", "--frames", "240",
+                                         "--quiet", "--out", target};
+        if (kind == "exr") args.insert(args.end(), {"--capture-pass", "A"});
+        // Raw frames go to stdout, here a file of their own (through a shell that execs toyhost,
+        // so the signal reaches toyhost), which must then hold whole frames only.
+        std::vector<std::string> command = args;
+        fs::path program = toyhostBinary();
+        if (kind == "raw") {
+            std::string line = "exec " + quoted(toyhostBinary());
+            for (const std::string& a : args) line += " " + quoted(fs::path(a));
+            line += " > " + quoted(out / "frames.raw");
+            program = "/bin/sh";
+            command = {"-c", line};
+        }
+        BackgroundProcess run(program, command, out / "log");
+        std::this_thread::sleep_for(std::chrono::milliseconds(delayMs(random)));
+        run.signal(SIGTERM);
+        const int code = run.wait(15);
+        SCOPED_TRACE("run " + std::to_string(i) + " (" + kind + "), exit " + std::to_string(code));
+        ASSERT_TRUE(code == 143 || code == 0) << run.log();
+        interrupted += code == 143;
+        for (const std::string& name : entries(out)) {
+            if (name == "log") continue;
+            if (name == "frames.raw") {
+                EXPECT_EQ(fs::file_size(out / name) % (160 * 90 * 4), 0u) << "a partial raw frame";
+                continue;
+            }
+            EXPECT_NE(name[0], '.') << "a hidden temporary file was left: " << name;
+            const fs::path file = out / name;
+            if (kind == "png") EXPECT_TRUE(loadImageFile(file).ok()) << name << " is not a complete PNG";
+            if (kind == "exr") EXPECT_TRUE(readExr(file).ok()) << name << " is not a complete EXR";
+            if (kind == "mp4" || kind == "webm") {
+                EXPECT_EQ(code, 0) << "an interrupted video must be discarded, found " << name;
+                auto frames = shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                                    "stream=nb_read_frames -of csv=p=0 " + quoted(file));
+                EXPECT_EQ(frames.second, "240\n") << name;
+            }
+        }
+    }
+    std::printf("%d of %d runs were interrupted by SIGTERM (the others had finished)\n", interrupted, kRuns);
+    EXPECT_GT(interrupted, kRuns / 2) << "too few runs were still going when the signal came";
+}
+
+}  // namespace
+}  // namespace toyhost::testing
