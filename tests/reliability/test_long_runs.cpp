@@ -290,3 +290,40 @@ TEST(Signals, SigtermAtRandomMomentsLeavesOnlyCompleteFiles) {
 
 }  // namespace
 }  // namespace toyhost::testing
+
+namespace toyhost::testing {
+namespace {
+
+// ---- the watchdog ---------------------------------------------------------------------------
+
+TEST(Watchdog, AFrameOverItsLimitEndsTheRunNamingThePass) {
+    const fs::path dir = freshOutputDir("reliability/watchdog-frame");
+    writeHeavyShadertoy(dir / "heavy");
+    const auto started = std::chrono::steady_clock::now();
+    auto run = runToyhost("run " + quoted(dir / "heavy") + " --size 320x180 --frames 3 --frame-timeout 1 --out " +
+                          quoted(dir / "out/f_%d.png"));
+    EXPECT_EQ(run.exitCode, 124) << run.output;
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 8.0);
+    EXPECT_NE(run.output.find("error: Image: frame 0 has been drawing this pass for"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("[watchdog.frame]"), std::string::npos) << run.output;
+    EXPECT_TRUE(entries(dir / "out").empty());
+}
+
+TEST(Watchdog, ACompilationOverItsLimitEndsTheRun) {
+    // 40000 globals keep Mesa's GLSL front end busy for longer than the 0.2 s allowed.
+    const fs::path dir = freshOutputDir("reliability/watchdog-compile");
+    std::string code;
+    for (int i = 0; i < 40000; ++i) code += "float g" + std::to_string(i) + " = " + std::to_string(i) + ".0;\n";
+    code += "void mainImage(out vec4 c, in vec2 f) { c = vec4(g1 + g39999); }\n";
+    writeFile(dir / "big/image.glsl", code);
+    writeFile(dir / "big/manifest.json", R"({"passes": {"Image": {"source": "image.glsl"}}})");
+    auto run = runToyhost("run " + quoted(dir / "big") + " --size 8x8 --compile-timeout 0.2 --out " +
+                          quoted(dir / "out/f.png"));
+    EXPECT_EQ(run.exitCode, 124) << run.output;
+    EXPECT_NE(run.output.find("error: Image: compiling has taken"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("[watchdog.compile]"), std::string::npos) << run.output;
+    EXPECT_TRUE(entries(dir / "out").empty());
+}
+
+}  // namespace
+}  // namespace toyhost::testing
