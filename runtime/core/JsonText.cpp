@@ -37,11 +37,11 @@ Result<json> parseJsonStrictly(std::string_view text, const std::string& file, c
         switch (event) {
             case json::parse_event_t::object_start:
                 elementStarts();
-                levels.push_back({});
+                levels.push_back(Level{});
                 break;
             case json::parse_event_t::array_start:
                 elementStarts();
-                levels.push_back({true});
+                levels.push_back(Level{true, -1, {}, {}});
                 break;
             case json::parse_event_t::object_end:
             case json::parse_event_t::array_end:
@@ -68,8 +68,14 @@ Result<json> parseJsonStrictly(std::string_view text, const std::string& file, c
     try {
         document = json::parse(text, track);
     } catch (const json::exception& e) {
-        // parse_error (syntax), out_of_range (a number beyond double: 1e400), ...
-        return fileError(file, std::string("invalid JSON: ") + e.what(), code);
+        // parse_error (syntax; its message has the line and column), out_of_range (a number
+        // beyond double: 1e400, whose place is where the parser had got to), ...
+        Diagnostic d;
+        d.code = code;
+        d.file = file;
+        if (e.id == 406 && !levels.empty()) d.field = pathOf(levels, levels.size());
+        d.message = std::string("invalid JSON: ") + e.what();
+        return Error(std::move(d));
     }
     if (!duplicates.empty()) return Error(std::move(duplicates));
     return document;

@@ -256,7 +256,11 @@ private:
             }
             readPass(*id, body, where);
         }
-        if (!desc_.find(PassId::Image) && !it->contains("Image"))
+        // A misspelt "Image" was reported with its suggestion already: once is enough.
+        bool imageMisspelt = false;
+        for (const auto& [name, body] : it->items())
+            imageMisspelt = imageMisspelt || (!passFromName(name) && closestMatch(name, passNames()) == "Image");
+        if (!desc_.find(PassId::Image) && !it->contains("Image") && !imageMisspelt)
             problems_.add("passes", "the \"Image\" pass is missing", "manifest.missing");
         // Buffer references can only be checked once every pass is known.
         for (const auto& [pass, channel, buffer] : bufferRefs_) {
@@ -330,6 +334,11 @@ private:
                             where, problems_);
         int sources = 0;
         for (const char* key : {"buffer", "texture", "media", "keyboard"}) sources += value.contains(key);
+        // {"bufer": "A"} was reported as a near miss of "buffer": do not also say a source is missing.
+        static const std::vector<std::string> sourceKeys{"buffer", "texture", "media", "keyboard"};
+        bool sourceMisspelt = false;
+        for (const auto& [key, _] : value.items()) sourceMisspelt = sourceMisspelt || closestMatch(key, sourceKeys);
+        if (sources == 0 && sourceMisspelt) return;
         if (sources != 1) {
             problems_.add(where, "needs exactly one of \"buffer\", \"texture\", \"media\", \"keyboard\"",
                           "manifest.value", pass.id, index);

@@ -87,10 +87,22 @@ public:
 
     // Where a pass's latest output is (readback, presenting).
     PassOutput output(PassId pass) const { return renderer_->output(pass); }
-    void readRgba32f(PassId pass, std::vector<float>& out) const { renderer_->readRgba32f(pass, out); }
+    void readRgba32f(PassId pass, std::vector<float>& out) const {
+        renderer_->publishPendingDraws();
+        renderer_->readRgba32f(pass, out);
+        renderer_->publishPendingDraws();
+    }
     void readRgba8(PassId pass, std::vector<std::uint8_t>& out) const { renderer_->readRgba8(pass, out); }
-    // Waits for the GPU (glFinish); never needed per frame.
-    void finish() { renderer_->finish(); }
+    // Waits for the GPU (glFinish); never needed per frame. The watchdog sees which pass it
+    // waits for.
+    void finish() {
+        renderer_->publishPendingDraws();
+        renderer_->finish();
+        renderer_->publishPendingDraws();
+    }
+    // Tells the watchdog (PlayerDesc::watchDraws) which pass the GPU is still drawing: call
+    // before and after a call that may wait for the GPU (a readback).
+    void publishPendingDraws() { renderer_->publishPendingDraws(); }
 
     int width() const { return renderer_->width(); }
     int height() const { return renderer_->height(); }

@@ -1,5 +1,9 @@
 #include "render/Renderer.h"
 
+#include "shader/CompilerLog.h"
+
+#include <algorithm>
+
 #include <GLES3/gl3.h>
 #include <map>
 #include <string>
@@ -31,6 +35,50 @@ struct PassRuntime {
 
 }  // namespace
 
+namespace {
+// The passes the GPU may still be drawing, each with a fence set right after its draw, oldest
+// first; the watchdog is told the oldest unfinished one before anything that may block. Nothing
+// waits for these fences: a runaway pass is named without costing a GPU round trip per pass.
+class PendingPasses {
+public:
+    ~PendingPasses() {
+        for (std::size_t i = 0; i < count_; ++i) glDeleteSync(items_[i].fence);
+    }
+    void add(const char* pass, int frame) {
+        if (count_ == items_.size()) dropOldest();
+        items_[count_++] = {glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0), pass, frame};
+    }
+    // Forgets the passes that have finished (asking without waiting), then publishes the oldest
+    // one still drawing, keeping its start time when it was already the one published.
+    void publish(RunActivity& activity) {
+        while (count_ && glClientWaitSync(items_[0].fence, 0, 0) != GL_TIMEOUT_EXPIRED) dropOldest();
+        if (!count_) {
+            published_ = nullptr;
+            activity.idle();
+            return;
+        }
+        if (items_[0].fence == published_) return;
+        published_ = items_[0].fence;
+        activity.begin(RunActivity::Phase::Drawing, items_[0].pass, items_[0].frame);
+    }
+
+private:
+    struct Item {
+        GLsync fence = nullptr;
+        const char* pass = "";
+        int frame = 0;
+    };
+    void dropOldest() {
+        glDeleteSync(items_[0].fence);
+        std::move(items_.begin() + 1, items_.begin() + static_cast<std::ptrdiff_t>(count_), items_.begin());
+        --count_;
+    }
+    std::array<Item, 4 * (kBufferCount + 1)> items_{};  // about three frames of five passes
+    std::size_t count_ = 0;
+    GLsync published_ = nullptr;  // compared only, never used after its deletion
+};
+}  // namespace
+
 struct Renderer::Impl {
     TextureAllocator allocate;
     SamplerSet samplers;
@@ -45,6 +93,7 @@ struct Renderer::Impl {
     std::uint64_t lastStep = 0;
     RunActivity* activity = nullptr;
     bool watchDraws = false;
+    PendingPasses pending;  // with watchDraws
 
     // Compiles `pass`, telling the watchdog which pass is compiling.
     Result<PassProgram> compile(const ManifestDesc& manifest, const PassDesc& pass) {
@@ -80,22 +129,6 @@ struct Renderer::Impl {
     }
 };
 
-namespace {
-// Waits until the GPU has drawn everything issued so far, publishing `pass` as the one being drawn.
-void waitForPass(RunActivity* activity, const char* pass, int frame) {
-    activity->begin(RunActivity::Phase::Drawing, pass, frame);
-    GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-    if (fence) {
-        constexpr GLuint64 kSecond = 1000000000;
-        GLenum waited;
-        do waited = glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, kSecond);
-        while (waited == GL_TIMEOUT_EXPIRED);
-        glDeleteSync(fence);
-    }
-    activity->idle();
-}
-}  // namespace
-
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Renderer::~Renderer() = default;
 
@@ -116,7 +149,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
     for (size_t p = 0; p < graph.passes.size(); ++p) {
         Result<PassProgram> program = impl->compile(manifest, manifest.passes[p]);
         if (!program) {
-            problems.insert(problems.end(), program.error().diagnostics.begin(), program.error().diagnostics.end());
+            mergeCompileProblems(problems, program.error().diagnostics, manifest);
             continue;
         }
         programs.push_back(std::move(*program));
@@ -188,6 +221,8 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
     for (PassRuntime& pass : s.passes) {
         const bool isImage = pass.plan.targetBuffer < 0;
         if (isImage && !renderImage) continue;
+        // A driver may block here while earlier passes draw: say which one.
+        if (s.watchDraws) s.pending.publish(*s.activity);
         GLuint target = isImage ? s.imageTarget.framebuffer.id()
                                 : s.buffers[pass.plan.targetBuffer]->slot(slotWritten(step)).framebuffer.id();
         glBindFramebuffer(GL_FRAMEBUFFER, target);
@@ -212,7 +247,7 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
         glDrawArrays(GL_TRIANGLES, 0, 3);
         // Mipmaps of a buffer are regenerated only when some channel samples it with `mipmap`.
         if (!isImage) s.buffers[pass.plan.targetBuffer]->generateMipmaps(slotWritten(step));
-        if (s.watchDraws) waitForPass(s.activity, passName(pass.plan.id), u.frame);
+        if (s.watchDraws) s.pending.add(passName(pass.plan.id), u.frame);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     s.lastStep = step;
@@ -236,6 +271,10 @@ void Renderer::writeBufferSlot(int index, int slot, std::span<const float> rgba)
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
     glBindTexture(GL_TEXTURE_2D, 0);
     buffer.generateMipmaps(slot);
+}
+
+void Renderer::publishPendingDraws() {
+    if (impl_->watchDraws) impl_->pending.publish(*impl_->activity);
 }
 
 void Renderer::updateKeyboard(std::span<const std::uint8_t> texels) {

@@ -32,9 +32,9 @@ struct RendererDesc {
     bool floatImageTarget = false;
     TextureAllocator allocate;     // empty: createRenderTexture
     // For a watchdog (set by runs with a frame or compile time limit): compiling publishes the
-    // pass; with `watchDraws`, each pass of a frame is also waited for before the next is drawn,
-    // publishing the pass being drawn, so a runaway shader can be named (a GPU round trip per
-    // pass: docs/performance.md measures it).
+    // pass; with `watchDraws`, a fence follows each pass's draw and the oldest pass the GPU has
+    // not finished is published before anything that may block (publishPendingDraws), so a
+    // runaway shader can be named. Nothing waits for the fences.
     RunActivity* activity = nullptr;
     bool watchDraws = false;
 };
@@ -67,6 +67,10 @@ public:
     // Runs every buffer, then Image when `renderImage`. `step` picks the ping-pong slots
     // (graph/PassGraph.h); it must go up by one per call.
     void renderFrame(const FrameUniforms& uniforms, std::uint64_t step, bool renderImage = true);
+
+    // With watchDraws: tells the watchdog which pass the GPU is still drawing (the oldest
+    // unfinished), or that it is idle. Call before and after a call that may wait for the GPU.
+    void publishPendingDraws();
 
     // New keyboard texels (256*3 bytes, row 0 first); call only when they changed.
     void updateKeyboard(std::span<const std::uint8_t> texels);

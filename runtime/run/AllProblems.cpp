@@ -3,6 +3,7 @@
 #include "export/LoadShadertoy.h"
 #include "gl/HeadlessContext.h"
 #include "render/PassProgram.h"
+#include "shader/CompilerLog.h"
 
 namespace toyhost {
 
@@ -19,9 +20,7 @@ Error withCompileProblems(const RunOptions& options, Error failure) {
     if (!context) return failure;  // the inputs' problems are still worth reporting alone
     for (const PassDesc& pass : manifest->passes) {
         Result<PassProgram> program = compilePassProgram(*manifest, pass);
-        if (!program)
-            failure.diagnostics.insert(failure.diagnostics.end(), program.error().diagnostics.begin(),
-                                       program.error().diagnostics.end());
+        if (!program) mergeCompileProblems(failure.diagnostics, program.error().diagnostics, *manifest);
     }
     return failure;
 }

@@ -137,11 +137,14 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
         const bool renderImage = !run.output || (captured && o.capturePass == PassId::Image);
         player.step(clock.frameTime(frame), events, renderImage);
 
+        // Readbacks may wait for the GPU: the watchdog is told which pass it is still drawing.
+        player.publishPendingDraws();
         if (captured) {
             if (Status saved = recorder->capture(player, frame); !saved) return saved;
         } else if (recorder) {
             if (Status polled = recorder->poll(); !polled) return polled;
         }
+        player.publishPendingDraws();
         if (o.checkFinite) checkBuffers(frame);
         // Frame 0 waits for the GPU once so that the time to the first frame is real.
         if (o.finishEachFrame || frame == run.first) player.finish();
@@ -155,6 +158,7 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
         observer.progress(progress);
     }
     if (recorder) {
+        player.publishPendingDraws();
         Status finished = recorder->finish();
         // A signal during the final writes still ends the run as interrupted (exit 130/143),
         // whatever the encoders managed; an interrupted video is discarded even if it was just

@@ -90,7 +90,24 @@ Result<PreparedRun> prepareRun(const RunOptions& options) {
         resume = std::move(*read);
     }
     const RunOptions o = withDefaults(std::move(given));
-    if (Status size = checkCanvasSize(*o.width, *o.height); !size) return size.error();
+    if (Status size = checkCanvasSize(*o.width, *o.height); !size) {
+        Error error = size.error();
+        if (options.width) error.diagnostics.front().message = "--size: " + error.diagnostics.front().message;
+        return error;
+    }
+    if (o.checkpoint) {
+        std::error_code ec;
+        if (fs::is_directory(*o.checkpoint, ec))
+            return usage("--checkpoint " + o.checkpoint->string() + ": is a folder; give a file name");
+    }
+    for (const fs::path& folder : o.media.folders) {
+        std::error_code ec;
+        if (!fs::is_directory(folder, ec))
+            return fileError(folder.string(),
+                             fs::exists(folder, ec) ? "is not a folder (--media or $TOYHOST_MEDIA)"
+                                                    : "media folder not found (--media or $TOYHOST_MEDIA)",
+                             "io.not-found");
+    }
     if (o.fps && (!std::isfinite(*o.fps) || *o.fps < defaults::kMinFps || *o.fps > defaults::kMaxFps))
         return usage("--fps must be a number of frames per second from 0.001 to 1000000");
     if (!std::isfinite(o.startTime) || std::abs(o.startTime) > defaults::kMaxSeconds)

@@ -1,5 +1,7 @@
 #include "shader/CompilerLog.h"
 
+#include <algorithm>
+
 #include <regex>
 #include <sstream>
 
@@ -67,6 +69,21 @@ std::vector<Diagnostic> parseCompilerLog(std::string_view log, const CompilerLog
         out.push_back(std::move(d));
     }
     return out;
+}
+
+void mergeCompileProblems(std::vector<Diagnostic>& all, const std::vector<Diagnostic>& more,
+                          const ManifestDesc& manifest) {
+    for (Diagnostic d : more) {
+        if (manifest.commonSource && d.file == manifest.commonName) {
+            d.pass = "Common";
+            const bool seen = std::any_of(all.begin(), all.end(), [&](const Diagnostic& o) {
+                return o.file == d.file && o.line == d.line && o.column == d.column && o.message == d.message &&
+                       o.pass == d.pass;
+            });
+            if (seen) continue;
+        }
+        all.push_back(std::move(d));
+    }
 }
 
 }  // namespace toyhost

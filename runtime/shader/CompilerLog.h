@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/Diagnostic.h"
+#include "manifest/ManifestDesc.h"
 
 namespace toyhost {
 
@@ -22,5 +23,10 @@ struct CompilerLogNames {
 // One diagnostic per message line (code "shader.compile"; warnings keep Severity::Warning).
 // Lines the parser does not recognise are kept as messages about the pass without a line.
 std::vector<Diagnostic> parseCompilerLog(std::string_view log, const CompilerLogNames& names);
+
+// Appends one pass's compile problems to `all`. A problem in Common is compiled into every pass
+// and would be reported once per pass: it is named as Common's and kept once.
+void mergeCompileProblems(std::vector<Diagnostic>& all, const std::vector<Diagnostic>& more,
+                          const ManifestDesc& manifest);
 
 }  // namespace toyhost

@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <iostream>
 #include <string>
+#include <functional>
+#include <pthread.h>
 #include <unistd.h>
 
 #include "Commands.h"
@@ -16,6 +18,31 @@
 
 using namespace toyhost;
 using namespace toyhost::cli;
+
+namespace {
+// Runs `job` on a new thread with a 1 GiB stack (address space only: pages are used as touched)
+// and returns its result; runs it here if such a thread cannot be made.
+int onLargeStack(std::function<int()> job) {
+    struct Call {
+        std::function<int()> job;
+        int result = 0;
+    } call{std::move(job)};
+    pthread_attr_t attributes;
+    pthread_attr_init(&attributes);
+    pthread_attr_setstacksize(&attributes, std::size_t(1) << 30);
+    pthread_t thread;
+    auto run = [](void* data) -> void* {
+        auto* c = static_cast<Call*>(data);
+        c->result = c->job();
+        return nullptr;
+    };
+    const bool started = pthread_create(&thread, &attributes, run, &call) == 0;
+    pthread_attr_destroy(&attributes);
+    if (!started) return call.job();
+    pthread_join(thread, nullptr);
+    return call.result;
+}
+}  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"toyhost: run Shadertoy shaders unmodified, in a window (GLFW) or headless on EGL (no display needed)"};
@@ -79,5 +106,8 @@ int main(int argc, char** argv) {
         if (const char* folder = std::getenv("TOYHOST_MEDIA"); folder && *folder) mediaFolders.emplace_back(folder);
         return mediaCommand(mediaFolders);
     }
-    return runCommand.execute();
+    // Mesa's GLSL compiler recurses once per statement of a long function: a large shader that
+    // compiles on the site overflows a main thread's usual 8 MiB stack (and ends the process with
+    // no message). The run gets a thread with a stack that such shaders fit in.
+    return onLargeStack([&] { return runCommand.execute(); });
 }
