@@ -51,7 +51,10 @@ public:
     // Forgets the passes that have finished (asking without waiting), then publishes the oldest
     // one still drawing, keeping its start time when it was already the one published.
     void publish(RunActivity& activity) {
-        while (count_ && glClientWaitSync(items_[0].fence, 0, 0) != GL_TIMEOUT_EXPIRED) dropOldest();
+        // The GPU finishes passes in order: when the newest is done, all are (one query, the
+        // usual case between frames); else the oldest unfinished is searched from the front.
+        if (count_ && signaled(items_[count_ - 1])) dropAll();
+        while (count_ && signaled(items_[0])) dropOldest();
         if (!count_) {
             published_ = nullptr;
             activity.idle();
@@ -68,6 +71,11 @@ private:
         const char* pass = "";
         int frame = 0;
     };
+    static bool signaled(const Item& item) { return glClientWaitSync(item.fence, 0, 0) != GL_TIMEOUT_EXPIRED; }
+    void dropAll() {
+        for (std::size_t i = 0; i < count_; ++i) glDeleteSync(items_[i].fence);
+        count_ = 0;
+    }
     void dropOldest() {
         glDeleteSync(items_[0].fence);
         std::move(items_.begin() + 1, items_.begin() + static_cast<std::ptrdiff_t>(count_), items_.begin());
