@@ -1,5 +1,7 @@
 #include "media/ChannelImages.h"
 
+#include "core/Defaults.h"
+
 #include <algorithm>
 
 #include "image/ImageFile.h"
@@ -45,9 +47,16 @@ Result<ChannelImages> ChannelImages::load(const ManifestDesc& manifest, const Me
                 }
                 image = std::move(resolved->image);
             }
+            // toyhost's own limit, before any GL (GL's may be smaller; the renderer checks that).
+            if (image && (image->width > defaults::kMaxCanvasSide || image->height > defaults::kMaxCanvasSide))
+                image = Error("the image is " + std::to_string(image->width) + "x" + std::to_string(image->height) +
+                                  ", larger than the " + std::to_string(defaults::kMaxCanvasSide) +
+                                  " a side textures may have",
+                              "image.too-large");
             if (!image) {
                 failed[key] = true;
-                Error located = inPass(passName(pass.id), image.error(), c);
+                const std::string source = channel.kind == ChannelKind::ImageFile ? channel.file.string() : channel.media;
+                Error located = inPass(passName(pass.id), inFile(source, image.error()), c);
                 problems.insert(problems.end(), located.diagnostics.begin(), located.diagnostics.end());
                 continue;
             }

@@ -197,6 +197,14 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
                     if (!pixels)
                         return inPass(passName(plan.id),
                                       Error("the channel's image was not loaded before rendering", "internal"), c);
+                    // GL would refuse it with a bare GL_INVALID_VALUE; say which image and the limit.
+                    if (const int limit = maxTextureSize(); pixels->width > limit || pixels->height > limit)
+                        return inPass(passName(plan.id),
+                                      Error("the image is " + std::to_string(pixels->width) + "x" +
+                                                std::to_string(pixels->height) + ", larger than this GL allows "
+                                                "(GL_MAX_TEXTURE_SIZE " + std::to_string(limit) + ")",
+                                            "gl.texture-size"),
+                                      c);
                     const auto key = std::make_tuple(channelImageKey(passDesc.channels[c]), channel.sampler.vflip,
                                                      channel.sampler.filter == Filter::Mipmap);
                     auto it = impl->inputs.find(key);
