@@ -327,3 +327,27 @@ TEST(Watchdog, ACompilationOverItsLimitEndsTheRun) {
 
 }  // namespace
 }  // namespace toyhost::testing
+
+namespace toyhost::testing {
+namespace {
+
+// A texture beyond toyhost's 16384 a side is refused before GL, naming the file and the channel.
+TEST(TextureLimits, AnImageTooLargeIsNamedWithItsChannel) {
+    const fs::path dir = freshOutputDir("reliability/texture-too-large");
+    const int width = 16390, height = 2;
+    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(width) * height * 4, 128);
+    ASSERT_TRUE(writePng(dir / "toy/wide.png", width, height, pixels).ok());
+    writeFile(dir / "toy/manifest.json",
+              R"({"passes": {"Image": {"source": "i.glsl", "channels": {"iChannel1": {"texture": "wide.png"}}}}})");
+    writeFile(dir / "toy/i.glsl", "void mainImage(out vec4 c, in vec2 f) { c = texture(iChannel1, f); }\n");
+    auto run = runToyhost("run " + quoted(dir / "toy") + " --size 8x8 --out " + quoted(dir / "out/f.png"));
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find((dir / "toy/wide.png").string() + ": error: Image / iChannel1: the image is 16390x2, "
+                                                                   "larger than the 16384"),
+              std::string::npos)
+        << run.output;
+    EXPECT_TRUE(entries(dir / "out").empty());
+}
+
+}  // namespace
+}  // namespace toyhost::testing
