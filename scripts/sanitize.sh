@@ -10,8 +10,9 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 builds="${BUILD_ROOT:-$root}"
 jobs="$(nproc)"
 
-configure() {  # configure DIR FLAGS
-    cmake -S "$root" -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+configure() {  # configure DIR FLAGS (-O1 -g1: reports with file:line, and CI time kept short)
+    cmake -S "$root" -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=Sanitize \
+        -DCMAKE_CXX_FLAGS_SANITIZE="-O1 -g1" -DCMAKE_C_FLAGS_SANITIZE="-O1 -g1" \
         -DCMAKE_CXX_FLAGS="$2 -fno-omit-frame-pointer" -DCMAKE_C_FLAGS="$2 -fno-omit-frame-pointer" \
         -DCMAKE_EXE_LINKER_FLAGS="$2" >/dev/null
 }
