@@ -14,27 +14,68 @@ namespace toyhost {
 namespace fs = std::filesystem;
 
 namespace {
-struct FileCloser {
-    void operator()(std::FILE* file) const { std::fclose(file); }
-};
 struct StbFree {
     void operator()(stbi_uc* pixels) const { stbi_image_free(pixels); }
 };
 }  // namespace
 
+namespace {
+// Debian's stb_image (2.27) builds a JPEG Huffman table from the 16 code counts of a DHT segment
+// without checking that they add up to at most 256, and writes past its table when they do (found
+// by tests/fuzz). Such a file is refused before stb sees it. Walks the markers, also between the
+// scans of a progressive JPEG; true when every DHT table is within bounds.
+bool jpegHuffmanTablesValid(const std::string& data) {
+    auto byte = [&](std::size_t i) { return static_cast<unsigned char>(data[i]); };
+    if (data.size() < 4 || byte(0) != 0xFF || byte(1) != 0xD8) return true;  // not a JPEG: stb decides
+    std::size_t i = 2;
+    while (i + 4 <= data.size()) {
+        if (byte(i) != 0xFF) {
+            ++i;  // entropy-coded data of a scan: look for the next marker
+            continue;
+        }
+        const unsigned marker = byte(i + 1);
+        if (marker == 0xFF || marker == 0x00 || (marker >= 0xD0 && marker <= 0xD7) || marker == 0x01) {
+            i += marker == 0xFF ? 1 : 2;  // fill byte, stuffed 0xFF00, restart marker, TEM
+            continue;
+        }
+        if (marker == 0xD9) return true;  // end of image
+        const std::size_t length = (std::size_t(byte(i + 2)) << 8) | byte(i + 3);
+        // Truncated: stb reports it, except in a DHT, where it reads zeros past the end and
+        // counts whatever came before into the table.
+        if (length < 2 || i + 2 + length > data.size()) return marker != 0xC4;
+        if (marker == 0xC4) {
+            std::size_t at = i + 4;
+            const std::size_t end = i + 2 + length;
+            while (at < end) {
+                if (at + 17 > end) return false;
+                std::size_t codes = 0;
+                for (int k = 1; k <= 16; ++k) codes += byte(at + k);
+                if (codes > 256 || at + 17 + codes > end) return false;
+                at += 17 + codes;
+            }
+        }
+        i += 2 + length;
+    }
+    return true;
+}
+}  // namespace
+
 Result<Image8> loadImageFile(const fs::path& path) {
     if (Status regular = checkRegularFile(path); !regular) return regular.error();
-
-    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-    if (!file) return fileError(path.string(), std::string("cannot open: ") + std::strerror(errno), "io.read");
+    // Stock and user textures are at most a few MiB; the limit keeps a huge file from filling memory.
+    Result<std::string> bytes = readTextFile(path, std::size_t(256) << 20);
+    if (!bytes) return bytes.error();
+    if (!jpegHuffmanTablesValid(*bytes))
+        return fileError(path.string(), "cannot decode image: a JPEG Huffman table (DHT) is malformed", "image.decode");
 
     // Asking stb for 4 channels gives exactly the WebGL upload: it expands grey to R=G=B and
     // fills a missing alpha with 255, and it never applies gAMA/iCCP/sRGB chunks. The row order
     // is pinned per thread (files are top row first; flipRows below makes it bottom first).
     stbi_set_flip_vertically_on_load_thread(0);
     int width = 0, height = 0, channelsInFile = 0;
-    std::unique_ptr<stbi_uc, StbFree> pixels(
-        stbi_load_from_file(file.get(), &width, &height, &channelsInFile, STBI_rgb_alpha));
+    std::unique_ptr<stbi_uc, StbFree> pixels(stbi_load_from_memory(
+        reinterpret_cast<const stbi_uc*>(bytes->data()), static_cast<int>(bytes->size()), &width, &height,
+        &channelsInFile, STBI_rgb_alpha));
     if (!pixels) {
         const char* reason = stbi_failure_reason();
         return fileError(path.string(), std::string("cannot decode image: ") + (reason ? reason : "unknown error"),

@@ -81,6 +81,26 @@ TEST(MediaImageFile, UndecodableFileErrorGivesTheReason) {
     EXPECT_NE(image.error().text().find("cannot decode"), std::string::npos);
 }
 
+// Debian's stb_image writes past its Huffman table when a JPEG's DHT counts add up to more than
+// 256 (found by tests/fuzz): such files are refused before stb sees them, truncated or not.
+TEST(MediaImageFile, JpegWithAnOversizedHuffmanTableIsRefusedBeforeDecoding) {
+    TempFolder folder;
+    const fs::path truncated = folder.path / "truncated.jpg";
+    writeBytes(truncated, {0xFF, 0xD8, 0xFF, 0xC4, 0x00, 0x15, 0x01, 0xFF, 0xD9});
+    std::vector<unsigned char> whole = {0xFF, 0xD8, 0xFF, 0xC4, 0x01, 0x13, 0x00};  // DHT of 275 bytes
+    for (int k = 0; k < 16; ++k) whole.push_back(k < 2 ? 0xFF : 0x00);  // 510 codes
+    whole.resize(whole.size() + 256, 0x01);
+    whole.insert(whole.end(), {0xFF, 0xD9});
+    const fs::path oversized = folder.path / "oversized.jpg";
+    writeBytes(oversized, whole);
+    for (const fs::path& file : {truncated, oversized}) {
+        const Result<Image8> image = loadImageFile(file);
+        ASSERT_FALSE(image.ok()) << file;
+        EXPECT_NE(image.error().text().find("a JPEG Huffman table (DHT) is malformed"), std::string::npos)
+            << image.error().text();
+    }
+}
+
 TEST(MediaImageFile, ExpandsGreyAndFillsAlphaLikeAWebGlUpload) {
     TempFolder folder;
     writeBytes(folder.path / "grey.png", kGreyPng);
