@@ -28,8 +28,9 @@ Result<OutputPattern> OutputPattern::parse(const std::string& pattern) {
         size_t j = i + 1;
         int width = 0;
         const bool zeroPad = j < pattern.size() && pattern[j] == '0';
+        // Capped while reading: "%9999999999d" must not overflow int (it is refused below).
         while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])))
-            width = width * 10 + (pattern[j++] - '0');
+            width = std::min(width * 10 + (pattern[j++] - '0'), 1000);
         if (j >= pattern.size() || pattern[j] != 'd' || (width > 0 && !zeroPad) || width > 12)
             return bad("only %d or %0Nd (N <= 12) may stand for the frame number");
         if (out.width_ >= 0) return bad("the frame number may appear only once");

@@ -95,6 +95,7 @@ TEST(OutputPattern, TwoPlaceholdersAreAnError) {
 
 TEST(OutputPattern, OnlyDAndZeroPaddedDAreAccepted) {
     for (const char* bad : {"f%5d.png", "f%s.png", "f%x.png", "f%-4d.png", "f%+d.png", "f%4.png", "f%013d.png",
+                            "f%09999999999d.png", "f%9999999999", // widths beyond int (a fuzz finding)
                             "f%lld.png", "f.png%", "f%"}) {
         EXPECT_EQ(errorOf(bad), "--out " + std::string(bad) + ": " + kPlaceholderError) << bad;
     }
