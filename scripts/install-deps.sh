@@ -13,6 +13,12 @@ packages=(
   parallel                                               # the render-farm shard test (GNU parallel)
 )
 
+# `install-deps.sh fuzz` adds what the libFuzzer targets need (tests/fuzz): clang and its
+# libFuzzer runtime, which clang-14 only recommends.
+if [ "${1:-}" = "fuzz" ]; then
+  packages+=(clang libclang-rt-14-dev)
+fi
+
 missing=()
 for package in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "ok installed"; then
