@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <span>
 #include <string>
@@ -99,6 +100,12 @@ inline CommandResult runToyhost(const std::string& arguments) {
     ::unsetenv("DISPLAY");
     ::unsetenv("WAYLAND_DISPLAY");
     return runCommand(toyhostBinary(), arguments);
+}
+
+// Writes `text` to `path`, creating its folders.
+inline void writeFile(const std::filesystem::path& path, const std::string& text) {
+    std::filesystem::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << text;
 }
 
 inline std::filesystem::path freshOutputDir(const std::string& name) {

@@ -9,10 +9,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void writeFile(const fs::path& path, const std::string& text) {
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-}
 
 bool isEmptyOrAbsent(const fs::path& dir) { return !fs::exists(dir) || fs::is_empty(dir); }
 

@@ -32,10 +32,6 @@ std::string readFile(const fs::path& file) {
     return text.str();
 }
 
-void writeFile(const fs::path& path, const std::string& text) {
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-}
 
 std::vector<std::string> fileNames(const fs::path& dir) {
     std::vector<std::string> names;

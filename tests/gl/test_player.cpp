@@ -44,7 +44,6 @@ const char* kTwoBufferManifest = R"({
   }
 })";
 
-void writeFile(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
 
 class PlayerTest : public GlTest {
 protected:

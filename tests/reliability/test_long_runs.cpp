@@ -26,10 +26,6 @@ std::string bytesOf(const fs::path& file) {
     return std::string((std::istreambuf_iterator<char>(in)), {});
 }
 
-void writeFile(const fs::path& path, const std::string& text) {
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-}
 
 // Every entry of `dir` (hidden ones included), by name.
 std::vector<std::string> entries(const fs::path& dir) {

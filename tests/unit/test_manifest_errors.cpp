@@ -8,41 +8,17 @@
 #include <unistd.h>
 
 #include "DiagnosticText.h"
+#include "ManifestFolder.h"
 #include "TestFolder.h"
 #include "manifest/ManifestLoader.h"
 
 using namespace toyhost;
 namespace fs = std::filesystem;
+using toyhost::testing::ManifestFolder;
+using toyhost::testing::imageWithChannels;
 
 namespace {
 
-// A fresh folder per test holding image.glsl and buffer_a.glsl .. buffer_d.glsl; removed afterwards.
-struct ManifestFolder {
-    toyhost::testing::TestFolder root;
-    fs::path dir = root.path / "toy";
-    ManifestFolder() {
-        write("image.glsl", "void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0); }\n");
-        for (const char* name : {"buffer_a.glsl", "buffer_b.glsl", "buffer_c.glsl", "buffer_d.glsl"})
-            write(name, "void mainImage(out vec4 c, in vec2 f) { c = vec4(0.5); }\n");
-        write("tex.png", "not decoded by the loader");
-    }
-    fs::path write(const std::string& relative, const std::string& text) const {
-        return root.write(fs::path("toy") / relative, text);
-    }
-    fs::path manifest() const { return dir / "manifest.json"; }
-    Result<ManifestDesc> parse(const std::string& json) const { return parseManifest(json, manifest()); }
-    // The whole message of a manifest with exactly one problem.
-    std::string line(const std::string& where, const std::string& what) const {
-        return manifest().string() + ": " + (where.empty() ? "" : where + ": ") + what;
-    }
-};
-
-// An Image pass whose channels are `channels` (JSON text), plus Buffer A.
-std::string imageWithChannels(const std::string& channels) {
-    return R"({"passes": {"Buffer A": {"source": "buffer_a.glsl"},
-                          "Image": {"source": "image.glsl", "channels": )" +
-           channels + "}}}";
-}
 
 const std::string kImageCh0 = R"(passes."Image".channels.iChannel0)";
 const std::string kImageCh1 = R"(passes."Image".channels.iChannel1)";

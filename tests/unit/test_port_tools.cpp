@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "DiagnosticText.h"
+#include "ManifestFolder.h"
 #include "TestFolder.h"
 #include "core/Suggest.h"
 #include "input/InputScript.h"
@@ -24,36 +25,13 @@
 
 using namespace toyhost;
 namespace fs = std::filesystem;
+using toyhost::testing::ManifestFolder;
+using toyhost::testing::imageWithChannels;
 
 namespace {
 
 // ---- helpers --------------------------------------------------------------------------------
 
-// A fresh folder per test holding image.glsl and buffer_a.glsl; removed afterwards.
-struct ManifestFolder {
-    toyhost::testing::TestFolder root;
-    fs::path dir = root.path / "toy";
-    ManifestFolder() {
-        write("image.glsl", "void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0); }\n");
-        write("buffer_a.glsl", "void mainImage(out vec4 c, in vec2 f) { c = vec4(0.5); }\n");
-    }
-    fs::path write(const std::string& relative, const std::string& text) const {
-        return root.write(fs::path("toy") / relative, text);
-    }
-    fs::path manifest() const { return dir / "manifest.json"; }
-    Result<ManifestDesc> parse(const std::string& json) const { return parseManifest(json, manifest()); }
-    // The whole message of a manifest with exactly one problem.
-    std::string line(const std::string& where, const std::string& what) const {
-        return manifest().string() + ": " + (where.empty() ? "" : where + ": ") + what;
-    }
-};
-
-// Buffer A plus an Image pass whose channels are `channels` (JSON text).
-std::string imageWithChannels(const std::string& channels) {
-    return R"({"passes": {"Buffer A": {"source": "buffer_a.glsl"},
-                          "Image": {"source": "image.glsl", "channels": )" +
-           channels + "}}}";
-}
 
 // An Image-only manifest with `defaults` (JSON text) as its "defaults" block.
 std::string imageWithDefaults(const std::string& defaults) {
