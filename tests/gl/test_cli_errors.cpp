@@ -69,7 +69,7 @@ TEST_F(CliErrors, CompileErrorNamesPassFileAndLine) {
 TEST_F(CliErrors, CompileErrorInCommonNamesCommonFileAndLine) {
     writeFile(toy_ / "common.glsl", "float helper() {\n    return undefinedThing;\n}\n");
     auto result = run(R"({"common": "common.glsl", "passes": {"Image": {"source": "image.glsl"}}})");
-    expectFailure(result, {"Image", (toy_ / "common.glsl").string() + ":2:"});
+    expectFailure(result, {"error: Common: ", (toy_ / "common.glsl").string() + ":2:"});
 }
 
 TEST_F(CliErrors, MissingMainImageIsReported) {
