@@ -86,7 +86,7 @@ std::string readme(const ManifestDesc& desc) {
            "## Run it\n\n"
            "```sh\n"
            "toyhost run " + desc.name + "                 # a window (mouse and keyboard as on the site; edits reload)\n"
-           "toyhost run " + desc.name + " --watch --out frame_%04d.png --frames 60   # headless, again after every edit\n"
+           "toyhost run " + desc.name + " --headless --watch --out frame_%04d.png --frames 60   # again after every edit\n"
            "```\n\n"
            "## Files\n\n" + passes +
            "- `manifest.json`: the passes and what each `iChannelN` reads (see toyhost's README, \"The manifest\")\n\n"
