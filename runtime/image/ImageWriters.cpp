@@ -163,16 +163,53 @@ Status writeExr(const fs::path& path, int width, int height, std::span<const flo
     });
 }
 
+namespace {
+// The EXR header's attributes, walked before OpenEXR parses them: OpenEXR allocates an
+// attribute's declared size before reading it, so a 15-byte file can ask for gigabytes (a fuzz
+// finding). Every attribute must fit in the file.
+Status exrHeaderFits(const fs::path& path) {
+    Result<std::string> bytes = readTextFile(path, std::size_t(1) << 30);
+    if (!bytes) return bytes.error();
+    const std::string& d = *bytes;
+    auto bad = [&](const char* what) {
+        return fileError(path.string(), std::string("not a readable EXR file: ") + what, "image.decode");
+    };
+    if (d.size() < 8 || d.compare(0, 4, "\x76\x2f\x31\x01") != 0) return bad("no EXR signature");
+    std::size_t i = 8;
+    for (int attribute = 0; attribute < 10000; ++attribute) {
+        if (i >= d.size()) return bad("the header is truncated");
+        if (d[i] == '\0') return okStatus();  // end of the header
+        const std::size_t nameEnd = d.find('\0', i);
+        if (nameEnd == std::string::npos) return bad("the header is truncated");
+        const std::size_t typeEnd = d.find('\0', nameEnd + 1);
+        if (typeEnd == std::string::npos || typeEnd + 5 > d.size()) return bad("the header is truncated");
+        const auto byte = [&](std::size_t k) { return static_cast<std::uint64_t>(static_cast<unsigned char>(d[k])); };
+        const std::uint64_t size = byte(typeEnd + 1) | byte(typeEnd + 2) << 8 | byte(typeEnd + 3) << 16 |
+                                   byte(typeEnd + 4) << 24;
+        if (typeEnd + 5 + size > d.size()) return bad("an attribute is larger than the file");
+        i = typeEnd + 5 + size;
+    }
+    return bad("too many header attributes");
+}
+}  // namespace
+
 Result<ImageF32> readExr(const fs::path& path) {
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (!fs::exists(status)) return fileError(path.string(), "file not found", "io.not-found");
     if (!fs::is_regular_file(status)) return fileError(path.string(), "is not a regular file", "io.not-a-file");
+    if (Status sane = exrHeaderFits(path); !sane) return sane.error();
     try {
         Imf::InputFile file(path.c_str());
         const Imath::Box2i window = file.header().dataWindow();
-        const int width = window.max.x - window.min.x + 1;
-        const int height = window.max.y - window.min.y + 1;
+        const long long width = static_cast<long long>(window.max.x) - window.min.x + 1;
+        const long long height = static_cast<long long>(window.max.y) - window.min.y + 1;
+        // OpenEXR allocates nothing for pixels itself; this reader would (a fuzz finding).
+        if (width < 1 || height < 1 || width > 16384 || height > 16384)
+            return fileError(path.string(),
+                             "the EXR's data window is " + std::to_string(width) + "x" + std::to_string(height) +
+                                 ", not 1x1 .. 16384x16384",
+                             "image.too-large");
         std::vector<float> topFirst(static_cast<std::size_t>(width) *
                                     static_cast<std::size_t>(height) * 4);
         Imf::FrameBuffer frame;
@@ -185,8 +222,8 @@ Result<ImageF32> readExr(const fs::path& path) {
         }
         file.setFrameBuffer(frame);
         file.readPixels(window.min.y, window.max.y);
-        flipRows(std::span<float>(topFirst), width, height);
-        return ImageF32{width, height, std::move(topFirst)};
+        flipRows(std::span<float>(topFirst), static_cast<int>(width), static_cast<int>(height));
+        return ImageF32{static_cast<int>(width), static_cast<int>(height), std::move(topFirst)};
     } catch (const std::exception& e) {
         return fileError(path.string(), std::string("not a readable EXR file: ") + e.what(), "image.decode");
     }

@@ -222,3 +222,26 @@ TEST(MediaResolver, UnknownStockPathGetsAFlaggedStandIn) {
     const Result<ResolvedMedia> again = resolver.resolve("/media/a/0123abcd.png");
     EXPECT_EQ(again->image.rgba, media->image.rgba) << "deterministic";
 }
+
+// The image readers' fuzz findings (tests/fuzz/regressions/fuzz_image/): each file is refused with
+// a reason before the decoder that misbehaved on it sees it (a write past a table, an allocation of
+// gigabytes from a few bytes, an endless loop, a slow path in a format Shadertoy never uses).
+TEST(MediaImageFile, FuzzFindingsAreRefusedWithAReason) {
+    const fs::path dir = fs::path(TOYHOST_SOURCE_DIR) / "tests/fuzz/regressions/fuzz_image";
+    const std::vector<std::pair<std::string, std::string>> expected = {
+        {"stb-jpeg-dht-counts-over-256.jpg", "a JPEG Huffman table (DHT) is malformed"},
+        {"stb-png-idat-length-alloc-over-1gib.png", "a PNG chunk is longer than the file"},
+        {"stb-hdr-rle-zero-count-endless-loop.hdr", "not a PNG or JPEG file"},
+        {"stb-tga-declared-size-4350x33279-slow.tga", "not a PNG or JPEG file"},
+        {"openexr-attribute-size-alloc-over-1gib.exr", "an attribute is larger than the file"},
+        {"openexr-huge-data-window-alloc.exr", "not 1x1 .. 16384x16384"},
+    };
+    for (const auto& [file, reason] : expected) {
+        SCOPED_TRACE(file);
+        const bool exr = fs::path(file).extension() == ".exr";
+        const std::string message = exr ? (readExr(dir / file).ok() ? "<accepted>" : readExr(dir / file).error().text())
+                                        : (loadImageFile(dir / file).ok() ? "<accepted>"
+                                                                          : loadImageFile(dir / file).error().text());
+        EXPECT_NE(message.find(reason), std::string::npos) << message;
+    }
+}
