@@ -155,19 +155,23 @@ TEST_F(WindowMode, RipplePoolDragLeavesRipplesWhereThePointerWent) {
     xdo("key F6");  // pause: the rings stop spreading
     const Image8 dragged = screenshot();
     ASSERT_EQ(calm.rgba.size(), dragged.rgba.size());
-    // Window y 70 is canvas row 100 - 70 = 30 (origin bottom-left). Count changed pixels near
-    // the drag's path and in the far corner (x 150.., y 70..: more than 50 px from any drop).
-    auto changed = [&](int x0, int y0, int x1, int y1) {
-        int n = 0;
+    // Window y 70 is canvas row 100 - 70 = 30 (origin bottom-left). In real time the window may
+    // render hundreds of frames during the drag, so rings can reach anywhere; what must hold is
+    // that the water is disturbed along the path, and much more there than in the far corner
+    // (x 170.., y 75..: over 70 px from any drop, where rings arrive spread out and damped).
+    auto meanChange = [&](int x0, int y0, int x1, int y1) {
+        double sum = 0;
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
                 const std::size_t i = (static_cast<std::size_t>(y) * calm.width + x) * 4;
-                n += std::abs(calm.rgba[i] - dragged.rgba[i]) + std::abs(calm.rgba[i + 1] - dragged.rgba[i + 1]) > 6;
+                for (int c = 0; c < 3; ++c) sum += std::abs(calm.rgba[i + c] - dragged.rgba[i + c]);
             }
-        return n;
+        return sum / ((x1 - x0) * (y1 - y0));
     };
-    EXPECT_GT(changed(30, 22, 100, 38), 100) << "no ripples along the drag";
-    EXPECT_EQ(changed(170, 75, 200, 100), 0) << "ripples far from the drag";
+    const double near = meanChange(30, 22, 100, 38), far = meanChange(170, 75, 200, 100);
+    std::printf("mean change: %.2f along the drag, %.2f in the far corner\n", near, far);
+    EXPECT_GT(near, 3.0) << "no ripples along the drag";
+    EXPECT_GT(near, 3.0 * far) << "the far corner moved as much as the drag's path (" << far << " vs " << near << ")";
 }
 
 TEST_F(WindowMode, MouseFollowsTheSitesIMouseRules) {
