@@ -187,6 +187,22 @@ Status exrHeaderFits(const fs::path& path) {
         const std::uint64_t size = byte(typeEnd + 1) | byte(typeEnd + 2) << 8 | byte(typeEnd + 3) << 16 |
                                    byte(typeEnd + 4) << 24;
         if (typeEnd + 5 + size > d.size()) return bad("an attribute is larger than the file");
+        // OpenEXR sizes its line buffers from the data window when the file is opened, before
+        // toyhost could look: a window of millions of pixels is refused here (a fuzz finding).
+        if (d.compare(i, nameEnd - i, "dataWindow") == 0 && size == 16) {
+            auto int32 = [&](std::size_t k) {
+                return static_cast<std::int32_t>(static_cast<std::uint32_t>(byte(k) | byte(k + 1) << 8 |
+                                                                            byte(k + 2) << 16 | byte(k + 3) << 24));
+            };
+            const std::size_t at = typeEnd + 5;
+            const long long width = static_cast<long long>(int32(at + 8)) - int32(at) + 1;
+            const long long height = static_cast<long long>(int32(at + 12)) - int32(at + 4) + 1;
+            if (width < 1 || height < 1 || width > 16384 || height > 16384)
+                return fileError(path.string(),
+                                 "the EXR's data window is " + std::to_string(width) + "x" + std::to_string(height) +
+                                     ", not 1x1 .. 16384x16384",
+                                 "image.too-large");
+        }
         i = typeEnd + 5 + size;
     }
     return bad("too many header attributes");
