@@ -175,6 +175,9 @@ Status exrHeaderFits(const fs::path& path) {
         return fileError(path.string(), std::string("not a readable EXR file: ") + what, "image.decode");
     };
     if (d.size() < 8 || d.compare(0, 4, "\x76\x2f\x31\x01") != 0) return bad("no EXR signature");
+    // Buffer dumps are single-part scanline or tiled images; multi-part and deep files have more
+    // headers than the walk below checks, so they are refused (a fuzz finding allocated from one).
+    if (static_cast<unsigned char>(d[5]) & 0x18) return bad("multi-part and deep EXR files are not supported");
     std::size_t i = 8;
     for (int attribute = 0; attribute < 10000; ++attribute) {
         if (i >= d.size()) return bad("the header is truncated");

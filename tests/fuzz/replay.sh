@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# replay.sh FUZZER [OPTION...] -- CORPUS_DIR [REGRESSIONS_DIR]
+# The ctest fuzz.<target>.replay test: runs every seed of CORPUS_DIR once (one process), then every
+# kept finding of REGRESSIONS_DIR in its own process, naming each one that still fails. Exits 1 when
+# any input crashes, leaks, hits UB, times out or runs out of memory.
+set -uo pipefail
+fuzzer=$1
+shift
+options=()
+while (($#)) && [ "$1" != "--" ]; do options+=("$1"); shift; done
+shift || true
+corpus=${1:?corpus folder}
+regressions=${2:-}
+
+failed=0
+if ! "$fuzzer" "${options[@]}" -runs=0 "$corpus"; then
+    echo "replay: an input of $corpus fails (see above)" >&2
+    failed=1
+fi
+if [ -n "$regressions" ] && [ -d "$regressions" ]; then
+    for input in "$regressions"/*; do
+        [ -f "$input" ] || continue
+        if log=$("$fuzzer" "${options[@]}" "$input" 2>&1); then
+            echo "replay: ok      $(basename "$input")"
+        else
+            why=$(grep -m1 -oE 'runtime error: .{0,100}|ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer): .{0,80}|what\(\): .{0,80}' <<<"$log")
+            echo "replay: FAILED  $(basename "$input"): ${why:-see the log below}" >&2
+            grep -E '^ +#[0-9]+ .* in ' <<<"$log" | grep -vE 'fuzzer::|__sanitizer|__interceptor|libc\.so|_start' | head -6 >&2
+            failed=1
+        fi
+    done
+fi
+exit "$failed"
