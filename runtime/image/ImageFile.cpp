@@ -25,12 +25,14 @@ constexpr int kMaxImageSide = 16384;
 
 // Debian's stb_image (2.27) builds a JPEG Huffman table from the 16 code counts of a DHT segment
 // without checking that they add up to at most 256, and writes past its table when they do (found
-// by tests/fuzz). Such a file is refused before stb sees it. Walks the markers, also between the
-// scans of a progressive JPEG; true when every DHT table is within bounds.
+// by tests/fuzz). Such a file is refused before stb sees it, and so is a sequential scan that names
+// a table never defined. Walks the markers, also between the scans of a progressive JPEG.
 bool jpegHuffmanTablesValid(const std::string& data) {
     auto byte = [&](std::size_t i) { return static_cast<unsigned char>(data[i]); };
     if (data.size() < 4 || byte(0) != 0xFF || byte(1) != 0xD8) return true;  // not a JPEG: stb decides
     std::size_t i = 2;
+    bool defined[2][4] = {};  // [DC, AC][table 0..3]
+    bool sequential = false;
     while (i + 4 <= data.size()) {
         if (byte(i) != 0xFF) {
             ++i;  // entropy-coded data of a scan: look for the next marker
@@ -54,7 +56,20 @@ bool jpegHuffmanTablesValid(const std::string& data) {
                 std::size_t codes = 0;
                 for (int k = 1; k <= 16; ++k) codes += byte(at + k);
                 if (codes > 256 || at + 17 + codes > end) return false;
+                if ((byte(at) >> 4) < 2 && (byte(at) & 15) < 4) defined[byte(at) >> 4][byte(at) & 15] = true;
                 at += 17 + codes;
+            }
+        }
+        if (marker == 0xC0 || marker == 0xC1) sequential = true;
+        // A sequential scan decodes with the DC and AC tables its components name; stb reads a
+        // table that was never defined (uninitialised memory, a fuzz finding) instead of failing.
+        if (marker == 0xDA && sequential) {
+            const std::size_t components = byte(i + 4);
+            if (length < 6 + 2 * components) return false;
+            for (std::size_t k = 0; k < components; ++k) {
+                const unsigned tables = byte(i + 6 + 2 * k);
+                if ((tables >> 4) > 3 || (tables & 15) > 3 || !defined[0][tables >> 4] || !defined[1][tables & 15])
+                    return false;
             }
         }
         i += 2 + length;

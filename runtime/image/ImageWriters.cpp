@@ -190,6 +190,19 @@ Status exrHeaderFits(const fs::path& path) {
         const std::uint64_t size = byte(typeEnd + 1) | byte(typeEnd + 2) << 8 | byte(typeEnd + 3) << 16 |
                                    byte(typeEnd + 4) << 24;
         if (typeEnd + 5 + size > d.size()) return bad("an attribute is larger than the file");
+        // OpenEXR reads a channel list to its terminating NUL whatever size the attribute declares;
+        // a list that does not end exactly at its declared size desynchronises every later
+        // attribute (a fuzz finding). Entries: name, NUL, 16 bytes; then one NUL.
+        if (d.compare(nameEnd + 1, typeEnd - nameEnd - 1, "chlist") == 0) {
+            std::size_t at = typeEnd + 5;
+            const std::size_t end = at + size;
+            while (at < end && d[at] != '\0') {
+                const std::size_t nul = d.find('\0', at);
+                if (nul == std::string::npos || nul + 17 > end) return bad("its channel list does not fit its size");
+                at = nul + 17;
+            }
+            if (at + 1 != end) return bad("its channel list does not fit its size");
+        }
         // OpenEXR sizes its line buffers from the data window when the file is opened, before
         // toyhost could look: a window of millions of pixels is refused here (a fuzz finding).
         if (d.compare(i, nameEnd - i, "dataWindow") == 0 && size == 16) {

@@ -2,7 +2,9 @@
 # replay.sh FUZZER [OPTION...] -- CORPUS_DIR [REGRESSIONS_DIR]
 # The ctest fuzz.<target>.replay test: runs every seed of CORPUS_DIR once (one process), then every
 # kept finding of REGRESSIONS_DIR in its own process, naming each one that still fails. Exits 1 when
-# any input crashes, leaks, hits UB, times out or runs out of memory.
+# any input crashes, leaks, hits UB, times out or runs out of memory. A finding that depends on the
+# contents of uninitialised memory has a sidecar INPUT.asan_options (e.g. malloc_fill_byte=13 with
+# max_malloc_fill_size=4194304: ASan fills every new allocation with that byte), added to ASAN_OPTIONS.
 set -uo pipefail
 fuzzer=$1
 shift
@@ -20,7 +22,10 @@ fi
 if [ -n "$regressions" ] && [ -d "$regressions" ]; then
     for input in "$regressions"/*; do
         [ -f "$input" ] || continue
-        if log=$("$fuzzer" "${options[@]}" "$input" 2>&1); then
+        case "$input" in *.asan_options) continue ;; esac
+        asan=${ASAN_OPTIONS:-}
+        [ -f "$input.asan_options" ] && asan="${asan:+$asan:}$(tr -d '\n' <"$input.asan_options")"
+        if log=$(ASAN_OPTIONS="$asan" "$fuzzer" "${options[@]}" "$input" 2>&1); then
             echo "replay: ok      $(basename "$input")"
         else
             why=$(grep -m1 -oE 'runtime error: .{0,100}|ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer): .{0,80}|what\(\): .{0,80}' <<<"$log")
