@@ -25,14 +25,14 @@ constexpr int kMaxImageSide = 16384;
 
 // Debian's stb_image (2.27) builds a JPEG Huffman table from the 16 code counts of a DHT segment
 // without checking that they add up to at most 256, and writes past its table when they do (found
-// by tests/fuzz). Such a file is refused before stb sees it, and so is a sequential scan that names
-// a table never defined. Walks the markers, also between the scans of a progressive JPEG.
+// by tests/fuzz). Such a file is refused before stb sees it, and so is a scan that names a table
+// never defined. Walks the markers, also between the scans of a progressive JPEG.
 bool jpegHuffmanTablesValid(const std::string& data) {
     auto byte = [&](std::size_t i) { return static_cast<unsigned char>(data[i]); };
     if (data.size() < 4 || byte(0) != 0xFF || byte(1) != 0xD8) return true;  // not a JPEG: stb decides
     std::size_t i = 2;
     bool defined[2][4] = {};  // [DC, AC][table 0..3]
-    bool sequential = false;
+    bool sequential = false, progressive = false;
     while (i + 4 <= data.size()) {
         if (byte(i) != 0xFF) {
             ++i;  // entropy-coded data of a scan: look for the next marker
@@ -61,15 +61,22 @@ bool jpegHuffmanTablesValid(const std::string& data) {
             }
         }
         if (marker == 0xC0 || marker == 0xC1) sequential = true;
-        // A sequential scan decodes with the DC and AC tables its components name; stb reads a
-        // table that was never defined (uninitialised memory, a fuzz finding) instead of failing.
-        if (marker == 0xDA && sequential) {
+        if (marker == 0xC2) progressive = true;
+        // A scan decodes with the tables its components name; stb reads a table that was never
+        // defined (uninitialised memory, fuzz findings) instead of failing. A sequential scan uses
+        // DC and AC tables; a progressive scan uses DC tables in a first DC pass (Ss = 0, Ah = 0),
+        // none in a DC refinement, and AC tables in a spectral band (Ss > 0).
+        if (marker == 0xDA && (sequential || progressive)) {
             const std::size_t components = byte(i + 4);
             if (length < 6 + 2 * components) return false;
+            const unsigned spectralStart = byte(i + 5 + 2 * components);
+            const unsigned approximationHigh = byte(i + 7 + 2 * components) >> 4;
+            const bool usesDc = sequential || (spectralStart == 0 && approximationHigh == 0);
+            const bool usesAc = sequential || spectralStart > 0;
             for (std::size_t k = 0; k < components; ++k) {
                 const unsigned tables = byte(i + 6 + 2 * k);
-                if ((tables >> 4) > 3 || (tables & 15) > 3 || !defined[0][tables >> 4] || !defined[1][tables & 15])
-                    return false;
+                if (usesDc && ((tables >> 4) > 3 || !defined[0][tables >> 4])) return false;
+                if (usesAc && ((tables & 15) > 3 || !defined[1][tables & 15])) return false;
             }
         }
         i += 2 + length;
