@@ -24,6 +24,17 @@ inline constexpr double kMaxPixelCoordinate = 1e6;  // --mouse, script "x"/"y"
 // iTimeDelta the site uses on the frame after a restart and while paused (1/60 s).
 inline constexpr double kRestartTimeDelta = 1.0 / 60.0;
 inline constexpr double kSampleRate = 44100.0;   // iSampleRate in every pass
+// Cube A: six square faces of this side (the site's), RGBA16F.
+inline constexpr int kCubeBufferSize = 1024;
+// Stand-ins for inputs toyhost does not have: stock cubemap faces of unknown size, videos
+// (a moving pattern), and the volume side when the table does not know it.
+inline constexpr int kCubemapStandInSize = 256;
+inline constexpr int kVideoStandInWidth = 640;
+inline constexpr int kVideoStandInHeight = 360;
+inline constexpr int kVolumeStandInSize = 32;
+// The Sound pass: the site renders 180 s, in blocks of 512x512 samples.
+inline constexpr double kSoundSeconds = 180.0;
+inline constexpr int kSoundBlockSide = 512;
 // The watchdog (headless runs; a window has no frame limit): a frame whose passes take longer
 // than this ends the run (--frame-timeout), and so does a pass that takes longer to compile
 // (--compile-timeout). 0 turns either off.

@@ -67,6 +67,21 @@ std::optional<bool> flag(const json& sampler, const char* key) {
     return std::nullopt;
 }
 
+// A cubemap input that reads the Cube A pass: output id 41 (API) or "4dX3Rr" (site form), or
+// the pass's preview image as src.
+bool isCubeBufferInput(const json& input, const std::string& src) {
+    if (auto id = input.find("id"); id != input.end()) {
+        if (id->is_number_integer() && *id == 41) return true;
+        if (id->is_string() && (*id == "4dX3Rr" || *id == "41")) return true;
+    }
+    return src.find("/media/previz/cubemap") != std::string::npos;
+}
+
+bool flipsAtUpload(ChannelKind kind) {
+    return kind == ChannelKind::StockMedia || kind == ChannelKind::ImageFile || kind == ChannelKind::Cubemap ||
+           kind == ChannelKind::Video || kind == ChannelKind::Webcam;
+}
+
 class ExportReader {
 public:
     explicit ExportReader(const fs::path& path) : path_(path), label_(path.string()) {}
@@ -138,17 +153,17 @@ private:
             desc_.commonCode = code;
             return;
         }
-        if (type == "sound") {
-            notice("the Sound pass is skipped (toyhost renders no audio)", "export.sound-skipped");
-            return;
-        }
-        if (type == "cubemap") return problem(place + ".type", "Cube A passes are not supported yet", "export.unsupported");
-        if (type != "image" && type != "buffer")
+        if (type != "image" && type != "buffer" && type != "cubemap" && type != "sound")
             return problem(place + ".type", "unknown pass type \"" + type + "\"", "export.value");
 
-        std::optional<PassId> id = passIdentity(pass, type, place);
+        const bool sound = type == "sound";
+        std::optional<PassId> id = sound ? std::optional<PassId>(PassId::Sound)
+                                   : type == "cubemap" ? std::optional<PassId>(PassId::CubeA)
+                                                       : passIdentity(pass, type, place);
         if (!id) return;
-        if (desc_.find(*id)) return problem(place, std::string("a second ") + passName(*id) + " pass", "export.duplicate", *id);
+        if (sound && desc_.sound) return problem(place, "a second Sound pass", "export.duplicate");
+        if (!sound && desc_.find(*id))
+            return problem(place, std::string("a second ") + passName(*id) + " pass", "export.duplicate", *id);
         PassDesc out;
         out.id = *id;
         out.source = path_;
@@ -163,7 +178,8 @@ private:
         if (auto outputs = pass.find("outputs"); outputs != pass.end() && !outputs->is_array() && !outputs->is_null())
             problem(place + ".outputs", std::string("must be an array of outputs, not ") + outputs->type_name(),
                     "export.value", *id);
-        desc_.passes.push_back(std::move(out));
+        if (sound) desc_.sound = std::move(out);
+        else desc_.passes.push_back(std::move(out));
     }
 
     void readInput(PassDesc& pass, const json& input, const std::string& place) {
@@ -200,11 +216,26 @@ private:
             if (src.empty()) return problem(where + ".src", "texture input without a src", "export.missing", pass.id, c);
             channel.kind = ChannelKind::StockMedia;
             channel.media = src;
+        } else if (kind == "cubemap" && isCubeBufferInput(input, src)) {
+            channel.kind = ChannelKind::CubeBuffer;
+        } else if (kind == "cubemap" || kind == "volume" || kind == "video" || kind == "music" || kind == "musicstream") {
+            if (src.empty()) return problem(where + ".src", kind + " input without a src", "export.missing", pass.id, c);
+            channel.kind = kind == "cubemap" ? ChannelKind::Cubemap
+                           : kind == "volume" ? ChannelKind::Volume
+                           : kind == "video"  ? ChannelKind::Video
+                                              : ChannelKind::Music;  // a SoundCloud stream plays as music
+            channel.media = src;
+        } else if (kind == "webcam") {
+            channel.kind = ChannelKind::Webcam;
+        } else if (kind == "mic") {
+            channel.kind = ChannelKind::Mic;
         } else {
-            notice((kind.empty() ? std::string("untyped") : kind) + " inputs are not supported; the channel is left unbound",
+            notice((kind.empty() ? std::string("untyped") : "\"" + kind + "\"") +
+                       " inputs are not a Shadertoy input kind; the channel is left unbound",
                    "export.unsupported-input", pass.id, c);
             return;
         }
+        channel.samplerType = samplerTypeOf(channel.kind);
         channel.sampler = defaultSampler(channel.kind);
         if (channel.kind == ChannelKind::Keyboard) return;  // always nearest/clamp
         const json& sampler = input.contains("sampler") && input["sampler"].is_object() ? input["sampler"] : json::object();
@@ -218,22 +249,30 @@ private:
         else if (wrap == "repeat") channel.sampler.wrap = Wrap::Repeat;
         else if (!wrap.empty()) problem(where + ".sampler.wrap", "unknown wrap \"" + wrap + "\"", "export.value", pass.id, c);
         // vflip applies to images only; the player ignores it for buffers.
-        if (channel.kind == ChannelKind::StockMedia)
+        if (flipsAtUpload(channel.kind))
             if (std::optional<bool> vflip = flag(sampler, "vflip")) channel.sampler.vflip = *vflip;
     }
 
     // On the site every buffer's textures exist even without its pass, so reading an undefined
     // buffer gives black; here such a channel is left unbound, with a notice.
+    // The same for Cube A: the channel stays a samplerCube (the shader compiles) and samples black.
     void unbindMissingBuffers() {
-        for (PassDesc& pass : desc_.passes)
+        auto unbind = [&](PassDesc& pass) {
             for (int c = 0; c < kChannelCount; ++c) {
                 ChannelDesc& channel = pass.channels[c];
-                if (channel.kind != ChannelKind::Buffer || desc_.hasBuffer(channel.buffer)) continue;
-                notice(std::string("reads ") + passName(bufferPass(channel.buffer)) +
-                           ", which the export does not define; the channel is left unbound",
+                const bool missingBuffer = channel.kind == ChannelKind::Buffer && !desc_.hasBuffer(channel.buffer);
+                const bool missingCube = channel.kind == ChannelKind::CubeBuffer && !desc_.find(PassId::CubeA);
+                if (!missingBuffer && !missingCube) continue;
+                const std::string what = missingCube ? "Cube A" : passName(bufferPass(channel.buffer));
+                notice("reads " + what + ", which the export does not define; the channel is left unbound",
                        "export.missing-buffer", pass.id, c);
+                const SamplerType declared = channel.samplerType;
                 channel = ChannelDesc{};
+                channel.samplerType = declared;
             }
+        };
+        for (PassDesc& pass : desc_.passes) unbind(pass);
+        if (desc_.sound) unbind(*desc_.sound);
     }
 
     fs::path path_;

@@ -16,9 +16,10 @@ namespace toyhost {
 // one-element array of those (as the site's own export button writes).
 bool isShadertoyExport(const nlohmann::json& document);
 
-// Converts an export. Inputs the host cannot provide (video, music, webcam, microphone,
-// cubemaps, volumes) and reads of buffers the shader does not define are bound to nothing, each
-// with a line in `notices`; a Sound pass is skipped with a notice; a Cube A pass is an error.
+// Converts an export: every pass type (Image, Buffer A-D, Common, Cube A; Sound into
+// ManifestDesc::sound) and every input kind. Reads of a buffer or Cube A the shader does not
+// define, and inputs of a kind the site does not have, are bound to nothing, each with a line in
+// `notices` (an unbound Cube A read stays a samplerCube).
 Result<ManifestDesc> parseShadertoyExport(std::string_view jsonText, const std::filesystem::path& exportPath);
 
 // Shadertoy's ids for buffer outputs and inputs: 257..260 (API) or "4dXGR8", "XsXGR8",

@@ -1,5 +1,10 @@
 #include "gl/GlContext.h"
 
+#include <cstdio>
+#include <cstdlib>
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <GLES3/gl3.h>
 #include <cstring>
 
@@ -41,6 +46,33 @@ const char* glErrorName(unsigned int error) {
         case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
     }
     return "unknown GL error";
+}
+
+namespace {
+bool zeroInitSetByToyhost = false;
+}  // namespace
+
+void requestWebGlDriverBehaviour() {
+    if (std::getenv("glsl_zero_init")) return;
+    setenv("glsl_zero_init", "true", 0);
+    zeroInitSetByToyhost = true;
+}
+
+DriverStartupQuiet::DriverStartupQuiet() {
+    if (!zeroInitSetByToyhost) return;
+    std::fflush(stderr);
+    const int null = open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (null < 0) return;
+    savedStderr_ = fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 0);
+    if (savedStderr_ >= 0) dup2(null, STDERR_FILENO);
+    close(null);
+}
+
+DriverStartupQuiet::~DriverStartupQuiet() {
+    if (savedStderr_ < 0) return;
+    std::fflush(stderr);
+    dup2(savedStderr_, STDERR_FILENO);
+    close(savedStderr_);
 }
 
 }  // namespace toyhost

@@ -11,6 +11,28 @@
 
 namespace toyhost {
 
+// Asks the driver to behave as WebGL does where Mesa differs by default: browsers (ANGLE)
+// initialise uninitialised locals, globals and fragment outputs to zero, and shaders on the site
+// rely on it; Mesa does it with its driconf option glsl_zero_init, read from the environment
+// when a display initialises. Call before any EGL display or GLFW window exists. A value the
+// user set in the environment is kept.
+void requestWebGlDriverBehaviour();
+
+// While it lives, the driver's own stderr lines are dropped when toyhost set glsl_zero_init
+// itself: Mesa prints "ATTENTION: default value of option glsl_zero_init overridden by
+// environment." when a display initialises, which would break toyhost's one-message errors.
+// Wrap only the calls that initialise a display (nothing else writes then).
+class DriverStartupQuiet {
+public:
+    DriverStartupQuiet();
+    ~DriverStartupQuiet();
+    DriverStartupQuiet(const DriverStartupQuiet&) = delete;
+    DriverStartupQuiet& operator=(const DriverStartupQuiet&) = delete;
+
+private:
+    int savedStderr_ = -1;
+};
+
 class GlSurface {
 public:
     virtual ~GlSurface() = default;

@@ -17,13 +17,17 @@ enum class FrameAge { Current, Previous };
 struct ChannelPlan {
     ChannelKind kind = ChannelKind::None;
     int buffer = -1;                    // ChannelKind::Buffer only
-    FrameAge age = FrameAge::Current;   // ChannelKind::Buffer only
+    FrameAge age = FrameAge::Current;   // ChannelKind::Buffer and CubeBuffer
+    // The filter and wrap the channel samples with. As on the site, which sets them on the texture
+    // object before each draw, two channels of one pass that read the same buffer texture both
+    // get the settings of the higher channel.
     SamplerDesc sampler;
 };
 
 struct PassPlan {
     PassId id = PassId::Image;
-    int targetBuffer = -1;              // -1: the Image pass (renders to the canvas)
+    int targetBuffer = -1;              // Buffer A..D: 0..3; -1 for Cube A and Image
+    bool targetCube = false;            // Cube A: renders the six faces of the cube buffer
     std::array<ChannelPlan, kChannelCount> channels;
 };
 
@@ -40,6 +44,8 @@ struct PassGraph {
     std::vector<PassPlan> passes;                  // in execution order, Image last
     std::array<bool, kBufferCount> bufferUsed{};   // a pass exists for this buffer
     std::array<bool, kBufferCount> bufferMipmapped{};  // some channel samples it with `mipmap`
+    bool cubeUsed = false;                         // the shadertoy has Cube A
+    bool cubeMipmapped = false;
 
     // True when `other` binds and samples exactly the same (passes, channels, sampler settings,
     // buffers and their mipmaps); the code of the passes may differ.

@@ -14,22 +14,38 @@
 
 namespace toyhost {
 
-// Passes in the order Shadertoy renders them each frame: Buffer A, B, C, D, then Image.
-enum class PassId { BufferA = 0, BufferB = 1, BufferC = 2, BufferD = 3, Image = 4 };
+// Passes in the order Shadertoy renders them each frame: Buffer A, B, C, D, Cube A, then Image.
+// (Sound is rendered up front, not per frame: ManifestDesc::sound.)
+// PassId::Sound is never in ManifestDesc::passes.
+enum class PassId { BufferA = 0, BufferB = 1, BufferC = 2, BufferD = 3, CubeA = 4, Image = 5, Sound = 6 };
 inline constexpr int kBufferCount = 4;
 inline constexpr int kChannelCount = 4;
 
-const char* passName(PassId id);            // "Buffer A" .. "Image"
+const char* passName(PassId id);            // "Buffer A" .. "Cube A", "Image"
 
 // A problem at JSON path `field` of `file` (a manifest or an export), about `pass` / `channel`
 // when set.
 Diagnostic fieldDiagnostic(std::string file, std::string field, std::string message, std::string code,
                            std::optional<PassId> pass = std::nullopt, int channel = -1);
-inline bool isBuffer(PassId id) { return id != PassId::Image; }
+inline bool isBuffer(PassId id) { return static_cast<int>(id) < kBufferCount; }  // Buffer A..D
 inline int bufferIndex(PassId id) { return static_cast<int>(id); }  // only for buffers
 inline PassId bufferPass(int index) { return static_cast<PassId>(index); }
 
-enum class ChannelKind { None, Buffer, ImageFile, StockMedia, Keyboard };
+// What a channel binds. ImageFile/StockMedia are 2D pictures; Cubemap, Volume, Video and Music
+// come from a stock id (`media`) or the user's own file (`file`, when set); Webcam and Mic from a
+// device given on the command line, else a stand-in; CubeBuffer is the Cube A pass's output.
+enum class ChannelKind {
+    None, Buffer, ImageFile, StockMedia, Keyboard, CubeBuffer, Cubemap, Volume, Video, Music, Webcam, Mic
+};
+// The GLSL sampler type of an iChannel uniform.
+enum class SamplerType { Sampler2D, SamplerCube, Sampler3D };
+SamplerType samplerTypeOf(ChannelKind kind);
+const char* channelKindName(ChannelKind kind);  // "buffer", "cubemap", "music", ...
+// Media whose content changes with time (iChannelTime is their playback time).
+inline bool isTimedMedia(ChannelKind kind) {
+    return kind == ChannelKind::Video || kind == ChannelKind::Music || kind == ChannelKind::Webcam ||
+           kind == ChannelKind::Mic;
+}
 enum class Filter { Nearest, Linear, Mipmap };
 enum class Wrap { Clamp, Repeat };
 
@@ -46,8 +62,11 @@ struct ChannelDesc {
     ChannelKind kind = ChannelKind::None;
     int buffer = -1;                 // ChannelKind::Buffer: 0..3 = A..D
     std::filesystem::path file;      // ChannelKind::ImageFile: absolute path
-    std::string media;               // ChannelKind::StockMedia: the id as written ("/media/a/<hash>.<ext>")
+    std::string media;               // StockMedia and media kinds: the id as written ("/media/a/<hash>.<ext>")
     SamplerDesc sampler;
+    // The sampler type the header declares. Follows `kind`, except for an unbound channel whose
+    // export named a kind toyhost cannot bind (declared as that kind implies, so the shader compiles).
+    SamplerType samplerType = SamplerType::Sampler2D;
 };
 
 struct PassDesc {
@@ -74,6 +93,7 @@ struct ManifestDesc {
     std::string commonName;                        // how messages name Common's file
     std::string commonCode;
     std::vector<PassDesc> passes;                  // sorted in render order; Image is last
+    std::optional<PassDesc> sound;                 // the Sound pass (mainSound), rendered on its own
     std::map<std::string, std::filesystem::path> mediaOverrides;  // stock id -> user file
     std::vector<Diagnostic> notices;               // things the user should know (lenient imports)
     RunDefaults runDefaults;                       // the manifest's "defaults" block

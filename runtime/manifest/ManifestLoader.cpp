@@ -59,7 +59,7 @@ void rejectUnknownFields(const json& object, const std::set<std::string>& known,
 }
 
 const std::vector<std::string>& passNames() {
-    static const std::vector<std::string> names{"Buffer A", "Buffer B", "Buffer C", "Buffer D", "Image"};
+    static const std::vector<std::string> names{"Buffer A", "Buffer B", "Buffer C", "Buffer D", "Cube A", "Image", "Sound"};
     return names;
 }
 
@@ -67,7 +67,7 @@ std::optional<PassId> passFromName(const std::string& name) {
     static const std::pair<const char*, PassId> names[] = {
         {"Buffer A", PassId::BufferA}, {"Buffer B", PassId::BufferB},
         {"Buffer C", PassId::BufferC}, {"Buffer D", PassId::BufferD},
-        {"Image", PassId::Image}};
+        {"Cube A", PassId::CubeA}, {"Image", PassId::Image}};
     for (const auto& [text, id] : names)
         if (name == text) return id;
     return std::nullopt;
@@ -237,16 +237,17 @@ private:
         auto it = root.find("passes");
         if (it == root.end() || !it->is_object() || it->empty()) {
             problems_.add("passes", "must be an object with an \"Image\" pass and optionally "
-                                    "\"Buffer A\" .. \"Buffer D\"", "manifest.missing");
+                                    "\"Buffer A\" .. \"Buffer D\", \"Cube A\", \"Sound\"", "manifest.missing");
             return;
         }
         for (const auto& [name, body] : it->items()) {
             const std::string where = "passes." + quote(name);
-            std::optional<PassId> id = passFromName(name);
+            const bool sound = name == "Sound";
+            std::optional<PassId> id = sound ? std::optional<PassId>(PassId::Sound) : passFromName(name);
             if (!id) {
                 problems_.add(where,
                               "unknown pass" + didYouMean(name, passNames()) +
-                                  " (known: Buffer A, Buffer B, Buffer C, Buffer D, Image)",
+                                  " (known: Buffer A, Buffer B, Buffer C, Buffer D, Cube A, Image, Sound)",
                               "manifest.unknown-pass");
                 continue;
             }
@@ -254,7 +255,7 @@ private:
                 problems_.add(where, "must be an object with \"source\" and \"channels\"", "manifest.type", *id);
                 continue;
             }
-            readPass(*id, body, where);
+            readPass(*id, body, where, sound);
         }
         // A misspelt "Image" was reported with its suggestion already: once is enough.
         bool imageMisspelt = false;
@@ -264,10 +265,10 @@ private:
             problems_.add("passes", "the \"Image\" pass is missing", "manifest.missing");
         // Buffer references can only be checked once every pass is known.
         for (const auto& [pass, channel, buffer] : bufferRefs_) {
-            if (!it->contains(passName(bufferPass(buffer))))
+            const char* read = buffer < 0 ? "Cube A" : passName(bufferPass(buffer));
+            if (!it->contains(read))
                 problems_.add(channelWhere(pass, channel),
-                              std::string("reads ") + passName(bufferPass(buffer)) +
-                                  ", which this manifest does not define",
+                              std::string("reads ") + read + ", which this manifest does not define",
                               "manifest.reference", pass, channel);
         }
     }
@@ -276,7 +277,7 @@ private:
         return "passes." + quote(passName(pass)) + ".channels.iChannel" + std::to_string(channel);
     }
 
-    void readPass(PassId id, const json& body, const std::string& where) {
+    void readPass(PassId id, const json& body, const std::string& where, bool sound) {
         rejectUnknownFields(body, {"source", "channels"}, where, problems_);
         PassDesc pass;
         pass.id = id;
@@ -288,7 +289,8 @@ private:
         }
         auto channels = body.find("channels");
         if (channels != body.end()) readChannels(pass, *channels, where + ".channels");
-        desc_.passes.push_back(std::move(pass));
+        if (sound) desc_.sound = std::move(pass);
+        else desc_.passes.push_back(std::move(pass));
     }
 
     // Channels are either an object {"iChannel0": {...}} or an array of up to four entries
@@ -330,30 +332,65 @@ private:
             problems_.add(where, "must be an object such as {\"buffer\": \"A\"}, or null", "manifest.type", pass.id, index);
             return;
         }
-        rejectUnknownFields(value, {"buffer", "texture", "media", "keyboard", "filter", "wrap", "vflip"},
-                            where, problems_);
+        static const std::vector<std::string> sourceKeys{"buffer", "texture", "media", "keyboard", "cubemap",
+                                                         "volume", "video", "music", "webcam", "mic"};
+        std::set<std::string> known(sourceKeys.begin(), sourceKeys.end());
+        known.insert({"filter", "wrap", "vflip"});
+        rejectUnknownFields(value, known, where, problems_);
         int sources = 0;
-        for (const char* key : {"buffer", "texture", "media", "keyboard"}) sources += value.contains(key);
+        for (const std::string& key : sourceKeys) sources += value.contains(key);
         // {"bufer": "A"} was reported as a near miss of "buffer": do not also say a source is missing.
-        static const std::vector<std::string> sourceKeys{"buffer", "texture", "media", "keyboard"};
         bool sourceMisspelt = false;
-        for (const auto& [key, _] : value.items()) sourceMisspelt = sourceMisspelt || closestMatch(key, sourceKeys);
+        for (const auto& [key, _] : value.items())
+            sourceMisspelt = sourceMisspelt || (!known.count(key) && closestMatch(key, sourceKeys));
         if (sources == 0 && sourceMisspelt) return;
         if (sources != 1) {
-            problems_.add(where, "needs exactly one of \"buffer\", \"texture\", \"media\", \"keyboard\"",
+            problems_.add(where,
+                          "needs exactly one of \"buffer\", \"texture\", \"media\", \"keyboard\", \"cubemap\", "
+                          "\"volume\", \"video\", \"music\", \"webcam\", \"mic\"",
                           "manifest.value", pass.id, index);
             return;
         }
         if (auto buffer = readString(value, "buffer", where)) {
+            if (*buffer == "Cube A" || *buffer == "CubeA") {
+                channel.kind = ChannelKind::CubeBuffer;
+                bufferRefs_.push_back({pass.id, index, -1});
+                readSampler(pass.id, index, channel, value, where);
+                return;
+            }
             std::optional<int> bufferIndex = bufferFromName(*buffer);
             if (!bufferIndex) {
-                problems_.add(where, "buffer " + quote(*buffer) + " does not exist (known: A, B, C, D)",
+                problems_.add(where, "buffer " + quote(*buffer) + " does not exist (known: A, B, C, D, Cube A)",
                               "manifest.reference", pass.id, index);
                 return;
             }
             channel.kind = ChannelKind::Buffer;
             channel.buffer = *bufferIndex;
             bufferRefs_.push_back({pass.id, index, *bufferIndex});
+        } else if (value.contains("cubemap") || value.contains("volume") || value.contains("video") ||
+                   value.contains("music")) {
+            const char* key = value.contains("cubemap") ? "cubemap"
+                              : value.contains("volume") ? "volume"
+                              : value.contains("video")  ? "video"
+                                                         : "music";
+            auto file = readString(value, key, where);
+            if (!file) return;
+            channel.kind = std::string(key) == "cubemap" ? ChannelKind::Cubemap
+                           : std::string(key) == "volume" ? ChannelKind::Volume
+                           : std::string(key) == "video"  ? ChannelKind::Video
+                                                          : ChannelKind::Music;
+            channel.file = resolve(*file);
+            if (Status regular = checkRegularFile(channel.file); !regular)
+                problems_.add(where, std::string(key) + " " + channel.file.string() + ": " +
+                                         regular.error().first().message,
+                              regular.error().first().code.c_str(), pass.id, index);
+        } else if (value.contains("webcam") || value.contains("mic")) {
+            const char* key = value.contains("webcam") ? "webcam" : "mic";
+            if (value[key] != true) {
+                problems_.add(where, std::string("\"") + key + "\" must be true", "manifest.value", pass.id, index);
+                return;
+            }
+            channel.kind = std::string(key) == "webcam" ? ChannelKind::Webcam : ChannelKind::Mic;
         } else if (auto texture = readString(value, "texture", where)) {
             channel.kind = ChannelKind::ImageFile;
             channel.file = resolve(*texture);
@@ -364,6 +401,15 @@ private:
             channel.kind = ChannelKind::StockMedia;
             channel.media = *media;
             mediaRefs_.insert(*media);
+            if (const StockInputInfo* input = findStockInput(*media)) {
+                // A stock cubemap, volume, video or music: its kind comes from the table.
+                channel.kind = input->form == StockInputForm::Cubemap  ? ChannelKind::Cubemap
+                               : input->form == StockInputForm::Volume ? ChannelKind::Volume
+                               : input->form == StockInputForm::Video  ? ChannelKind::Video
+                                                                       : ChannelKind::Music;
+                readSampler(pass.id, index, channel, value, where);
+                return;
+            }
             // Any Shadertoy media path is accepted (one the table does not know runs with a flagged
             // stand-in, as imported exports do); other names must be known or given a file.
             const bool mediaPath = media->rfind("/media/a/", 0) == 0 && media->size() > 9;
@@ -395,7 +441,10 @@ private:
 
     void readSampler(PassId pass, int index, ChannelDesc& channel, const json& value, const std::string& where) {
         channel.sampler = defaultSampler(channel.kind);
-        const bool isTexture = channel.kind == ChannelKind::ImageFile || channel.kind == ChannelKind::StockMedia;
+        channel.samplerType = samplerTypeOf(channel.kind);
+        const bool isTexture = channel.kind == ChannelKind::ImageFile || channel.kind == ChannelKind::StockMedia ||
+                               channel.kind == ChannelKind::Cubemap || channel.kind == ChannelKind::Video ||
+                               channel.kind == ChannelKind::Webcam;
         if (channel.kind == ChannelKind::Keyboard) {
             for (const char* key : {"filter", "wrap", "vflip"})
                 if (value.contains(key))
@@ -429,7 +478,10 @@ private:
         if (auto vflip = value.find("vflip"); vflip != value.end()) {
             if (!vflip->is_boolean()) problems_.add(where, "\"vflip\" must be true or false", "manifest.type", pass, index);
             else if (!isTexture)
-                problems_.add(where, "\"vflip\" applies only to image textures, not buffers", "manifest.value", pass, index);
+                problems_.add(where,
+                              std::string("\"vflip\" applies only to image textures, cubemaps and videos, not ") +
+                                  channelKindName(channel.kind) + " channels",
+                              "manifest.value", pass, index);
             else channel.sampler.vflip = vflip->get<bool>();
         }
     }

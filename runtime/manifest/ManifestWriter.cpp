@@ -11,6 +11,8 @@ using nlohmann::ordered_json;
 
 std::string passFileName(PassId id) {
     if (id == PassId::Image) return "image.glsl";
+    if (id == PassId::CubeA) return "cube_a.glsl";
+    if (id == PassId::Sound) return "sound.glsl";
     return std::string("buffer_") + static_cast<char>('a' + bufferIndex(id)) + ".glsl";
 }
 
@@ -30,10 +32,23 @@ ordered_json channelJson(const ChannelDesc& channel) {
             out["media"] = stock ? std::string(stock->name) : channel.media;
             break;
         }
+        case ChannelKind::CubeBuffer: out["buffer"] = "Cube A"; break;
+        case ChannelKind::Cubemap:
+        case ChannelKind::Volume:
+        case ChannelKind::Video:
+        case ChannelKind::Music:
+            if (!channel.file.empty()) out[channelKindName(channel.kind)] = channel.file.string();
+            else if (const StockInputInfo* stock = findStockInput(channel.media)) out["media"] = stockInputPath(*stock);
+            else out["media"] = channel.media;
+            break;
+        case ChannelKind::Webcam: out["webcam"] = true; break;
+        case ChannelKind::Mic: out["mic"] = true; break;
     }
     out["filter"] = filterName(channel.sampler.filter);
     out["wrap"] = wrapName(channel.sampler.wrap);
-    if (channel.kind != ChannelKind::Buffer) out["vflip"] = channel.sampler.vflip;
+    if (channel.kind == ChannelKind::StockMedia || channel.kind == ChannelKind::ImageFile ||
+        channel.kind == ChannelKind::Cubemap || channel.kind == ChannelKind::Video || channel.kind == ChannelKind::Webcam)
+        out["vflip"] = channel.sampler.vflip;
     return out;
 }
 
@@ -48,7 +63,11 @@ std::string manifestJson(const ManifestDesc& desc) {
     root["name"] = desc.name;
     if (desc.commonSource) root["common"] = "common.glsl";
     ordered_json passes = ordered_json::object();
-    for (const PassDesc& pass : desc.passes) {
+    std::vector<const PassDesc*> all;
+    for (const PassDesc& pass : desc.passes) all.push_back(&pass);
+    if (desc.sound) all.push_back(&*desc.sound);
+    for (const PassDesc* passPtr : all) {
+        const PassDesc& pass = *passPtr;
         ordered_json body;
         body["source"] = passFileName(pass.id);
         ordered_json channels = ordered_json::object();
@@ -75,6 +94,8 @@ Status writeManifestFolder(const ManifestDesc& desc, const fs::path& dir, bool o
         if (Status s = writeText(dir / "common.glsl", desc.commonCode); !s) return s;
     for (const PassDesc& pass : desc.passes)
         if (Status s = writeText(dir / passFileName(pass.id), pass.code); !s) return s;
+    if (desc.sound)
+        if (Status s = writeText(dir / passFileName(PassId::Sound), desc.sound->code); !s) return s;
     // The manifest last: a folder with a manifest.json is a complete import.
     return writeText(dir / "manifest.json", manifestJson(desc));
 }

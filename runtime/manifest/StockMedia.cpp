@@ -141,6 +141,79 @@ const StockMediaInfo* nearStockMedia(std::string_view ref) {
     return nullptr;
 }
 
+namespace {
+// The stock inputs of the site's media browser, as public media lists of the site name them (the
+// ids of cubemaps, volumes, videos and music are the site's, checked against public mirrors of its
+// media list). Cubemap names follow the site's order cube00..cube05; video and music names are
+// not known for certain and are given by kind and the first hash digits. The cubemaps' face sizes
+// are not known (0): their stand-ins use defaults::kCubemapStandInSize.
+constexpr std::array<StockInputInfo, 19> kStockInputs{{
+    {"585f9546c092f53ded45332b343144396c0b2d70d9965f585ebc172080d8aa58", "jpg", "Uffizi Gallery",
+     StockInputForm::Cubemap, 0, 3},
+    {"793a105653fbdadabdc1325ca08675e1ce48ae5f12e37973829c87bea4be3232", "png", "Uffizi Gallery Blurred",
+     StockInputForm::Cubemap, 0, 4},
+    {"488bd40303a2e2b9a71987e48c66ef41f5e937174bf316d3ed0e86410784b919", "jpg", "St Peter's Basilica",
+     StockInputForm::Cubemap, 0, 3},
+    {"550a8cce1bf403869fde66dddf6028dd171f1852f4a704a465e1b80d23955663", "png", "St Peter's Basilica Blurred",
+     StockInputForm::Cubemap, 0, 4},
+    {"94284d43be78f00eb6b298e6d78656a1b34e2b91b34940d02f1ca8b22310e8a0", "png", "Forest",
+     StockInputForm::Cubemap, 0, 4},
+    {"0681c014f6c88c356cf9c0394ffe015acc94ec1474924855f45d22c3e70b5785", "png", "Forest Blurred",
+     StockInputForm::Cubemap, 0, 4},
+    {"27012b4eadd0c3ce12498b867058e4f717ce79e10a99568cca461682d84a4b04", "bin", "Grey Noise3D",
+     StockInputForm::Volume, 32, 1},
+    {"aea6b99da1d53055107966b59ac5444fc8bc7b3ce2d0bbb6a4a3cbae1d97f3aa", "bin", "RGBA Noise3D",
+     StockInputForm::Volume, 32, 4},
+    {"3405e48f74815c7baa49133bdc835142948381fbe003ad2f12f5087715731153", "ogv", "Video 3405e4",
+     StockInputForm::Video, 0, 3},
+    {"35c87bcb8d7af24c54d41122dadb619dd920646a0bd0e477e7bdc6d12876df17", "webm", "Video 35c87b",
+     StockInputForm::Video, 0, 3},
+    {"c3a071ecf273428bc72fc72b2dd972671de8da420a2d4f917b75d20e1c24b34c", "ogv", "Video c3a071",
+     StockInputForm::Video, 0, 3},
+    {"e81e818ac76a8983d746784b423178ee9f6cdcdf7f8e8d719341a6fe2d2ab303", "webm", "Video e81e81",
+     StockInputForm::Video, 0, 3},
+    {"a6a1cf7a09adfed8c362492c88c30d74fb3d2f4f7ba180ba34b98556660fada1", "mp3", "Music a6a1cf",
+     StockInputForm::Music, 0, 1},
+    {"3c33c415862bb7964d256f4749408247da6596f2167dca2c86cc38f83c244aa6", "mp3", "Music 3c33c4",
+     StockInputForm::Music, 0, 1},
+    {"29de534ed5e4a6a224d2dfffab240f2e19a9d95f5e39de8898e850efdb2a99de", "mp3", "Music 29de53",
+     StockInputForm::Music, 0, 1},
+    {"48e2d9ef22ca6673330b8c38a260c87694d2bbc94c19fec9dfa4a1222c364a99", "mp3", "Music 48e2d9",
+     StockInputForm::Music, 0, 1},
+    {"d96b229eeb7a08d53adfcf1ff89e54c9ffeebed193d317d1a01cc8125c0f5cca", "mp3", "Music d96b22",
+     StockInputForm::Music, 0, 1},
+    {"894a09f482fb9b2822c093630fc37f0ce6cfec02b652e4e341323e4b6e4a4543", "mp3", "Music 894a09",
+     StockInputForm::Music, 0, 1},
+    {"ec8a6ea755d34600547a5353f21f0a453f9f55ff95514383b2d80b8d71283eda", "mp3", "Music ec8a6e",
+     StockInputForm::Music, 0, 1},
+}};
+}  // namespace
+
+std::span<const StockInputInfo> stockInputTable() { return kStockInputs; }
+
+const StockInputInfo* findStockInput(std::string_view ref) {
+    if (const auto slash = ref.rfind('/'); slash != std::string_view::npos) ref.remove_prefix(slash + 1);
+    const std::string_view whole = ref;
+    if (const auto dot = ref.rfind('.'); dot != std::string_view::npos) ref.remove_suffix(ref.size() - dot);
+    for (const StockInputInfo& info : kStockInputs)
+        if (sameName(ref, info.hash) || sameName(whole, info.name) || sameName(ref, info.name)) return &info;
+    return nullptr;
+}
+
+std::string stockInputPath(const StockInputInfo& info) {
+    return "/media/a/" + std::string(info.hash) + "." + std::string(info.extension);
+}
+
+const char* stockInputFormName(StockInputForm form) {
+    switch (form) {
+        case StockInputForm::Cubemap: return "cubemap";
+        case StockInputForm::Volume: return "volume";
+        case StockInputForm::Video: return "video";
+        case StockInputForm::Music: return "music";
+    }
+    return "?";
+}
+
 std::string stockMediaPath(const StockMediaInfo& info) {
     return "/media/a/" + std::string(info.hash) + "." + std::string(info.extension);
 }

@@ -41,6 +41,24 @@ const StockMediaInfo* nearStockMedia(std::string_view ref);
 // The canonical reference "/media/a/<hash>.<ext>".
 std::string stockMediaPath(const StockMediaInfo& info);
 
+// The site's stock inputs that are not 2D textures: cubemaps (six files: the id's and `_1`..`_5`),
+// volumes (.bin), videos and music. Sizes are the real files' where known; a stand-in is made at
+// that size (cubemaps, volumes) or at a fixed size (videos).
+enum class StockInputForm { Cubemap, Volume, Video, Music };
+struct StockInputInfo {
+    std::string_view hash;
+    std::string_view extension;
+    std::string_view name;
+    StockInputForm form;
+    int size;      // volume side; 0 where it does not apply or is not known (cubemap faces)
+    int channels;  // volumes: 1 or 4; cubemaps 3 or 4
+};
+std::span<const StockInputInfo> stockInputTable();
+// By "/media/a/<hash>.<ext>", "<hash>.<ext>", "<hash>" or name; nullptr when not a stock input.
+const StockInputInfo* findStockInput(std::string_view ref);
+std::string stockInputPath(const StockInputInfo& info);
+const char* stockInputFormName(StockInputForm form);  // "cubemap", "volume", "video", "music"
+
 
 
 }  // namespace toyhost

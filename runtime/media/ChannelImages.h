@@ -14,7 +14,9 @@
 #include "core/Result.h"
 #include "image/Image.h"
 #include "manifest/ManifestDesc.h"
+#include "media/CubemapFaces.h"
 #include "media/MediaResolver.h"
+#include "media/VolumeFile.h"
 
 namespace toyhost {
 
@@ -22,6 +24,16 @@ namespace toyhost {
 struct MediaOptions {
     std::vector<std::pair<std::string, std::filesystem::path>> files;  // stock id -> user file (--media-file)
     std::vector<std::filesystem::path> folders;                         // --media DIR, $TOYHOST_MEDIA
+    std::string webcam;  // --webcam: a V4L2 device (/dev/video0) or a video file; empty: a stand-in
+    std::string mic;     // --mic: an audio file; empty: the site's own stand-in (what it shows muted)
+};
+
+// Where a video, webcam, music or mic channel's content comes from; the renderer opens it.
+struct TimedInput {
+    ChannelKind kind = ChannelKind::Video;
+    std::filesystem::path file;  // a video or audio file; empty with a device or a stand-in
+    std::string device;          // webcam: a V4L2 device
+    bool standIn = false;
 };
 
 // A resolver set up with the manifest's own "media" entries, then `options` (which win).
@@ -34,17 +46,26 @@ struct StandInUse {
 
 class ChannelImages {
 public:
-    // Decodes every image channel of `manifest`. Errors name the pass and channel of each problem.
-    static Result<ChannelImages> load(const ManifestDesc& manifest, const MediaResolver& media);
+    // Decodes every image, cubemap and volume channel of `manifest` (the Sound pass's included)
+    // and finds the files of its video and audio channels. Errors name the pass and channel of
+    // each problem.
+    static Result<ChannelImages> load(const ManifestDesc& manifest, const MediaResolver& media,
+                                      const MediaOptions& options = {});
 
     // The pixels of an image-file or stock-media channel of the manifest it was loaded for.
     const Image8* find(const ChannelDesc& channel) const;
+    const CubeFaces8* findCubemap(const ChannelDesc& channel) const;  // ChannelKind::Cubemap
+    const Volume8* findVolume(const ChannelDesc& channel) const;      // ChannelKind::Volume
+    const TimedInput* findTimed(const ChannelDesc& channel) const;    // video, webcam, music, mic
 
     const std::vector<Diagnostic>& notices() const { return notices_; }  // one per stand-in
     const std::vector<StandInUse>& standIns() const { return standIns_; }
 
 private:
     std::map<std::string, std::shared_ptr<const Image8>> images_;  // by channelImageKey
+    std::map<std::string, std::shared_ptr<const CubeFaces8>> cubemaps_;
+    std::map<std::string, std::shared_ptr<const Volume8>> volumes_;
+    std::map<std::string, TimedInput> timed_;
     std::vector<Diagnostic> notices_;
     std::vector<StandInUse> standIns_;
 };

@@ -34,9 +34,10 @@ std::vector<std::string> channelSources(const ManifestDesc& manifest) {
     std::vector<std::string> keys;
     for (const PassDesc& pass : manifest.passes)
         for (const ChannelDesc& channel : pass.channels)
-            keys.push_back(channel.kind == ChannelKind::ImageFile || channel.kind == ChannelKind::StockMedia
-                               ? channelImageKey(channel)
-                               : std::string());
+            keys.push_back(channel.kind == ChannelKind::None || channel.kind == ChannelKind::Buffer ||
+                                   channel.kind == ChannelKind::CubeBuffer || channel.kind == ChannelKind::Keyboard
+                               ? std::string()
+                               : channelImageKey(channel));
     return keys;
 }
 

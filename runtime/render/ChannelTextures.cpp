@@ -2,7 +2,17 @@
 
 #include <vector>
 
+#include "image/MipChain.h"
+
 namespace toyhost {
+
+void uploadMipLevels(GLenum target, const std::uint8_t* level0, int width, int height) {
+    const std::span<const std::uint8_t> pixels(level0, static_cast<std::size_t>(width) * height * 4);
+    const std::vector<MipLevel> levels = boxMipChain(pixels, width, height);
+    for (std::size_t l = 0; l < levels.size(); ++l)
+        glTexImage2D(target, static_cast<GLint>(l + 1), GL_RGBA8, levels[l].width, levels[l].height, 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, levels[l].rgba.data());
+}
 
 InputTexture uploadImage(const Image8& image, const SamplerDesc& sampler) {
     InputTexture out{makeTexture(), image.width, image.height};
@@ -18,7 +28,7 @@ InputTexture uploadImage(const Image8& image, const SamplerDesc& sampler) {
     glBindTexture(GL_TEXTURE_2D, out.texture.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
-    if (sampler.filter == Filter::Mipmap) glGenerateMipmap(GL_TEXTURE_2D);
+    if (sampler.filter == Filter::Mipmap) uploadMipLevels(GL_TEXTURE_2D, pixels, image.width, image.height);
     else glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     glBindTexture(GL_TEXTURE_2D, 0);
     return out;
@@ -52,6 +62,7 @@ SamplerSet::SamplerSet() {
             glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, magFilters[f]);
             glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, wraps[w]);
             glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, wraps[w]);
+            glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_R, wraps[w]);
         }
 }
 

@@ -24,6 +24,10 @@ struct InputTexture {
 // t = 1, as WebGL's UNPACK_FLIP_Y does; without it the file's first row (its top) is at t = 0.
 InputTexture uploadImage(const Image8& image, const SamplerDesc& sampler);
 
+// Uploads levels 1..n of an RGBA8 level 0 (bound to `target`: GL_TEXTURE_2D or a cube face)
+// built on the CPU with an exact box filter (image/MipChain.h), instead of glGenerateMipmap.
+void uploadMipLevels(GLenum target, const std::uint8_t* level0, int width, int height);
+
 class KeyboardTexture {
 public:
     static constexpr int kWidth = 256;

@@ -23,6 +23,10 @@ UniformLocations locate(GLuint program) {
     u.sampleRate = at("iSampleRate");
     u.channelTime = at("iChannelTime");
     u.channelResolution = at("iChannelResolution");
+    u.viewport = at("unViewport");
+    u.corners = at("unCorners");
+    u.timeOffset = at("iTimeOffset");
+    u.sampleOffset = at("iSampleOffset");
     for (int i = 0; i < kChannelCount; ++i) {
         const std::string ch = "iCh" + std::to_string(i);
         u.channel[i] = at("iChannel" + std::to_string(i));
@@ -39,12 +43,15 @@ UniformLocations locate(GLuint program) {
 Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassDesc& pass) {
     ShaderInputs inputs;
     inputs.pass = pass.id;
+    inputs.sound = pass.id == PassId::Sound;
+    for (int c = 0; c < kChannelCount; ++c) inputs.samplers[c] = pass.channels[c].samplerType;
     inputs.common = manifest.commonSource ? &manifest.commonCode : nullptr;
     inputs.code = pass.code;
     const AssembledShader fragment = assembleFragmentShader(inputs);
     ProgramBuild build = buildProgram(fullscreenVertexShader(), fragment.text);
     if (!build.ok) {
-        const CompilerLogNames names{passName(pass.id), pass.sourceName, manifest.commonName};
+        const char* name = passName(pass.id);
+        const CompilerLogNames names{name, pass.sourceName, manifest.commonName};
         std::vector<Diagnostic> diagnostics = parseCompilerLog(build.log, names);
         const char* what = build.failedStage == ProgramBuild::Stage::Link     ? "shader link failed"
                            : build.failedStage == ProgramBuild::Stage::Vertex ? "internal vertex shader failed"
@@ -52,7 +59,7 @@ Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassD
         if (diagnostics.empty()) {
             Diagnostic d;
             d.code = "shader.compile";
-            d.pass = passName(pass.id);
+            d.pass = name;
             d.file = pass.sourceName;
             d.message = std::string(what) + " (the driver gave no message)";
             diagnostics.push_back(std::move(d));

@@ -19,6 +19,8 @@ struct UniformLocations {
     std::array<GLint, kChannelCount> channel{-1, -1, -1, -1};  // iChannelN
     std::array<GLint, kChannelCount> chSampler{-1, -1, -1, -1}, chSize{-1, -1, -1, -1}, chTime{-1, -1, -1, -1},
         chLoaded{-1, -1, -1, -1};  // the Image pass's iChN struct members
+    GLint viewport = -1, corners = -1;         // Cube A: unViewport, unCorners
+    GLint timeOffset = -1, sampleOffset = -1;  // Sound: iTimeOffset, iSampleOffset
 };
 
 struct PassProgram {
@@ -26,7 +28,8 @@ struct PassProgram {
     UniformLocations uniforms;
 };
 
-// Builds `pass` of `manifest` (Common included when the manifest has one).
+// Builds `pass` of `manifest` (Common included when the manifest has one); the Sound pass
+// (PassId::Sound) with mainSound's wrapper.
 Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassDesc& pass);
 
 }  // namespace toyhost

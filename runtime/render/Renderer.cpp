@@ -14,6 +14,8 @@
 #include "gl/GlObjects.h"
 #include "image/PixelConversion.h"
 #include "render/ChannelTextures.h"
+#include "render/CubeTarget.h"
+#include "render/MediaTextures.h"
 #include "render/PassProgram.h"
 
 namespace toyhost {
@@ -22,6 +24,7 @@ namespace {
 
 // What a channel binds, fixed after creation except for buffers, whose slot depends on the step.
 struct ChannelBinding {
+    GLenum target = GL_TEXTURE_2D; // as the header declares the channel (sampler2D/Cube/3D)
     GLuint texture = 0;            // non-buffer inputs
     GLuint sampler = 0;
     std::array<float, 3> resolution{0, 0, 0};
@@ -31,6 +34,8 @@ struct PassRuntime {
     PassPlan plan;
     PassProgram program;
     std::array<ChannelBinding, kChannelCount> channels;
+    std::array<TimedTexture*, kChannelCount> timed{};  // video/audio channels: iChannelTime each frame
+    bool hasTimed = false;
 };
 
 }  // namespace
@@ -81,7 +86,7 @@ private:
         std::move(items_.begin() + 1, items_.begin() + static_cast<std::ptrdiff_t>(count_), items_.begin());
         --count_;
     }
-    std::array<Item, 4 * (kBufferCount + 1)> items_{};  // about three frames of five passes
+    std::array<Item, 4 * (kBufferCount + 2)> items_{};  // about three frames of six passes
     std::size_t count_ = 0;
     GLsync published_ = nullptr;  // compared only, never used after its deletion
 };
@@ -93,10 +98,13 @@ struct Renderer::Impl {
     GlVertexArray vertexArray = makeVertexArray();
     std::optional<KeyboardTexture> keyboard;
     std::array<std::optional<PingPongTarget>, kBufferCount> buffers;
+    std::optional<CubeTarget> cube;  // Cube A
     RenderTexture imageTarget;
     bool floatImage = false;
     // Image textures by (picture, vflip, mipmapped): channels showing the same upload share it.
     std::map<std::tuple<std::string, bool, bool>, InputTexture> inputs;
+    // Video, webcam, music and mic textures by the same key, brought to each frame's time.
+    std::map<std::tuple<std::string, bool, bool>, std::unique_ptr<TimedTexture>> timed;
     std::vector<PassRuntime> passes;
     std::uint64_t lastStep = 0;
     RunActivity* activity = nullptr;
@@ -170,6 +178,11 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
         if (!target) return inPass(passName(bufferPass(b)), target.error());
         impl->buffers[b] = std::move(*target);
     }
+    if (graph.cubeUsed) {
+        Result<CubeTarget> cube = CubeTarget::create(defaults::kCubeBufferSize, graph.cubeMipmapped);
+        if (!cube) return inPass("Cube A", cube.error());
+        impl->cube = std::move(*cube);
+    }
     impl->floatImage = desc.floatImageTarget;
     Result<RenderTexture> image = impl->allocate(w, h, impl->imageFormat(), false);
     if (!image) return inPass("Image", image.error());
@@ -183,9 +196,16 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
             const ChannelPlan& channel = plan.channels[c];
             ChannelBinding& binding = pass.channels[c];
             binding.sampler = impl->samplers.get(channel.sampler);
+            const SamplerType declared = passDesc.channels[c].samplerType;
+            binding.target = declared == SamplerType::SamplerCube ? GL_TEXTURE_CUBE_MAP
+                             : declared == SamplerType::Sampler3D ? GL_TEXTURE_3D
+                                                                  : GL_TEXTURE_2D;
             switch (channel.kind) {
                 case ChannelKind::None: binding.sampler = 0; break;
                 case ChannelKind::Buffer: binding.resolution = canvas; break;
+                case ChannelKind::CubeBuffer:
+                    binding.resolution = {float(defaults::kCubeBufferSize), float(defaults::kCubeBufferSize), 1};
+                    break;
                 case ChannelKind::Keyboard:
                     if (!impl->keyboard) impl->keyboard.emplace();
                     binding.texture = impl->keyboard->id();
@@ -214,6 +234,52 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
                     binding.resolution = {float(pixels->width), float(pixels->height), 1};
                     break;
                 }
+                case ChannelKind::Cubemap:
+                case ChannelKind::Volume: {
+                    const ChannelDesc& desc = passDesc.channels[c];
+                    const auto key = std::make_tuple(channelImageKey(desc), channel.sampler.vflip,
+                                                     channel.sampler.filter == Filter::Mipmap);
+                    auto it = impl->inputs.find(key);
+                    if (channel.kind == ChannelKind::Cubemap) {
+                        const CubeFaces8* faces = images.findCubemap(desc);
+                        if (!faces)
+                            return inPass(passName(plan.id), Error("the cubemap was not loaded before rendering", "internal"), c);
+                        if (it == impl->inputs.end()) it = impl->inputs.emplace(key, uploadCubemap(*faces, channel.sampler)).first;
+                        // The site leaves iChannelResolution at 0 for a cubemap input (only Cube
+                        // A gets a size): effect.js Paint_Image sets no resolution for it.
+                        binding.resolution = {0, 0, 0};
+                    } else {
+                        const Volume8* volume = images.findVolume(desc);
+                        if (!volume)
+                            return inPass(passName(plan.id), Error("the volume was not loaded before rendering", "internal"), c);
+                        if (it == impl->inputs.end()) it = impl->inputs.emplace(key, uploadVolume(*volume, channel.sampler)).first;
+                        binding.resolution = {float(volume->width), float(volume->height), float(volume->depth)};
+                    }
+                    binding.texture = it->second.texture.id();
+                    break;
+                }
+                case ChannelKind::Video:
+                case ChannelKind::Webcam:
+                case ChannelKind::Music:
+                case ChannelKind::Mic: {
+                    const ChannelDesc& desc = passDesc.channels[c];
+                    const TimedInput* input = images.findTimed(desc);
+                    if (!input)
+                        return inPass(passName(plan.id), Error("the channel's media was not found before rendering", "internal"), c);
+                    const auto key = std::make_tuple(channelImageKey(desc), channel.sampler.vflip,
+                                                     channel.sampler.filter == Filter::Mipmap);
+                    auto it = impl->timed.find(key);
+                    if (it == impl->timed.end()) {
+                        Result<std::unique_ptr<TimedTexture>> opened = TimedTexture::open(*input, channel.sampler);
+                        if (!opened) return inPass(passName(plan.id), opened.error(), c);
+                        it = impl->timed.emplace(key, std::move(*opened)).first;
+                    }
+                    binding.texture = it->second->texture();
+                    binding.resolution = it->second->resolution();
+                    pass.timed[c] = it->second.get();
+                    pass.hasTimed = true;
+                    break;
+                }
             }
         }
         impl->setStaticUniforms(pass);
@@ -230,39 +296,73 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
 
 void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool renderImage) {
     Impl& s = *impl_;
+    // Videos and audio to this frame's time, before any pass reads them. A decoder that fails
+    // mid-run (a file truncated on disk) keeps its last frame; the failure was the file's.
+    for (auto& [key, timed] : s.timed) (void)timed->update(u.time);
     glBindVertexArray(s.vertexArray.id());
     glViewport(0, 0, width_, height_);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
     for (PassRuntime& pass : s.passes) {
-        const bool isImage = pass.plan.targetBuffer < 0;
+        const bool isCube = pass.plan.targetCube;
+        const bool isImage = pass.plan.targetBuffer < 0 && !isCube;
         if (isImage && !renderImage) continue;
         // A driver may block here while earlier passes draw: say which one.
         if (s.watchDraws) s.pending.publish(*s.activity);
-        GLuint target = isImage ? s.imageTarget.framebuffer.id()
-                                : s.buffers[pass.plan.targetBuffer]->slot(slotWritten(step)).framebuffer.id();
-        glBindFramebuffer(GL_FRAMEBUFFER, target);
+        if (!isCube) {
+            GLuint target = isImage ? s.imageTarget.framebuffer.id()
+                                    : s.buffers[pass.plan.targetBuffer]->slot(slotWritten(step)).framebuffer.id();
+            glBindFramebuffer(GL_FRAMEBUFFER, target);
+        }
         glUseProgram(pass.program.program.id());
         const UniformLocations& loc = pass.program.uniforms;
-        glUniform3f(loc.resolution, float(width_), float(height_), 1.0f);
+        if (isCube) glUniform3f(loc.resolution, float(s.cube->size()), float(s.cube->size()), 1.0f);
+        else glUniform3f(loc.resolution, float(width_), float(height_), 1.0f);
         glUniform1f(loc.time, u.time);
         glUniform1f(loc.timeDelta, u.timeDelta);
         glUniform1f(loc.frameRate, u.frameRate);
         glUniform1i(loc.frame, u.frame);
         glUniform4f(loc.mouse, u.mouse.x, u.mouse.y, u.mouse.z, u.mouse.w);
         glUniform4f(loc.date, u.date.x, u.date.y, u.date.z, u.date.w);
+        if (pass.hasTimed) {
+            float times[kChannelCount] = {0, 0, 0, 0};
+            for (int c = 0; c < kChannelCount; ++c)
+                if (pass.timed[c]) {
+                    times[c] = pass.timed[c]->channelTime();
+                    glUniform1f(loc.chTime[c], times[c]);
+                }
+            glUniform1fv(loc.channelTime, kChannelCount, times);
+        }
         for (int c = 0; c < kChannelCount; ++c) {
             const ChannelPlan& plan = pass.plan.channels[c];
             GLuint texture = pass.channels[c].texture;
             if (plan.kind == ChannelKind::Buffer)
                 texture = s.buffers[plan.buffer]->slot(slotRead(plan.age, step)).texture.id();
+            else if (plan.kind == ChannelKind::CubeBuffer)
+                texture = s.cube->texture(slotRead(plan.age, step));
             glActiveTexture(GL_TEXTURE0 + c);
-            glBindTexture(GL_TEXTURE_2D, texture);
+            glBindTexture(pass.channels[c].target, texture);
             glBindSampler(c, pass.channels[c].sampler);
         }
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        if (isCube) {
+            // The six faces, each with its viewport and corner directions (site: Paint_Cubemap).
+            const int size = s.cube->size();
+            glViewport(0, 0, size, size);
+            glUniform4f(loc.viewport, 0.0f, 0.0f, float(size), float(size));
+            for (int face = 0; face < 6; ++face) {
+                glBindFramebuffer(GL_FRAMEBUFFER, s.cube->faceFramebuffer(slotWritten(step), face));
+                float corners[15] = {};
+                std::copy(cubeFaceCorners()[face].begin(), cubeFaceCorners()[face].end(), corners);
+                glUniform3fv(loc.corners, 5, corners);
+                glDrawArrays(GL_TRIANGLES, 0, 3);
+            }
+            glViewport(0, 0, width_, height_);
+            s.cube->generateMipmaps(slotWritten(step));
+        } else {
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
         // Mipmaps of a buffer are regenerated only when some channel samples it with `mipmap`.
-        if (!isImage) s.buffers[pass.plan.targetBuffer]->generateMipmaps(slotWritten(step));
+        if (!isImage && !isCube) s.buffers[pass.plan.targetBuffer]->generateMipmaps(slotWritten(step));
         if (s.watchDraws) s.pending.add(passName(pass.plan.id), u.frame);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -330,6 +430,7 @@ Status Renderer::resize(int width, int height) {
 void Renderer::clearBuffers() {
     for (auto& buffer : impl_->buffers)
         if (buffer) buffer->clear();
+    if (impl_->cube) impl_->cube->clear();
 }
 
 Status Renderer::replaceProgram(std::size_t index, const ManifestDesc& manifest, const PassDesc& pass) {
@@ -352,6 +453,8 @@ void Renderer::takeBuffersFrom(Renderer& old) {
         else
             mine->copyContentFrom(*theirs);
     }
+    if (impl_->cube && old.impl_->cube && impl_->cube->mipmapped() == old.impl_->cube->mipmapped())
+        impl_->cube = std::move(old.impl_->cube);
     impl_->lastStep = old.impl_->lastStep;
 }
 
@@ -361,6 +464,7 @@ PassOutput Renderer::output(PassId pass) const {
     if (pass == PassId::Image)
         return {impl_->imageTarget.framebuffer.id(), impl_->imageTarget.texture.id(), width_, height_,
                 impl_->floatImage ? PixelFormat::Rgba32f : PixelFormat::Rgba8};
+    if (!isBuffer(pass)) return {};  // Cube A's faces are read with readCubeFaces
     const auto& buffer = impl_->buffers[bufferIndex(pass)];
     if (!buffer) return {};
     const RenderTexture& slot = buffer->slot(slotWritten(impl_->lastStep));

@@ -1,6 +1,8 @@
 #include "shader/ShaderAssembly.h"
 
 #include <algorithm>
+#include <cctype>
+#include <vector>
 #include <sstream>
 
 namespace toyhost {
@@ -16,22 +18,91 @@ const char* samplerKeyword(SamplerType type) {
     return "sampler2D";
 }
 
-// The header shadertoy.com's player (WebGL2) prepends to a pass, in its order.
-std::string makeHeader(const ShaderInputs& in) {
-    const bool image = in.pass == PassId::Image;
-    std::ostringstream h;
+// True when `code` has a `#define NAME` directive (spaces allowed around the '#').
+bool definesMacro(std::string_view code, std::string_view name) {
+    std::size_t at = 0;
+    while ((at = code.find("define", at)) != std::string_view::npos) {
+        std::size_t hash = at;
+        while (hash > 0 && (code[hash - 1] == ' ' || code[hash - 1] == '\t')) --hash;
+        std::size_t after = at + 6;
+        at = after;
+        if (hash == 0 || code[hash - 1] != '#') continue;
+        std::size_t start = hash - 1;
+        while (start > 0 && (code[start - 1] == ' ' || code[start - 1] == '\t')) --start;
+        if (start > 0 && code[start - 1] != '\n') continue;
+        while (after < code.size() && (code[after] == ' ' || code[after] == '\t')) ++after;
+        if (code.compare(after, name.size(), name) != 0) continue;
+        const std::size_t end = after + name.size();
+        if (end == code.size() || !(std::isalnum(static_cast<unsigned char>(code[end])) || code[end] == '_'))
+            return true;
+    }
+    return false;
+}
+
+// The precision lines every pass starts with. Desktop GPUs, where shadertoys are written and
+// checked, compute lowp and mediump in 32 bits; Mesa (llvmpipe included) lowers them to 16 bits,
+// which breaks simulations that read float buffers through the default lowp sampler2D. The
+// qualifiers are promoted with macros, except where the user's code defines the same macro
+// itself (its `#define lowp` would be a redefinition; the sampler precisions still hold).
+void writePrecision(std::ostringstream& h, const ShaderInputs& in) {
     h << "#version 300 es\n"
          "#line " << kHeaderLineBase + 2 << "\n"
          "precision highp float;\n"
          "precision highp int;\n"
          "precision mediump sampler3D;\n"
-         // Desktop GPUs, where shadertoys are written and checked, compute lowp and mediump in
-         // 32 bits; Mesa (llvmpipe included) lowers them to 16 bits, which breaks simulations
-         // that read float buffers through the default lowp sampler2D. Promote them.
-         "precision highp sampler2D; precision highp samplerCube; precision highp sampler3D;\n"
-         "#define lowp highp\n"
-         "#define mediump highp\n"
-         "#define HW_PERFORMANCE 1\n"
+         "precision highp sampler2D; precision highp samplerCube; precision highp sampler3D;\n";
+    for (const char* qualifier : {"lowp", "mediump"}) {
+        const bool userDefines = definesMacro(in.code, qualifier) || (in.common && definesMacro(*in.common, qualifier));
+        // A line either way keeps the header's line numbers fixed.
+        if (userDefines) h << "\n";
+        else h << "#define " << qualifier << " highp\n";
+    }
+}
+
+void writeChannels(std::ostringstream& h, const ShaderInputs& in, bool structs) {
+    for (int i = 0; i < kChannelCount; ++i) {
+        const char* sampler = samplerKeyword(in.samplers[i]);
+        h << "uniform " << sampler << " iChannel" << i << ";\n";
+        if (structs)  // the newer per-channel struct API exists only in the Image pass
+            h << "uniform struct {\n  " << sampler
+              << " sampler;\n  vec3  size;\n  float time;\n  int   loaded;\n}iCh" << i << ";\n";
+    }
+}
+
+// The Sound pass: mainSound(sample, time) for 512x512 samples per draw, each stereo sample
+// written as two 16-bit values in the four bytes of an RGBA8 pixel.
+std::string makeSoundHeader(const ShaderInputs& in) {
+    std::ostringstream h;
+    writePrecision(h, in);
+    h << "#define HW_PERFORMANCE 1\n"
+         "uniform float     iChannelTime[4];\n"
+         "uniform float     iTimeOffset;\n"
+         "uniform int       iSampleOffset;\n"
+         "uniform vec4      iDate;\n"
+         "uniform float     iSampleRate;\n"
+         "uniform vec3      iChannelResolution[4];\n";
+    writeChannels(h, in, false);
+    h << "vec2 mainSound( in int samp, float time );\n"
+         "\nout vec4 outColor;\n"
+         "void main(){"
+         "float t = iTimeOffset + ((gl_FragCoord.x-0.5) + (gl_FragCoord.y-0.5)*512.0)/iSampleRate;"
+         "int   s = iSampleOffset + int(gl_FragCoord.y-0.2)*512 + int(gl_FragCoord.x-0.2);"
+         "vec2 y = mainSound( s, t );"
+         "vec2 v  = floor((0.5+0.5*y)*65536.0);"
+         "vec2 vl = mod(v,256.0)/255.0;"
+         "vec2 vh = floor(v/256.0)/255.0;"
+         "outColor = vec4(vl.x,vh.x,vl.y,vh.y);}\n";
+    return h.str();
+}
+
+// The header shadertoy.com's player (WebGL2) prepends to a pass, in its order.
+std::string makeHeader(const ShaderInputs& in) {
+    if (in.sound) return makeSoundHeader(in);
+    const bool image = in.pass == PassId::Image;
+    const bool cube = in.pass == PassId::CubeA;
+    std::ostringstream h;
+    writePrecision(h, in);
+    h << "#define HW_PERFORMANCE 1\n"
          "uniform vec3      iResolution;\n"
          "uniform float     iTime;\n"
          "uniform float     iChannelTime[4];\n"
@@ -42,12 +113,24 @@ std::string makeHeader(const ShaderInputs& in) {
          "uniform int       iFrame;\n"
          "uniform float     iTimeDelta;\n"
          "uniform float     iFrameRate;\n";
-    for (int i = 0; i < kChannelCount; ++i) {
-        const char* sampler = samplerKeyword(in.samplers[i]);
-        h << "uniform " << sampler << " iChannel" << i << ";\n";
-        if (image)  // the newer per-channel struct API exists only in the Image pass
-            h << "uniform struct {\n  " << sampler
-              << " sampler;\n  vec3  size;\n  float time;\n  int   loaded;\n}iCh" << i << ";\n";
+    writeChannels(h, in, image);
+    if (cube) {
+        // Cube A: each face is drawn with its viewport and the four corner directions of the
+        // face (unCorners[0..3]) around the apex unCorners[4]; mainCubemap gets the face pixel
+        // and the ray through it.
+        h << "uniform vec4      unViewport;\n"
+             "uniform vec3      unCorners[5];\n"
+             "void mainCubemap( out vec4 fragColor, in vec2 fragCoord, in vec3 fragRayOri, in vec3 fragRayDir );\n"
+             "\nout vec4 outColor;\n"
+             "void main( void ){"
+             "vec4 color = vec4(0.0,0.0,0.0,1.0);"
+             "vec3 ro = unCorners[4];"
+             "vec2 uv = (gl_FragCoord.xy - unViewport.xy)/unViewport.zw;"
+             "vec3 rd = normalize( mix( mix( unCorners[0], unCorners[1], uv.x ),"
+             " mix( unCorners[3], unCorners[2], uv.x ), uv.y ) - ro);"
+             "mainCubemap(color, gl_FragCoord.xy-unViewport.xy, ro, rd);"
+             "outColor = color; }\n";
+        return h.str();
     }
     h << "void mainImage( out vec4 c, in vec2 f );\n";
     if (image) {
@@ -77,7 +160,56 @@ std::string makeHeader(const ShaderInputs& in) {
     return h.str();
 }
 
+bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Skips spaces and comments from `at`.
+std::size_t skipBlank(std::string_view code, std::size_t at) {
+    while (at < code.size()) {
+        if (std::isspace(static_cast<unsigned char>(code[at]))) ++at;
+        else if (code.compare(at, 2, "//") == 0) at = std::min(code.size(), code.find('\n', at));
+        else if (code.compare(at, 2, "/*") == 0) at = std::min(code.size(), code.find("*/", at + 2) + 2);
+        else break;
+    }
+    return at;
+}
+
 }  // namespace
+
+std::string zeroInitialiseEntryOutput(std::string_view code, std::string_view function) {
+    std::size_t at = 0;
+    while ((at = code.find(function, at)) != std::string_view::npos) {
+        const std::size_t start = at;
+        at += function.size();
+        if ((start > 0 && identifierChar(code[start - 1])) || (at < code.size() && identifierChar(code[at]))) continue;
+        // Inside a comment? Only a line comment on the same line is checked (enough for a
+        // definition; a false match only adds a harmless assignment).
+        const std::size_t lineStart = code.rfind('\n', start) == std::string_view::npos ? 0 : code.rfind('\n', start) + 1;
+        if (code.substr(lineStart, start - lineStart).find("//") != std::string_view::npos) continue;
+        std::size_t open = skipBlank(code, at);
+        if (open >= code.size() || code[open] != '(') continue;
+        const std::size_t close = code.find(')', open);
+        if (close == std::string_view::npos) break;
+        const std::size_t brace = skipBlank(code, close + 1);
+        if (brace >= code.size() || code[brace] != '{') continue;  // a declaration or a call
+        std::string_view first = code.substr(open + 1, close - open - 1);
+        first = first.substr(0, first.find(','));
+        // Words of the first parameter: its qualifier must be `out` (inout is initialised by the
+        // caller), its last word is the name.
+        std::vector<std::string_view> words;
+        for (std::size_t i = 0; i < first.size();) {
+            while (i < first.size() && !identifierChar(first[i])) ++i;
+            std::size_t j = i;
+            while (j < first.size() && identifierChar(first[j])) ++j;
+            if (j > i) words.push_back(first.substr(i, j - i));
+            i = j;
+        }
+        if (words.size() < 3 || std::find(words.begin(), words.end(), "out") == words.end()) return std::string(code);
+        std::string out(code);
+        out.insert(brace + 1, std::string(words.back()) + "=vec4(0.0);");
+        return out;
+    }
+    return std::string(code);
+}
 
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     AssembledShader out;
@@ -90,7 +222,10 @@ AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
         out.text += '\n';
     }
     out.text += "#line 1\n";
-    out.text += inputs.code;
+    // WebGL zero-initialises an `out` parameter the function never writes; Mesa leaves it
+    // undefined (glsl_zero_init does not cover parameters). Same line, so line numbers hold.
+    const char* entry = inputs.sound ? nullptr : inputs.pass == PassId::CubeA ? "mainCubemap" : "mainImage";
+    out.text += entry ? zeroInitialiseEntryOutput(inputs.code, entry) : std::string(inputs.code);
     return out;
 }
 

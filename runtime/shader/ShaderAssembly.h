@@ -11,11 +11,9 @@
 
 namespace toyhost {
 
-// Sampler type of an iChannel uniform. Unbound channels are sampler2D.
-enum class SamplerType { Sampler2D, SamplerCube, Sampler3D };
-
 struct ShaderInputs {
     PassId pass = PassId::Image;
+    bool sound = false;                    // the Sound pass (mainSound); `pass` is then ignored
     const std::string* common = nullptr;   // null: the shadertoy has no Common pass
     std::string_view code;
     std::array<SamplerType, kChannelCount> samplers{};
@@ -35,6 +33,11 @@ struct AssembledShader {
 };
 
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs);
+
+// `code` with `NAME=vec4(0.0);` inserted right after the `{` of the definition of `function`
+// (mainImage, mainCubemap) when its first parameter is an `out` (as WebGL's translator
+// initialises it); unchanged when there is no such definition.
+std::string zeroInitialiseEntryOutput(std::string_view code, std::string_view function);
 
 // The vertex shader every pass shares: one triangle that covers the viewport.
 const char* fullscreenVertexShader();

@@ -317,7 +317,7 @@ TEST(ExportParse, KeyboardIsAlwaysNearestClampWhateverTheSamplerSays) {
 // ---------------------------------------------------------------------------------------------
 // Inputs and passes the host cannot provide
 
-TEST(ExportParse, UnsupportedInputsAreLeftUnboundWithANoticeNamingPassChannelAndCtype) {
+TEST(ExportParse, EveryInputKindIsBoundWithItsSamplerTypeAndDefaults) {
     const std::string imageInputs = "[" + input("video", "11", "/media/a/v.webm", 0) + "," +
                                     input("music", "12", "/media/a/m.mp3", 1) + "," +
                                     input("musicstream", "13", "https://soundcloud.com/x", 2) + "," +
@@ -328,35 +328,65 @@ TEST(ExportParse, UnsupportedInputsAreLeftUnboundWithANoticeNamingPassChannelAnd
                                      input("buffer", "257", "/media/previz/buffer00.png", 3) + "]";
     const ManifestDesc desc = parseOk(apiExport({apiPass("image", "Image", "37", kImageCode, imageInputs),
                                                  apiPass("buffer", "Buffer A", "257", "// a\n", bufferInputs)}));
-    for (int i = 0; i < 4; ++i) EXPECT_EQ(pass(desc, PassId::Image).channels[i].kind, ChannelKind::None) << i;
+    const auto& i = pass(desc, PassId::Image).channels;
+    EXPECT_EQ(i[0].kind, ChannelKind::Video);
+    EXPECT_EQ(i[0].media, "/media/a/v.webm");
+    EXPECT_EQ(i[1].kind, ChannelKind::Music);
+    EXPECT_EQ(i[2].kind, ChannelKind::Music);  // a SoundCloud stream plays as music
+    EXPECT_EQ(i[2].media, "https://soundcloud.com/x");
+    EXPECT_EQ(i[3].kind, ChannelKind::Mic);
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(i[c].samplerType, SamplerType::Sampler2D) << c;
     const auto& a = pass(desc, PassId::BufferA).channels;
-    for (int i = 0; i < 3; ++i) EXPECT_EQ(a[i].kind, ChannelKind::None) << i;
-    EXPECT_EQ(a[3].kind, ChannelKind::Buffer);  // the supported input beside them is kept
+    EXPECT_EQ(a[0].kind, ChannelKind::Webcam);
+    EXPECT_EQ(a[1].kind, ChannelKind::Cubemap);
+    EXPECT_EQ(a[1].samplerType, SamplerType::SamplerCube);
+    EXPECT_EQ(a[2].kind, ChannelKind::Volume);
+    EXPECT_EQ(a[2].samplerType, SamplerType::Sampler3D);
+    EXPECT_EQ(a[3].kind, ChannelKind::Buffer);
+    EXPECT_TRUE(desc.notices.empty()) << noticeLines(desc).front();
+}
 
+TEST(ExportParse, AnUnknownInputKindIsLeftUnboundWithANoticeNamingPassChannelAndCtype) {
+    const std::string inputs = "[" + input("hologram", "11", "/media/a/h.xyz", 2) + "]";
+    const ManifestDesc desc = parseOk(apiExport({apiPass("image", "Image", "37", kImageCode, inputs)}));
+    EXPECT_EQ(pass(desc, PassId::Image).channels[2].kind, ChannelKind::None);
     const std::vector<std::string> expected = {
-        kLabel + ": notice: Image / iChannel0: video inputs are not supported; the channel is left unbound [export.unsupported-input]",
-        kLabel + ": notice: Image / iChannel1: music inputs are not supported; the channel is left unbound [export.unsupported-input]",
-        kLabel + ": notice: Image / iChannel2: musicstream inputs are not supported; the channel is left unbound [export.unsupported-input]",
-        kLabel + ": notice: Image / iChannel3: mic inputs are not supported; the channel is left unbound [export.unsupported-input]",
-        kLabel + ": notice: Buffer A / iChannel0: webcam inputs are not supported; the channel is left unbound [export.unsupported-input]",
-        kLabel + ": notice: Buffer A / iChannel1: cubemap inputs are not supported; the channel is left unbound [export.unsupported-input]",
-        kLabel + ": notice: Buffer A / iChannel2: volume inputs are not supported; the channel is left unbound [export.unsupported-input]",
-    };
+        kLabel + ": notice: Image / iChannel2: \"hologram\" inputs are not a Shadertoy input kind; the channel is left "
+                 "unbound [export.unsupported-input]"};
     EXPECT_EQ(noticeLines(desc), expected);
 }
 
-TEST(ExportParse, SoundPassIsSkippedWithANotice) {
+TEST(ExportParse, SoundPassIsKeptApartFromTheFramePasses) {
     const ManifestDesc desc = parseOk(apiExport({apiPass("sound", "Sound", "", "vec2 mainSound(int s, float t) { return vec2(0); }\n"),
                                                  apiPass("image", "Image", "37", kImageCode)}));
     EXPECT_EQ(passIds(desc), std::vector<PassId>{PassId::Image});
-    ASSERT_EQ(desc.notices.size(), 1u);
-    expectMentions(formatDiagnostic(desc.notices[0]), {kLabel, "Sound pass is skipped"});
+    ASSERT_TRUE(desc.sound.has_value());
+    EXPECT_EQ(desc.sound->id, PassId::Sound);
+    EXPECT_NE(desc.sound->code.find("mainSound"), std::string::npos);
+    EXPECT_EQ(desc.sound->sourceName, kLabel + " [Sound]");
+    EXPECT_TRUE(desc.notices.empty());
 }
 
-TEST(ExportParse, CubemapPassIsAnError) {
-    const std::string message = parseError(apiExport({apiPass("image", "Image", "37", kImageCode),
-                                                       apiPass("cubemap", "Cube A", "41", "// cube\n")}));
-    expectMentions(message, {kLabel + ": renderpass[1].type: ", "Cube A passes are not supported"});
+TEST(ExportParse, CubeAPassAndItsReadersByApiAndSiteIds) {
+    const std::string inputs = "[" + input("cubemap", "41", "/media/previz/cubemap00.png", 0) + "]";
+    const std::string siteInputs = R"([{"id": "4dX3Rr", "type": "cubemap", "filepath": "/media/previz/cubemap00.png", "channel": 1}])";
+    const ManifestDesc desc = parseOk(apiExport({apiPass("image", "Image", "37", kImageCode, inputs),
+                                                 apiPass("cubemap", "Cube A", "41", "// cube\n", siteInputs)}));
+    EXPECT_EQ(passIds(desc), (std::vector<PassId>{PassId::CubeA, PassId::Image}));
+    EXPECT_EQ(pass(desc, PassId::Image).channels[0].kind, ChannelKind::CubeBuffer);
+    EXPECT_EQ(pass(desc, PassId::Image).channels[0].samplerType, SamplerType::SamplerCube);
+    EXPECT_EQ(pass(desc, PassId::CubeA).channels[1].kind, ChannelKind::CubeBuffer);
+    EXPECT_EQ(pass(desc, PassId::CubeA).sourceName, kLabel + " [Cube A]");
+}
+
+TEST(ExportParse, ReadingACubeAPassTheExportLacksStaysASamplerCubeWithANotice) {
+    const std::string inputs = "[" + input("cubemap", "41", "/media/previz/cubemap00.png", 3) + "]";
+    const ManifestDesc desc = parseOk(apiExport({apiPass("image", "Image", "37", kImageCode, inputs)}));
+    const ChannelDesc& c = pass(desc, PassId::Image).channels[3];
+    EXPECT_EQ(c.kind, ChannelKind::None);
+    EXPECT_EQ(c.samplerType, SamplerType::SamplerCube);
+    ASSERT_EQ(desc.notices.size(), 1u);
+    expectMentions(formatDiagnostic(desc.notices[0]), {"Image / iChannel3", "reads Cube A, which the export does not define"});
 }
 
 TEST(ExportParse, ReadingABufferTheExportLacksUnbindsTheChannelWithANotice) {
@@ -460,7 +490,7 @@ TEST(ExportParse, UnknownPassTypeAndUnidentifiableBuffer) {
 TEST(ExportParse, EveryProblemIsReportedOnItsOwnLine) {
     const std::string inputs = "[" + input("buffer", "999", "/x.png", 0) + "]";
     const std::string message = parseError(apiExport({apiPass("image", "Image", "37", kImageCode, inputs),
-                                                      apiPass("cubemap", "Cube A", "41", "// c\n")}));
+                                                      apiPass("hologram", "Holo", "41", "// c\n")}));
     EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
     expectMentions(message, {"Image / iChannel0", "renderpass[1].type"});
 }

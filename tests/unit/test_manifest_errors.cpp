@@ -57,7 +57,7 @@ TEST(ManifestErrors, NameMustBeANonEmptyString) {
 TEST(ManifestErrors, MissingEmptyOrNonObjectPasses) {
     ManifestFolder f;
     const std::string expected =
-        f.line("passes", R"(must be an object with an "Image" pass and optionally "Buffer A" .. "Buffer D")");
+        f.line("passes", R"(must be an object with an "Image" pass and optionally "Buffer A" .. "Buffer D", "Cube A", "Sound")");
     EXPECT_EQ(errorOf(f.parse(R"({"name": "x"})")), expected);
     EXPECT_EQ(errorOf(f.parse(R"({"passes": {}})")), expected);
     EXPECT_EQ(errorOf(f.parse(R"({"passes": [{"source": "image.glsl"}]})")), expected);
@@ -66,10 +66,10 @@ TEST(ManifestErrors, MissingEmptyOrNonObjectPasses) {
 TEST(ManifestErrors, UnknownPassName) {
     ManifestFolder f;
     EXPECT_EQ(errorOf(f.parse(R"({"passes": {"Image": {"source": "image.glsl"}, "Buffer E": {"source": "x"}}})")),
-              f.line(R"(passes."Buffer E")", "unknown pass (known: Buffer A, Buffer B, Buffer C, Buffer D, Image)"));
+              f.line(R"(passes."Buffer E")", "unknown pass (known: Buffer A, Buffer B, Buffer C, Buffer D, Cube A, Image, Sound)"));
     // Pass names are exact: the loader does not guess at "image" or "A".
     EXPECT_EQ(errorOf(f.parse(R"({"passes": {"Image": {"source": "image.glsl"}, "A": {"source": "buffer_a.glsl"}}})")),
-              f.line(R"(passes."A")", "unknown pass (known: Buffer A, Buffer B, Buffer C, Buffer D, Image)"));
+              f.line(R"(passes."A")", "unknown pass (known: Buffer A, Buffer B, Buffer C, Buffer D, Cube A, Image, Sound)"));
 }
 
 TEST(ManifestErrors, MissingImagePass) {
@@ -146,7 +146,7 @@ TEST(ManifestErrors, ChannelMustBeObjectOrNull) {
 
 TEST(ManifestErrors, ChannelNeedsExactlyOneSource) {
     ManifestFolder f;
-    const std::string what = R"(needs exactly one of "buffer", "texture", "media", "keyboard")";
+    const std::string what = R"(needs exactly one of "buffer", "texture", "media", "keyboard", "cubemap", "volume", "video", "music", "webcam", "mic")";
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel1": {"filter": "linear"}})"))), f.line(kImageCh1, what));
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel1": {}})"))), f.line(kImageCh1, what));
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel1": {"buffer": "A", "texture": "tex.png"}})"))),
@@ -158,15 +158,15 @@ TEST(ManifestErrors, ChannelNeedsExactlyOneSource) {
 TEST(ManifestErrors, UnknownChannelField) {
     ManifestFolder f;
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": "A", "srgb": false}})"))),
-              f.line(kImageCh0, R"(unknown field "srgb" (known: buffer, filter, keyboard, media, texture, vflip, wrap))"));
+              f.line(kImageCh0, R"(unknown field "srgb" (known: buffer, cubemap, filter, keyboard, media, mic, music, texture, vflip, video, volume, webcam, wrap))"));
 }
 
 TEST(ManifestErrors, BufferThatDoesNotExist) {
     ManifestFolder f;
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": "E"}})"))),
-              f.line(kImageCh0, R"(buffer "E" does not exist (known: A, B, C, D))"));
+              f.line(kImageCh0, R"(buffer "E" does not exist (known: A, B, C, D, Cube A))"));
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": "a"}})"))),
-              f.line(kImageCh0, R"(buffer "a" does not exist (known: A, B, C, D))"));
+              f.line(kImageCh0, R"(buffer "a" does not exist (known: A, B, C, D, Cube A))"));
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": 0}})"))),
               f.line(kImageCh0, R"("buffer" must be a non-empty string, not number)"));
 }
@@ -227,7 +227,7 @@ TEST(ManifestErrors, BadFilterWrapAndVflipValues) {
 TEST(ManifestErrors, VflipOnABuffer) {
     ManifestFolder f;
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": "A", "vflip": false}})"))),
-              f.line(kImageCh0, R"("vflip" applies only to image textures, not buffers)"));
+              f.line(kImageCh0, R"("vflip" applies only to image textures, cubemaps and videos, not buffer channels)"));
 }
 
 TEST(ManifestErrors, SamplerSettingsOnKeyboard) {
@@ -283,7 +283,7 @@ TEST(ManifestErrors, SeveralProblemsReportedTogetherOnePerLine) {
         f.line("", R"(unknown field "extra" (known: common, defaults, media, name, passes))") + "\n" +
         f.line(R"(passes."Buffer A".source)", (f.dir / "missing_a.glsl").string() + ": file not found") + "\n" +
         f.line(R"(passes."Buffer A".channels.iChannel0)", R"("keyboard" must be true)") + "\n" +
-        f.line(kImageCh0, R"(buffer "E" does not exist (known: A, B, C, D))") + "\n" +
+        f.line(kImageCh0, R"(buffer "E" does not exist (known: A, B, C, D, Cube A))") + "\n" +
         f.line(R"(passes."Image".channels.iChannel2)", "texture " + (f.dir / "none.png").string() + ": file not found") + "\n" +
         f.line(R"(passes."Image".channels.iChannel2)", R"(wrap "mirror" is not one of clamp, repeat)") + "\n" +
         f.line(kImageCh1, "reads Buffer C, which this manifest does not define");

@@ -239,7 +239,7 @@ TEST(PortToolsManifestNearMiss, MisspelledChannelFieldSuggestsBuffer) {
     EXPECT_EQ(errorOf(result),
               // One typo, one message: the missing source is the misspelt "buffer".
               f.line(kImageCh0, R"(unknown field "bufer" (did you mean "buffer"?) )"
-                                R"((known: buffer, filter, keyboard, media, texture, vflip, wrap))"));
+                                R"((known: buffer, cubemap, filter, keyboard, media, mic, music, texture, vflip, video, volume, webcam, wrap))"));
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error().first().code, "manifest.unknown-field");
 }
@@ -259,7 +259,7 @@ TEST(PortToolsManifestNearMiss, PassNameWithTrailingSpaceSuggestsImage) {
     // "Image " is not "Image"; the one message says so (the missing Image is that typo).
     EXPECT_EQ(errorOf(f.parse(R"({"passes": {"Image ": {"source": "image.glsl"}}})")),
               f.line(R"(passes."Image ")",
-                     R"(unknown pass (did you mean "Image"?) (known: Buffer A, Buffer B, Buffer C, Buffer D, Image))"));
+                     R"(unknown pass (did you mean "Image"?) (known: Buffer A, Buffer B, Buffer C, Buffer D, Cube A, Image, Sound))"));
 }
 
 TEST(PortToolsManifestNearMiss, LowerCaseBufferLetterIsRejectedWithTheRightName) {
@@ -268,11 +268,11 @@ TEST(PortToolsManifestNearMiss, LowerCaseBufferLetterIsRejectedWithTheRightName)
     EXPECT_EQ(
         errorOf(f.parse(R"({"passes": {"Image": {"source": "image.glsl"}, "Buffer a": {"source": "buffer_a.glsl"}}})")),
         f.line(R"(passes."Buffer a")",
-               R"(unknown pass (did you mean "Buffer A"?) (known: Buffer A, Buffer B, Buffer C, Buffer D, Image))"));
+               R"(unknown pass (did you mean "Buffer A"?) (known: Buffer A, Buffer B, Buffer C, Buffer D, Cube A, Image, Sound))"));
     // "Buffer E" is another index: no guess.
     EXPECT_EQ(
         errorOf(f.parse(R"({"passes": {"Image": {"source": "image.glsl"}, "Buffer E": {"source": "buffer_a.glsl"}}})")),
-        f.line(R"(passes."Buffer E")", "unknown pass (known: Buffer A, Buffer B, Buffer C, Buffer D, Image)"));
+        f.line(R"(passes."Buffer E")", "unknown pass (known: Buffer A, Buffer B, Buffer C, Buffer D, Cube A, Image, Sound)"));
 }
 
 TEST(PortToolsManifestNearMiss, MisspelledFilterAndWrapValues) {

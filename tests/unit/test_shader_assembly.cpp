@@ -226,22 +226,25 @@ TEST(ShaderAssembly, SamplerKeywordsPerChannel) {
 
 TEST(ShaderAssembly, TextIsHeaderThenCommonAndNewlineThenPassCode) {
     const std::string common = "#define TAU 6.2831853\nfloat sq(float x) { return x * x; }";
+    // mainImage's `out` is zero-initialised on the line of its brace, as WebGL's translator does.
+    std::string passCode = kPassCode;
+    passCode.replace(passCode.find("fragCoord) {") + 12, 0, "fragColor=vec4(0.0);");
     const std::string commonLine = "#line " + std::to_string(kCommonLineBase + 1) + "\n";
     for (PassId pass : {PassId::Image, PassId::BufferA}) {
         const AssembledShader without = assemble(pass);
         const std::string header = headerOf(without);
-        EXPECT_EQ(without.text, header + "#line 1\n" + kPassCode);
+        EXPECT_EQ(without.text, header + "#line 1\n" + passCode);
         EXPECT_FALSE(without.hasCommon);
 
         const AssembledShader with = assemble(pass, &common);
-        EXPECT_EQ(with.text, header + commonLine + common + "\n#line 1\n" + kPassCode);
+        EXPECT_EQ(with.text, header + commonLine + common + "\n#line 1\n" + passCode);
         EXPECT_TRUE(with.hasCommon);
 
         const std::string commonWithNewline = common + "\n";
-        EXPECT_EQ(assemble(pass, &commonWithNewline).text, header + commonLine + commonWithNewline + "\n#line 1\n" + kPassCode);
+        EXPECT_EQ(assemble(pass, &commonWithNewline).text, header + commonLine + commonWithNewline + "\n#line 1\n" + passCode);
 
         const std::string empty;
-        EXPECT_EQ(assemble(pass, &empty).text, header + commonLine + "\n#line 1\n" + kPassCode);
+        EXPECT_EQ(assemble(pass, &empty).text, header + commonLine + "\n#line 1\n" + passCode);
     }
 }
 

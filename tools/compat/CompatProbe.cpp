@@ -5,8 +5,11 @@
 #include <chrono>
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <array>
 
 #include "export/LoadShadertoy.h"
+#include "gl/GlContext.h"
 #include "gl/HeadlessContext.h"
 #include "player/Player.h"
 #include "timing/FrameClock.h"
@@ -22,7 +25,9 @@ std::string firstLines(const std::string& text, int lines) {
     return end == std::string::npos ? text : text.substr(0, end);
 }
 
-void judgeOutput(const Player& player, ProbeResult& result) {
+// `firstUniform` keeps the colour of the first uniform frame judged, to tell a flash from a
+// frozen screen.
+void judgeOutput(const Player& player, ProbeResult& result, std::optional<std::array<std::uint8_t, 3>>& firstUniform) {
     const ManifestDesc& manifest = player.manifest();
     std::vector<std::uint8_t> image;
     player.readRgba8(PassId::Image, image);
@@ -30,6 +35,11 @@ void judgeOutput(const Player& player, ProbeResult& result) {
     for (size_t i = 4; i < image.size() && result.uniformImage; i += 4)
         for (int k = 0; k < 3; ++k)
             if (image[i + k] != image[k]) result.uniformImage = false;
+    if (result.uniformImage && image.size() >= 3) {
+        const std::array<std::uint8_t, 3> colour{image[0], image[1], image[2]};
+        if (!firstUniform) firstUniform = colour;
+        else if (*firstUniform != colour) result.uniformColourChanged = true;
+    }
     std::vector<float> floats;
     for (const PassDesc& pass : manifest.passes) {
         if (!isBuffer(pass.id)) continue;
@@ -111,18 +121,27 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
     for (int frame = 0; frame < settings.frames; ++frame) frameAt(frame);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.msPerFrame = 1000.0 * seconds / settings.frames;
-    if (GLenum error = glGetError(); error != GL_NO_ERROR) result.error = "GL error " + std::to_string(error);
-    judgeOutput(**player, result);
+    std::optional<std::array<std::uint8_t, 3>> firstUniform;
+    auto checkGl = [&] {
+        if (GLenum error = glGetError(); error != GL_NO_ERROR && result.glError.empty()) {
+            result.glError = glErrorName(error);
+            result.error = "GL error " + result.glError + " while rendering";
+        }
+    };
+    checkGl();
+    judgeOutput(**player, result, firstUniform);
     // Patience for fade-ins and shaders that need time: check every quarter second of iTime.
-    for (int frame = settings.frames; result.uniformImage && frame / 60.0 < settings.patienceSeconds; ++frame) {
+    for (int frame = settings.frames;
+         result.uniformImage && !result.uniformColourChanged && frame / 60.0 < settings.patienceSeconds; ++frame) {
         frameAt(frame);
         if (frame % 15 != 0) continue;
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > settings.wallBudgetSeconds)
             break;
         result.nonFiniteBuffers.clear();
-        judgeOutput(**player, result);
-        if (!result.uniformImage) result.firstNonUniformTime = frame / 60.0;
+        judgeOutput(**player, result, firstUniform);
+        if (!result.uniformImage || result.uniformColourChanged) result.firstNonUniformTime = frame / 60.0;
     }
+    checkGl();
     return result;
 }
 
@@ -136,6 +155,8 @@ nlohmann::json toJson(const ProbeResult& r) {
             {"frames_rendered", r.framesRendered},
             {"ms_per_frame", std::round(r.msPerFrame * 100) / 100},
             {"uniform_image", r.uniformImage},
+            {"uniform_colour_changed", r.uniformColourChanged},
+            {"gl_error", r.glError},
             {"first_non_uniform_time", r.firstNonUniformTime},
             {"non_finite_buffers", r.nonFiniteBuffers},
             {"stand_ins", r.standIns},
@@ -155,6 +176,8 @@ ProbeResult fromJson(const nlohmann::json& j) {
     r.framesRendered = j.value("frames_rendered", 0);
     r.msPerFrame = j.value("ms_per_frame", 0.0);
     r.uniformImage = j.value("uniform_image", false);
+    r.uniformColourChanged = j.value("uniform_colour_changed", false);
+    r.glError = j.value("gl_error", "");
     r.firstNonUniformTime = j.value("first_non_uniform_time", -1.0);
     r.nonFiniteBuffers = j.value("non_finite_buffers", std::vector<std::string>{});
     r.standIns = j.value("stand_ins", std::vector<std::string>{});

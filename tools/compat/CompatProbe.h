@@ -32,13 +32,17 @@ struct ProbeResult {
     double msPerFrame = 0;
     double firstNonUniformTime = -1;       // iTime when a uniform Image first changed, if it did later
     bool uniformImage = false;             // every Image pixel has the same colour
+    // The uniform colour changed between the frames judged: a full-screen flash or fade, which is
+    // valid output, not a degenerate one.
+    bool uniformColourChanged = false;
+    std::string glError;                   // a GL error after rendering ("GL_INVALID_OPERATION")
     std::vector<std::string> nonFiniteBuffers;  // "Buffer A: 12 NaN, 0 Inf"
     std::vector<std::string> standIns;     // stock media names replaced by stand-ins
     std::vector<std::string> notices;
     std::string error;                     // why it did not load, compile or render
 
-    bool degenerate() const { return uniformImage || !nonFiniteBuffers.empty(); }
-    bool passed() const { return compiled && framesRendered > 0 && !degenerate(); }
+    bool degenerate() const { return (uniformImage && !uniformColourChanged) || !nonFiniteBuffers.empty(); }
+    bool passed() const { return compiled && framesRendered > 0 && glError.empty() && !degenerate(); }
 };
 
 ProbeResult runProbe(const std::filesystem::path& exportFile, const ProbeSettings& settings);

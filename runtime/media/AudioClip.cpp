@@ -1,0 +1,183 @@
+#include "media/AudioClip.h"
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <unistd.h>
+
+#include "core/AtomicFile.h"
+#include "core/ChildProcess.h"
+#include "core/InFlight.h"
+
+namespace toyhost {
+namespace fs = std::filesystem;
+
+namespace {
+constexpr int kMinSampleRate = 8000;
+constexpr int kMaxSampleRate = 192000;
+
+// The temporary files of one decode, removed however it ends.
+class TemporaryFiles {
+public:
+    TemporaryFiles() {
+        static std::atomic<unsigned> counter{0};
+        std::error_code ec;
+        const std::string stem = "toyhost-audio-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+        const fs::path folder = fs::temp_directory_path(ec);
+        samples_ = folder / (stem + ".f32");
+        log_ = folder / (stem + ".log");
+    }
+    ~TemporaryFiles() {
+        std::error_code ec;
+        for (const fs::path& path : {samples_, log_}) {
+            fs::remove(path, ec);
+            if (registered_) inflight::removeFile(path);
+        }
+    }
+    TemporaryFiles(const TemporaryFiles&) = delete;
+    TemporaryFiles& operator=(const TemporaryFiles&) = delete;
+
+    // Registers both for an emergency exit (core/InFlight.h); false once that has begun.
+    bool registerBoth() {
+        registered_ = inflight::addFile(samples_) && inflight::addFile(log_);
+        return registered_;
+    }
+    const fs::path& samples() const { return samples_; }
+    const fs::path& log() const { return log_; }
+
+private:
+    fs::path samples_, log_;
+    bool registered_ = false;
+};
+
+// The last few lines ffmpeg printed, joined with "; ".
+std::string logTail(const fs::path& log) {
+    Result<std::string> text = readTextFile(log, std::size_t(1) << 20);
+    if (!text) return "";
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    while (start < text->size()) {
+        std::size_t end = text->find('\n', start);
+        if (end == std::string::npos) end = text->size();
+        std::string line = text->substr(start, end - start);
+        while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+        if (!line.empty()) lines.push_back(std::move(line));
+        start = end + 1;
+    }
+    std::string tail;
+    for (std::size_t i = lines.size() > 3 ? lines.size() - 3 : 0; i < lines.size(); ++i)
+        tail += (tail.empty() ? "" : "; ") + lines[i];
+    return tail;
+}
+
+std::string secondsText(double seconds) {
+    std::string text = std::to_string(seconds);
+    text.erase(text.find_last_not_of('0') + 1);
+    if (!text.empty() && text.back() == '.') text.pop_back();
+    return text;
+}
+}  // namespace
+
+Result<AudioClip> decodeAudioFile(const fs::path& path, int sampleRate) {
+    static_assert(std::endian::native == std::endian::little, "f32le samples are read as native floats");
+    const std::string name = path.string();
+    if (sampleRate < kMinSampleRate || sampleRate > kMaxSampleRate)
+        return fileError(name, "cannot decode audio: sample rate " + std::to_string(sampleRate) + " is not in " +
+                                   std::to_string(kMinSampleRate) + ".." + std::to_string(kMaxSampleRate),
+                         "audio.decode");
+    if (Status regular = checkRegularFile(path, "audio"); !regular) return regular.error();
+    if (!findExecutable("ffmpeg"))
+        return fileError(name, "cannot decode audio: ffmpeg was not found in PATH (install ffmpeg to use audio files)",
+                         "audio.ffmpeg-missing");
+
+    TemporaryFiles temp;
+    if (!temp.registerBoth()) return fileError(name, "not decoded: toyhost is stopping", "interrupted");
+    // "file:" keeps a name such as "concat:x" or "http:x" a local file; -t one second past the
+    // limit tells a file over the limit from one exactly at it without decoding all of a long one.
+    std::error_code ec;
+    const fs::path input = fs::absolute(path, ec);
+    const std::vector<std::string> args = {
+        "ffmpeg", "-nostdin", "-hide_banner", "-v", "error", "-i", "file:" + (ec ? path : input).string(),
+        "-map", "0:a:0", "-vn", "-sn", "-dn", "-t", secondsText(kMaxAudioSeconds + 1.0),
+        "-f", "f32le", "-ac", "1", "-ar", std::to_string(sampleRate), "-y", "file:" + temp.samples().string()};
+    Result<ChildProcess> ffmpeg = ChildProcess::spawn(args, temp.log());
+    if (!ffmpeg) return inFile(name, ffmpeg.error());
+    Result<int> exit = ffmpeg->closeAndWait();
+    auto failed = [&](const std::string& what) {
+        std::string message = "cannot decode audio: " + what;
+        if (std::string tail = logTail(temp.log()); !tail.empty()) message += "; ffmpeg said: " + tail;
+        return fileError(name, message, "audio.decode");
+    };
+    if (!exit) return failed(exit.error().first().message);
+    if (*exit != 0) return failed("ffmpeg failed (exit code " + std::to_string(*exit) + ")");
+
+    const std::uintmax_t bytes = fs::file_size(temp.samples(), ec);
+    if (ec) return failed("ffmpeg wrote no samples");
+    const std::uintmax_t count = bytes / sizeof(float);
+    const auto limit = static_cast<std::uintmax_t>(kMaxAudioSeconds * sampleRate);
+    if (count > limit)
+        return fileError(name,
+                         "cannot decode audio: it is longer than the " + secondsText(kMaxAudioSeconds / 60.0) +
+                             " minutes toyhost reads (cut it, e.g. ffmpeg -i IN -t " + secondsText(kMaxAudioSeconds) +
+                             " OUT)",
+                         "audio.too-long");
+    if (count == 0) return failed("the file has no audio samples");
+
+    AudioClip clip;
+    clip.sampleRate = sampleRate;
+    clip.mono.resize(static_cast<std::size_t>(count));
+    std::ifstream in(temp.samples(), std::ios::binary);
+    in.read(reinterpret_cast<char*>(clip.mono.data()), static_cast<std::streamsize>(count * sizeof(float)));
+    if (!in) return fileError(name, "cannot decode audio: reading ffmpeg's output failed", "io.read");
+    return clip;
+}
+
+AudioClip toneSweepStandIn(double seconds, int sampleRate) {
+    AudioClip clip;
+    clip.sampleRate = std::clamp(sampleRate, kMinSampleRate, kMaxSampleRate);
+    if (!(seconds > 0.0)) return clip;
+    seconds = std::min(seconds, kMaxAudioSeconds);
+    const auto count = static_cast<std::size_t>(seconds * clip.sampleRate);
+    clip.mono.resize(count);
+    constexpr double kPeriod = 4.0, kBeat = 0.5, kLow = 110.0, kOctaves = 4.0;  // 110 .. 1760 Hz
+    constexpr double kTwoPi = 2.0 * std::numbers::pi;
+    const double rate = clip.sampleRate;
+    double sweepPhase = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const double t = static_cast<double>(i) / rate;
+        const double inPeriod = std::fmod(t, kPeriod);
+        // Up in log frequency for half the period, back down for the other half: no jump.
+        const double up = inPeriod < kPeriod / 2 ? inPeriod / (kPeriod / 2) : (kPeriod - inPeriod) / (kPeriod / 2);
+        const double frequency = kLow * std::exp2(kOctaves * up);
+        const double sinceBeat = std::fmod(t, kBeat);
+        const double pulse = 0.5 + 0.5 * std::exp(-6.0 * sinceBeat);
+        const double kick = std::sin(kTwoPi * 55.0 * sinceBeat) * std::exp(-10.0 * sinceBeat);
+        clip.mono[i] = static_cast<float>(0.25 * (0.6 * pulse * std::sin(sweepPhase) + 0.4 * kick));
+        sweepPhase = std::fmod(sweepPhase + kTwoPi * frequency / rate, kTwoPi);
+    }
+    return clip;
+}
+
+void samplesEndingAt(const AudioClip& clip, double time, bool loop, std::span<float> out) {
+    std::fill(out.begin(), out.end(), 0.0f);
+    const auto size = static_cast<std::int64_t>(clip.mono.size());
+    if (!std::isfinite(time) || size == 0 || clip.sampleRate <= 0) return;
+    // Far past any clip's end; keeps the index arithmetic in range.
+    const double position = std::clamp(time * clip.sampleRate, -1e15, 1e15);
+    const auto end = static_cast<std::int64_t>(std::floor(position));
+    const auto first = end - static_cast<std::int64_t>(out.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const std::int64_t index = first + static_cast<std::int64_t>(i);
+        if (index < 0) continue;
+        if (index < size)
+            out[i] = clip.mono[static_cast<std::size_t>(index)];
+        else if (loop)
+            out[i] = clip.mono[static_cast<std::size_t>(index % size)];
+    }
+}
+
+}  // namespace toyhost

@@ -1,0 +1,44 @@
+// AudioClip: the mono samples behind a `music` / `musicstream` / `mic` channel: decoding an audio
+// file through ffmpeg, a deterministic stand-in for audio toyhost does not have, and the window
+// of samples an AudioAnalyser looks at for a given playback time. No GL needed.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <vector>
+
+#include "core/Result.h"
+
+namespace toyhost {
+
+inline constexpr double kMaxAudioSeconds = 30.0 * 60.0;
+
+struct AudioClip {
+    int sampleRate = 44100;
+    std::vector<float> mono;  // -1..1, down-mixed to one channel
+    double seconds() const { return sampleRate > 0 ? static_cast<double>(mono.size()) / sampleRate : 0.0; }
+};
+
+// Decodes any audio file ffmpeg reads (the first audio stream, also of a video file) to mono
+// float at `sampleRate` (8000..192000), by running
+// `ffmpeg -v error -i FILE -f f32le -ac 1 -ar RATE` with its output in a temporary file (removed
+// afterwards, and by an emergency exit). ffmpeg's stereo-to-mono mix is (L+R)/2, the down-mix
+// WebAudio's AnalyserNode applies. Errors: "audio.ffmpeg-missing" when ffmpeg is not in PATH,
+// "audio.decode" when ffmpeg fails (with the last lines it printed) or finds no samples,
+// "audio.too-long" past kMaxAudioSeconds, the I/O error for a missing file or a folder.
+Result<AudioClip> decodeAudioFile(const std::filesystem::path& path, int sampleRate = 44100);
+
+// A stand-in that makes audio-reactive shaders move, the same samples on every run: a sine
+// sweeping from 110 Hz up to 1760 Hz and back (so the bright bins travel across row 0) plus a
+// 55 Hz kick on every beat (120 per minute, so the low bins pulse), repeating every 4 seconds,
+// peaking at 0.25 (-12 dBFS). `seconds` is clamped to 0..kMaxAudioSeconds, `sampleRate` to
+// 8000..192000.
+AudioClip toneSweepStandIn(double seconds, int sampleRate = 44100);
+
+// The out.size() samples that end at playback time `time` (seconds): sample index
+// floor(time * rate) is the first not yet played. Indices before 0 are silence; past the end
+// the clip wraps when `loop` is set (the site plays music with loop = true) and is silence
+// otherwise. A non-finite time gives silence.
+void samplesEndingAt(const AudioClip& clip, double time, bool loop, std::span<float> out);
+
+}  // namespace toyhost

@@ -1,0 +1,72 @@
+// MediaTextures: GL textures for the channel kinds beyond 2D pictures: cubemaps (six RGBA8 faces),
+// volumes (3D textures of 1-4 8-bit channels) and the inputs that change with time: a video or
+// webcam (RGBA8, one upload per frame) and music or a microphone (the site's 512x2 single-channel
+// texture: row 0 the FFT magnitude, row 1 the waveform, as WebAudio's analyser gives them).
+// Needs a current GL context.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/Result.h"
+#include "gl/GlObjects.h"
+#include "manifest/ManifestDesc.h"
+#include "media/AudioAnalyser.h"
+#include "media/AudioClip.h"
+#include "media/ChannelImages.h"
+#include "media/VideoSource.h"
+#include "render/ChannelTextures.h"
+
+namespace toyhost {
+
+// Six faces; with vflip false (the site's cubemaps) a face file's top row is at t = 0, as GL's
+// cube face convention expects. Mip levels are built on the CPU (image/MipChain.h).
+InputTexture uploadCubemap(const CubeFaces8& faces, const SamplerDesc& sampler);
+// R8, RG8, RGB8 or RGBA8 by the volume's channel count; voxels as stored (x fastest).
+InputTexture uploadVolume(const Volume8& volume, const SamplerDesc& sampler);
+
+// The bytes the site puts in a music or microphone texture when no audio plays (muted, or no
+// microphone): a decaying spectrum that pulses and a gentle wave (effect.js Paint_Image), with
+// iChannelTime = 10 + time. `bins` is the analyser's frequencyBinCount; row 0 is 512 bytes of
+// spectrum, row 1 512 bytes of waveform.
+void siteSilentAudioTexels(double time, int bins, std::array<std::uint8_t, 1024>& texels);
+
+// A video, webcam, music or mic channel: its texture, updated for each frame's time.
+class TimedTexture {
+public:
+    static Result<std::unique_ptr<TimedTexture>> open(const TimedInput& input, const SamplerDesc& sampler);
+    ~TimedTexture();
+
+    // Brings the texture to iTime `time` (a no-op when the frame shown has not changed).
+    Status update(double time);
+    GLuint texture() const { return texture_.id(); }
+    std::array<float, 3> resolution() const { return {float(width_), float(height_), 1.0f}; }
+    float channelTime() const { return channelTime_; }
+
+private:
+    TimedTexture() = default;
+    void uploadRgba(const Image8& frame);
+    void uploadAudio();
+
+    TimedInput input_;
+    SamplerDesc sampler_;
+    GlTexture texture_;
+    int width_ = 0;
+    int height_ = 0;
+    float channelTime_ = 0;
+    std::optional<double> lastTime_;
+    std::unique_ptr<VideoSource> video_;
+    const Image8* lastFrame_ = nullptr;
+    std::int64_t lastFrameIndex_ = -1;
+    Image8 standInFrame_;
+    std::optional<AudioClip> clip_;
+    std::unique_ptr<AudioAnalyser> analyser_;
+    std::vector<float> window_;
+    std::array<std::uint8_t, 1024> audioTexels_{};
+    std::vector<std::uint8_t> flipped_;  // reused for each frame uploaded without vflip
+};
+
+}  // namespace toyhost

@@ -1,0 +1,44 @@
+// MipChain: the CPU box filter that replaces llvmpipe's glGenerateMipmap for RGBA8 pictures:
+// level sizes as GL's, exact averages rounded to nearest, down to 1x1.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "image/MipChain.h"
+
+using namespace toyhost;
+
+TEST(MipChain, LevelSizesFollowGlDownToOneByOne) {
+    const std::vector<std::uint8_t> pixels(static_cast<std::size_t>(5) * 3 * 4, 7);
+    const std::vector<MipLevel> levels = boxMipChain(pixels, 5, 3);
+    ASSERT_EQ(levels.size(), 2u);  // 5x3 -> 2x1 -> 1x1
+    EXPECT_EQ(levels[0].width, 2);
+    EXPECT_EQ(levels[0].height, 1);
+    EXPECT_EQ(levels[1].width, 1);
+    EXPECT_EQ(levels[1].height, 1);
+    for (const MipLevel& l : levels)
+        for (std::uint8_t v : l.rgba) EXPECT_EQ(v, 7);
+    EXPECT_TRUE(boxMipChain(std::vector<std::uint8_t>(4, 1), 1, 1).empty());
+}
+
+TEST(MipChain, AMidGreyStaysExactAtEveryLevel) {
+    // llvmpipe drifts +0.5 LSB per level here (128 -> 131.8 at 1x1); a box filter keeps 128.
+    const int side = 256;
+    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(side) * side * 4);
+    for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = (i / 4) % 2 ? 127 : 129;
+    const std::vector<MipLevel> levels = boxMipChain(pixels, side, side);
+    ASSERT_EQ(levels.size(), 8u);
+    for (const MipLevel& l : levels) EXPECT_EQ(l.rgba[0], 128) << l.width;
+}
+
+TEST(MipChain, EachTexelIsTheRoundedAverageOfTheBlockBelowIt) {
+    // 2x2 RGBA: channel values chosen so the sums end in .25, .5 and .75.
+    const std::vector<std::uint8_t> pixels{0, 1, 2, 255, 0, 0, 0, 255, 1, 1, 1, 255, 0, 0, 2, 254};
+    const std::vector<MipLevel> levels = boxMipChain(pixels, 2, 2);
+    ASSERT_EQ(levels.size(), 1u);
+    // R: 1/4 = 0.25 -> 0; G: 2/4 = 0.5 -> 1 (half up); B: 5/4 = 1.25 -> 1; A: 1019/4 = 254.75 -> 255.
+    EXPECT_EQ(levels[0].rgba, (std::vector<std::uint8_t>{0, 1, 1, 255}));
+    // A 1-pixel-high row averages pairs.
+    const std::vector<std::uint8_t> row{10, 10, 10, 10, 20, 20, 20, 20};
+    EXPECT_EQ(boxMipChain(row, 2, 1)[0].rgba, (std::vector<std::uint8_t>{15, 15, 15, 15}));
+}
