@@ -12,6 +12,7 @@ packages=(
   ffmpeg                                                 # video output (--out x.mp4); ffprobe for its tests
   xvfb xauth xdotool                                     # window-mode tests: a virtual X server and real X input
   parallel                                               # the render-farm shard test (GNU parallel)
+  cpp                                                    # preprocessing as browsers do, where Mesa's preprocessor refuses a shader
 )
 
 # `install-deps.sh fuzz` adds what the libFuzzer targets need (tests/fuzz): clang and its

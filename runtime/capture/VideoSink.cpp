@@ -54,8 +54,14 @@ std::vector<std::string> ffmpegArguments(const VideoRequest& r) {
     std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-nostats", "-loglevel", "error", "-y",
                                      "-f", "rawvideo", "-pix_fmt", "rgba",
                                      "-video_size", std::to_string(r.width) + "x" + std::to_string(r.height),
-                                     "-framerate", formatNumber(r.fps), "-i", "pipe:0", "-an"};
+                                     "-framerate", formatNumber(r.fps), "-i", "pipe:0"};
     const bool webm = r.container == ".webm";
+    if (r.settings.audio) {
+        args.insert(args.end(), {"-i", "file:" + r.settings.audio->string(), "-map", "0:v:0", "-map", "1:a:0", "-c:a",
+                                 webm ? "libopus" : "aac", "-b:a", "192k"});
+    } else {
+        args.push_back("-an");
+    }
     const std::string defaultCodec = webm ? "libvpx-vp9" : "libx264";
     const std::string codec = r.settings.codec.value_or(defaultCodec);
     args.insert(args.end(), {"-c:v", codec});

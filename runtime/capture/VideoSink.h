@@ -17,6 +17,9 @@ namespace toyhost {
 struct VideoSettings {
     std::optional<std::string> codec;  // an ffmpeg encoder name; default: by container
     std::optional<int> quality;        // constant rate factor (lower is better); default: by codec
+    // A sound track muxed in from its first sample (the Sound pass, rendered before the frames):
+    // AAC in mp4/mov/mkv, Opus in webm. Shorter than the video: silence after its end.
+    std::optional<std::filesystem::path> audio;
 };
 
 struct VideoRequest {

@@ -34,6 +34,7 @@ inline constexpr int kVideoStandInHeight = 360;
 inline constexpr int kVolumeStandInSize = 32;
 // The Sound pass: the site renders 180 s, in blocks of 512x512 samples.
 inline constexpr double kSoundSeconds = 180.0;
+inline constexpr double kMaxSoundSeconds = 3600.0;  // `toyhost sound --seconds` limit
 inline constexpr int kSoundBlockSide = 512;
 // The watchdog (headless runs; a window has no frame limit): a frame whose passes take longer
 // than this ends the run (--frame-timeout), and so does a pass that takes longer to compile

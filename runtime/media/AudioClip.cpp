@@ -12,6 +12,7 @@
 #include "core/AtomicFile.h"
 #include "core/ChildProcess.h"
 #include "core/InFlight.h"
+#include "core/TemporaryFiles.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -19,60 +20,6 @@ namespace fs = std::filesystem;
 namespace {
 constexpr int kMinSampleRate = 8000;
 constexpr int kMaxSampleRate = 192000;
-
-// The temporary files of one decode, removed however it ends.
-class TemporaryFiles {
-public:
-    TemporaryFiles() {
-        static std::atomic<unsigned> counter{0};
-        std::error_code ec;
-        const std::string stem = "toyhost-audio-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-        const fs::path folder = fs::temp_directory_path(ec);
-        samples_ = folder / (stem + ".f32");
-        log_ = folder / (stem + ".log");
-    }
-    ~TemporaryFiles() {
-        std::error_code ec;
-        for (const fs::path& path : {samples_, log_}) {
-            fs::remove(path, ec);
-            if (registered_) inflight::removeFile(path);
-        }
-    }
-    TemporaryFiles(const TemporaryFiles&) = delete;
-    TemporaryFiles& operator=(const TemporaryFiles&) = delete;
-
-    // Registers both for an emergency exit (core/InFlight.h); false once that has begun.
-    bool registerBoth() {
-        registered_ = inflight::addFile(samples_) && inflight::addFile(log_);
-        return registered_;
-    }
-    const fs::path& samples() const { return samples_; }
-    const fs::path& log() const { return log_; }
-
-private:
-    fs::path samples_, log_;
-    bool registered_ = false;
-};
-
-// The last few lines ffmpeg printed, joined with "; ".
-std::string logTail(const fs::path& log) {
-    Result<std::string> text = readTextFile(log, std::size_t(1) << 20);
-    if (!text) return "";
-    std::vector<std::string> lines;
-    std::size_t start = 0;
-    while (start < text->size()) {
-        std::size_t end = text->find('\n', start);
-        if (end == std::string::npos) end = text->size();
-        std::string line = text->substr(start, end - start);
-        while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
-        if (!line.empty()) lines.push_back(std::move(line));
-        start = end + 1;
-    }
-    std::string tail;
-    for (std::size_t i = lines.size() > 3 ? lines.size() - 3 : 0; i < lines.size(); ++i)
-        tail += (tail.empty() ? "" : "; ") + lines[i];
-    return tail;
-}
 
 std::string secondsText(double seconds) {
     std::string text = std::to_string(seconds);
@@ -94,8 +41,8 @@ Result<AudioClip> decodeAudioFile(const fs::path& path, int sampleRate) {
         return fileError(name, "cannot decode audio: ffmpeg was not found in PATH (install ffmpeg to use audio files)",
                          "audio.ffmpeg-missing");
 
-    TemporaryFiles temp;
-    if (!temp.registerBoth()) return fileError(name, "not decoded: toyhost is stopping", "interrupted");
+    TemporaryFiles temp("audio", {"f32", "log"});
+    if (!temp.registerAll()) return fileError(name, "not decoded: toyhost is stopping", "interrupted");
     // "file:" keeps a name such as "concat:x" or "http:x" a local file; -t one second past the
     // limit tells a file over the limit from one exactly at it without decoding all of a long one.
     std::error_code ec;
@@ -103,19 +50,19 @@ Result<AudioClip> decodeAudioFile(const fs::path& path, int sampleRate) {
     const std::vector<std::string> args = {
         "ffmpeg", "-nostdin", "-hide_banner", "-v", "error", "-i", "file:" + (ec ? path : input).string(),
         "-map", "0:a:0", "-vn", "-sn", "-dn", "-t", secondsText(kMaxAudioSeconds + 1.0),
-        "-f", "f32le", "-ac", "1", "-ar", std::to_string(sampleRate), "-y", "file:" + temp.samples().string()};
-    Result<ChildProcess> ffmpeg = ChildProcess::spawn(args, temp.log());
+        "-f", "f32le", "-ac", "1", "-ar", std::to_string(sampleRate), "-y", "file:" + temp[0].string()};
+    Result<ChildProcess> ffmpeg = ChildProcess::spawn(args, temp[1]);
     if (!ffmpeg) return inFile(name, ffmpeg.error());
     Result<int> exit = ffmpeg->closeAndWait();
     auto failed = [&](const std::string& what) {
         std::string message = "cannot decode audio: " + what;
-        if (std::string tail = logTail(temp.log()); !tail.empty()) message += "; ffmpeg said: " + tail;
+        if (std::string tail = logTail(temp[1]); !tail.empty()) message += "; ffmpeg said: " + tail;
         return fileError(name, message, "audio.decode");
     };
     if (!exit) return failed(exit.error().first().message);
     if (*exit != 0) return failed("ffmpeg failed (exit code " + std::to_string(*exit) + ")");
 
-    const std::uintmax_t bytes = fs::file_size(temp.samples(), ec);
+    const std::uintmax_t bytes = fs::file_size(temp[0], ec);
     if (ec) return failed("ffmpeg wrote no samples");
     const std::uintmax_t count = bytes / sizeof(float);
     const auto limit = static_cast<std::uintmax_t>(kMaxAudioSeconds * sampleRate);
@@ -130,7 +77,7 @@ Result<AudioClip> decodeAudioFile(const fs::path& path, int sampleRate) {
     AudioClip clip;
     clip.sampleRate = sampleRate;
     clip.mono.resize(static_cast<std::size_t>(count));
-    std::ifstream in(temp.samples(), std::ios::binary);
+    std::ifstream in(temp[0], std::ios::binary);
     in.read(reinterpret_cast<char*>(clip.mono.data()), static_cast<std::streamsize>(count * sizeof(float)));
     if (!in) return fileError(name, "cannot decode audio: reading ffmpeg's output failed", "io.read");
     return clip;

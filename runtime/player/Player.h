@@ -93,6 +93,9 @@ public:
         renderer_->publishPendingDraws();
     }
     void readRgba8(PassId pass, std::vector<std::uint8_t>& out) const { renderer_->readRgba8(pass, out); }
+    // Cube A's latest faces (see Renderer::readCubeFace); hasCube() says whether there is one.
+    bool hasCube() const { return renderer_->hasCube(); }
+    void readCubeFace(int face, std::vector<float>& out, int& size) const { renderer_->readCubeFace(face, out, size); }
     // Waits for the GPU (glFinish); never needed per frame. The watchdog sees which pass it
     // waits for.
     void finish() {

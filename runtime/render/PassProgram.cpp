@@ -3,6 +3,7 @@
 #include <string>
 
 #include "gl/ShaderProgram.h"
+#include "shader/BrowserPreprocess.h"
 #include "shader/CompilerLog.h"
 #include "shader/ShaderAssembly.h"
 
@@ -49,6 +50,14 @@ Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassD
     inputs.code = pass.code;
     const AssembledShader fragment = assembleFragmentShader(inputs);
     ProgramBuild build = buildProgram(fullscreenVertexShader(), fragment.text);
+    if (!build.ok && build.failedStage == ProgramBuild::Stage::Fragment) {
+        // Browsers preprocess the text themselves; where Mesa's preprocessor is the one that
+        // refuses it, their expansion compiles. The driver's own messages stand otherwise.
+        if (Result<std::string> expanded = preprocessLikeBrowsers(fragment.text); expanded) {
+            ProgramBuild retry = buildProgram(fullscreenVertexShader(), *expanded);
+            if (retry.ok) build = std::move(retry);
+        }
+    }
     if (!build.ok) {
         const char* name = passName(pass.id);
         const CompilerLogNames names{name, pass.sourceName, manifest.commonName};

@@ -486,6 +486,18 @@ void Renderer::readRgba32f(PassId pass, std::vector<float>& out) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }
 
+bool Renderer::hasCube() const { return impl_->cube.has_value(); }
+
+void Renderer::readCubeFace(int face, std::vector<float>& out, int& size) const {
+    const CubeTarget& cube = *impl_->cube;
+    size = cube.size();
+    out.resize(static_cast<std::size_t>(size) * size * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, cube.faceFramebuffer(slotWritten(impl_->lastStep), face));
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, size, size, GL_RGBA, GL_FLOAT, out.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+}
+
 void Renderer::readRgba8(PassId pass, std::vector<std::uint8_t>& out) const {
     const PassOutput source = output(pass);
     out.resize(static_cast<size_t>(width_) * height_ * 4);

@@ -109,6 +109,11 @@ public:
     void readRgba32f(PassId pass, std::vector<float>& out) const;
     void readRgba8(PassId pass, std::vector<std::uint8_t>& out) const;
 
+    // Cube A (must exist): one face (0..5, GL order +X, -X, +Y, -Y, +Z, -Z) of its latest output
+    // as RGBA floats, rows bottom first (row 0 is the face's t = 0); `size` gets the face side.
+    bool hasCube() const;
+    void readCubeFace(int face, std::vector<float>& out, int& size) const;
+
     struct Impl;
 
 private:

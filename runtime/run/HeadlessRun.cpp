@@ -1,5 +1,13 @@
 #include "run/HeadlessRun.h"
 
+#include <cmath>
+#include <span>
+
+#include "capture/WavFile.h"
+#include "core/Defaults.h"
+#include "core/TemporaryFiles.h"
+#include "run/SoundRender.h"
+
 #include <chrono>
 #include <memory>
 
@@ -200,6 +208,39 @@ Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) 
     headless.platform = o.eglPlatform;
     Result<std::shared_ptr<GlContext>> context = createHeadlessContext(headless);
     if (!context) return context.error();
+
+    // The Sound pass: rendered up front into the video's sound track, from the run's start time;
+    // other outputs carry no sound (`toyhost sound` writes it to an audio file).
+    std::optional<TemporaryFiles> soundTrack;
+    if (run.plan.manifest.sound) {
+        const double fps = o.fps.value_or(defaults::kFps);
+        const bool video = run.output && run.output->format() == OutputFormat::Video;
+        const double end = std::min(o.startTime + *o.frames / fps, defaults::kSoundSeconds);
+        if (video && *o.frames > 0 && end > o.startTime) {
+            SoundRenderDesc sound;
+            sound.seconds = end;
+            Result<std::vector<float>> stereo = renderSound(**context, run.plan, sound);
+            if (!stereo) return stereo.error();
+            const std::size_t skip =
+                std::min(stereo->size(), 2 * static_cast<std::size_t>(std::llround(o.startTime * defaults::kSampleRate)));
+            soundTrack.emplace("soundtrack", std::initializer_list<const char*>{"wav"});
+            if (!soundTrack->registerAll()) return Error("not started: toyhost is stopping", "interrupted");
+            if (Status wav = writeWav16((*soundTrack)[0], std::span<const float>(*stereo).subspan(skip),
+                                        static_cast<int>(defaults::kSampleRate));
+                !wav)
+                return wav.error();
+            run.options.video.audio = (*soundTrack)[0];
+        } else {
+            Diagnostic notice;
+            notice.severity = Severity::Notice;
+            notice.code = "sound.skipped";
+            notice.pass = "Sound";
+            notice.message = video ? "the Sound pass ends at 180 s, before this run starts: the video has no sound"
+                                   : "the Sound pass is not rendered: only a video --out (.mp4, .webm, .mov, .mkv) "
+                                     "carries sound; `toyhost sound` writes it to an audio file";
+            observer.notice(notice);
+        }
+    }
 
     PlayerDesc desc;
     desc.width = *o.width;

@@ -32,4 +32,12 @@ int inspectCommand(const std::vector<std::string>& files, const std::string& reg
 int newCommand(const std::string& dir, const std::string& passes, bool force);
 int mediaCommand(const std::vector<std::string>& folders);
 
+struct SoundCommandOptions {
+    std::string target, out;
+    double seconds = 0;
+    std::vector<std::string> mediaFolders;
+    bool quiet = false;
+};
+int soundCommand(const SoundCommandOptions& options);
+
 }  // namespace toyhost::cli

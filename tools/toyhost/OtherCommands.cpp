@@ -13,6 +13,11 @@
 #include "manifest/Starter.h"
 #include "manifest/StockMedia.h"
 #include "media/MediaResolver.h"
+#include "core/Defaults.h"
+#include "export/LoadShadertoy.h"
+#include "gl/HeadlessContext.h"
+#include "player/PlayerDesc.h"
+#include "run/SoundRender.h"
 
 namespace toyhost::cli {
 
@@ -117,6 +122,37 @@ int mediaCommand(const std::vector<std::string>& folders) {
         for (const std::string& folder : folders) std::printf(" %s", folder.c_str());
         std::printf("\n");
     }
+    return kExitOk;
+}
+
+}  // namespace toyhost::cli
+
+namespace toyhost::cli {
+
+// `toyhost sound`: the Sound pass rendered up front as the site does, written as audio.
+int soundCommand(const SoundCommandOptions& o) {
+    if (!(o.seconds > 0) || o.seconds > defaults::kMaxSoundSeconds)
+        return usage("--seconds must be more than 0 and at most " + std::to_string(int(defaults::kMaxSoundSeconds)));
+    Result<ManifestDesc> manifest = loadShadertoy(o.target);
+    if (!manifest) return fail(manifest.error());
+    if (!manifest->sound)
+        return fail(fileError(manifest->manifestPath.string(), "the shadertoy has no Sound pass (mainSound)", "sound.missing"));
+    MediaOptions media;
+    for (const std::string& folder : o.mediaFolders) media.folders.emplace_back(folder);
+    if (const char* folder = std::getenv("TOYHOST_MEDIA"); folder && *folder) media.folders.emplace_back(folder);
+    Result<PlayerPlan> plan = planPlayer(std::move(*manifest), media);
+    if (!plan) return fail(plan.error());
+    for (const Diagnostic& notice : plan->notices)
+        if (!o.quiet || notice.severity != Severity::Notice) printDiagnostic(notice);
+    Result<std::shared_ptr<GlContext>> context = createHeadlessContext();
+    if (!context) return fail(context.error());
+    SoundRenderDesc desc;
+    desc.seconds = o.seconds;
+    Result<std::vector<float>> stereo = renderSound(**context, *plan, desc);
+    if (!stereo) return fail(stereo.error());
+    if (Status written = writeSoundFile(o.out, *stereo); !written) return fail(written.error());
+    std::cerr << "toyhost: wrote " << o.out << " (" << o.seconds << " s, stereo, "
+              << static_cast<int>(defaults::kSampleRate) << " Hz)\n";
     return kExitOk;
 }
 

@@ -86,6 +86,17 @@ int main(int argc, char** argv) {
                       "Folder with real stock media files, by hash or name (repeatable; also $TOYHOST_MEDIA): the "
                       "list says which are found");
 
+    cli::SoundCommandOptions soundOptions;
+    soundOptions.seconds = defaults::kSoundSeconds;
+    CLI::App* sound = app.add_subcommand("sound", "Render a shadertoy's Sound pass (mainSound) to an audio file");
+    sound->add_option("shadertoy", soundOptions.target, "Manifest folder or file, or a Shadertoy JSON export")->required();
+    sound->add_option("--out", soundOptions.out, "Audio file: .wav (16-bit PCM), or .flac, .ogg, .opus, .mp3, .m4a through ffmpeg")
+        ->required();
+    sound->add_option("--seconds", soundOptions.seconds, "Length, as the site's 180 s by default")
+        ->default_val(defaults::kSoundSeconds);
+    sound->add_option("--media", soundOptions.mediaFolders, "Folder with real stock media files (repeatable)");
+    sound->add_flag("--quiet", soundOptions.quiet, "Hide notices (stand-ins)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -100,6 +111,7 @@ int main(int argc, char** argv) {
     }
 
     if (import->parsed()) return importCommand(importSource, importDir, importForce);
+    if (sound->parsed()) return onLargeStack([&] { return soundCommand(soundOptions); });
     if (inspect->parsed()) return inspectCommand(inspectFiles, regionText);
     if (create->parsed()) return newCommand(newDir, newPasses, newForce);
     if (media->parsed()) {

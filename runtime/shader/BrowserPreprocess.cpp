@@ -1,0 +1,114 @@
+#include "shader/BrowserPreprocess.h"
+
+#include <cctype>
+#include <span>
+#include <vector>
+
+#include "core/AtomicFile.h"
+#include "core/ChildProcess.h"
+#include "core/TemporaryFiles.h"
+
+namespace toyhost {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Lines the C preprocessor must not see (it has no such directives) are replaced by a marker
+// and put back afterwards.
+const char* kMarker = "toyhost_kept_directive_";
+
+bool isKeptDirective(std::string_view line) {
+    std::size_t i = 0;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i >= line.size() || line[i] != '#') return false;
+    ++i;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    for (std::string_view word : {"version", "extension", "pragma"})
+        if (line.compare(i, word.size(), word) == 0) return true;
+    return false;
+}
+
+std::vector<std::string_view> splitLines(std::string_view text) {
+    std::vector<std::string_view> lines;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) end = text.size();
+        lines.push_back(text.substr(start, end - start));
+        if (end == text.size()) break;
+        start = end + 1;
+    }
+    return lines;
+}
+
+// `# 12 "<stdin>" 2` -> 12; -1 for any other line.
+long lineMarker(std::string_view line) {
+    if (line.size() < 3 || line[0] != '#' || line[1] != ' ' || !std::isdigit(static_cast<unsigned char>(line[2])))
+        return -1;
+    long n = 0;
+    std::size_t i = 2;
+    while (i < line.size() && std::isdigit(static_cast<unsigned char>(line[i]))) n = n * 10 + (line[i++] - '0');
+    return (i < line.size() && line[i] == ' ' && i + 1 < line.size() && line[i + 1] == '"') ? n : -1;
+}
+
+}  // namespace
+
+Result<std::string> preprocessLikeBrowsers(std::string_view shader) {
+    if (!findExecutable("cpp"))
+        return Error("preprocessing as browsers do needs GCC's cpp, which was not found in PATH", "shader.preprocess");
+    std::vector<std::string> kept;
+    std::string input;
+    for (std::string_view line : splitLines(shader)) {
+        if (isKeptDirective(line)) {
+            input += std::string(kMarker) + std::to_string(kept.size());
+            kept.emplace_back(line);
+        } else {
+            input += line;
+        }
+        input += '\n';
+    }
+
+    TemporaryFiles temp("cpp", {"glsl", "log"});
+    if (!temp.registerAll()) return Error("not preprocessed: toyhost is stopping", "interrupted");
+    // GLSL ES 3.00's predefined macros; nothing of C's (-undef), no include paths, no warnings
+    // about what is valid GLSL but odd C (an apostrophe in a skipped block).
+    const std::vector<std::string> args = {"cpp", "-undef", "-nostdinc", "-w", "-x", "c", "-U__VERSION__",
+                                           "-D__VERSION__=300", "-DGL_ES=1", "-", "-o", temp[0].string()};
+    Result<ChildProcess> cpp = ChildProcess::spawn(args, temp[1]);
+    if (!cpp) return cpp.error();
+    if (Status written = cpp->write(std::as_bytes(std::span(input.data(), input.size()))); !written) {
+        (void)cpp->closeAndWait();
+        return Error("the preprocessor stopped reading: " + logTail(temp[1]), "shader.preprocess");
+    }
+    Result<int> exit = cpp->closeAndWait();
+    if (!exit || *exit != 0)
+        return Error("the preprocessor rejected the shader: " + logTail(temp[1]), "shader.preprocess");
+    Result<std::string> output = readTextFile(temp[0], std::size_t(64) << 20);
+    if (!output) return output.error();
+
+    // Line markers become #line; kept directives come back. The first kept line is #version,
+    // which must stay the first line: cpp puts its own markers before it.
+    std::string expanded;
+    bool versionWritten = false;
+    for (std::string_view line : splitLines(*output)) {
+        if (const long n = lineMarker(line); n >= 0) {
+            if (versionWritten) expanded += "#line " + std::to_string(n) + "\n";
+            continue;
+        }
+        if (const std::size_t at = line.find(kMarker); at != std::string_view::npos) {
+            const std::size_t index = std::stoul(std::string(line.substr(at + std::string_view(kMarker).size())));
+            if (index < kept.size()) {
+                expanded += kept[index];
+                expanded += '\n';
+                versionWritten = true;
+                continue;
+            }
+        }
+        if (!versionWritten && line.find_first_not_of(" \t") == std::string_view::npos) continue;
+        expanded += line;
+        expanded += '\n';
+    }
+    return expanded;
+}
+
+}  // namespace toyhost

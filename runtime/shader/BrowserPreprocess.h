@@ -1,0 +1,22 @@
+// BrowserPreprocess: expands an assembled shader's preprocessor directives the way a browser's
+// translator does, for the few shaders whose text Mesa's GLSL preprocessor rejects and WebGL
+// accepts: a macro argument such as `-.7071` pasted after a `-` (Mesa re-reads the text and sees
+// `--`; browsers keep the tokens apart), and `#if` inside a macro's arguments (Mesa: a syntax
+// error; browsers evaluate it). Uses GCC's C preprocessor (Debian's `cpp`), which works on tokens
+// and allows directives in macro arguments, with GLSL's predefined macros; the expanded text keeps
+// every line where it was (#line), so compiler messages still name the user's lines. Only run
+// when the driver's own compile failed: once per failed compile, never per frame. No GL needed.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "core/Result.h"
+
+namespace toyhost {
+
+// The expanded text of a GLSL ES 3.00 shader (`#version` first), or an error when `cpp` is missing
+// or rejects the text. `#version`, `#extension` and `#pragma` lines are kept as they are.
+Result<std::string> preprocessLikeBrowsers(std::string_view shader);
+
+}  // namespace toyhost
