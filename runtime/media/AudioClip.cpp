@@ -1,5 +1,7 @@
 #include "media/AudioClip.h"
 
+#include <cstring>
+
 #include <algorithm>
 #include <atomic>
 #include <bit>
@@ -50,7 +52,8 @@ Result<AudioClip> decodeAudioFile(const fs::path& path, int sampleRate) {
     const std::vector<std::string> args = {
         "ffmpeg", "-nostdin", "-hide_banner", "-v", "error", "-i", "file:" + (ec ? path : input).string(),
         "-map", "0:a:0", "-vn", "-sn", "-dn", "-t", secondsText(kMaxAudioSeconds + 1.0),
-        "-f", "f32le", "-ac", "1", "-ar", std::to_string(sampleRate), "-y", "file:" + temp[0].string()};
+        "-c:a", "pcm_f32le", "-f", "wav", "-bitexact", "-map_metadata", "-1", "-ar", std::to_string(sampleRate), "-y",
+        "file:" + temp[0].string()};
     Result<ChildProcess> ffmpeg = ChildProcess::spawn(args, temp[1]);
     if (!ffmpeg) return inFile(name, ffmpeg.error());
     Result<int> exit = ffmpeg->closeAndWait();
@@ -62,9 +65,30 @@ Result<AudioClip> decodeAudioFile(const fs::path& path, int sampleRate) {
     if (!exit) return failed(exit.error().first().message);
     if (*exit != 0) return failed("ffmpeg failed (exit code " + std::to_string(*exit) + ")");
 
-    const std::uintmax_t bytes = fs::file_size(temp[0], ec);
-    if (ec) return failed("ffmpeg wrote no samples");
-    const std::uintmax_t count = bytes / sizeof(float);
+    // The file's own channels (ffmpeg's down-mix depends on whether the file declares a channel
+    // layout), mixed down here as WebAudio mixes an analyser's input (speakers rules).
+    Result<std::string> wav = readTextFile(temp[0], std::size_t(4) << 30);
+    if (!wav) return failed("ffmpeg wrote no samples");
+    const std::string& bytes = *wav;
+    auto u32 = [&](std::size_t at) {
+        return std::uint32_t(std::uint8_t(bytes[at])) | std::uint32_t(std::uint8_t(bytes[at + 1])) << 8 |
+               std::uint32_t(std::uint8_t(bytes[at + 2])) << 16 | std::uint32_t(std::uint8_t(bytes[at + 3])) << 24;
+    };
+    int channels = 0;
+    std::size_t dataAt = 0, dataBytes = 0;
+    for (std::size_t at = 12; at + 8 <= bytes.size();) {
+        const std::uint32_t size = u32(at + 4);
+        if (bytes.compare(at, 4, "fmt ") == 0 && at + 12 <= bytes.size())
+            channels = std::uint8_t(bytes[at + 10]) | std::uint8_t(bytes[at + 11]) << 8;
+        if (bytes.compare(at, 4, "data") == 0) {
+            dataAt = at + 8;
+            dataBytes = std::min<std::size_t>(size, bytes.size() - dataAt);
+            break;
+        }
+        at += 8 + size + (size & 1);
+    }
+    if (channels < 1 || dataAt == 0) return failed("ffmpeg's output has no audio samples");
+    const std::uintmax_t count = dataBytes / sizeof(float) / static_cast<std::size_t>(channels);
     const auto limit = static_cast<std::uintmax_t>(kMaxAudioSeconds * sampleRate);
     if (count > limit)
         return fileError(name,
@@ -74,12 +98,24 @@ Result<AudioClip> decodeAudioFile(const fs::path& path, int sampleRate) {
                          "audio.too-long");
     if (count == 0) return failed("the file has no audio samples");
 
+    // WebAudio's down-mix to mono: stereo (L+R)/2, quad (L+R+SL+SR)/4, 5.1
+    // sqrt(1/2)(L+R) + C + 1/2(SL+SR); anything else here: the mean of the channels.
+    std::vector<float> weights(static_cast<std::size_t>(channels), 1.0f / static_cast<float>(channels));
+    if (channels == 6) weights = {0.70710678f, 0.70710678f, 1.0f, 0.0f, 0.5f, 0.5f};
     AudioClip clip;
     clip.sampleRate = sampleRate;
     clip.mono.resize(static_cast<std::size_t>(count));
-    std::ifstream in(temp[0], std::ios::binary);
-    in.read(reinterpret_cast<char*>(clip.mono.data()), static_cast<std::streamsize>(count * sizeof(float)));
-    if (!in) return fileError(name, "cannot decode audio: reading ffmpeg's output failed", "io.read");
+    const char* data = bytes.data() + dataAt;
+    for (std::size_t i = 0; i < clip.mono.size(); ++i) {
+        float sum = 0.0f;
+        for (int c = 0; c < channels; ++c) {
+            float v = 0.0f;
+            std::memcpy(&v, data + (i * static_cast<std::size_t>(channels) + static_cast<std::size_t>(c)) * sizeof(float),
+                        sizeof(float));
+            sum += weights[static_cast<std::size_t>(c)] * v;
+        }
+        clip.mono[i] = sum;
+    }
     return clip;
 }
 
