@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <string_view>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -59,7 +60,10 @@ void requestWebGlDriverBehaviour() {
 }
 
 DriverStartupQuiet::DriverStartupQuiet() {
-    if (!zeroInitSetByToyhost) return;
+    // Whoever set it (toyhost, or a parent toyhost whose environment this process inherited),
+    // Mesa announces the override on stderr.
+    const char* zeroInit = std::getenv("glsl_zero_init");
+    if (!zeroInitSetByToyhost && !(zeroInit && std::string_view(zeroInit) == "true")) return;
     std::fflush(stderr);
     const int null = open("/dev/null", O_WRONLY | O_CLOEXEC);
     if (null < 0) return;

@@ -18,8 +18,8 @@ namespace toyhost {
 // user set in the environment is kept.
 void requestWebGlDriverBehaviour();
 
-// While it lives, the driver's own stderr lines are dropped when toyhost set glsl_zero_init
-// itself: Mesa prints "ATTENTION: default value of option glsl_zero_init overridden by
+// While it lives, the driver's own stderr lines are dropped when glsl_zero_init is "true" (set by
+// toyhost, or inherited from a toyhost that started this process): Mesa prints "ATTENTION: default value of option glsl_zero_init overridden by
 // environment." when a display initialises, which would break toyhost's one-message errors.
 // Wrap only the calls that initialise a display (nothing else writes then).
 class DriverStartupQuiet {

@@ -335,7 +335,7 @@ private:
         static const std::vector<std::string> sourceKeys{"buffer", "texture", "media", "keyboard", "cubemap",
                                                          "volume", "video", "music", "webcam", "mic"};
         std::set<std::string> known(sourceKeys.begin(), sourceKeys.end());
-        known.insert({"filter", "wrap", "vflip"});
+        known.insert({"filter", "wrap", "vflip", "kind"});
         rejectUnknownFields(value, known, where, problems_);
         int sources = 0;
         for (const std::string& key : sourceKeys) sources += value.contains(key);
@@ -348,6 +348,11 @@ private:
             problems_.add(where,
                           "needs exactly one of \"buffer\", \"texture\", \"media\", \"keyboard\", \"cubemap\", "
                           "\"volume\", \"video\", \"music\", \"webcam\", \"mic\"",
+                          "manifest.value", pass.id, index);
+            return;
+        }
+        if (value.contains("kind") && !value.contains("media")) {
+            problems_.add(where, "\"kind\" goes with \"media\" only (it says what a stock id the table does not know is)",
                           "manifest.value", pass.id, index);
             return;
         }
@@ -401,12 +406,30 @@ private:
             channel.kind = ChannelKind::StockMedia;
             channel.media = *media;
             mediaRefs_.insert(*media);
-            if (const StockInputInfo* input = findStockInput(*media)) {
-                // A stock cubemap, volume, video or music: its kind comes from the table.
-                channel.kind = input->form == StockInputForm::Cubemap  ? ChannelKind::Cubemap
-                               : input->form == StockInputForm::Volume ? ChannelKind::Volume
-                               : input->form == StockInputForm::Video  ? ChannelKind::Video
-                                                                       : ChannelKind::Music;
+            // A stock cubemap, volume, video or music: its kind comes from the table, or from
+            // "kind" for an id the table does not know (an import of a newer stock input).
+            std::optional<ChannelKind> kind;
+            if (const StockInputInfo* input = findStockInput(*media))
+                kind = input->form == StockInputForm::Cubemap  ? ChannelKind::Cubemap
+                       : input->form == StockInputForm::Volume ? ChannelKind::Volume
+                       : input->form == StockInputForm::Video  ? ChannelKind::Video
+                                                               : ChannelKind::Music;
+            if (auto named = readString(value, "kind", where)) {
+                static const std::vector<std::string> kinds{"texture", "cubemap", "volume", "video", "music"};
+                const auto at = std::find(kinds.begin(), kinds.end(), *named);
+                if (at == kinds.end()) {
+                    problems_.add(where,
+                                  "kind " + quote(*named) + didYouMean(*named, kinds) +
+                                      " is not one of texture, cubemap, volume, video, music",
+                                  "manifest.value", pass.id, index);
+                    return;
+                }
+                static const ChannelKind byName[] = {ChannelKind::StockMedia, ChannelKind::Cubemap, ChannelKind::Volume,
+                                                     ChannelKind::Video, ChannelKind::Music};
+                kind = byName[at - kinds.begin()];
+            }
+            if (kind && *kind != ChannelKind::StockMedia) {
+                channel.kind = *kind;
                 readSampler(pass.id, index, channel, value, where);
                 return;
             }

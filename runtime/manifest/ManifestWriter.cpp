@@ -37,9 +37,14 @@ ordered_json channelJson(const ChannelDesc& channel) {
         case ChannelKind::Volume:
         case ChannelKind::Video:
         case ChannelKind::Music:
-            if (!channel.file.empty()) out[channelKindName(channel.kind)] = channel.file.string();
-            else if (const StockInputInfo* stock = findStockInput(channel.media)) out["media"] = stockInputPath(*stock);
-            else out["media"] = channel.media;
+            if (!channel.file.empty()) {
+                out[channelKindName(channel.kind)] = channel.file.string();
+            } else if (const StockInputInfo* stock = findStockInput(channel.media)) {
+                out["media"] = stockInputPath(*stock);
+            } else {
+                out["media"] = channel.media;  // an id the table does not know: say what it is
+                out["kind"] = channelKindName(channel.kind);
+            }
             break;
         case ChannelKind::Webcam: out["webcam"] = true; break;
         case ChannelKind::Mic: out["mic"] = true; break;

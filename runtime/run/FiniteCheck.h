@@ -27,7 +27,7 @@ public:
     bool reported(PassId pass) const { return reported_[static_cast<int>(pass)]; }
 
 private:
-    bool reported_[kBufferCount + 1] = {};
+    bool reported_[static_cast<int>(PassId::Sound) + 1] = {};
 };
 
 }  // namespace toyhost

@@ -3,6 +3,8 @@
 #include "capture/FileSinks.h"
 #include "core/Defaults.h"
 
+#include <algorithm>
+
 namespace toyhost {
 
 Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSettings& settings, const Player& player) {
@@ -13,6 +15,13 @@ Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSetti
     recorder->width_ = output.width;
     recorder->height_ = output.height;
     recorder->format_ = output.format;
+    if (settings.pass == PassId::CubeA) {
+        // Cube A: the six faces side by side in GL order (+X, -X, +Y, -Y, +Z, -Z), read
+        // synchronously (see captureCube).
+        recorder->width_ = 6 * defaults::kCubeBufferSize;
+        recorder->height_ = defaults::kCubeBufferSize;
+        recorder->format_ = PixelFormat::Rgba32f;
+    }
 
     switch (settings.output.format()) {
         case OutputFormat::Png:
@@ -34,7 +43,7 @@ Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSetti
                         : settings.encoderThreads > 0 ? settings.encoderThreads
                                                       : defaultEncoderThreads();
     recorder->pool_ = std::make_unique<EncoderPool>(*recorder->sink_, threads, settings.memoryCapBytes);
-    if (!settings.synchronous) {
+    if (!settings.synchronous && settings.pass != PassId::CubeA) {
         Result<ReadbackRing> ring = ReadbackRing::create(recorder->width_, recorder->height_, recorder->format_);
         if (!ring) return ring.error();
         recorder->ring_.emplace(std::move(*ring));
@@ -67,7 +76,26 @@ RecorderSettings recorderSettings(const PreparedRun& run, RunActivity* activity)
     return settings;
 }
 
+Status FrameRecorder::captureCube(const Player& player, int frame) {
+    Result<std::optional<std::vector<std::byte>>> pixels = takeBuffer(frameBytes(width_, height_, format_));
+    if (!pixels) return pixels.error();
+    if (!*pixels) return okStatus();  // dropped
+    float* strip = reinterpret_cast<float*>((*pixels)->data());
+    int size = 0;
+    for (int face = 0; face < 6; ++face) {
+        player.readCubeFace(face, cubeFace_, size);
+        if (size != height_) return Error("capture: Cube A's faces are not " + std::to_string(height_) + " wide", "capture.size");
+        for (int y = 0; y < size; ++y)
+            std::copy_n(cubeFace_.begin() + static_cast<std::ptrdiff_t>(y) * size * 4, size * 4,
+                        strip + (static_cast<std::ptrdiff_t>(y) * width_ + static_cast<std::ptrdiff_t>(face) * size) * 4);
+    }
+    ++captured_;
+    scanFloatFrame(frame, **pixels);
+    return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(**pixels)});
+}
+
 Status FrameRecorder::capture(const Player& player, int frame) {
+    if (settings_.pass == PassId::CubeA) return captureCube(player, frame);
     const PassOutput output = player.output(settings_.pass);
     if (output.width != width_ || output.height != height_)
         return Error("capture: the canvas changed size during a recording (" + std::to_string(width_) + "x" +

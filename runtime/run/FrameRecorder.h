@@ -78,6 +78,10 @@ public:
     ~FrameRecorder();
 
 private:
+    // Cube A's six faces as one strip, read synchronously (a rare capture: no readback ring).
+    Status captureCube(const Player& player, int frame);
+    std::vector<float> cubeFace_;
+
     FrameRecorder() = default;
     Status collectOldest();
     void scanFloatFrame(int frame, const std::vector<std::byte>& pixels);

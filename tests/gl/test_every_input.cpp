@@ -106,6 +106,28 @@ TEST_F(EveryInput, CubeAFacesCarryTheSitesRaysAndGlSamplesThemBackByDirection) {
     }
 }
 
+TEST_F(EveryInput, CapturingCubeAWritesItsSixFacesSideBySideInGlOrder) {
+    const std::string cube = std::string(kFaceOfDirection) +
+                             "void mainCubemap(out vec4 c, in vec2 f, in vec3 o, in vec3 d) { c = vec4(d, faceOf(d)); }\n";
+    const fs::path dir = shadertoyFolder(
+        "cube_capture", {{"cube.glsl", cube}, {"image.glsl", "void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0); }\n"}},
+        R"({"passes": {"Cube A": {"source": "cube.glsl"}, "Image": {"source": "image.glsl"}}})");
+    auto run = runToyhost("run '" + dir.string() + "' --size 8x8 --quiet --capture-pass 'Cube A' --out '" +
+                          (dir / "faces.exr").string() + "'");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    Result<ImageF32> strip = readExr(dir / "faces.exr");
+    ASSERT_TRUE(strip) << strip.error().text();
+    ASSERT_EQ(strip->width, 6 * 1024);
+    ASSERT_EQ(strip->height, 1024);
+    for (int f = 0; f < 6; ++f)
+        for (auto [x, y] : {std::pair{0, 0}, std::pair{1023, 0}, std::pair{512, 700}, std::pair{1023, 1023}}) {
+            const float* p = &strip->rgba[(static_cast<std::size_t>(y) * strip->width + f * 1024 + x) * 4];
+            const std::array<float, 3> want = siteRay(f, x, y, 1024);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], want[c], 2e-3) << "face " << f << " " << x << "," << y;
+            EXPECT_EQ(p[3], float(f));
+        }
+}
+
 TEST_F(EveryInput, CubeAReadsItsPreviousFrameAndImageItsCurrentOne) {
     const std::string cube =
         "void mainCubemap(out vec4 c, in vec2 f, in vec3 o, in vec3 d) { c = texture(iChannel0, d) + vec4(1.0); }\n";

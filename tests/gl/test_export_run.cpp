@@ -394,9 +394,9 @@ TEST(ExportImportErrors, BadExportsAreRefusedWithoutAManifest) {
     json noImage = syntheticExport();
     auto& passes = noImage["Shader"]["renderpass"];
     passes.erase(passes.begin());
-    json cubemap = syntheticExport();
-    cubemap["Shader"]["renderpass"].push_back(
-        json::parse(R"({"inputs": [], "outputs": [{"id": 41, "channel": 0}], "name": "Cube A", "type": "cubemap",
+    json unknownPass = syntheticExport();
+    unknownPass["Shader"]["renderpass"].push_back(
+        json::parse(R"({"inputs": [], "outputs": [{"id": 41, "channel": 0}], "name": "Holo", "type": "hologram",
                         "code": "// c\n"})"));
     json unknownBuffer = syntheticExport();
     passNamed(unknownBuffer, "Image")["inputs"][0]["id"] = 999;
@@ -405,7 +405,7 @@ TEST(ExportImportErrors, BadExportsAreRefusedWithoutAManifest) {
     const std::vector<BadExport> cases = {
         {"invalid_json", R"({"Shader": {"renderpass": [)", {"invalid JSON"}},
         {"no_image", noImage.dump(), {"no image pass"}},
-        {"cubemap", cubemap.dump(), {"renderpass[4].type", "Cube A", "not supported"}},
+        {"unknown_pass", unknownPass.dump(), {"renderpass[4].type", "unknown pass type \"hologram\""}},
         {"unknown_buffer", unknownBuffer.dump(), {"Image / iChannel0", "unknown id 999"}},
         {"not_an_export", R"({"foo": 1})", {}},
     };
@@ -424,7 +424,7 @@ TEST(ExportImportErrors, BadExportsAreRefusedWithoutAManifest) {
     }
 }
 
-TEST(ExportImportErrors, UnsupportedInputIsImportedUnboundWithANotice) {
+TEST(ExportImportErrors, AMediaInputIsImportedAndRunsOnAStandInWithANotice) {
     const fs::path dir = freshOutputDir("export-run/import-notice");
     json document = syntheticExport();
     passNamed(document, "Buffer A")["inputs"].push_back(json::parse(
@@ -433,11 +433,14 @@ TEST(ExportImportErrors, UnsupportedInputIsImportedUnboundWithANotice) {
     writeFile(dir / "toy.json", document.dump(2));
     auto import = runToyhost("import " + quoted(dir / "toy.json") + " " + quoted(dir / "toy"));
     ASSERT_EQ(import.exitCode, 0) << import.output;
-    EXPECT_NE(import.output.find("Buffer A / iChannel2: video inputs are not supported"), std::string::npos) << import.output;
     const json manifest = json::parse(readFile(dir / "toy" / "manifest.json"));
-    EXPECT_FALSE(manifest["passes"]["Buffer A"].contains("channels")) << manifest.dump();
-    auto run = runExport(dir / "toy", dir / "out");
+    // An id the stock table does not know keeps its kind in the manifest.
+    EXPECT_EQ(manifest["passes"]["Buffer A"]["channels"]["iChannel2"]["media"], "/media/a/video.webm") << manifest.dump();
+    EXPECT_EQ(manifest["passes"]["Buffer A"]["channels"]["iChannel2"]["kind"], "video") << manifest.dump();
+    auto run = runToyhost("run " + quoted(dir / "toy") + " --size 32x16 --frames 2 --out " + quoted(dir / "out" / "f_%d.png"));
     EXPECT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("Buffer A / iChannel2: video '/media/a/video.webm'"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("ATTENTION"), std::string::npos) << run.output;
 }
 
 }  // namespace

@@ -158,7 +158,7 @@ TEST(ManifestErrors, ChannelNeedsExactlyOneSource) {
 TEST(ManifestErrors, UnknownChannelField) {
     ManifestFolder f;
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": "A", "srgb": false}})"))),
-              f.line(kImageCh0, R"(unknown field "srgb" (known: buffer, cubemap, filter, keyboard, media, mic, music, texture, vflip, video, volume, webcam, wrap))"));
+              f.line(kImageCh0, R"(unknown field "srgb" (known: buffer, cubemap, filter, keyboard, kind, media, mic, music, texture, vflip, video, volume, webcam, wrap))"));
 }
 
 TEST(ManifestErrors, BufferThatDoesNotExist) {

@@ -239,7 +239,7 @@ TEST(PortToolsManifestNearMiss, MisspelledChannelFieldSuggestsBuffer) {
     EXPECT_EQ(errorOf(result),
               // One typo, one message: the missing source is the misspelt "buffer".
               f.line(kImageCh0, R"(unknown field "bufer" (did you mean "buffer"?) )"
-                                R"((known: buffer, cubemap, filter, keyboard, media, mic, music, texture, vflip, video, volume, webcam, wrap))"));
+                                R"((known: buffer, cubemap, filter, keyboard, kind, media, mic, music, texture, vflip, video, volume, webcam, wrap))"));
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error().first().code, "manifest.unknown-field");
 }

@@ -22,7 +22,7 @@ bool parseSize(const std::string& text, int& w, int& h) {
 }
 
 std::optional<PassId> parsePass(const std::string& text) {
-    for (PassId id : {PassId::BufferA, PassId::BufferB, PassId::BufferC, PassId::BufferD, PassId::Image})
+    for (PassId id : {PassId::BufferA, PassId::BufferB, PassId::BufferC, PassId::BufferD, PassId::CubeA, PassId::Image})
         if (text == passName(id)) return id;
     if (text.size() == 1 && text[0] >= 'A' && text[0] <= 'D') return bufferPass(text[0] - 'A');
     return std::nullopt;
@@ -93,11 +93,17 @@ void RunCommand::define(CLI::App& run) {
     run.add_flag("--finish-each-frame", options_.finishEachFrame,
                  "Wait for the GPU after every frame (benchmarks; see docs/performance.md)");
     run.add_option("--capture-every", captureEvery_, "Capture frames n with n % K == 0, and the last frame (default 1)");
-    run.add_option("--capture-pass", capturePass_, "Pass to capture: Image (default), \"Buffer A\" .. \"Buffer D\" (or A..D)");
+    run.add_option("--capture-pass", capturePass_,
+                   "Pass to capture: Image (default), \"Buffer A\" .. \"Buffer D\" (or A..D), or \"Cube A\" (its six "
+                   "faces side by side, +X -X +Y -Y +Z -Z, each 1024 wide)");
     run.add_option("--mouse", mouse_, "Press the button at pixel X,Y (origin bottom-left) on frame 0 and hold it");
     run.add_option("--mouse-script", options_.mouseScript, "JSON list of timed mouse events (see README)");
     run.add_option("--key-script", options_.keyScript, "JSON list of timed key events (see README)");
     run.add_option("--media-file", mediaFiles_, "Use FILE for a stock media id: ID=FILE (repeatable)");
+    run.add_option("--webcam", options_.media.webcam,
+                   "What webcam channels show: a V4L2 camera (/dev/video0) or a video file (default: a moving stand-in)");
+    run.add_option("--mic", options_.media.mic,
+                   "What mic channels hear: an audio file (default: the spectrum the site shows without audio)");
     run.add_option("--media", mediaFolders_,
                    "Folder with real stock media files, by hash or name (repeatable; also $TOYHOST_MEDIA)");
     run.add_option("--date", date_, "iDate at frame 0, YYYY-MM-DDTHH:MM:SS (default: now, local time)");
@@ -147,7 +153,7 @@ int RunCommand::execute() {
     }
     if (!capturePass_.empty()) {
         std::optional<PassId> pass = parsePass(capturePass_);
-        if (!pass) return usage("--capture-pass " + capturePass_ + ": expected Image or \"Buffer A\" .. \"Buffer D\"");
+        if (!pass) return usage("--capture-pass " + capturePass_ + ": expected Image, \"Buffer A\" .. \"Buffer D\" or \"Cube A\"");
         o.capturePass = *pass;
     }
     if (!mouse_.empty()) {
