@@ -143,10 +143,17 @@ Result<ChannelImages> ChannelImages::load(const ManifestDesc& manifest, const Me
                     const bool video = channel.kind == ChannelKind::Video;
                     const bool stream = channel.media.rfind("http", 0) == 0;
                     const std::string what = stream ? "music stream" : video ? "video" : "music";
-                    standInNotice(notAvailable((stock ? "stock " : "") + what + " '" + label + "'", channel.media,
-                                               video ? "a moving stand-in pattern"
-                                                     : "the synthetic spectrum the site shows when audio is unavailable"),
-                                  label);
+                    if (stream)
+                        standInNotice("music stream " + channel.media +
+                                          " is not played (toyhost does not stream from the web); using the "
+                                          "synthetic spectrum the site shows when audio is unavailable. Give a file "
+                                          "with --media-file \"" + channel.media + "=FILE\"",
+                                      "music stream");
+                    else
+                        standInNotice(notAvailable((stock ? "stock " : "") + what + " '" + label + "'", channel.media,
+                                                   video ? "a moving stand-in pattern"
+                                                         : "the synthetic spectrum the site shows when audio is unavailable"),
+                                      label);
                 }
                 set.timed_[key] = std::move(input);
                 continue;

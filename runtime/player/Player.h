@@ -93,6 +93,8 @@ public:
         renderer_->publishPendingDraws();
     }
     void readRgba8(PassId pass, std::vector<std::uint8_t>& out) const { renderer_->readRgba8(pass, out); }
+    // Passes that compiled only after browser-style preprocessing (notices to print).
+    const std::vector<Diagnostic>& compileNotices() const { return renderer_->compileNotices(); }
     // Cube A's latest faces (see Renderer::readCubeFace); hasCube() says whether there is one.
     bool hasCube() const { return renderer_->hasCube(); }
     void readCubeFace(int face, std::vector<float>& out, int& size) const { renderer_->readCubeFace(face, out, size); }

@@ -50,12 +50,16 @@ Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassD
     inputs.code = pass.code;
     const AssembledShader fragment = assembleFragmentShader(inputs);
     ProgramBuild build = buildProgram(fullscreenVertexShader(), fragment.text);
+    bool preprocessed = false;
     if (!build.ok && build.failedStage == ProgramBuild::Stage::Fragment) {
         // Browsers preprocess the text themselves; where Mesa's preprocessor is the one that
         // refuses it, their expansion compiles. The driver's own messages stand otherwise.
         if (Result<std::string> expanded = preprocessLikeBrowsers(fragment.text); expanded) {
             ProgramBuild retry = buildProgram(fullscreenVertexShader(), *expanded);
-            if (retry.ok) build = std::move(retry);
+            if (retry.ok) {
+                build = std::move(retry);
+                preprocessed = true;
+            }
         }
     }
     if (!build.ok) {
@@ -83,6 +87,7 @@ Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassD
     PassProgram made;
     made.uniforms = locate(build.program.id());
     made.program = std::move(build.program);
+    made.browserPreprocessed = preprocessed;
     return made;
 }
 

@@ -26,6 +26,9 @@ struct UniformLocations {
 struct PassProgram {
     GlProgram program;
     UniformLocations uniforms;
+    // Compiled from the browser-style preprocessed text (shader/BrowserPreprocess.h) because the
+    // driver refused the original.
+    bool browserPreprocessed = false;
 };
 
 // Builds `pass` of `manifest` (Common included when the manifest has one); the Sound pass

@@ -110,12 +110,23 @@ struct Renderer::Impl {
     RunActivity* activity = nullptr;
     bool watchDraws = false;
     PendingPasses pending;  // with watchDraws
+    std::vector<Diagnostic> compileNotices;
 
     // Compiles `pass`, telling the watchdog which pass is compiling.
     Result<PassProgram> compile(const ManifestDesc& manifest, const PassDesc& pass) {
         if (activity) activity->begin(RunActivity::Phase::Compiling, passName(pass.id));
         Result<PassProgram> program = compilePassProgram(manifest, pass);
         if (activity) activity->idle();
+        if (program && program->browserPreprocessed) {
+            Diagnostic notice;
+            notice.severity = Severity::Notice;
+            notice.code = "shader.preprocessed";
+            notice.pass = passName(pass.id);
+            notice.file = pass.sourceName;
+            notice.message = "Mesa's GLSL preprocessor refused this pass; it compiled after preprocessing the way "
+                             "browsers do";
+            compileNotices.push_back(std::move(notice));
+        }
         return program;
     }
 
@@ -459,6 +470,8 @@ void Renderer::takeBuffersFrom(Renderer& old) {
 }
 
 void Renderer::finish() { glFinish(); }
+
+const std::vector<Diagnostic>& Renderer::compileNotices() const { return impl_->compileNotices; }
 
 PassOutput Renderer::output(PassId pass) const {
     if (pass == PassId::Image)

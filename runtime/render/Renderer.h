@@ -94,6 +94,10 @@ public:
     void readBufferSlot(int index, int slot, std::vector<float>& out) const;
     void writeBufferSlot(int index, int slot, std::span<const float> rgba);
 
+    // A notice per pass that compiled only after preprocessing as browsers do (from create and
+    // replaceProgram), for the driver to print.
+    const std::vector<Diagnostic>& compileNotices() const;
+
     int width() const { return width_; }
     int height() const { return height_; }
 

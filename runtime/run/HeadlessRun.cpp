@@ -267,6 +267,7 @@ Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) 
     }
     if (!made) return made.error();
     Player& player = **made;
+    for (const Diagnostic& notice : player.compileNotices()) observer.notice(notice);
 
     RunReport report;
     Status round = renderFrames(player, run, observer, report, started);

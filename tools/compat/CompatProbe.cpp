@@ -98,6 +98,7 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
         return result;
     }
     result.compiled = true;
+    for (const Diagnostic& notice : (*player)->compileNotices()) result.notices.push_back(formatDiagnostic(notice));
 
     // Like a visitor, the probe drags the mouse across the canvas from frame 1 on, so shaders
     // that show nothing until clicked get their click. Time and date come from the same fixed-step
