@@ -107,6 +107,14 @@ TEST_F(PortTools, MediaListsEveryTableEntryAndWhichFilesAreFound) {
         EXPECT_NE(line.find(std::to_string(info.width) + "x" + std::to_string(info.height)), std::string::npos) << line;
         EXPECT_EQ(line.find("found") != std::string::npos, &info == &lichen) << line;
     }
+    // The cubemaps, volumes, videos and music, with their kind.
+    for (const StockInputInfo& info : stockInputTable()) {
+        const auto at = list.output.find(stockInputPath(info));
+        ASSERT_NE(at, std::string::npos) << info.name;
+        const std::string line = list.output.substr(list.output.rfind('\n', at) + 1, at - list.output.rfind('\n', at) - 1);
+        EXPECT_EQ(line.rfind(std::string(info.name), 0), 0u) << line;
+        EXPECT_NE(line.find(stockInputFormName(info.form)), std::string::npos) << line;
+    }
 }
 
 // ---- manifest defaults ------------------------------------------------------------------------

@@ -10,6 +10,7 @@
 #include "DiagnosticText.h"
 #include "ManifestFolder.h"
 #include "graph/PassGraph.h"
+#include "manifest/ManifestWriter.h"
 #include "manifest/StockMedia.h"
 #include "shader/ShaderAssembly.h"
 
@@ -298,4 +299,47 @@ TEST(EveryPassManifest, MediaFilesMustExistAndDevicesMustBeTrue) {
     ASSERT_FALSE(vflip);
     EXPECT_EQ(toyhost::testing::plainText(vflip.error()), f.line(R"(passes."Image".channels.iChannel1)",
                                            R"("vflip" applies only to image textures, cubemaps and videos, not mic channels)"));
+}
+
+TEST(EveryPassManifest, AnImportedManifestOfEveryKindReadsBackTheSame) {
+    ManifestFolder f;
+    f.write("cube_a.glsl", "void mainCubemap(out vec4 c, in vec2 f, in vec3 o, in vec3 d) { c = vec4(d, 1.0); }\n");
+    f.write("sound.glsl", "vec2 mainSound(int s, float t) { return vec2(0.0); }\n");
+    f.write("clip.mp4", "x");
+    const Result<ManifestDesc> first = f.parse(R"({"passes": {
+        "Cube A": {"source": "cube_a.glsl", "channels": {"iChannel0": {"buffer": "Cube A"}}},
+        "Sound": {"source": "sound.glsl"},
+        "Image": {"source": "image.glsl", "channels": {
+            "iChannel0": {"media": "Forest Blurred"},
+            "iChannel1": {"video": "clip.mp4", "filter": "nearest"},
+            "iChannel2": {"media": "/media/a/newvideo.webm", "kind": "video"},
+            "iChannel3": {"mic": true}}}}})");
+    ASSERT_TRUE(first) << first.error().text();
+    const std::string written = manifestJson(*first);
+    const Result<ManifestDesc> second = f.parse(written);
+    ASSERT_TRUE(second) << second.error().text() << "\n" << written;
+    ASSERT_TRUE(second->sound);
+    ASSERT_EQ(second->passes.size(), first->passes.size());
+    for (std::size_t p = 0; p < first->passes.size(); ++p)
+        for (int c = 0; c < kChannelCount; ++c) {
+            const ChannelDesc& a = first->passes[p].channels[c];
+            const ChannelDesc& b = second->passes[p].channels[c];
+            EXPECT_EQ(a.kind, b.kind) << p << "/" << c << "\n" << written;
+            EXPECT_EQ(a.samplerType, b.samplerType) << p << "/" << c;
+            EXPECT_EQ(a.file, b.file) << p << "/" << c;
+            EXPECT_EQ(a.sampler.filter, b.sampler.filter) << p << "/" << c;
+            EXPECT_EQ(a.sampler.vflip, b.sampler.vflip) << p << "/" << c;
+        }
+    EXPECT_EQ(second->passes.back().channels[2].kind, ChannelKind::Video);
+    EXPECT_EQ(second->passes.back().channels[0].kind, ChannelKind::Cubemap);
+}
+
+TEST(EveryPassManifest, KindGoesWithMediaOnlyAndNamesAKnownKind) {
+    ManifestFolder f;
+    const Result<ManifestDesc> bad = f.parse(imageWithChannels(R"({"iChannel0": {"media": "/media/a/x.bin", "kind": "volum"},
+                                                                   "iChannel1": {"buffer": "A", "kind": "video"}})"));
+    ASSERT_FALSE(bad);
+    const std::string text = toyhost::testing::plainText(bad.error());
+    EXPECT_TRUE(has(text, R"(kind "volum" (did you mean "volume"?) is not one of texture, cubemap, volume, video, music)")) << text;
+    EXPECT_TRUE(has(text, R"(iChannel1: "kind" goes with "media" only)")) << text;
 }

@@ -114,9 +114,21 @@ int mediaCommand(const std::vector<std::string>& folders) {
         std::printf("%-18s %-6s %-10s %-3d %-6s %s\n", std::string(info.name).c_str(), kindName(info.kind),
                     size.c_str(), info.channels, file ? "found" : "-", stockMediaPath(info).c_str());
     }
+    // Cubemaps, volumes, videos and music: a cubemap is found by its face 0 file (its other faces
+    // are <hash>_1 .. <hash>_5 beside it).
+    std::printf("\n%-28s %-8s %-10s %-3s %-6s %s\n", "NAME", "KIND", "SIZE", "CH", "FILE", "ID");
+    for (const StockInputInfo& info : stockInputTable()) {
+        const std::string size = info.form == StockInputForm::Volume ? std::to_string(info.size) + "^3"
+                                 : info.form == StockInputForm::Cubemap ? "6 faces"
+                                                                        : "-";
+        const std::optional<std::filesystem::path> file = resolver.findFile(stockInputPath(info));
+        std::printf("%-28s %-8s %-10s %-3d %-6s %s\n", std::string(info.name).c_str(), stockInputFormName(info.form),
+                    size.c_str(), info.channels, file ? "found" : "-", stockInputPath(info).c_str());
+    }
     std::printf("\nBind one by name or id: \"iChannel0\": {\"media\": \"Abstract 3\"}. Without a real file (FILE -) a\n"
-                "deterministic stand-in of the same size and channels is used; give the file with --media DIR,\n"
-                "$TOYHOST_MEDIA or --media-file ID=FILE.\n");
+                "deterministic stand-in of the same size and channels is used (cubemaps: a sky, volumes: noise,\n"
+                "videos: a moving pattern, music: the spectrum the site shows without audio); give the file with\n"
+                "--media DIR, $TOYHOST_MEDIA or --media-file ID=FILE.\n");
     if (!folders.empty()) {
         std::printf("Searched:");
         for (const std::string& folder : folders) std::printf(" %s", folder.c_str());
