@@ -51,6 +51,19 @@ if [ -f ../shared/shadertoys/7tSSDD/7tSSDD.json ]; then
     "$toyhost" import ../shared/shadertoys/7tSSDD/7tSSDD.json "$out/ml"
     run run "$out/ml" --size 320x256 --frames 20 --capture-every 10 --capture-pass C --out "$out/ml_%d.exr"
 fi
+# Every pass and input: Cube A (captured), Sound (WAV, and muxed), stand-in cubemap, volume, video.
+run run shadertoys/cube-probe --size 64x36 --frames 3 --out "$out/cp_%d.png"
+run run shadertoys/cube-probe --size 64x36 --frames 2 --capture-pass "Cube A" --out "$out/cube_%d.exr"
+run run shadertoys/cube-probe --size 64x36 --frames 12 --out "$out/cp.mp4"
+"$toyhost" sound shadertoys/cube-probe --seconds 7 --quiet --out "$out/cp.wav"
+# A pass Mesa's preprocessor refuses, compiled after preprocessing as browsers do.
+mkdir -p "$out/pp"
+printf '#define NEG(x) -x\nvoid mainImage(out vec4 c, in vec2 f) { c = vec4(NEG(-.5)); }\n' > "$out/pp/image.glsl"
+printf '{"passes": {"Image": {"source": "image.glsl"}}}' > "$out/pp/manifest.json"
+run run "$out/pp" --size 8x8
+for id in 7dyfzW ds3BW7 fd3yW8 Dd2SWh; do  # video, music, mic, stock cubemap (wild corpus)
+    if [ -f "../shared/corpus/wild/$id.json" ]; then run run "../shared/corpus/wild/$id.json" --size 48x27 --frames 3; fi
+done
 printf '{"passes": {"Image": {"source": "nope.glsl", "bogus": 1}}, "passes": {}}' > "$out/bad.json"
 if "$toyhost" run "$out/bad.json" --headless 2>/dev/null; then echo "a bad manifest was accepted"; exit 1; fi
 unset ASAN_OPTIONS
