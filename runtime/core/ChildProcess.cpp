@@ -45,6 +45,23 @@ std::optional<fs::path> findExecutable(const std::string& program) {
 }
 
 Result<ChildProcess> ChildProcess::spawn(const std::vector<std::string>& argv, const fs::path& logFile) {
+    return start(argv, logFile, false);
+}
+
+Result<ChildProcess> ChildProcess::spawnReading(const std::vector<std::string>& argv, const fs::path& logFile) {
+    return start(argv, logFile, true);
+}
+
+Result<std::size_t> ChildProcess::read(std::span<std::byte> bytes) {
+    if (!output_) return Error(name_ + ": its output is not read by toyhost", "process");
+    while (true) {
+        const ssize_t n = ::read(output_.get(), bytes.data(), bytes.size());
+        if (n >= 0) return static_cast<std::size_t>(n);
+        if (errno != EINTR) return Error(name_ + ": reading its output failed: " + std::strerror(errno), "process");
+    }
+}
+
+Result<ChildProcess> ChildProcess::start(const std::vector<std::string>& argv, const fs::path& logFile, bool readOutput) {
     if (argv.empty()) return Error("no program to run", "process");
     const std::string name = argv[0];
     std::optional<fs::path> program = findExecutable(name);
@@ -56,11 +73,18 @@ Result<ChildProcess> ChildProcess::spawn(const std::vector<std::string>& argv, c
     FileDescriptor readEnd(ends[0]), writeEnd(ends[1]);
     FileDescriptor log(::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
     if (!log) return Error(logFile.string() + ": cannot create: " + std::strerror(errno), "process");
+    FileDescriptor outputRead, outputWrite;
+    if (readOutput) {
+        int out[2];
+        if (::pipe2(out, O_CLOEXEC) != 0) return Error(name + ": cannot create a pipe: " + std::strerror(errno), "process");
+        outputRead = FileDescriptor(out[0]);
+        outputWrite = FileDescriptor(out[1]);
+    }
 
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, readEnd.get(), STDIN_FILENO);
-    posix_spawn_file_actions_adddup2(&actions, log.get(), STDOUT_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, readOutput ? outputWrite.get() : log.get(), STDOUT_FILENO);
     posix_spawn_file_actions_adddup2(&actions, log.get(), STDERR_FILENO);
     // The child starts with default signal handling whatever its parent set (SIGPIPE ignored by
     // the CLI would otherwise be inherited).
@@ -91,6 +115,7 @@ Result<ChildProcess> ChildProcess::spawn(const std::vector<std::string>& argv, c
     child.pid_ = pid;
     child.pidfd_ = FileDescriptor(static_cast<int>(::syscall(SYS_pidfd_open, pid, 0)));
     child.input_ = std::move(writeEnd);
+    child.output_ = std::move(outputRead);
     child.name_ = name;
     return child;
 }
@@ -99,6 +124,7 @@ ChildProcess::ChildProcess(ChildProcess&& other) noexcept
     : pid_(std::exchange(other.pid_, -1)),
       pidfd_(std::move(other.pidfd_)),
       input_(std::move(other.input_)),
+      output_(std::move(other.output_)),
       name_(std::move(other.name_)) {}
 
 ChildProcess& ChildProcess::operator=(ChildProcess&& other) noexcept {
@@ -107,6 +133,7 @@ ChildProcess& ChildProcess::operator=(ChildProcess&& other) noexcept {
         pid_ = std::exchange(other.pid_, -1);
         pidfd_ = std::move(other.pidfd_);
         input_ = std::move(other.input_);
+        output_ = std::move(other.output_);
         name_ = std::move(other.name_);
     }
     return *this;

@@ -23,6 +23,9 @@ public:
     // Starts argv[0] (looked up in $PATH). Its stdout and stderr both go to `logFile` (created,
     // truncated), which callers read back to explain a failure.
     static Result<ChildProcess> spawn(const std::vector<std::string>& argv, const std::filesystem::path& logFile);
+    // The same, with the child's stdout on a pipe toyhost reads (read()) and only its stderr in
+    // `logFile`: for a decoder that streams its output (live audio).
+    static Result<ChildProcess> spawnReading(const std::vector<std::string>& argv, const std::filesystem::path& logFile);
 
     ChildProcess(ChildProcess&& other) noexcept;
     ChildProcess& operator=(ChildProcess&& other) noexcept;
@@ -30,6 +33,9 @@ public:
 
     // Writes to the child's standard input.
     Status write(std::span<const std::byte> bytes);
+    // Reads what the child wrote to its stdout (spawnReading only): up to `bytes.size()`, blocking
+    // until some is there; 0 at its end (the child closed it or exited).
+    Result<std::size_t> read(std::span<std::byte> bytes);
     // Closes the child's standard input and waits for it; its exit code, or an error when a
     // signal ended it.
     Result<int> closeAndWait();
@@ -47,7 +53,10 @@ private:
     pid_t pid_ = -1;
     FileDescriptor pidfd_;  // refers to this child for as long as the object lives
     FileDescriptor input_;
+    FileDescriptor output_;  // spawnReading: the read end of the child's stdout
     std::string name_;
+    static Result<ChildProcess> start(const std::vector<std::string>& argv, const std::filesystem::path& logFile,
+                                      bool readOutput);
 };
 
 }  // namespace toyhost

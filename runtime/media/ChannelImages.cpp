@@ -6,6 +6,7 @@
 
 #include "image/ImageFile.h"
 #include "manifest/StockMedia.h"
+#include "media/LiveAudio.h"
 
 namespace toyhost {
 
@@ -129,7 +130,8 @@ Result<ChannelImages> ChannelImages::load(const ManifestDesc& manifest, const Me
                                       "webcam");
                     }
                 } else if (channel.kind == ChannelKind::Mic) {
-                    if (!options.mic.empty()) input.file = options.mic;
+                    if (LiveAudio::isLiveSource(options.mic)) input.device = options.mic;
+                    else if (!options.mic.empty()) input.file = options.mic;
                     else {
                         input.standIn = true;
                         standInNotice("no microphone given (--mic FILE); using the synthetic spectrum the site "

@@ -25,14 +25,16 @@ struct MediaOptions {
     std::vector<std::pair<std::string, std::filesystem::path>> files;  // stock id -> user file (--media-file)
     std::vector<std::filesystem::path> folders;                         // --media DIR, $TOYHOST_MEDIA
     std::string webcam;  // --webcam: a V4L2 device (/dev/video0) or a video file; empty: a stand-in
-    std::string mic;     // --mic: an audio file; empty: the site's own stand-in (what it shows muted)
+    // --mic: an audio file, or a live source (alsa:DEVICE, pulse:DEVICE, lavfi:GRAPH); empty: the
+    // site's own stand-in (what it shows when audio is unavailable)
+    std::string mic;
 };
 
 // Where a video, webcam, music or mic channel's content comes from; the renderer opens it.
 struct TimedInput {
     ChannelKind kind = ChannelKind::Video;
     std::filesystem::path file;  // a video or audio file; empty with a device or a stand-in
-    std::string device;          // webcam: a V4L2 device
+    std::string device;          // webcam: a V4L2 device; mic: a live source (media/LiveAudio.h)
     bool standIn = false;
 };
 

@@ -79,11 +79,15 @@ Result<std::unique_ptr<TimedTexture>> TimedTexture::open(const TimedInput& input
         t->width_ = kAudioWidth;
         t->height_ = kAudioHeight;
         t->analyser_ = std::make_unique<AudioAnalyser>();
-        if (!input.standIn) {
+        t->window_.resize(static_cast<std::size_t>(t->analyser_->settings().fftSize));
+        if (!input.device.empty()) {
+            Result<std::unique_ptr<LiveAudio>> live = LiveAudio::open(input.device);
+            if (!live) return live.error();
+            t->live_ = std::move(*live);
+        } else if (!input.standIn) {
             Result<AudioClip> clip = decodeAudioFile(input.file);
             if (!clip) return clip.error();
             t->clip_ = std::move(*clip);
-            t->window_.resize(static_cast<std::size_t>(t->analyser_->settings().fftSize));
         }
         glBindTexture(GL_TEXTURE_2D, t->texture_.id());
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kAudioWidth, kAudioHeight, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
@@ -160,7 +164,14 @@ Status TimedTexture::update(double time) {
         }
         case ChannelKind::Music:
         case ChannelKind::Mic: {
-            if (!clip_) {
+            if (live_) {
+                // A live microphone: the newest samples, whatever the frame's time; the site
+                // leaves a mic's iChannelTime at 0.
+                live_->latest(window_);
+                analyser_->analyse(window_);
+                audioTexels_ = analyser_->texels();
+                channelTime_ = 0.0f;
+            } else if (!clip_) {
                 // The site's arrays: music's hold frequencyBinCount (1024) values, the mic's 512.
                 siteSilentAudioTexels(time, input_.kind == ChannelKind::Mic ? 512 : analyser_->settings().fftSize / 2,
                                       audioTexels_);

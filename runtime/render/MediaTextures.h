@@ -17,6 +17,7 @@
 #include "media/AudioAnalyser.h"
 #include "media/AudioClip.h"
 #include "media/ChannelImages.h"
+#include "media/LiveAudio.h"
 #include "media/VideoSource.h"
 #include "render/ChannelTextures.h"
 
@@ -63,6 +64,7 @@ private:
     std::int64_t lastFrameIndex_ = -1;
     Image8 standInFrame_;
     std::optional<AudioClip> clip_;
+    std::unique_ptr<LiveAudio> live_;
     std::unique_ptr<AudioAnalyser> analyser_;
     std::vector<float> window_;
     std::array<std::uint8_t, 1024> audioTexels_{};

@@ -103,7 +103,8 @@ void RunCommand::define(CLI::App& run) {
     run.add_option("--webcam", options_.media.webcam,
                    "What webcam channels show: a V4L2 camera (/dev/video0) or a video file (default: a moving stand-in)");
     run.add_option("--mic", options_.media.mic,
-                   "What mic channels hear: an audio file (default: the spectrum the site shows without audio)");
+                   "What mic channels hear: an audio file, or live: alsa:DEVICE (alsa:default, alsa:hw:0), "
+                   "pulse:DEVICE, lavfi:GRAPH (default: the spectrum the site shows without audio)");
     run.add_option("--media", mediaFolders_,
                    "Folder with real stock media files, by hash or name (repeatable; also $TOYHOST_MEDIA)");
     run.add_option("--date", date_, "iDate at frame 0, YYYY-MM-DDTHH:MM:SS (default: now, local time)");
