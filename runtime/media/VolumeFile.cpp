@@ -50,10 +50,10 @@ Result<Volume8> readVolumeFile(const fs::path& path) {
     }
     if (channels < 1 || channels > 4)
         return bad("the header declares " + std::to_string(channels) + " channels (1 to 4 are valid)");
-    if (format != 0)
-        return bad(format == 10 ? std::string("32-bit float volumes (format 10) are not supported")
-                                : "unknown voxel format " + std::to_string(format) + " (0 is 8-bit)");
-    const std::uint64_t expected = std::uint64_t(sizes[0]) * sizes[1] * sizes[2] * channels;
+    if (format != 0 && format != 10)
+        return bad("unknown voxel format " + std::to_string(format) + " (0 is 8-bit, 10 is 32-bit float)");
+    const std::uint64_t bytesPerValue = format == 10 ? 4 : 1;
+    const std::uint64_t expected = std::uint64_t(sizes[0]) * sizes[1] * sizes[2] * channels * bytesPerValue;
     if (expected > kMaxVolumeBytes)
         return bad("the header declares " + declared + " x " + std::to_string(channels) + " channels = " +
                    std::to_string(expected) + " bytes, more than the limit of " + std::to_string(kMaxVolumeBytes));
@@ -68,6 +68,7 @@ Result<Volume8> readVolumeFile(const fs::path& path) {
     volume.height = static_cast<int>(sizes[1]);
     volume.depth = static_cast<int>(sizes[2]);
     volume.channels = static_cast<int>(channels);
+    volume.floats = format == 10;
     volume.voxels.assign(reinterpret_cast<const std::uint8_t*>(data.data()) + kVolumeHeaderBytes,
                          reinterpret_cast<const std::uint8_t*>(data.data()) + data.size());
     return volume;
@@ -82,7 +83,7 @@ std::vector<std::uint8_t> encodeVolumeFile(const Volume8& volume) {
     putU32(out, static_cast<std::uint32_t>(volume.depth));
     out.push_back(static_cast<std::uint8_t>(volume.channels));
     out.push_back(0);  // layout
-    out.push_back(0);  // format: 8-bit
+    out.push_back(volume.floats ? 10 : 0);  // format: 8-bit or 32-bit float
     out.push_back(0);
     out.insert(out.end(), volume.voxels.begin(), volume.voxels.end());
     return out;

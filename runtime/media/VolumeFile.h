@@ -28,6 +28,8 @@ struct Volume8 {
     int height = 0;
     int depth = 0;
     int channels = 0;  // 1..4
+    // Format 10: each value is a little-endian 32-bit float (4 bytes in `voxels`); else a byte.
+    bool floats = false;
     std::vector<std::uint8_t> voxels;
 };
 
@@ -39,7 +41,7 @@ inline constexpr std::size_t kVolumeHeaderBytes = 20;
 
 // Reads an 8-bit volume file. Errors (code "volume.decode", naming the file): shorter than the
 // header, a zero side, a side over kMaxVolumeSide or data over kMaxVolumeBytes, a channel count
-// not 1..4, a format other than 8-bit (the site's float volumes are not supported), and voxel
+// not 1..4, a format other than 0 (8-bit) or 10 (32-bit float, as the site also reads), and voxel
 // data shorter or longer than the header says. A missing file or a folder gets the I/O error.
 Result<Volume8> readVolumeFile(const std::filesystem::path& path);
 

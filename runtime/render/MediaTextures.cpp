@@ -43,12 +43,13 @@ InputTexture uploadCubemap(const CubeFaces8& faces, const SamplerDesc& sampler) 
 InputTexture uploadVolume(const Volume8& volume, const SamplerDesc& sampler) {
     InputTexture out{makeTexture(), volume.width, volume.height};
     static const GLenum internal[4] = {GL_R8, GL_RG8, GL_RGB8, GL_RGBA8};
+    static const GLenum internalFloat[4] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
     static const GLenum format[4] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
     const int c = std::clamp(volume.channels, 1, 4) - 1;
     glBindTexture(GL_TEXTURE_3D, out.texture.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage3D(GL_TEXTURE_3D, 0, internal[c], volume.width, volume.height, volume.depth, 0, format[c],
-                 GL_UNSIGNED_BYTE, volume.voxels.data());
+    glTexImage3D(GL_TEXTURE_3D, 0, volume.floats ? internalFloat[c] : internal[c], volume.width, volume.height,
+                 volume.depth, 0, format[c], volume.floats ? GL_FLOAT : GL_UNSIGNED_BYTE, volume.voxels.data());
     if (sampler.filter == Filter::Mipmap) glGenerateMipmap(GL_TEXTURE_3D);
     setLevels(GL_TEXTURE_3D, sampler);
     glBindTexture(GL_TEXTURE_3D, 0);

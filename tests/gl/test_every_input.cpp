@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -155,7 +156,7 @@ TEST_F(EveryInput, CubeAReadsItsPreviousFrameAndImageItsCurrentOne) {
 }
 
 TEST_F(EveryInput, VolumeVoxelsAreWhereTheBinFileSaysAndTheirSizeIsTheChannelResolution) {
-    Volume8 volume{4, 3, 2, 4, {}};
+    Volume8 volume{4, 3, 2, 4, false, {}};
     for (int z = 0; z < 2; ++z)
         for (int y = 0; y < 3; ++y)
             for (int x = 0; x < 4; ++x)
@@ -185,6 +186,25 @@ TEST_F(EveryInput, VolumeVoxelsAreWhereTheBinFileSaysAndTheirSizeIsTheChannelRes
     EXPECT_NEAR(resolution[0] * 10, 4, 1e-5);
     EXPECT_NEAR(resolution[1] * 10, 3, 1e-5);
     EXPECT_NEAR(resolution[2] * 10, 2, 1e-5);
+}
+
+TEST_F(EveryInput, AFloatVolumeKeepsItsValuesOutsideZeroToOne) {
+    Volume8 volume{2, 1, 1, 1, true, {}};
+    volume.voxels.resize(2 * sizeof(float));
+    const float values[2] = {-0.5f, 7.25f};
+    std::memcpy(volume.voxels.data(), values, sizeof values);
+    const std::vector<std::uint8_t> bytes = encodeVolumeFile(volume);
+    const fs::path dir = shadertoyFolder(
+        "volume_float", {{"image.glsl", "void mainImage(out vec4 c, in vec2 f) { c = texelFetch(iChannel0, ivec3(f.x, 0, 0), 0).rrrr; }\n"}},
+        R"({"passes": {"Image": {"source": "image.glsl", "channels": {"iChannel0": {"volume": "f.bin", "filter": "nearest"}}}}})");
+    writeFile(dir / "f.bin", std::string(bytes.begin(), bytes.end()));
+    auto player = loadPlayer(context_, dir, 2, 1, true);
+    ASSERT_TRUE(player);
+    stepAt(*player);
+    std::vector<float> pixels;
+    player->readRgba32f(PassId::Image, pixels);
+    EXPECT_EQ(pixels[0], -0.5f);
+    EXPECT_EQ(pixels[4], 7.25f);
 }
 
 TEST_F(EveryInput, AVideoShowsItsFrameAtITimeAndICannelTimeIsItsLoopingPlaybackTime) {

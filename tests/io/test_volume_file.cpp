@@ -2,6 +2,8 @@
 // and the deterministic noise stand-ins for the stock volumes.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -128,9 +130,26 @@ TEST(VolumeFile, ChannelCountsOutside1To4AreRejected) {
     expectRejected(folder, volumeBytes(2, 2, 2, 5, voxelsOf(40)), "5 channels");
 }
 
-TEST(VolumeFile, FloatAndUnknownFormatsAreRejected) {
+TEST(VolumeFile, FloatVolumesAreReadAndUnknownFormatsRejected) {
     TestFolder folder;
-    expectRejected(folder, volumeBytes(2, 2, 2, 1, voxelsOf(32), 10), "float volumes (format 10) are not supported");
+    // Format 10: 32-bit floats, 4 bytes a value (the site reads them as C1F32..C4F32).
+    std::string floats;
+    for (int i = 0; i < 8; ++i) {
+        const float value = 0.25f * static_cast<float>(i) - 0.5f;
+        floats.append(reinterpret_cast<const char*>(&value), sizeof value);
+    }
+    const auto path = folder.write("f.bin", volumeBytes(2, 2, 2, 1, floats, 10));
+    Result<Volume8> volume = readVolumeFile(path);
+    ASSERT_TRUE(volume.ok()) << volume.error().text();
+    EXPECT_TRUE(volume->floats);
+    ASSERT_EQ(volume->voxels.size(), 32u);
+    float third = 0;
+    std::memcpy(&third, volume->voxels.data() + 3 * sizeof(float), sizeof third);
+    EXPECT_EQ(third, 0.25f);
+    const std::string same = volumeBytes(2, 2, 2, 1, floats, 10, 0);  // encodeVolumeFile writes signature 0
+    EXPECT_EQ(encodeVolumeFile(*volume), std::vector<std::uint8_t>(same.begin(), same.end()));
+    // 8 values of 4 bytes: 8 bytes are short.
+    expectRejected(folder, volumeBytes(2, 2, 2, 1, voxelsOf(8), 10), "32 bytes of voxels, but the file has 8 (truncated)");
     expectRejected(folder, volumeBytes(2, 2, 2, 1, voxelsOf(8), 3), "unknown voxel format 3");
 }
 
