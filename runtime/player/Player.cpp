@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include "core/Defaults.h"
+
 namespace toyhost {
 
 namespace {
@@ -101,6 +103,8 @@ PlayerState Player::saveState() const {
         for (int slot = 0; slot < 2; ++slot) renderer_->readBufferSlot(b, slot, buffer.slots[slot]);
         state.buffers.push_back(std::move(buffer));
     }
+    if (renderer_->hasCube())
+        for (int slot = 0; slot < 2; ++slot) renderer_->readCubeSlot(slot, state.cube[slot], state.cubeSize);
     return state;
 }
 
@@ -125,8 +129,20 @@ Status Player::restoreState(const PlayerState& state) {
         if (renderer_->hasBuffer(b) && !saved[b])
             return Error(std::string("the state has no ") + passName(bufferPass(b)) + ", which this shadertoy renders",
                          "state.buffers");
+    if (renderer_->hasCube() != (state.cubeSize > 0))
+        return Error(renderer_->hasCube() ? "the state has no Cube A, which this shadertoy renders"
+                                          : "the state holds Cube A, which this shadertoy does not render",
+                     "state.buffers");
+    if (state.cubeSize > 0) {
+        const std::size_t cubeValues = std::size_t(6) * state.cubeSize * state.cubeSize * 4;
+        if (state.cubeSize != defaults::kCubeBufferSize || state.cube[0].size() != cubeValues ||
+            state.cube[1].size() != cubeValues)
+            return Error("Cube A of the state has the wrong size", "state.buffers");
+    }
     for (const PlayerState::Buffer& buffer : state.buffers)
         for (int slot = 0; slot < 2; ++slot) renderer_->writeBufferSlot(buffer.index, slot, buffer.slots[slot]);
+    if (state.cubeSize > 0)
+        for (int slot = 0; slot < 2; ++slot) renderer_->writeCubeSlot(slot, state.cube[slot]);
     sequence_.restore(state.frame, state.step);
     mouse_.restore(state.mouse);
     keyboard_.restore(state.keyboard);

@@ -48,6 +48,10 @@ struct PlayerState {
         std::array<std::vector<float>, 2> slots;  // RGBA32F, rows bottom first
     };
     std::vector<Buffer> buffers;
+    // Cube A's two slots, each its six faces (GL order) of cubeSize^2 RGBA floats one after the
+    // other; cubeSize 0 when the shadertoy has no Cube A.
+    int cubeSize = 0;
+    std::array<std::vector<float>, 2> cube;
 };
 
 class Player {

@@ -511,6 +511,32 @@ void Renderer::readCubeFace(int face, std::vector<float>& out, int& size) const 
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }
 
+void Renderer::readCubeSlot(int slot, std::vector<float>& out, int& size) const {
+    const CubeTarget& cube = *impl_->cube;
+    size = cube.size();
+    const std::size_t face = static_cast<std::size_t>(size) * size * 4;
+    out.resize(6 * face);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    for (int f = 0; f < 6; ++f) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, cube.faceFramebuffer(slot, f));
+        glReadPixels(0, 0, size, size, GL_RGBA, GL_FLOAT, out.data() + f * face);
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+}
+
+void Renderer::writeCubeSlot(int slot, std::span<const float> faces) {
+    const CubeTarget& cube = *impl_->cube;
+    const int size = cube.size();
+    const std::size_t face = static_cast<std::size_t>(size) * size * 4;
+    glBindTexture(GL_TEXTURE_CUBE_MAP, cube.texture(slot));
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (int f = 0; f < 6; ++f)
+        glTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, 0, 0, size, size, GL_RGBA, GL_FLOAT,
+                        faces.data() + f * face);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    cube.generateMipmaps(slot);
+}
+
 void Renderer::readRgba8(PassId pass, std::vector<std::uint8_t>& out) const {
     const PassOutput source = output(pass);
     out.resize(static_cast<size_t>(width_) * height_ * 4);

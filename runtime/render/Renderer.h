@@ -117,6 +117,10 @@ public:
     // as RGBA floats, rows bottom first (row 0 is the face's t = 0); `size` gets the face side.
     bool hasCube() const;
     void readCubeFace(int face, std::vector<float>& out, int& size) const;
+    // Both slots of Cube A for checkpoints: a slot's six faces one after the other (RGBA floats,
+    // rows bottom first); and the same written back (its mip levels rebuilt).
+    void readCubeSlot(int slot, std::vector<float>& out, int& size) const;
+    void writeCubeSlot(int slot, std::span<const float> faces);
 
     struct Impl;
 

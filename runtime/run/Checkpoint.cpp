@@ -11,6 +11,7 @@
 #include <set>
 
 #include "core/AtomicFile.h"
+#include "core/Defaults.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -98,12 +99,16 @@ Status writeCheckpoint(const fs::path& path, const Checkpoint& c) {
     json buffers = json::array();
     for (const PlayerState::Buffer& b : s.buffers) buffers.push_back(std::string(1, static_cast<char>('A' + b.index)));
     header["buffers"] = buffers;
+    if (s.cubeSize > 0) header["cube"] = s.cubeSize;  // Cube A's two slots follow the buffers
     return writeFileAtomically(path, [&](const fs::path& temp) -> Status {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
         if (!out) return fileError(path.string(), std::string("cannot open for writing: ") + std::strerror(errno), "io.write");
         out << kMagic << "\n" << header.dump() << "\n";
         for (const PlayerState::Buffer& b : s.buffers)
             for (const std::vector<float>& slot : b.slots)
+                out.write(reinterpret_cast<const char*>(slot.data()), static_cast<std::streamsize>(slot.size() * sizeof(float)));
+        if (s.cubeSize > 0)
+            for (const std::vector<float>& slot : s.cube)
                 out.write(reinterpret_cast<const char*>(slot.data()), static_cast<std::streamsize>(slot.size() * sizeof(float)));
         out.close();
         if (!out)
@@ -160,6 +165,10 @@ Result<Checkpoint> readCheckpoint(const fs::path& path) {
             b.index = letter[0] - 'A';
             s.buffers.push_back(std::move(b));
         }
+        s.cubeSize = h.value("cube", 0);
+        if (s.cubeSize != 0 && s.cubeSize != defaults::kCubeBufferSize)
+            return bad(path, "its Cube A size " + std::to_string(s.cubeSize) + " is not " +
+                                 std::to_string(defaults::kCubeBufferSize));
     } catch (const json::exception& e) {
         return bad(path, std::string("its header is not valid: ") + e.what());
     }
@@ -168,8 +177,9 @@ Result<Checkpoint> readCheckpoint(const fs::path& path) {
     if (s.frame < 0 || s.width < 1 || s.height < 1 || s.width > kMaxSide || s.height > kMaxSide)
         return bad(path, "its frame or canvas size is out of range");
     const std::size_t values = static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height) * 4;
+    const std::size_t cubeValues = std::size_t(6) * s.cubeSize * s.cubeSize * 4;
     const std::uintmax_t expected = static_cast<std::uintmax_t>(in.tellg()) +
-                                    s.buffers.size() * 2 * values * sizeof(float);
+                                    (s.buffers.size() * 2 * values + 2 * cubeValues) * sizeof(float);
     if (fs::file_size(path, ec) != expected)
         return bad(path, "its size does not match its header (" + std::to_string(s.buffers.size()) + " buffers of " +
                              std::to_string(s.width) + "x" + std::to_string(s.height) + "): truncated?");
@@ -179,6 +189,12 @@ Result<Checkpoint> readCheckpoint(const fs::path& path) {
             if (!in.read(reinterpret_cast<char*>(slot.data()), static_cast<std::streamsize>(values * sizeof(float))))
                 return bad(path, "it is truncated");
         }
+    for (std::vector<float>& slot : s.cube) {
+        if (cubeValues == 0) break;
+        slot.resize(cubeValues);
+        if (!in.read(reinterpret_cast<char*>(slot.data()), static_cast<std::streamsize>(cubeValues * sizeof(float))))
+            return bad(path, "it is truncated");
+    }
     return c;
 }
 

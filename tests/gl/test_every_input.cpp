@@ -155,6 +155,32 @@ TEST_F(EveryInput, CubeAReadsItsPreviousFrameAndImageItsCurrentOne) {
     EXPECT_FLOAT_EQ(pixels[0] * 16.0f, 1.0f);
 }
 
+TEST_F(EveryInput, ACheckpointKeepsCubeAsFacesAndAResumedRunMatchesTheUninterruptedOne) {
+    const std::string cube =
+        "void mainCubemap(out vec4 c, in vec2 f, in vec3 o, in vec3 d) { c = texture(iChannel0, d) + vec4(d * 0.01, 1.0); }\n";
+    const std::string image =
+        "void mainImage(out vec4 c, in vec2 f) { vec2 p = f / iResolution.xy * 2.0 - 1.0;\n"
+        "  c = vec4(texture(iChannel0, vec3(p, 0.7)).wxy / 16.0, 1.0); }\n";
+    const fs::path dir = shadertoyFolder(
+        "cube_checkpoint", {{"cube.glsl", cube}, {"image.glsl", image}},
+        R"({"passes": {"Cube A": {"source": "cube.glsl", "channels": {"iChannel0": {"buffer": "Cube A"}}},
+                       "Image": {"source": "image.glsl", "channels": {"iChannel0": {"buffer": "Cube A"}}}}})");
+    const std::string base = "run '" + dir.string() + "' --size 24x16 --quiet ";
+    ASSERT_EQ(runToyhost(base + "--frames 8 --out '" + (dir / "full_%d.png").string() + "'").exitCode, 0);
+    auto first = runToyhost(base + "--frames 4 --checkpoint '" + (dir / "c.ckpt").string() + "'");
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    auto resumed = runToyhost(base + "--frames 8 --resume '" + (dir / "c.ckpt").string() + "' --out '" +
+                              (dir / "resumed_%d.png").string() + "'");
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
+    for (int frame = 4; frame < 8; ++frame) {
+        Result<std::string> full = readTextFile(dir / ("full_" + std::to_string(frame) + ".png"));
+        Result<std::string> again = readTextFile(dir / ("resumed_" + std::to_string(frame) + ".png"));
+        ASSERT_TRUE(full && again) << frame;
+        EXPECT_EQ(*full, *again) << "frame " << frame;
+    }
+    fs::remove(dir / "c.ckpt");  // 200 MB: Cube A's two slots of six 1024x1024 RGBA float faces
+}
+
 TEST_F(EveryInput, VolumeVoxelsAreWhereTheBinFileSaysAndTheirSizeIsTheChannelResolution) {
     Volume8 volume{4, 3, 2, 4, false, {}};
     for (int z = 0; z < 2; ++z)
