@@ -119,31 +119,6 @@ Result<AudioClip> decodeAudioFile(const fs::path& path, int sampleRate) {
     return clip;
 }
 
-AudioClip toneSweepStandIn(double seconds, int sampleRate) {
-    AudioClip clip;
-    clip.sampleRate = std::clamp(sampleRate, kMinSampleRate, kMaxSampleRate);
-    if (!(seconds > 0.0)) return clip;
-    seconds = std::min(seconds, kMaxAudioSeconds);
-    const auto count = static_cast<std::size_t>(seconds * clip.sampleRate);
-    clip.mono.resize(count);
-    constexpr double kPeriod = 4.0, kBeat = 0.5, kLow = 110.0, kOctaves = 4.0;  // 110 .. 1760 Hz
-    constexpr double kTwoPi = 2.0 * std::numbers::pi;
-    const double rate = clip.sampleRate;
-    double sweepPhase = 0.0;
-    for (std::size_t i = 0; i < count; ++i) {
-        const double t = static_cast<double>(i) / rate;
-        const double inPeriod = std::fmod(t, kPeriod);
-        // Up in log frequency for half the period, back down for the other half: no jump.
-        const double up = inPeriod < kPeriod / 2 ? inPeriod / (kPeriod / 2) : (kPeriod - inPeriod) / (kPeriod / 2);
-        const double frequency = kLow * std::exp2(kOctaves * up);
-        const double sinceBeat = std::fmod(t, kBeat);
-        const double pulse = 0.5 + 0.5 * std::exp(-6.0 * sinceBeat);
-        const double kick = std::sin(kTwoPi * 55.0 * sinceBeat) * std::exp(-10.0 * sinceBeat);
-        clip.mono[i] = static_cast<float>(0.25 * (0.6 * pulse * std::sin(sweepPhase) + 0.4 * kick));
-        sweepPhase = std::fmod(sweepPhase + kTwoPi * frequency / rate, kTwoPi);
-    }
-    return clip;
-}
 
 void samplesEndingAt(const AudioClip& clip, double time, bool loop, std::span<float> out) {
     std::fill(out.begin(), out.end(), 0.0f);

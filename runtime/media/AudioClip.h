@@ -1,5 +1,5 @@
 // AudioClip: the mono samples behind a `music` / `musicstream` / `mic` channel: decoding an audio
-// file through ffmpeg, a deterministic stand-in for audio toyhost does not have, and the window
+// file through ffmpeg (mixed down to mono as WebAudio does), and the window
 // of samples an AudioAnalyser looks at for a given playback time. No GL needed.
 #pragma once
 
@@ -28,12 +28,6 @@ struct AudioClip {
 // "audio.too-long" past kMaxAudioSeconds, the I/O error for a missing file or a folder.
 Result<AudioClip> decodeAudioFile(const std::filesystem::path& path, int sampleRate = 44100);
 
-// A stand-in that makes audio-reactive shaders move, the same samples on every run: a sine
-// sweeping from 110 Hz up to 1760 Hz and back (so the bright bins travel across row 0) plus a
-// 55 Hz kick on every beat (120 per minute, so the low bins pulse), repeating every 4 seconds,
-// peaking at 0.25 (-12 dBFS). `seconds` is clamped to 0..kMaxAudioSeconds, `sampleRate` to
-// 8000..192000.
-AudioClip toneSweepStandIn(double seconds, int sampleRate = 44100);
 
 // The out.size() samples that end at playback time `time` (seconds): sample index
 // floor(time * rate) is the first not yet played. Indices before 0 are silence; past the end

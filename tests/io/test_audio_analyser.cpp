@@ -1,6 +1,6 @@
 // AudioAnalyser and AudioClip: the 512x2 audio texture computed as WebAudio's AnalyserNode does
 // (bytes predicted from the spec's formulas for bin-centred sines), decoding audio files through
-// ffmpeg, the stand-in sweep and the window of samples for a playback time.
+// ffmpeg and the window of samples for a playback time.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -242,36 +242,6 @@ TEST(AudioClip, SamplesEndingAtATimeArePaddedBeforeTheStartAndWrapWhenLooping) {
     EXPECT_EQ(out, (std::vector<float>{0, 0, 0, 0}));
     samplesEndingAt(clip, std::nan(""), true, out);
     EXPECT_EQ(out, (std::vector<float>{0, 0, 0, 0}));
-}
-
-TEST(AudioClip, TheStandInIsDeterministicAtMinus12DbfsAndSweeps) {
-    const AudioClip a = toneSweepStandIn(8.0, kRate);
-    const AudioClip b = toneSweepStandIn(8.0, kRate);
-    EXPECT_EQ(a.sampleRate, kRate);
-    ASSERT_EQ(a.mono.size(), 8u * kRate);
-    EXPECT_EQ(a.mono, b.mono);
-    float peak = 0.0f;
-    for (float x : a.mono) peak = std::max(peak, std::abs(x));
-    EXPECT_LE(peak, 0.25f);
-    EXPECT_GT(peak, 0.2f);
-
-    // The sweep's bin moves across row 0: low early in the period, high at its middle.
-    auto peakBinAt = [&](double time) {
-        AudioAnalyser analyser(AnalyserSettings{.smoothingTimeConstant = 0.0});
-        std::vector<float> window(2048);
-        samplesEndingAt(a, time, true, window);
-        analyser.analyse(window);
-        std::vector<int> spectrum = row(analyser, 0);
-        std::fill(spectrum.begin(), spectrum.begin() + 5, 0);  // ignore the kick
-        return argmax(spectrum);
-    };
-    const int early = peakBinAt(0.3), middle = peakBinAt(2.0), nextPeriod = peakBinAt(6.0);
-    EXPECT_LT(early, 20);
-    EXPECT_GT(middle, 70);  // 1760 Hz is bin 82
-    EXPECT_NEAR(nextPeriod, middle, 2);
-
-    EXPECT_TRUE(toneSweepStandIn(-1.0, kRate).mono.empty());
-    EXPECT_EQ(toneSweepStandIn(1.0, 10).sampleRate, 8000);
 }
 
 TEST(AudioClip, DecodesAWavFileThroughFfmpeg) {
