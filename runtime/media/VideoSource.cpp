@@ -464,9 +464,12 @@ Status VideoSource::readNextFrame() {
             if (Status started = startDecoder(next_ >= info_.frameCount ? 0 : next_); !started) return started;
         Result<bool> read = readFrameFlipped(decoder_->output(), spare_.data(), rowBytes, info_.height, kFrameTimeoutMs);
         if (!read) {
-            Error failed = decoderFailed(read.error().first().message);
+            // A decoder killed or crashed mid-frame ends like one that stopped between frames.
+            const std::string why = read.error().first().message;
+            const std::string ended = decoder_->finish();
             decoder_.reset();
-            return failed;
+            return decoderFailed("ffmpeg stopped decoding at frame " + std::to_string(next_) + " (" + why +
+                                 (ended.empty() ? "" : "; " + ended) + ")");
         }
         if (*read) {
             std::swap(frame_.rgba, spare_);
