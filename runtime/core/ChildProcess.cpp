@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <poll.h>
 #include <spawn.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
@@ -67,24 +68,19 @@ Result<ChildProcess> ChildProcess::start(const std::vector<std::string>& argv, c
     std::optional<fs::path> program = findExecutable(name);
     if (!program) return Error(name + ": program not found in PATH", "process");
 
-    // Both ends close on exec; the child gets the read end as its stdin through dup2 below.
+    // One pipe, closed on exec in toyhost: the child's stdin (its read end, through dup2 below),
+    // or with `readOutput` its stdout (its write end); a reading child's stdin is /dev/null.
     int ends[2];
     if (::pipe2(ends, O_CLOEXEC) != 0) return Error(name + ": cannot create a pipe: " + std::strerror(errno), "process");
     FileDescriptor readEnd(ends[0]), writeEnd(ends[1]);
     FileDescriptor log(::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
     if (!log) return Error(logFile.string() + ": cannot create: " + std::strerror(errno), "process");
-    FileDescriptor outputRead, outputWrite;
-    if (readOutput) {
-        int out[2];
-        if (::pipe2(out, O_CLOEXEC) != 0) return Error(name + ": cannot create a pipe: " + std::strerror(errno), "process");
-        outputRead = FileDescriptor(out[0]);
-        outputWrite = FileDescriptor(out[1]);
-    }
 
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, readEnd.get(), STDIN_FILENO);
-    posix_spawn_file_actions_adddup2(&actions, readOutput ? outputWrite.get() : log.get(), STDOUT_FILENO);
+    if (readOutput) posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    else posix_spawn_file_actions_adddup2(&actions, readEnd.get(), STDIN_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, readOutput ? writeEnd.get() : log.get(), STDOUT_FILENO);
     posix_spawn_file_actions_adddup2(&actions, log.get(), STDERR_FILENO);
     // The child starts with default signal handling whatever its parent set (SIGPIPE ignored by
     // the CLI would otherwise be inherited).
@@ -114,8 +110,8 @@ Result<ChildProcess> ChildProcess::start(const std::vector<std::string>& argv, c
     ChildProcess child;
     child.pid_ = pid;
     child.pidfd_ = FileDescriptor(static_cast<int>(::syscall(SYS_pidfd_open, pid, 0)));
-    child.input_ = std::move(writeEnd);
-    child.output_ = std::move(outputRead);
+    if (readOutput) child.output_ = std::move(readEnd);
+    else child.input_ = std::move(writeEnd);
     child.name_ = name;
     return child;
 }
@@ -146,9 +142,17 @@ Status ChildProcess::write(std::span<const std::byte> bytes) {
     return writeAll(input_.get(), bytes, name_ + "'s input");
 }
 
-Result<int> ChildProcess::closeAndWait() {
+Result<int> ChildProcess::closeAndWait(int killAfterMs) {
     input_.reset();
+    output_.reset();
     if (pid_ < 0) return Error(name_ + ": not running", "process");
+    if (killAfterMs >= 0 && pidfd_) {
+        pollfd ended{pidfd_.get(), POLLIN, 0};
+        int polled;
+        do polled = ::poll(&ended, 1, killAfterMs);
+        while (polled < 0 && errno == EINTR);
+        if (polled == 0) killFromAnyThread();
+    }
     int status = 0;
     pid_t waited;
     do waited = ::waitpid(pid_, &status, 0);
@@ -166,6 +170,7 @@ void ChildProcess::killFromAnyThread() const {
 
 void ChildProcess::kill() {
     input_.reset();
+    output_.reset();
     if (pid_ < 0) return;
     ::kill(pid_, SIGKILL);
     int status = 0;

@@ -23,8 +23,9 @@ public:
     // Starts argv[0] (looked up in $PATH). Its stdout and stderr both go to `logFile` (created,
     // truncated), which callers read back to explain a failure.
     static Result<ChildProcess> spawn(const std::vector<std::string>& argv, const std::filesystem::path& logFile);
-    // The same, with the child's stdout on a pipe toyhost reads (read()) and only its stderr in
-    // `logFile`: for a decoder that streams its output (live audio).
+    // The same the other way round: stdin /dev/null, stdout on a pipe toyhost reads (read() or
+    // outputFd()), only stderr in `logFile`: for a decoder that streams its output (video, live
+    // audio).
     static Result<ChildProcess> spawnReading(const std::vector<std::string>& argv, const std::filesystem::path& logFile);
 
     ChildProcess(ChildProcess&& other) noexcept;
@@ -36,9 +37,12 @@ public:
     // Reads what the child wrote to its stdout (spawnReading only): up to `bytes.size()`, blocking
     // until some is there; 0 at its end (the child closed it or exited).
     Result<std::size_t> read(std::span<std::byte> bytes);
-    // Closes the child's standard input and waits for it; its exit code, or an error when a
-    // signal ended it.
-    Result<int> closeAndWait();
+    // The read end of the child's stdout (spawnReading), for poll() or readv(); -1 otherwise.
+    int outputFd() const { return output_.get(); }
+    // Closes the child's standard input (and the read end of its output) and waits for it; its
+    // exit code, or an error when a signal ended it. With `killAfterMs` >= 0, a child still
+    // running after that long is killed.
+    Result<int> closeAndWait(int killAfterMs = -1);
     // Kills the child (SIGKILL) and reaps it; a no-op once it was waited for.
     void kill();
     // Sends SIGKILL without reaping or touching the pipe: safe to call from another thread while

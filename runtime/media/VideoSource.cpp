@@ -2,30 +2,21 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cerrno>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <optional>
 #include <poll.h>
-#include <spawn.h>
 #include <sys/stat.h>
-#include <sys/syscall.h>
 #include <sys/uio.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
 #include "core/AtomicFile.h"
 #include "core/ChildProcess.h"
-#include "core/FileDescriptor.h"
-#include "core/InFlight.h"
-
-extern char** environ;
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -36,13 +27,6 @@ namespace {
 // How long a read waits for ffmpeg before giving up on it (a stalled decoder or camera).
 constexpr int kFrameTimeoutMs = 30000;
 constexpr int kFirstCameraFrameTimeoutMs = 10000;
-
-fs::path temporaryLog(const char* what) {
-    static std::atomic<unsigned> counter{0};
-    std::error_code ec;
-    return fs::temp_directory_path(ec) /
-           ("toyhost-" + std::string(what) + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".log");
-}
 
 // What ffprobe or ffmpeg printed, as one line (one diagnostic is one line): blank lines and the
 // empty JSON document ffprobe prints on failure dropped, the input's name ("file:/x/y.txt: ...")
@@ -107,17 +91,15 @@ int displayRotation(const json& stream) {
 Result<json> runFfprobe(const std::vector<std::string>& arguments, const std::string& file, const std::string& input) {
     if (!findExecutable("ffprobe"))
         return fileError(file, "cannot read video: ffprobe (part of ffmpeg) is not installed", "video.no-ffmpeg");
-    const fs::path log = temporaryLog("ffprobe");
-    if (!inflight::addFile(log)) return fileError(file, "not started: toyhost is stopping", "interrupted");
+    TemporaryFiles temp("ffprobe", {"log"});
+    if (!temp.registerAll()) return fileError(file, "not started: toyhost is stopping", "interrupted");
+    const fs::path& log = temp[0];
     std::vector<std::string> argv = {"ffprobe"};
     argv.insert(argv.end(), arguments.begin(), arguments.end());
     // ffprobe's JSON and its error lines both go to the log: a clean run prints only the JSON.
     Result<ChildProcess> probe = ChildProcess::spawn(argv, log);
     Result<int> exit = probe ? probe->closeAndWait() : Result<int>(probe.error());
     Result<std::string> output = readTextFile(log);
-    std::error_code ec;
-    fs::remove(log, ec);
-    inflight::removeFile(log);
     if (!exit) return inFile(file, exit.error());
     if (*exit != 0) {
         // The log holds ffprobe's error lines around the empty JSON document it still prints.
@@ -223,113 +205,8 @@ Result<bool> readFrameFlipped(int fd, std::uint8_t* rgba, std::size_t rowBytes, 
 
 }  // namespace
 
-// ffmpeg writing raw frames to a pipe we read. ChildProcess (core) pipes into a child's stdin and
-// sends its output to a file; a decoder needs the other direction, so this is its small twin:
-// stdin /dev/null, stdout the pipe, stderr the log, its own process group, registered in
-// core/InFlight.h, killed (through a pidfd) and reaped when destroyed.
-class VideoSource::Decoder {
-public:
-    static Result<std::unique_ptr<Decoder>> start(const std::vector<std::string>& argv, const fs::path& logFile) {
-        const std::string name = argv.front();
-        const std::optional<fs::path> program = findExecutable(name);
-        if (!program) return Error(name + " is not installed (it decodes video channels)", "video.no-ffmpeg");
-        int ends[2];
-        if (::pipe2(ends, O_CLOEXEC) != 0)
-            return Error(name + ": cannot create a pipe: " + std::strerror(errno), "video.process");
-        FileDescriptor readEnd(ends[0]), writeEnd(ends[1]);
-        // Bigger pipe, fewer wake-ups per frame (a 720p frame is 3.7 MB); best effort.
-        (void)::fcntl(readEnd.get(), F_SETPIPE_SZ, 1 << 20);
-        FileDescriptor log(::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
-        if (!log) return Error(logFile.string() + ": cannot create: " + std::strerror(errno), "video.process");
-
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-        posix_spawn_file_actions_adddup2(&actions, writeEnd.get(), STDOUT_FILENO);
-        posix_spawn_file_actions_adddup2(&actions, log.get(), STDERR_FILENO);
-        posix_spawnattr_t attributes;
-        posix_spawnattr_init(&attributes);
-        sigset_t defaults, none;
-        sigemptyset(&defaults);
-        sigaddset(&defaults, SIGPIPE);  // a decoder we stop reading from dies of it at once
-        sigemptyset(&none);
-        posix_spawnattr_setsigdefault(&attributes, &defaults);
-        posix_spawnattr_setsigmask(&attributes, &none);
-        posix_spawnattr_setpgroup(&attributes, 0);  // Ctrl-C reaches toyhost, which stops the decoder
-        posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETPGROUP);
-        std::vector<char*> args;
-        for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
-        args.push_back(nullptr);
-        pid_t pid = -1;
-        const int spawned = ::posix_spawn(&pid, program->c_str(), &actions, &attributes, args.data(), environ);
-        posix_spawn_file_actions_destroy(&actions);
-        posix_spawnattr_destroy(&attributes);
-        if (spawned != 0) return Error(name + ": cannot start: " + std::strerror(spawned), "video.process");
-        inflight::addChild(pid);
-        std::unique_ptr<Decoder> decoder(new Decoder());
-        decoder->pid_ = pid;
-        decoder->pidfd_ = FileDescriptor(static_cast<int>(::syscall(SYS_pidfd_open, pid, 0)));
-        decoder->output_ = std::move(readEnd);
-        return decoder;
-    }
-
-    ~Decoder() { stop(); }
-    Decoder(const Decoder&) = delete;
-    Decoder& operator=(const Decoder&) = delete;
-
-    int output() const { return output_.get(); }
-
-    // After the end of its output: waits for the child (killing it if it has not ended within 5 s)
-    // and says how it ended: "" for exit code 0, else "exit code N" or "killed by signal N".
-    std::string finish() {
-        output_.reset();
-        if (pid_ < 0) return "not running";
-        if (pidfd_) {
-            pollfd ended{pidfd_.get(), POLLIN, 0};
-            while (::poll(&ended, 1, 5000) < 0 && errno == EINTR) {
-            }
-            if (!(ended.revents & POLLIN)) ::syscall(SYS_pidfd_send_signal, pidfd_.get(), SIGKILL, nullptr, 0);
-        }
-        int status = 0;
-        while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-        }
-        inflight::removeChild(pid_);
-        pid_ = -1;
-        pidfd_.reset();
-        if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
-        if (WIFEXITED(status) && WEXITSTATUS(status) != 0) return "exit code " + std::to_string(WEXITSTATUS(status));
-        return {};
-    }
-
-    // Closes the pipe, kills the child and reaps it; a no-op the second time.
-    void stop() {
-        output_.reset();
-        if (pid_ < 0) return;
-        if (pidfd_) ::syscall(SYS_pidfd_send_signal, pidfd_.get(), SIGKILL, nullptr, 0);
-        else ::kill(pid_, SIGKILL);
-        int status = 0;
-        while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-        }
-        inflight::removeChild(pid_);
-        pid_ = -1;
-        pidfd_.reset();
-    }
-
-private:
-    Decoder() = default;
-    pid_t pid_ = -1;
-    FileDescriptor pidfd_;
-    FileDescriptor output_;
-};
-
-VideoSource::~VideoSource() {
-    decoder_.reset();  // kills and reaps ffmpeg before its log goes
-    if (!log_.empty()) {
-        std::error_code ec;
-        fs::remove(log_, ec);
-        inflight::removeFile(log_);
-    }
-}
+// The decoder (declared after the log) is killed and reaped before its log goes.
+VideoSource::~VideoSource() = default;
 
 Result<std::unique_ptr<VideoSource>> VideoSource::openFile(const fs::path& path) {
     const std::string file = path.string();
@@ -349,11 +226,8 @@ Result<std::unique_ptr<VideoSource>> VideoSource::openFile(const fs::path& path)
     std::unique_ptr<VideoSource> video(new VideoSource());
     video->path_ = path;
     video->info_ = *info;
-    video->log_ = temporaryLog("ffmpeg-video");
-    if (!inflight::addFile(video->log_)) {
-        video->log_.clear();
-        return fileError(file, "not started: toyhost is stopping", "interrupted");
-    }
+    video->log_ = std::make_unique<TemporaryFiles>("ffmpeg-video", std::initializer_list<const char*>{"log"});
+    if (!video->log_->registerAll()) return fileError(file, "not started: toyhost is stopping", "interrupted");
     const std::size_t bytes = frameBytes(info->width, info->height, PixelFormat::Rgba8);
     video->frame_ = Image8{info->width, info->height, std::vector<std::uint8_t>(bytes)};
     video->spare_.resize(bytes);
@@ -380,16 +254,13 @@ Result<std::unique_ptr<VideoSource>> VideoSource::openDevice(const std::string& 
     video->path_ = device;
     video->info_ = *info;
     video->live_ = true;
-    video->log_ = temporaryLog("ffmpeg-camera");
-    if (!inflight::addFile(video->log_)) {
-        video->log_.clear();
-        return fileError(device, "not started: toyhost is stopping", "interrupted");
-    }
+    video->log_ = std::make_unique<TemporaryFiles>("ffmpeg-camera", std::initializer_list<const char*>{"log"});
+    if (!video->log_->registerAll()) return fileError(device, "not started: toyhost is stopping", "interrupted");
     const std::size_t bytes = frameBytes(info->width, info->height, PixelFormat::Rgba8);
     video->frame_ = Image8{info->width, info->height, std::vector<std::uint8_t>(bytes)};
     video->spare_.resize(bytes);
     if (Status started = video->startDecoder(0); !started) return started.error();
-    Result<bool> first = readFrameFlipped(video->decoder_->output(), video->spare_.data(),
+    Result<bool> first = readFrameFlipped(video->decoder_->outputFd(), video->spare_.data(),
                                           static_cast<std::size_t>(info->width) * 4, info->height,
                                           kFirstCameraFrameTimeoutMs);
     if (!first) return video->decoderFailed(first.error().first().message);
@@ -422,10 +293,16 @@ double VideoSource::playbackTime(double seconds) const {
 Error VideoSource::decoderFailed(const std::string& what) const {
     std::string message = what;
     const std::string input = live_ ? path_.string() : "file:" + path_.string();
-    Result<std::string> log = readTextFile(log_);
+    Result<std::string> log = readTextFile((*log_)[0]);
     if (std::string said = log ? toolMessage(*log, input) : std::string(); !said.empty())
         message += "; ffmpeg said: " + said;
     return fileError(path_.string(), message, "video.decode");
+}
+
+std::string VideoSource::decoderEnded() {
+    Result<int> exit = decoder_->closeAndWait(5000);
+    if (!exit) return exit.error().first().message;
+    return *exit == 0 ? std::string() : "exit code " + std::to_string(*exit);
 }
 
 Status VideoSource::startDecoder(std::int64_t firstFrame) {
@@ -447,9 +324,12 @@ Status VideoSource::startDecoder(std::int64_t firstFrame) {
     argv.insert(argv.end(), {"-map", "0:v:0", "-an", "-sn", "-dn", "-fps_mode", "passthrough", "-s",
                              std::to_string(info_.width) + "x" + std::to_string(info_.height), "-pix_fmt", "rgba",
                              "-f", "rawvideo", "pipe:1"});
-    Result<std::unique_ptr<Decoder>> started = Decoder::start(argv, log_);
+    // ffmpeg writes raw frames to a pipe read here (stdin /dev/null, stderr the log).
+    Result<ChildProcess> started = ChildProcess::spawnReading(argv, (*log_)[0]);
     if (!started) return inFile(path_.string(), started.error());
-    decoder_ = std::move(*started);
+    decoder_.emplace(std::move(*started));
+    // A bigger pipe, fewer wake-ups per frame (a 720p frame is 3.7 MB); best effort.
+    (void)::fcntl(decoder_->outputFd(), F_SETPIPE_SZ, 1 << 20);
     ++starts_;
     looping_ = !live_ && firstFrame == 0;
     next_ = firstFrame;
@@ -462,11 +342,11 @@ Status VideoSource::readNextFrame() {
     for (int attempt = 0; attempt < 2; ++attempt) {
         if (!decoder_ || (!looping_ && next_ >= info_.frameCount))
             if (Status started = startDecoder(next_ >= info_.frameCount ? 0 : next_); !started) return started;
-        Result<bool> read = readFrameFlipped(decoder_->output(), spare_.data(), rowBytes, info_.height, kFrameTimeoutMs);
+        Result<bool> read = readFrameFlipped(decoder_->outputFd(), spare_.data(), rowBytes, info_.height, kFrameTimeoutMs);
         if (!read) {
             // A decoder killed or crashed mid-frame ends like one that stopped between frames.
             const std::string why = read.error().first().message;
-            const std::string ended = decoder_->finish();
+            const std::string ended = decoderEnded();
             decoder_.reset();
             return decoderFailed("ffmpeg stopped decoding at frame " + std::to_string(next_) + " (" + why +
                                  (ended.empty() ? "" : "; " + ended) + ")");
@@ -481,7 +361,7 @@ Status VideoSource::readNextFrame() {
         // The end of the stream. A looping decoder never ends by itself, and one that failed or was
         // killed is an error. One that ended cleanly short of the frame count (the count was wrong)
         // continues from the start.
-        const std::string ended = decoder_->finish();
+        const std::string ended = decoderEnded();
         decoder_.reset();
         if (looping_ || !ended.empty())
             return decoderFailed("ffmpeg stopped decoding at frame " + std::to_string(next_) +
@@ -496,11 +376,11 @@ Result<const Image8*> VideoSource::newestCameraFrame() {
     const std::size_t rowBytes = static_cast<std::size_t>(info_.width) * 4;
     // Every frame that has arrived since the last call is read; the newest is shown.
     for (;;) {
-        pollfd ready{decoder_->output(), POLLIN, 0};
+        pollfd ready{decoder_->outputFd(), POLLIN, 0};
         const int polled = ::poll(&ready, 1, 0);
         if (polled < 0 && errno == EINTR) continue;
         if (polled <= 0 || !(ready.revents & (POLLIN | POLLHUP))) break;
-        Result<bool> read = readFrameFlipped(decoder_->output(), spare_.data(), rowBytes, info_.height, kFrameTimeoutMs);
+        Result<bool> read = readFrameFlipped(decoder_->outputFd(), spare_.data(), rowBytes, info_.height, kFrameTimeoutMs);
         if (!read || !*read) {
             Error failed = decoderFailed(read ? std::string("the camera stopped") : read.error().first().message);
             decoder_.reset();

@@ -6,10 +6,13 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/ChildProcess.h"
 #include "core/Result.h"
+#include "core/TemporaryFiles.h"
 #include "image/Image.h"
 
 namespace toyhost {
@@ -78,18 +81,20 @@ public:
 
 private:
     VideoSource() = default;
-    class Decoder;
 
     Status startDecoder(std::int64_t firstFrame);
     Status readNextFrame();
     Result<const Image8*> newestCameraFrame();
     Error decoderFailed(const std::string& what) const;
+    // After the end of the decoder's output: waits for it (killing it after 5 s) and says how it
+    // ended: "" for exit code 0, else "exit code N" or the signal that ended it.
+    std::string decoderEnded();
 
     std::filesystem::path path_;  // the file, or the device
-    std::filesystem::path log_;   // ffmpeg's stderr
+    std::unique_ptr<TemporaryFiles> log_;  // ffmpeg's stderr (declared before the decoder: outlives it)
     VideoInfo info_;
     bool live_ = false;
-    std::unique_ptr<Decoder> decoder_;
+    std::optional<ChildProcess> decoder_;  // ffmpeg writing raw RGBA frames to a pipe
     bool looping_ = false;         // the decoder started at frame 0 with -stream_loop
     std::int64_t current_ = -1;    // the index of frame_'s content
     std::int64_t next_ = 0;        // the index the decoder delivers next
