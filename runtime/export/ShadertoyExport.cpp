@@ -77,11 +77,6 @@ bool isCubeBufferInput(const json& input, const std::string& src) {
     return src.find("/media/previz/cubemap") != std::string::npos;
 }
 
-bool flipsAtUpload(ChannelKind kind) {
-    return kind == ChannelKind::StockMedia || kind == ChannelKind::ImageFile || kind == ChannelKind::Cubemap ||
-           kind == ChannelKind::Video || kind == ChannelKind::Webcam;
-}
-
 class ExportReader {
 public:
     explicit ExportReader(const fs::path& path) : path_(path), label_(path.string()) {}
@@ -249,7 +244,7 @@ private:
         else if (wrap == "repeat") channel.sampler.wrap = Wrap::Repeat;
         else if (!wrap.empty()) problem(where + ".sampler.wrap", "unknown wrap \"" + wrap + "\"", "export.value", pass.id, c);
         // vflip applies to images only; the player ignores it for buffers.
-        if (flipsAtUpload(channel.kind))
+        if (takesVflip(channel.kind))
             if (std::optional<bool> vflip = flag(sampler, "vflip")) channel.sampler.vflip = *vflip;
     }
 

@@ -41,6 +41,11 @@ enum class ChannelKind {
 enum class SamplerType { Sampler2D, SamplerCube, Sampler3D };
 SamplerType samplerTypeOf(ChannelKind kind);
 const char* channelKindName(ChannelKind kind);  // "buffer", "cubemap", "music", ...
+// Kinds whose pictures are uploaded flipped or not by `vflip` (images, cubemaps, videos).
+inline bool takesVflip(ChannelKind kind) {
+    return kind == ChannelKind::ImageFile || kind == ChannelKind::StockMedia || kind == ChannelKind::Cubemap ||
+           kind == ChannelKind::Video || kind == ChannelKind::Webcam;
+}
 // Media whose content changes with time (iChannelTime is their playback time).
 inline bool isTimedMedia(ChannelKind kind) {
     return kind == ChannelKind::Video || kind == ChannelKind::Music || kind == ChannelKind::Webcam ||

@@ -465,9 +465,6 @@ private:
     void readSampler(PassId pass, int index, ChannelDesc& channel, const json& value, const std::string& where) {
         channel.sampler = defaultSampler(channel.kind);
         channel.samplerType = samplerTypeOf(channel.kind);
-        const bool isTexture = channel.kind == ChannelKind::ImageFile || channel.kind == ChannelKind::StockMedia ||
-                               channel.kind == ChannelKind::Cubemap || channel.kind == ChannelKind::Video ||
-                               channel.kind == ChannelKind::Webcam;
         if (channel.kind == ChannelKind::Keyboard) {
             for (const char* key : {"filter", "wrap", "vflip"})
                 if (value.contains(key))
@@ -500,7 +497,7 @@ private:
         }
         if (auto vflip = value.find("vflip"); vflip != value.end()) {
             if (!vflip->is_boolean()) problems_.add(where, "\"vflip\" must be true or false", "manifest.type", pass, index);
-            else if (!isTexture)
+            else if (!takesVflip(channel.kind))
                 problems_.add(where,
                               std::string("\"vflip\" applies only to image textures, cubemaps and videos, not ") +
                                   channelKindName(channel.kind) + " channels",

@@ -51,9 +51,7 @@ ordered_json channelJson(const ChannelDesc& channel) {
     }
     out["filter"] = filterName(channel.sampler.filter);
     out["wrap"] = wrapName(channel.sampler.wrap);
-    if (channel.kind == ChannelKind::StockMedia || channel.kind == ChannelKind::ImageFile ||
-        channel.kind == ChannelKind::Cubemap || channel.kind == ChannelKind::Video || channel.kind == ChannelKind::Webcam)
-        out["vflip"] = channel.sampler.vflip;
+    if (takesVflip(channel.kind)) out["vflip"] = channel.sampler.vflip;
     return out;
 }
 

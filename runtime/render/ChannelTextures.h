@@ -20,6 +20,13 @@ struct InputTexture {
     int height = 0;
 };
 
+// The texture target a channel binds to, as the header declares its sampler.
+inline GLenum textureTarget(SamplerType type) {
+    return type == SamplerType::SamplerCube ? GL_TEXTURE_CUBE_MAP
+           : type == SamplerType::Sampler3D ? GL_TEXTURE_3D
+                                            : GL_TEXTURE_2D;
+}
+
 // Uploads `image` (rows bottom first) as RGBA8. With `vflip` the picture's top row ends up at
 // t = 1, as WebGL's UNPACK_FLIP_Y does; without it the file's first row (its top) is at t = 0.
 InputTexture uploadImage(const Image8& image, const SamplerDesc& sampler);

@@ -207,10 +207,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
             const ChannelPlan& channel = plan.channels[c];
             ChannelBinding& binding = pass.channels[c];
             binding.sampler = impl->samplers.get(channel.sampler);
-            const SamplerType declared = passDesc.channels[c].samplerType;
-            binding.target = declared == SamplerType::SamplerCube ? GL_TEXTURE_CUBE_MAP
-                             : declared == SamplerType::Sampler3D ? GL_TEXTURE_3D
-                                                                  : GL_TEXTURE_2D;
+            binding.target = textureTarget(passDesc.channels[c].samplerType);
             switch (channel.kind) {
                 case ChannelKind::None: binding.sampler = 0; break;
                 case ChannelKind::Buffer: binding.resolution = canvas; break;

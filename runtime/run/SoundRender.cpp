@@ -41,9 +41,7 @@ Result<std::vector<float>> renderSound(GlContext& context, const PlayerPlan& pla
     SamplerSet samplers;
     for (int c = 0; c < kChannelCount; ++c) {
         const ChannelDesc& channel = pass.channels[c];
-        targets[c] = channel.samplerType == SamplerType::SamplerCube ? GL_TEXTURE_CUBE_MAP
-                     : channel.samplerType == SamplerType::Sampler3D ? GL_TEXTURE_3D
-                                                                     : GL_TEXTURE_2D;
+        targets[c] = textureTarget(channel.samplerType);
         if (channel.kind == ChannelKind::None) continue;
         if (const Image8* image = plan.images.find(channel)) {
             textures.push_back(uploadImage(*image, channel.sampler));
