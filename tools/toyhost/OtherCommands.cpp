@@ -163,7 +163,8 @@ int soundCommand(const SoundCommandOptions& o) {
     Result<std::vector<float>> stereo = renderSound(**context, *plan, desc);
     if (!stereo) return fail(stereo.error());
     if (Status written = writeSoundFile(o.out, *stereo); !written) return fail(written.error());
-    std::cerr << "toyhost: wrote " << o.out << " (" << o.seconds << " s, stereo, "
+    // Rendered at 44100 Hz; an encoder may resample (Opus is 48 kHz).
+    std::cerr << "toyhost: wrote " << o.out << " (" << o.seconds << " s of stereo rendered at "
               << static_cast<int>(defaults::kSampleRate) << " Hz)\n";
     return kExitOk;
 }
