@@ -29,7 +29,7 @@ Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media) 
     for (PassDesc& pass : manifest.passes) checkShaderText(pass.code, pass.sourceName, passName(pass.id), textProblems);
     if (!textProblems.empty()) return Error(std::move(textProblems));
     const MediaResolver resolver = makeMediaResolver(manifest, media);
-    Result<ChannelImages> images = ChannelImages::load(manifest, resolver, media);
+    Result<ChannelMedia> images = ChannelMedia::load(manifest, resolver, media);
     if (!images) return images.error();
     PassGraph graph = buildPassGraph(manifest);
     std::vector<Diagnostic> notices = manifest.notices;

@@ -11,7 +11,7 @@
 #include "core/RunActivity.h"
 #include "graph/PassGraph.h"
 #include "manifest/ManifestDesc.h"
-#include "media/ChannelImages.h"
+#include "media/ChannelMedia.h"
 #include "render/RenderTargets.h"
 
 namespace toyhost {
@@ -38,7 +38,7 @@ Status checkCanvasSize(int width, int height);
 struct PlayerPlan {
     ManifestDesc manifest;
     PassGraph graph;
-    ChannelImages images;
+    ChannelMedia images;
     std::vector<Diagnostic> notices;  // the manifest's notices and the stand-ins used
 };
 

@@ -16,7 +16,7 @@
 #include "manifest/ManifestDesc.h"
 #include "media/AudioAnalyser.h"
 #include "media/AudioClip.h"
-#include "media/ChannelImages.h"
+#include "media/ChannelMedia.h"
 #include "media/LiveAudio.h"
 #include "media/VideoSource.h"
 #include "render/ChannelTextures.h"

@@ -160,7 +160,7 @@ Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Renderer::~Renderer() = default;
 
 Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest, const PassGraph& graph,
-                                                   const RendererDesc& desc, const ChannelImages& images) {
+                                                   const RendererDesc& desc, const ChannelMedia& images) {
     if (Status features = checkRequiredGlFeatures(); !features) return features.error();
     auto impl = std::make_unique<Impl>();
     impl->allocate = desc.allocate ? desc.allocate : TextureAllocator(createRenderTexture);

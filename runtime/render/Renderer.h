@@ -19,7 +19,7 @@
 #include "graph/PassGraph.h"
 #include "image/Image.h"
 #include "manifest/ManifestDesc.h"
-#include "media/ChannelImages.h"
+#include "media/ChannelMedia.h"
 #include "render/RenderTargets.h"
 
 namespace toyhost {
@@ -61,7 +61,7 @@ struct PassOutput {
 class Renderer {
 public:
     static Result<std::unique_ptr<Renderer>> create(const ManifestDesc& manifest, const PassGraph& graph,
-                                                    const RendererDesc& desc, const ChannelImages& images);
+                                                    const RendererDesc& desc, const ChannelMedia& images);
     ~Renderer();
 
     // Runs every buffer, then Image when `renderImage`. `step` picks the ping-pong slots

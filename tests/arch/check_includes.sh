@@ -11,12 +11,23 @@ while IFS=: read -r module list; do
   deps[$module]="$list"
 done < "$graph"
 
+# The module an included path belongs to: the longest declared module that is a prefix of its
+# folder ("drivers/window/WindowContext.h" -> drivers/window), or its first folder when none is.
+module_of() {
+  local path="$1" best="" m
+  for m in "${!deps[@]}"; do
+    if [[ "$path" == "$m/"* && ${#m} -gt ${#best} ]]; then best="$m"; fi
+  done
+  [[ -n "$best" ]] && echo "$best" || echo "${path%%/*}"
+}
+
 status=0
 for module in "${!deps[@]}"; do
   allowed=" $module ${deps[$module]} "
   while IFS= read -r line; do
     file="${line%%:*}"
-    target="$(sed -E 's/.*#include "([^/"]+)\/.*/\1/' <<<"$line")"
+    included="$(sed -E 's/.*#include "([^"]+)".*/\1/' <<<"$line")"
+    target="$(module_of "$included")"
     if [[ "$allowed" != *" $target "* ]]; then
       echo "layering: ${file#$src/} includes $target/, which $module does not declare (declared: ${deps[$module]:- none})"
       status=1
@@ -24,14 +35,15 @@ for module in "${!deps[@]}"; do
   done < <(grep -HE '^\s*#include "[^/"]+/' "$src/runtime/$module"/*.h "$src/runtime/$module"/*.cpp 2>/dev/null || true)
 done
 
-# Every runtime folder is a declared module.
-for dir in "$src"/runtime/*/; do
-  name="$(basename "$dir")"
+# Every runtime folder holding sources is a declared module (folders such as drivers/ only group
+# modules).
+while IFS= read -r dir; do
+  name="${dir#"$src"/runtime/}"
   if [[ -z "${deps[$name]+x}" ]]; then
     echo "layering: runtime/$name is not declared as a module in runtime/CMakeLists.txt"
     status=1
   fi
-done
+done < <(find "$src/runtime" -mindepth 1 -type f \( -name '*.h' -o -name '*.cpp' \) -printf '%h\n' | sort -u)
 
 # No cycles: repeatedly remove modules whose dependencies are all removed.
 declare -A done

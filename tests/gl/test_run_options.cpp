@@ -3,7 +3,7 @@
 #include "GlTestSupport.h"
 
 #include "core/Defaults.h"
-#include "run/RunOptions.h"
+#include "session/RunOptions.h"
 
 namespace toyhost::testing {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "run/RunOptions.h"
+#include "session/RunOptions.h"
 
 namespace toyhost::cli {
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/Result.h"
-#include "run/RunObserver.h"
+#include "session/RunObserver.h"
 
 namespace toyhost::cli {
 

@@ -17,7 +17,7 @@
 #include "export/LoadShadertoy.h"
 #include "gl/HeadlessContext.h"
 #include "player/PlayerDesc.h"
-#include "run/SoundRender.h"
+#include "session/SoundRender.h"
 
 namespace toyhost::cli {
 

@@ -6,9 +6,9 @@
 #include "Console.h"
 #include "StopWatcher.h"
 #include "core/Defaults.h"
-#include "gl/WindowContext.h"
-#include "run/HeadlessRun.h"
-#include "window/WindowRun.h"
+#include "drivers/window/WindowContext.h"
+#include "drivers/headless/HeadlessRun.h"
+#include "drivers/window/WindowRun.h"
 #include "timing/FrameClock.h"
 #include "timing/ProgressLine.h"
 

@@ -1,4 +1,4 @@
-#include "run/ShadertoyWatcher.h"
+#include "session/ShadertoyWatcher.h"
 
 #include <algorithm>
 #include <system_error>

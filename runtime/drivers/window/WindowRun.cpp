@@ -1,4 +1,4 @@
-#include "window/WindowRun.h"
+#include "drivers/window/WindowRun.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -9,15 +9,15 @@
 
 #include "core/Defaults.h"
 #include "core/Diagnostic.h"
-#include "gl/WindowContext.h"
+#include "drivers/window/WindowContext.h"
 #include "image/ImageWriters.h"
 #include "input/InputEvent.h"
 #include "input/WindowInput.h"
 #include "player/Player.h"
 #include "render/Present.h"
-#include "run/AllProblems.h"
-#include "run/FrameRecorder.h"
-#include "run/ShadertoyWatcher.h"
+#include "session/AllProblems.h"
+#include "session/FrameRecorder.h"
+#include "session/ShadertoyWatcher.h"
 #include "timing/FrameClock.h"
 #include "timing/RealTimeClock.h"
 #include "input/WindowControls.h"

@@ -1,4 +1,4 @@
-#include "run/FiniteCheck.h"
+#include "session/FiniteCheck.h"
 
 #include <string>
 

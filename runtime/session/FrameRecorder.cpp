@@ -1,4 +1,4 @@
-#include "run/FrameRecorder.h"
+#include "session/FrameRecorder.h"
 
 #include "capture/FileSinks.h"
 #include "core/Defaults.h"

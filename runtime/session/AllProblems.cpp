@@ -1,4 +1,4 @@
-#include "run/AllProblems.h"
+#include "session/AllProblems.h"
 
 #include "export/LoadShadertoy.h"
 #include "gl/HeadlessContext.h"

@@ -1,4 +1,4 @@
-#include "run/RunOptions.h"
+#include "session/RunOptions.h"
 
 #include <cmath>
 

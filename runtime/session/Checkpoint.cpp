@@ -1,4 +1,4 @@
-#include "run/Checkpoint.h"
+#include "session/Checkpoint.h"
 
 #include <algorithm>
 #include <bit>

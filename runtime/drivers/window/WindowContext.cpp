@@ -1,4 +1,4 @@
-#include "gl/WindowContext.h"
+#include "drivers/window/WindowContext.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -19,9 +19,9 @@
 #include "gl/HeadlessContext.h"
 #include "input/InputScript.h"
 #include "manifest/ManifestDesc.h"
-#include "media/ChannelImages.h"
+#include "media/ChannelMedia.h"
 #include "player/PlayerDesc.h"
-#include "run/Checkpoint.h"
+#include "session/Checkpoint.h"
 
 namespace toyhost {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/Result.h"
-#include "run/RunObserver.h"
-#include "run/RunOptions.h"
+#include "session/RunObserver.h"
+#include "session/RunOptions.h"
 
 namespace toyhost {
 

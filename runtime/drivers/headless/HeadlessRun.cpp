@@ -1,4 +1,4 @@
-#include "run/HeadlessRun.h"
+#include "drivers/headless/HeadlessRun.h"
 
 #include <cmath>
 #include <span>
@@ -6,7 +6,7 @@
 #include "capture/WavFile.h"
 #include "core/Defaults.h"
 #include "core/TemporaryFiles.h"
-#include "run/SoundRender.h"
+#include "session/SoundRender.h"
 
 #include <chrono>
 #include <memory>
@@ -14,10 +14,10 @@
 #include "input/InputScriptPlayer.h"
 #include "player/Player.h"
 #include "timing/FrameClock.h"
-#include "run/FiniteCheck.h"
-#include "run/AllProblems.h"
-#include "run/FrameRecorder.h"
-#include "run/ShadertoyWatcher.h"
+#include "session/FiniteCheck.h"
+#include "session/AllProblems.h"
+#include "session/FrameRecorder.h"
+#include "session/ShadertoyWatcher.h"
 
 namespace toyhost {
 

@@ -18,7 +18,7 @@
 #include "image/ImageStats.h"
 #include "manifest/ManifestDesc.h"
 #include "player/Player.h"
-#include "run/RunOptions.h"
+#include "session/RunOptions.h"
 #include "render/ReadbackRing.h"
 
 namespace toyhost {

@@ -7,9 +7,9 @@
 #pragma once
 
 #include "core/Result.h"
-#include "run/HeadlessRun.h"
-#include "run/RunObserver.h"
-#include "run/RunOptions.h"
+#include "session/RunObserver.h"
+#include "session/RunObserver.h"
+#include "session/RunOptions.h"
 
 namespace toyhost {
 

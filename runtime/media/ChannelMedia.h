@@ -1,4 +1,4 @@
-// ChannelImages: the decoded pixels of every image-file and stock-media channel of a shadertoy,
+// ChannelMedia: the decoded pixels of every image-file and stock-media channel of a shadertoy,
 // loaded before any GL work (each file or stock id once, however many channels use it), with the
 // stand-ins that were used. Every problem (missing file, undecodable image) is reported at once.
 // CPU only, no GL needed.
@@ -46,12 +46,12 @@ struct StandInUse {
     std::string name;  // "Abstract 3", or the id when the table does not know it
 };
 
-class ChannelImages {
+class ChannelMedia {
 public:
     // Decodes every image, cubemap and volume channel of `manifest` (the Sound pass's included)
     // and finds the files of its video and audio channels. Errors name the pass and channel of
     // each problem.
-    static Result<ChannelImages> load(const ManifestDesc& manifest, const MediaResolver& media,
+    static Result<ChannelMedia> load(const ManifestDesc& manifest, const MediaResolver& media,
                                       const MediaOptions& options = {});
 
     // The pixels of an image-file or stock-media channel of the manifest it was loaded for.

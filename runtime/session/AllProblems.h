@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/Result.h"
-#include "run/RunOptions.h"
+#include "session/RunOptions.h"
 
 namespace toyhost {
 

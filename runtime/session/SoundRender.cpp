@@ -1,4 +1,4 @@
-#include "run/SoundRender.h"
+#include "session/SoundRender.h"
 
 #include <GLES3/gl3.h>
 

@@ -1,4 +1,4 @@
-#include "media/ChannelImages.h"
+#include "media/ChannelMedia.h"
 
 #include "core/Defaults.h"
 
@@ -31,9 +31,9 @@ std::string notAvailable(const std::string& what, const std::string& id, const s
 }
 }  // namespace
 
-Result<ChannelImages> ChannelImages::load(const ManifestDesc& manifest, const MediaResolver& media,
+Result<ChannelMedia> ChannelMedia::load(const ManifestDesc& manifest, const MediaResolver& media,
                                           const MediaOptions& options) {
-    ChannelImages set;
+    ChannelMedia set;
     std::vector<Diagnostic> problems;
     std::map<std::string, bool> failed;  // a key that failed is reported once, at its first channel
     std::vector<const PassDesc*> passes;
@@ -194,22 +194,22 @@ Result<ChannelImages> ChannelImages::load(const ManifestDesc& manifest, const Me
     return set;
 }
 
-const CubeFaces8* ChannelImages::findCubemap(const ChannelDesc& channel) const {
+const CubeFaces8* ChannelMedia::findCubemap(const ChannelDesc& channel) const {
     const auto it = cubemaps_.find(channelImageKey(channel));
     return it == cubemaps_.end() ? nullptr : it->second.get();
 }
 
-const Volume8* ChannelImages::findVolume(const ChannelDesc& channel) const {
+const Volume8* ChannelMedia::findVolume(const ChannelDesc& channel) const {
     const auto it = volumes_.find(channelImageKey(channel));
     return it == volumes_.end() ? nullptr : it->second.get();
 }
 
-const TimedInput* ChannelImages::findTimed(const ChannelDesc& channel) const {
+const TimedInput* ChannelMedia::findTimed(const ChannelDesc& channel) const {
     const auto it = timed_.find(channelImageKey(channel));
     return it == timed_.end() ? nullptr : &it->second;
 }
 
-const Image8* ChannelImages::find(const ChannelDesc& channel) const {
+const Image8* ChannelMedia::find(const ChannelDesc& channel) const {
     const auto it = images_.find(channelImageKey(channel));
     return it == images_.end() ? nullptr : it->second.get();
 }
