@@ -103,10 +103,10 @@ Status EncoderPool::writeGuarded(const CapturedFrame& frame, EncodeScratch& scra
         return sink_.write(frame, scratch);
     } catch (const std::exception& e) {
         return Error(std::string("capture: encoding frame ") + std::to_string(frame.frame) + " failed: " + e.what(),
-                     "capture.exception");
+                     Code::CaptureException);
     } catch (...) {
         return Error("capture: encoding frame " + std::to_string(frame.frame) + " failed with an unknown exception",
-                     "capture.exception");
+                     Code::CaptureException);
     }
 }
 
@@ -127,7 +127,7 @@ Result<std::vector<std::byte>> EncoderPool::acquire(std::size_t bytes) {
     std::optional<std::vector<std::byte>> buffer = queue_.acquire(bytes);
     if (!buffer) {
         if (std::optional<Error> error = firstError()) return *error;
-        return Error("capture: the encoder queue was stopped", "capture.stopped");
+        return Error("capture: the encoder queue was stopped", Code::CaptureStopped);
     }
     return std::move(*buffer);
 }

@@ -13,7 +13,7 @@ Result<OutputPattern> OutputPattern::parse(const std::string& pattern) {
         out.format_ = OutputFormat::RawStream;
         return out;
     }
-    auto bad = [&](const std::string& why) { return Error("--out " + pattern + ": " + why, "usage.out"); };
+    auto bad = [&](const std::string& why) { return Error("--out " + pattern + ": " + why, Code::UsageOut); };
     std::string* part = &out.prefix_;
     for (size_t i = 0; i < pattern.size(); ++i) {
         if (pattern[i] != '%') {

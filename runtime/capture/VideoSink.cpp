@@ -95,7 +95,7 @@ Result<std::unique_ptr<VideoSink>> VideoSink::start(const fs::path& path, int wi
     std::error_code ec;
     if (path.has_parent_path()) {
         fs::create_directories(path.parent_path(), ec);
-        if (ec) return fileError(path.parent_path().string(), "cannot create folder: " + ec.message(), "io.write");
+        if (ec) return fileError(path.parent_path().string(), "cannot create folder: " + ec.message(), Code::IoWrite);
     }
     sink->temp_ = temporarySibling(path);
     // ffmpeg's log goes to the temporary folder, not beside the video: when the output's disk is
@@ -105,7 +105,7 @@ Result<std::unique_ptr<VideoSink>> VideoSink::start(const fs::path& path, int wi
                  ("toyhost-ffmpeg-" + std::to_string(::getpid()) + "-" + std::to_string(logs++) + ".log");
     // Both are removed by an emergency exit (core/InFlight.h); ffmpeg is killed first.
     if (!inflight::addFile(sink->temp_) || !inflight::addFile(sink->log_))
-        return fileError(path.string(), "not started: toyhost is stopping", "interrupted");
+        return fileError(path.string(), "not started: toyhost is stopping", Code::Interrupted);
     sink->registered_ = true;
     VideoRequest request{sink->temp_, lowerExtension(path), width, height, fps, settings};
     Result<ChildProcess> ffmpeg = ChildProcess::spawn(ffmpegArguments(request), sink->log_);
@@ -129,7 +129,7 @@ Error VideoSink::ffmpegFailed(const std::string& what) const {
     std::string message = what;
     if (std::string tail = logTail(log_); !tail.empty()) message += "; ffmpeg said: " + tail;
     return fileError(path_.string(), message,
-                     message.find("No space left") != std::string::npos ? "io.no-space" : "capture.ffmpeg");
+                     message.find("No space left") != std::string::npos ? Code::IoNoSpace : Code::CaptureFfmpeg);
 }
 
 Status VideoSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
@@ -160,7 +160,7 @@ Status VideoSink::close() {
     if (!logTail(log_).empty()) return ffmpegFailed("ffmpeg reported an error while finishing the video");
     std::error_code ec;
     fs::rename(temp_, path_, ec);
-    if (ec) return fileError(path_.string(), "cannot rename the finished video into place: " + ec.message(), "io.write");
+    if (ec) return fileError(path_.string(), "cannot rename the finished video into place: " + ec.message(), Code::IoWrite);
     closed_ = true;
     const std::uintmax_t size = fs::file_size(path_, ec);
     if (!ec && size > bytesWritten()) addBytesWritten(size - bytesWritten());

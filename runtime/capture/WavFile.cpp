@@ -62,13 +62,13 @@ Status writeWav16(const std::filesystem::path& path, std::span<const float> inte
     const std::string name = path.string();
     if (sampleRate < 1 || sampleRate > kMaxSampleRate)
         return fileError(name, "cannot write WAV: sample rate " + std::to_string(sampleRate) + " is not in 1.." +
-                                   std::to_string(kMaxSampleRate), "capture.wav");
+                                   std::to_string(kMaxSampleRate), Code::CaptureWav);
     if (interleavedStereo.size() % kChannels != 0)
         return fileError(name, "cannot write WAV: " + std::to_string(interleavedStereo.size()) +
-                                   " values are not whole left/right pairs", "capture.wav");
+                                   " values are not whole left/right pairs", Code::CaptureWav);
     if (interleavedStereo.size() / kChannels > kMaxDataBytes / kBytesPerFrame)
         return fileError(name, "cannot write WAV: " + std::to_string(interleavedStereo.size() / kChannels) +
-                                   " frames are more than a WAV file can hold", "capture.wav");
+                                   " frames are more than a WAV file can hold", Code::CaptureWav);
     const std::vector<std::uint8_t> bytes = encodeWav16(interleavedStereo, sampleRate);
     return writeBytesAtomically(path, std::as_bytes(std::span(bytes)));
 }

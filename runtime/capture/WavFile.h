@@ -18,7 +18,7 @@ inline constexpr std::size_t kWavHeaderBytes = 44;
 // so are frames past the most a RIFF file's 32-bit sizes can describe.
 std::vector<std::uint8_t> encodeWav16(std::span<const float> interleavedStereo, int sampleRate);
 
-// Writes encodeWav16's bytes to `path` atomically (complete or absent). Errors ("capture.wav"):
+// Writes encodeWav16's bytes to `path` atomically (complete or absent). Errors (Code::CaptureWav):
 // a sample rate not in 1..768000, an odd number of values, more audio than a WAV file can hold;
 // and the I/O errors of writing.
 Status writeWav16(const std::filesystem::path& path, std::span<const float> interleavedStereo, int sampleRate);

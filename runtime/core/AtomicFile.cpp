@@ -45,11 +45,11 @@ Status writeFileAtomically(const fs::path& path,
     std::error_code ec;
     if (path.has_parent_path()) {
         fs::create_directories(path.parent_path(), ec);
-        if (ec) return fileError(path.parent_path().string(), "cannot create folder: " + ec.message(), "io.write");
+        if (ec) return fileError(path.parent_path().string(), "cannot create folder: " + ec.message(), Code::IoWrite);
     }
     const fs::path temp = temporarySibling(path);
     // Registered while it exists, so an emergency exit removes it (core/InFlight.h).
-    if (!inflight::addFile(temp)) return fileError(path.string(), "not written: toyhost is stopping", "interrupted");
+    if (!inflight::addFile(temp)) return fileError(path.string(), "not written: toyhost is stopping", Code::Interrupted);
     Status written = write(temp);
     if (!written) {
         fs::remove(temp, ec);
@@ -61,7 +61,7 @@ Status writeFileAtomically(const fs::path& path,
         std::error_code ignored;  // `ec` carries the rename's reason into the message
         fs::remove(temp, ignored);
         inflight::removeFile(temp);
-        return fileError(path.string(), "cannot rename the temporary file into place: " + ec.message(), "io.write");
+        return fileError(path.string(), "cannot rename the temporary file into place: " + ec.message(), Code::IoWrite);
     }
     inflight::removeFile(temp);
     return okStatus();
@@ -70,12 +70,12 @@ Status writeFileAtomically(const fs::path& path,
 Status writeBytesAtomically(const fs::path& path, std::span<const std::byte> bytes) {
     return writeFileAtomically(path, [&](const fs::path& temp) -> Status {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) return fileError(path.string(), std::string("cannot open for writing: ") + std::strerror(errno), "io.write");
+        if (!out) return fileError(path.string(), std::string("cannot open for writing: ") + std::strerror(errno), Code::IoWrite);
         out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
         out.close();
         if (!out)
             return fileError(path.string(), std::string("write failed: ") + std::strerror(errno),
-                             errno == ENOSPC ? "io.no-space" : "io.write");
+                             errno == ENOSPC ? Code::IoNoSpace : Code::IoWrite);
         return okStatus();
     });
 }
@@ -90,17 +90,17 @@ Status statRegularFile(const fs::path& path, const std::string& what, struct sta
         if (cause == ENOENT) {
             struct stat link {};
             if (::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode))
-                return fileError(name, prefix + "is a symbolic link to nothing (its target is missing)", "io.not-found");
-            return fileError(name, prefix + "file not found", "io.not-found");
+                return fileError(name, prefix + "is a symbolic link to nothing (its target is missing)", Code::IoNotFound);
+            return fileError(name, prefix + "file not found", Code::IoNotFound);
         }
-        if (cause == ELOOP) return fileError(name, prefix + "is a symbolic link loop", "io.link-loop");
-        if (cause == ENOTDIR) return fileError(name, prefix + "file not found (a folder in its path is a file)", "io.not-found");
-        return fileError(name, prefix + "cannot be read: " + std::strerror(cause), "io.read");
+        if (cause == ELOOP) return fileError(name, prefix + "is a symbolic link loop", Code::IoLinkLoop);
+        if (cause == ENOTDIR) return fileError(name, prefix + "file not found (a folder in its path is a file)", Code::IoNotFound);
+        return fileError(name, prefix + "cannot be read: " + std::strerror(cause), Code::IoRead);
     }
     // A folder opens like a file on Linux and reads as ""; a device or FIFO may never end.
-    if (S_ISDIR(info.st_mode)) return fileError(name, prefix + "is a folder, not a file", "io.not-a-file");
+    if (S_ISDIR(info.st_mode)) return fileError(name, prefix + "is a folder, not a file", Code::IoNotAFile);
     if (!S_ISREG(info.st_mode))
-        return fileError(name, prefix + "is not a regular file (a device, FIFO or socket)", "io.not-a-file");
+        return fileError(name, prefix + "is not a regular file (a device, FIFO or socket)", Code::IoNotAFile);
     return okStatus();
 }
 }  // namespace
@@ -118,9 +118,9 @@ Result<std::string> readTextFile(const fs::path& path, std::size_t limitBytes) {
         return fileError(name,
                          "is " + std::to_string(info.st_size) + " bytes, more than the limit of " +
                              std::to_string(limitBytes) + " bytes",
-                         "io.too-large");
+                         Code::IoTooLarge);
     FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
-    if (!fd) return fileError(name, std::string("cannot open: ") + std::strerror(errno), "io.read");
+    if (!fd) return fileError(name, std::string("cannot open: ") + std::strerror(errno), Code::IoRead);
     std::string text;
     text.resize(static_cast<std::size_t>(info.st_size));
     std::size_t done = 0;
@@ -134,13 +134,13 @@ Result<std::string> readTextFile(const fs::path& path, std::size_t limitBytes) {
         const ssize_t n = ::read(fd.get(), text.data() + done, text.size() - done);
         if (n < 0) {
             if (errno == EINTR) continue;
-            return fileError(name, std::string("read failed: ") + std::strerror(errno), "io.read");
+            return fileError(name, std::string("read failed: ") + std::strerror(errno), Code::IoRead);
         }
         if (n == 0) break;
         done += static_cast<std::size_t>(n);
     }
     if (done > limitBytes)
-        return fileError(name, "is more than the limit of " + std::to_string(limitBytes) + " bytes", "io.too-large");
+        return fileError(name, "is more than the limit of " + std::to_string(limitBytes) + " bytes", Code::IoTooLarge);
     text.resize(done);
     return text;
 }

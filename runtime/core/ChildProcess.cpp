@@ -54,27 +54,27 @@ Result<ChildProcess> ChildProcess::spawnReading(const std::vector<std::string>& 
 }
 
 Result<std::size_t> ChildProcess::read(std::span<std::byte> bytes) {
-    if (!output_) return Error(name_ + ": its output is not read by toyhost", "process");
+    if (!output_) return Error(name_ + ": its output is not read by toyhost", Code::Process);
     while (true) {
         const ssize_t n = ::read(output_.get(), bytes.data(), bytes.size());
         if (n >= 0) return static_cast<std::size_t>(n);
-        if (errno != EINTR) return Error(name_ + ": reading its output failed: " + std::strerror(errno), "process");
+        if (errno != EINTR) return Error(name_ + ": reading its output failed: " + std::strerror(errno), Code::Process);
     }
 }
 
 Result<ChildProcess> ChildProcess::start(const std::vector<std::string>& argv, const fs::path& logFile, bool readOutput) {
-    if (argv.empty()) return Error("no program to run", "process");
+    if (argv.empty()) return Error("no program to run", Code::Process);
     const std::string name = argv[0];
     std::optional<fs::path> program = findExecutable(name);
-    if (!program) return Error(name + ": program not found in PATH", "process");
+    if (!program) return Error(name + ": program not found in PATH", Code::Process);
 
     // One pipe, closed on exec in toyhost: the child's stdin (its read end, through dup2 below),
     // or with `readOutput` its stdout (its write end); a reading child's stdin is /dev/null.
     int ends[2];
-    if (::pipe2(ends, O_CLOEXEC) != 0) return Error(name + ": cannot create a pipe: " + std::strerror(errno), "process");
+    if (::pipe2(ends, O_CLOEXEC) != 0) return Error(name + ": cannot create a pipe: " + std::strerror(errno), Code::Process);
     FileDescriptor readEnd(ends[0]), writeEnd(ends[1]);
     FileDescriptor log(::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
-    if (!log) return Error(logFile.string() + ": cannot create: " + std::strerror(errno), "process");
+    if (!log) return Error(logFile.string() + ": cannot create: " + std::strerror(errno), Code::Process);
 
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
@@ -104,7 +104,7 @@ Result<ChildProcess> ChildProcess::start(const std::vector<std::string>& argv, c
     const int spawned = ::posix_spawn(&pid, program->c_str(), &actions, &attributes, args.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     posix_spawnattr_destroy(&attributes);
-    if (spawned != 0) return Error(name + ": cannot start: " + std::strerror(spawned), "process");
+    if (spawned != 0) return Error(name + ": cannot start: " + std::strerror(spawned), Code::Process);
     inflight::addChild(pid);  // an emergency exit kills it (core/InFlight.h)
 
     ChildProcess child;
@@ -138,14 +138,14 @@ ChildProcess& ChildProcess::operator=(ChildProcess&& other) noexcept {
 ChildProcess::~ChildProcess() { kill(); }
 
 Status ChildProcess::write(std::span<const std::byte> bytes) {
-    if (!input_) return Error(name_ + ": its input is already closed", "process");
+    if (!input_) return Error(name_ + ": its input is already closed", Code::Process);
     return writeAll(input_.get(), bytes, name_ + "'s input");
 }
 
 Result<int> ChildProcess::closeAndWait(int killAfterMs) {
     input_.reset();
     output_.reset();
-    if (pid_ < 0) return Error(name_ + ": not running", "process");
+    if (pid_ < 0) return Error(name_ + ": not running", Code::Process);
     if (killAfterMs >= 0 && pidfd_) {
         pollfd ended{pidfd_.get(), POLLIN, 0};
         int polled;
@@ -159,8 +159,8 @@ Result<int> ChildProcess::closeAndWait(int killAfterMs) {
     while (waited < 0 && errno == EINTR);
     inflight::removeChild(pid_);
     pid_ = -1;
-    if (waited < 0) return Error(name_ + ": waitpid failed: " + std::strerror(errno), "process");
-    if (WIFSIGNALED(status)) return Error(name_ + ": killed by signal " + std::to_string(WTERMSIG(status)), "process");
+    if (waited < 0) return Error(name_ + ": waitpid failed: " + std::strerror(errno), Code::Process);
+    if (WIFSIGNALED(status)) return Error(name_ + ": killed by signal " + std::to_string(WTERMSIG(status)), Code::Process);
     return WEXITSTATUS(status);
 }
 

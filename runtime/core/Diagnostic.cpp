@@ -31,7 +31,11 @@ std::string formatDiagnostic(const Diagnostic& d) {
     }
     if (!d.field.empty()) out += d.field + ": ";
     out += d.message;
-    if (!d.code.empty()) out += " [" + d.code + "]";
+    if (d.code != Code::Unclassified) {
+        out += " [";
+        out += codeName(d.code);
+        out += "]";
+    }
     return out;
 }
 

@@ -6,14 +6,17 @@
 #include <string>
 #include <vector>
 
+#include "core/DiagnosticCode.h"
+
 namespace toyhost {
 
 enum class Severity { Error, Warning, Notice };
 
 struct Diagnostic {
     Severity severity = Severity::Error;
-    // Short and stable, for scripts and tests: "manifest.field", "shader.compile", "io.read", ...
-    std::string code;
+    // What kind of problem: printed as its short stable text ("manifest.field", "shader.compile"),
+    // and its category decides exit codes and control flow (core/DiagnosticCode.h).
+    Code code = Code::Unclassified;
     std::string message;  // what is wrong, without the place
     std::string file;     // the file it is about, as the user named it; "" when none
     std::string pass;     // "Buffer A" .. "Image", "Common"; "" when none

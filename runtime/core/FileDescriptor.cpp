@@ -34,8 +34,8 @@ bool CancelSignal::cancelled() const {
 namespace {
 
 Error writeError(const std::string& what, int error) {
-    if (error == EPIPE) return Error(what + ": the reading end was closed (broken pipe)", "io.broken-pipe");
-    return Error(what + ": write failed: " + std::strerror(error), error == ENOSPC ? "io.no-space" : "io.write");
+    if (error == EPIPE) return Error(what + ": the reading end was closed (broken pipe)", Code::IoBrokenPipe);
+    return Error(what + ": write failed: " + std::strerror(error), error == ENOSPC ? Code::IoNoSpace : Code::IoWrite);
 }
 
 // Bytes a write to pipe `fd` can take without blocking, or -1 when `fd` is not a pipe.
@@ -59,7 +59,7 @@ Status writeAll(int fd, std::span<const std::byte> bytes, const std::string& wha
                 if (errno == EINTR) continue;
                 return writeError(what, errno);
             }
-            if (wait[1].revents & POLLIN) return Error(what + ": writing was cancelled", "cancelled");
+            if (wait[1].revents & POLLIN) return Error(what + ": writing was cancelled", Code::Cancelled);
             // A pipe with some room still blocks a write larger than that room; write only what fits.
             const long room = pipeRoom(fd);
             if (room == 0) continue;

@@ -27,7 +27,7 @@ std::string pathOf(const std::vector<Level>& levels, std::size_t upTo) {
 }
 }  // namespace
 
-Result<json> parseJsonStrictly(std::string_view text, const std::string& file, const std::string& code) {
+Result<json> parseJsonStrictly(std::string_view text, const std::string& file, Code code) {
     std::vector<Level> levels;
     std::vector<Diagnostic> duplicates;
     auto elementStarts = [&] {
@@ -52,7 +52,7 @@ Result<json> parseJsonStrictly(std::string_view text, const std::string& file, c
                 level.key = parsed.get<std::string>();
                 if (!level.keys.insert(level.key).second && duplicates.size() < 100) {
                     Diagnostic d;
-                    d.code = "json.duplicate-key";
+                    d.code = Code::JsonDuplicateKey;
                     d.file = file;
                     d.field = pathOf(levels, levels.size());
                     d.message = "this key appears more than once in its object (JSON keeps only one; remove the other)";

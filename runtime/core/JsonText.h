@@ -12,7 +12,7 @@
 namespace toyhost {
 
 // `file` names the text in errors; `code` is the diagnostic code of a syntax error ("manifest.json",
-// "export.json", ...). Duplicate keys are reported with code "json.duplicate-key", all at once.
-Result<nlohmann::json> parseJsonStrictly(std::string_view text, const std::string& file, const std::string& code);
+// Code::ExportJson, ...). Duplicate keys are reported with code Code::JsonDuplicateKey, all at once.
+Result<nlohmann::json> parseJsonStrictly(std::string_view text, const std::string& file, Code code);
 
 }  // namespace toyhost

@@ -16,9 +16,9 @@ struct Error {
     std::vector<Diagnostic> diagnostics;  // at least one
 
     // A problem with no particular place; `code` says what kind it is.
-    explicit Error(std::string message, std::string code = "error") {
+    explicit Error(std::string message, Code code = Code::Unclassified) {
         Diagnostic d;
-        d.code = std::move(code);
+        d.code = code;
         d.message = std::move(message);
         diagnostics.push_back(std::move(d));
     }
@@ -28,12 +28,14 @@ struct Error {
     // Every diagnostic, one formatted line each (no prefix).
     std::string text() const { return formatDiagnostics(diagnostics); }
     const Diagnostic& first() const { return diagnostics.front(); }
+    // The category of the first diagnostic, which decides what happens next (exit codes).
+    Category category() const { return categoryOf(first().code); }
 };
 
 // A problem with one file (its path as the user named it).
-inline Error fileError(const std::string& file, std::string message, std::string code) {
+inline Error fileError(const std::string& file, std::string message, Code code) {
     Diagnostic d;
-    d.code = std::move(code);
+    d.code = code;
     d.file = file;
     d.message = std::move(message);
     return Error(std::move(d));

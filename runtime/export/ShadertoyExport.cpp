@@ -91,7 +91,7 @@ public:
         const json& passes = shader["renderpass"];
         for (size_t i = 0; i < passes.size(); ++i) readPass(passes[i], i);
         if (!problems_.empty()) return Error(problems_);
-        if (!desc_.find(PassId::Image)) return fileError(label_, "the export has no image pass", "export.missing");
+        if (!desc_.find(PassId::Image)) return fileError(label_, "the export has no image pass", Code::ExportMissing);
         std::sort(desc_.passes.begin(), desc_.passes.end(),
                   [](const PassDesc& a, const PassDesc& b) { return a.id < b.id; });
         unbindMissingBuffers();
@@ -100,12 +100,12 @@ public:
 
 private:
     // `field` is the place in the export (renderpass[3].inputs[1].channel).
-    void problem(const std::string& field, const std::string& what, const char* code = "export.value",
+    void problem(const std::string& field, const std::string& what, Code code = Code::ExportValue,
                  std::optional<PassId> pass = std::nullopt, int channel = -1) {
         problems_.push_back(fieldDiagnostic(label_, field, what, code, pass, channel));
     }
 
-    void notice(const std::string& what, const char* code, std::optional<PassId> pass = std::nullopt,
+    void notice(const std::string& what, Code code, std::optional<PassId> pass = std::nullopt,
                 int channel = -1) {
         Diagnostic d;
         d.severity = Severity::Notice;
@@ -127,38 +127,38 @@ private:
         const std::string name = text(pass, "name");
         if (name.size() == 8 && name.rfind("Buffer ", 0) == 0 && name[7] >= 'A' && name[7] <= 'D')
             return bufferPass(name[7] - 'A');
-        problem(where + ".outputs", "buffer pass without a Buffer A..D output id", "export.missing");
+        problem(where + ".outputs", "buffer pass without a Buffer A..D output id", Code::ExportMissing);
         return std::nullopt;
     }
 
     void readPass(const json& pass, size_t index) {
         const std::string where = "renderpass[" + std::to_string(index) + "]";
-        if (!pass.is_object()) return problem(where, "is not an object", "export.type");
+        if (!pass.is_object()) return problem(where, "is not an object", Code::ExportType);
         const std::string type = text(pass, "type");
         const std::string name = text(pass, "name");
         const std::string place = where;
         if (!pass.contains("code") || !pass["code"].is_string())
-            return problem(place + ".code", "is missing or not a string", "export.missing");
+            return problem(place + ".code", "is missing or not a string", Code::ExportMissing);
         const std::string code = pass["code"].get<std::string>();
 
         if (type == "common") {
-            if (desc_.commonSource) return problem(place, "a second common pass", "export.duplicate");
+            if (desc_.commonSource) return problem(place, "a second common pass", Code::ExportDuplicate);
             desc_.commonSource = path_;
             desc_.commonName = label_ + " [Common]";
             desc_.commonCode = code;
             return;
         }
         if (type != "image" && type != "buffer" && type != "cubemap" && type != "sound")
-            return problem(place + ".type", "unknown pass type \"" + type + "\"", "export.value");
+            return problem(place + ".type", "unknown pass type \"" + type + "\"", Code::ExportValue);
 
         const bool sound = type == "sound";
         std::optional<PassId> id = sound ? std::optional<PassId>(PassId::Sound)
                                    : type == "cubemap" ? std::optional<PassId>(PassId::CubeA)
                                                        : passIdentity(pass, type, place);
         if (!id) return;
-        if (sound && desc_.sound) return problem(place, "a second Sound pass", "export.duplicate");
+        if (sound && desc_.sound) return problem(place, "a second Sound pass", Code::ExportDuplicate);
         if (!sound && desc_.find(*id))
-            return problem(place, std::string("a second ") + passName(*id) + " pass", "export.duplicate", *id);
+            return problem(place, std::string("a second ") + passName(*id) + " pass", Code::ExportDuplicate, *id);
         PassDesc out;
         out.id = *id;
         out.source = path_;
@@ -169,27 +169,27 @@ private:
                 readInput(out, (*inputs)[k], place + ".inputs[" + std::to_string(k) + "]");
         else if (inputs != pass.end() && !inputs->is_null())
             problem(place + ".inputs", std::string("must be an array of inputs, not ") + inputs->type_name(),
-                    "export.value", *id);
+                    Code::ExportValue, *id);
         if (auto outputs = pass.find("outputs"); outputs != pass.end() && !outputs->is_array() && !outputs->is_null())
             problem(place + ".outputs", std::string("must be an array of outputs, not ") + outputs->type_name(),
-                    "export.value", *id);
+                    Code::ExportValue, *id);
         if (sound) desc_.sound = std::move(out);
         else desc_.passes.push_back(std::move(out));
     }
 
     void readInput(PassDesc& pass, const json& input, const std::string& place) {
-        if (!input.is_object()) return problem(place, "is not an object", "export.type", pass.id);
+        if (!input.is_object()) return problem(place, "is not an object", Code::ExportType, pass.id);
         auto channelIt = input.find("channel");
-        if (channelIt == input.end()) return problem(place + ".channel", "is missing", "export.missing", pass.id);
+        if (channelIt == input.end()) return problem(place + ".channel", "is missing", Code::ExportMissing, pass.id);
         if (!channelIt->is_number_integer() || *channelIt < 0 || *channelIt > 3)
-            return problem(place + ".channel", channelIt->dump() + " is not 0..3", "export.value", pass.id);
+            return problem(place + ".channel", channelIt->dump() + " is not 0..3", Code::ExportValue, pass.id);
         const int c = channelIt->get<int>();
         const std::string& where = place;
         const std::string kind = input.contains("ctype") ? text(input, "ctype") : text(input, "type");
         const std::string src = input.contains("src") ? text(input, "src") : text(input, "filepath");
         ChannelDesc& channel = pass.channels[c];
         if (channel.kind != ChannelKind::None)
-            return problem(where + ".channel", "iChannel" + std::to_string(c) + " is bound twice", "export.duplicate",
+            return problem(where + ".channel", "iChannel" + std::to_string(c) + " is bound twice", Code::ExportDuplicate,
                            pass.id, c);
 
         if (kind == "buffer") {
@@ -201,20 +201,20 @@ private:
                     buffer = src[at + 21] - '0';
             }
             if (buffer < 0)
-                return problem(where + ".id", "buffer input with an unknown id " + text(input, "id"), "export.value",
+                return problem(where + ".id", "buffer input with an unknown id " + text(input, "id"), Code::ExportValue,
                                pass.id, c);
             channel.kind = ChannelKind::Buffer;
             channel.buffer = buffer;
         } else if (kind == "keyboard") {
             channel.kind = ChannelKind::Keyboard;
         } else if (kind == "texture") {
-            if (src.empty()) return problem(where + ".src", "texture input without a src", "export.missing", pass.id, c);
+            if (src.empty()) return problem(where + ".src", "texture input without a src", Code::ExportMissing, pass.id, c);
             channel.kind = ChannelKind::StockMedia;
             channel.media = src;
         } else if (kind == "cubemap" && isCubeBufferInput(input, src)) {
             channel.kind = ChannelKind::CubeBuffer;
         } else if (kind == "cubemap" || kind == "volume" || kind == "video" || kind == "music" || kind == "musicstream") {
-            if (src.empty()) return problem(where + ".src", kind + " input without a src", "export.missing", pass.id, c);
+            if (src.empty()) return problem(where + ".src", kind + " input without a src", Code::ExportMissing, pass.id, c);
             channel.kind = kind == "cubemap" ? ChannelKind::Cubemap
                            : kind == "volume" ? ChannelKind::Volume
                            : kind == "video"  ? ChannelKind::Video
@@ -227,7 +227,7 @@ private:
         } else {
             notice((kind.empty() ? std::string("untyped") : "\"" + kind + "\"") +
                        " inputs are not a Shadertoy input kind; the channel is left unbound",
-                   "export.unsupported-input", pass.id, c);
+                   Code::ExportUnsupportedInput, pass.id, c);
             return;
         }
         channel.samplerType = samplerTypeOf(channel.kind);
@@ -239,10 +239,10 @@ private:
         else if (filter == "linear") channel.sampler.filter = Filter::Linear;
         else if (filter == "mipmap") channel.sampler.filter = Filter::Mipmap;
         else if (!filter.empty())
-            problem(where + ".sampler.filter", "unknown filter \"" + filter + "\"", "export.value", pass.id, c);
+            problem(where + ".sampler.filter", "unknown filter \"" + filter + "\"", Code::ExportValue, pass.id, c);
         if (wrap == "clamp") channel.sampler.wrap = Wrap::Clamp;
         else if (wrap == "repeat") channel.sampler.wrap = Wrap::Repeat;
-        else if (!wrap.empty()) problem(where + ".sampler.wrap", "unknown wrap \"" + wrap + "\"", "export.value", pass.id, c);
+        else if (!wrap.empty()) problem(where + ".sampler.wrap", "unknown wrap \"" + wrap + "\"", Code::ExportValue, pass.id, c);
         // vflip applies to images only; the player ignores it for buffers.
         if (takesVflip(channel.kind))
             if (std::optional<bool> vflip = flag(sampler, "vflip")) channel.sampler.vflip = *vflip;
@@ -260,7 +260,7 @@ private:
                 if (!missingBuffer && !missingCube) continue;
                 const std::string what = missingCube ? "Cube A" : passName(bufferPass(channel.buffer));
                 notice("reads " + what + ", which the export does not define; the channel is left unbound",
-                       "export.missing-buffer", pass.id, c);
+                       Code::ExportMissingBuffer, pass.id, c);
                 const SamplerType declared = channel.samplerType;
                 channel = ChannelDesc{};
                 channel.samplerType = declared;
@@ -305,11 +305,11 @@ bool isShadertoyExport(const json& document) {
 
 Result<ManifestDesc> parseShadertoyExport(std::string_view jsonText, const fs::path& exportPath) {
     const fs::path path = fs::absolute(exportPath).lexically_normal();
-    Result<json> parsed = parseJsonStrictly(jsonText, path.string(), "export.json");
+    Result<json> parsed = parseJsonStrictly(jsonText, path.string(), Code::ExportJson);
     if (!parsed) return parsed.error();
     const json document = std::move(*parsed);
     const json* shader = shaderObject(document);
-    if (!shader) return fileError(path.string(), "not a Shadertoy export: " + shapeProblem(document), "export.shape");
+    if (!shader) return fileError(path.string(), "not a Shadertoy export: " + shapeProblem(document), Code::ExportShape);
     return ExportReader(path).read(*shader);
 }
 

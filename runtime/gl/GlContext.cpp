@@ -27,7 +27,7 @@ Status checkRequiredGlFeatures() {
     for (const char* ext : {"GL_EXT_color_buffer_float", "GL_OES_texture_float_linear"})
         if (!hasExtension(ext))
             return Error(std::string("GL: the driver lacks ") + ext + ", which Shadertoy's float buffers need",
-                         "gl.feature");
+                         Code::GlFeature);
     return okStatus();
 }
 

@@ -30,7 +30,7 @@ const char* eglErrorName(EGLint error) {
     return "unknown EGL error";
 }
 
-Error eglFailure(const std::string& what) { return Error("EGL: " + what + ": " + eglErrorName(eglGetError()), "gl.egl"); }
+Error eglFailure(const std::string& what) { return Error("EGL: " + what + ": " + eglErrorName(eglGetError()), Code::GlEgl); }
 
 bool hasToken(const char* list, const char* token) {
     if (!list) return false;
@@ -82,10 +82,10 @@ Result<std::shared_ptr<EglDisplay>> shareDisplay(EGLDisplay handle, const std::s
 
 Result<std::shared_ptr<EglDisplay>> surfacelessDisplay() {
     if (!hasToken(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), "EGL_MESA_platform_surfaceless"))
-        return Error("EGL: the surfaceless platform (EGL_MESA_platform_surfaceless) is not available", "gl.egl");
+        return Error("EGL: the surfaceless platform (EGL_MESA_platform_surfaceless) is not available", Code::GlEgl);
     auto getPlatformDisplay =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    if (!getPlatformDisplay) return Error("EGL: eglGetPlatformDisplayEXT is missing", "gl.egl");
+    if (!getPlatformDisplay) return Error("EGL: eglGetPlatformDisplayEXT is missing", Code::GlEgl);
     EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (display == EGL_NO_DISPLAY) return eglFailure("Failed to get the surfaceless display");
     return shareDisplay(display, "surfaceless");
@@ -95,13 +95,13 @@ Result<std::shared_ptr<EglDisplay>> surfacelessDisplay() {
 Result<std::shared_ptr<EglDisplay>> deviceDisplay() {
     const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!hasToken(client, "EGL_EXT_platform_device") || !hasToken(client, "EGL_EXT_device_enumeration"))
-        return Error("EGL: the device platform (EGL_EXT_platform_device) is not available", "gl.egl");
+        return Error("EGL: the device platform (EGL_EXT_platform_device) is not available", Code::GlEgl);
     auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     auto getPlatformDisplay =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    if (!queryDevices || !getPlatformDisplay) return Error("EGL: the device functions are missing", "gl.egl");
+    if (!queryDevices || !getPlatformDisplay) return Error("EGL: the device functions are missing", Code::GlEgl);
     EGLint count = 0;
-    if (!queryDevices(0, nullptr, &count) || count <= 0) return Error("EGL: no EGL devices found", "gl.egl");
+    if (!queryDevices(0, nullptr, &count) || count <= 0) return Error("EGL: no EGL devices found", Code::GlEgl);
     std::vector<EGLDeviceEXT> devices(static_cast<size_t>(count));
     if (!queryDevices(count, devices.data(), &count)) return eglFailure("Failed to list EGL devices");
     std::string tried;
@@ -114,7 +114,7 @@ Result<std::shared_ptr<EglDisplay>> deviceDisplay() {
     }
     return Error("EGL: none of the " + std::to_string(count) + " EGL devices initialised" +
                      (tried.empty() ? std::string() : " (" + tried + ")"),
-                 "gl.egl");
+                 Code::GlEgl);
 }
 
 class HeadlessContext final : public GlContext {
@@ -152,7 +152,7 @@ Result<std::shared_ptr<GlContext>> contextOn(std::shared_ptr<EglDisplay> display
     EGLDisplay handle = display->get();
     if (!hasToken(eglQueryString(handle, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context"))
         return Error("EGL: EGL_KHR_surfaceless_context is not supported on the " + display->platform() + " display",
-                     "gl.egl");
+                     Code::GlEgl);
     if (!eglBindAPI(EGL_OPENGL_ES_API)) return eglFailure("Failed to bind the OpenGL ES API");
     const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_SURFACE_TYPE, 0, EGL_NONE};
     EGLConfig config = nullptr;
@@ -190,7 +190,7 @@ Result<std::shared_ptr<GlContext>> createHeadlessContext(const HeadlessOptions& 
                 if (!device)
                     return Error("EGL: no headless platform: " + display.error().first().message + "; " +
                                      device.error().first().message + " (install Mesa's EGL, libegl-mesa0, or a GPU driver's EGL)",
-                                 "gl.egl");
+                                 Code::GlEgl);
                 display = std::move(device);
             }
             break;

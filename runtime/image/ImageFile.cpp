@@ -110,11 +110,11 @@ Result<Image8> loadImageFile(const fs::path& path) {
     // exposed to users' files (fuzzing found endless loops and slow paths in them).
     const bool png = startsWith(*bytes, "\x89PNG\r\n\x1a\n");
     const bool jpeg = startsWith(*bytes, "\xFF\xD8\xFF");
-    if (!png && !jpeg) return fileError(path.string(), "cannot decode image: not a PNG or JPEG file", "image.decode");
+    if (!png && !jpeg) return fileError(path.string(), "cannot decode image: not a PNG or JPEG file", Code::ImageDecode);
     if (jpeg && !jpegHuffmanTablesValid(*bytes))
-        return fileError(path.string(), "cannot decode image: a JPEG Huffman table (DHT) is malformed", "image.decode");
+        return fileError(path.string(), "cannot decode image: a JPEG Huffman table (DHT) is malformed", Code::ImageDecode);
     if (png && !pngChunksFit(*bytes))
-        return fileError(path.string(), "cannot decode image: a PNG chunk is longer than the file", "image.decode");
+        return fileError(path.string(), "cannot decode image: a PNG chunk is longer than the file", Code::ImageDecode);
     int declaredWidth = 0, declaredHeight = 0, declaredChannels = 0;
     const auto* raw = reinterpret_cast<const stbi_uc*>(bytes->data());
     const int rawSize = static_cast<int>(bytes->size());
@@ -123,7 +123,7 @@ Result<Image8> loadImageFile(const fs::path& path) {
         return fileError(path.string(),
                          "the image is " + std::to_string(declaredWidth) + "x" + std::to_string(declaredHeight) +
                              ", larger than the " + std::to_string(kMaxImageSide) + " a side textures may have",
-                         "image.too-large");
+                         Code::ImageTooLarge);
 
     // Asking stb for 4 channels gives exactly the WebGL upload: it expands grey to R=G=B and
     // fills a missing alpha with 255, and it never applies gAMA/iCCP/sRGB chunks. The row order
@@ -135,7 +135,7 @@ Result<Image8> loadImageFile(const fs::path& path) {
     if (!pixels) {
         const char* reason = stbi_failure_reason();
         return fileError(path.string(), std::string("cannot decode image: ") + (reason ? reason : "unknown error"),
-                          "image.decode");
+                          Code::ImageDecode);
     }
 
     Image8 image;

@@ -14,7 +14,7 @@ Result<std::array<ChannelStats, 4>> channelStats(const ImageF32& image, Region r
         end(r.y, r.height) > image.height)
         return Error("region " + std::to_string(r.x) + "," + std::to_string(r.y) + "," + std::to_string(r.width) +
                      "," + std::to_string(r.height) + " is outside the " + std::to_string(image.width) + "x" +
-                     std::to_string(image.height) + " image", "inspect.region");
+                     std::to_string(image.height) + " image", Code::InspectRegion);
     std::array<ChannelStats, 4> stats{};
     std::array<std::size_t, 4> finite{};
     for (auto& s : stats) {

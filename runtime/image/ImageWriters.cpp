@@ -28,19 +28,19 @@ namespace {
 constexpr const char* kExrChannels[4] = {"R", "G", "B", "A"};
 
 Error ioError(const fs::path& path, const std::string& what, int error) {
-    return fileError(path.string(), what + ": " + std::strerror(error), error == ENOSPC ? "io.no-space" : "io.write");
+    return fileError(path.string(), what + ": " + std::strerror(error), error == ENOSPC ? Code::IoNoSpace : Code::IoWrite);
 }
 
 Status checkSize(const fs::path& path, int width, int height, std::size_t values) {
     if (width <= 0 || height <= 0)
         return fileError(path.string(), "invalid image size " + std::to_string(width) + "x" + std::to_string(height),
-                         "image.size");
+                         Code::ImageSize);
     const std::size_t expected =
         static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4;
     if (values != expected)
         return fileError(path.string(), "pixel buffer holds " + std::to_string(values) + " values, " + std::to_string(width) +
                                    "x" + std::to_string(height) + " RGBA needs " + std::to_string(expected),
-                         "image.size");
+                         Code::ImageSize);
     return okStatus();
 }
 
@@ -97,7 +97,7 @@ Status writePng(const fs::path& path, int width, int height, std::span<const std
     if (Status size = checkSize(path, width, height, rgba.size()); !size) return size;
     if (compressionLevel < 0 || compressionLevel > 9)
         return fileError(path.string(), "PNG compression level must be 0..9, got " + std::to_string(compressionLevel),
-                         "image.png-level");
+                         Code::ImagePngLevel);
 
     // PNG stores the top row first: row i of the file is row (height-1-i) of the input. The table
     // of row pointers flips without copying pixels.
@@ -116,7 +116,7 @@ Status writePng(const fs::path& path, int width, int height, std::span<const std
             // libpng reports a failed fwrite as "Write Error"; errno still says why.
             const int cause = errno;
             if (cause == ENOSPC) return ioError(path, "PNG write failed", cause);
-            return fileError(path.string(), std::string("PNG encoding failed: ") + error.message, "io.write");
+            return fileError(path.string(), std::string("PNG encoding failed: ") + error.message, Code::IoWrite);
         }
         if (std::fflush(file.get()) != 0 || std::ferror(file.get())) return ioError(path, "write failed", errno);
         if (std::fclose(file.release()) != 0) return ioError(path, "write failed", errno);
@@ -155,7 +155,7 @@ Status writeExr(const fs::path& path, int width, int height, std::span<const flo
         } catch (const std::exception& e) {
             const int cause = errno;
             if (cause == ENOSPC) return ioError(path, "cannot write EXR", cause);
-            return fileError(path.string(), std::string("cannot write EXR: ") + e.what(), "io.write");
+            return fileError(path.string(), std::string("cannot write EXR: ") + e.what(), Code::IoWrite);
         }
         out.close();  // the OutputFile above has written its offset table by now
         if (!out) return ioError(path, "write failed", errno);
@@ -172,7 +172,7 @@ Status exrHeaderFits(const fs::path& path) {
     if (!bytes) return bytes.error();
     const std::string& d = *bytes;
     auto bad = [&](const char* what) {
-        return fileError(path.string(), std::string("not a readable EXR file: ") + what, "image.decode");
+        return fileError(path.string(), std::string("not a readable EXR file: ") + what, Code::ImageDecode);
     };
     if (d.size() < 8 || d.compare(0, 4, "\x76\x2f\x31\x01") != 0) return bad("no EXR signature");
     // Buffer dumps are single-part scanline or tiled images; multi-part and deep files have more
@@ -217,7 +217,7 @@ Status exrHeaderFits(const fs::path& path) {
                 return fileError(path.string(),
                                  "the EXR's data window is " + std::to_string(width) + "x" + std::to_string(height) +
                                      ", not 1x1 .. 16384x16384",
-                                 "image.too-large");
+                                 Code::ImageTooLarge);
         }
         i = typeEnd + 5 + size;
     }
@@ -228,8 +228,8 @@ Status exrHeaderFits(const fs::path& path) {
 Result<ImageF32> readExr(const fs::path& path) {
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
-    if (!fs::exists(status)) return fileError(path.string(), "file not found", "io.not-found");
-    if (!fs::is_regular_file(status)) return fileError(path.string(), "is not a regular file", "io.not-a-file");
+    if (!fs::exists(status)) return fileError(path.string(), "file not found", Code::IoNotFound);
+    if (!fs::is_regular_file(status)) return fileError(path.string(), "is not a regular file", Code::IoNotAFile);
     if (Status sane = exrHeaderFits(path); !sane) return sane.error();
     try {
         Imf::InputFile file(path.c_str());
@@ -241,7 +241,7 @@ Result<ImageF32> readExr(const fs::path& path) {
             return fileError(path.string(),
                              "the EXR's data window is " + std::to_string(width) + "x" + std::to_string(height) +
                                  ", not 1x1 .. 16384x16384",
-                             "image.too-large");
+                             Code::ImageTooLarge);
         std::vector<float> topFirst(static_cast<std::size_t>(width) *
                                     static_cast<std::size_t>(height) * 4);
         Imf::FrameBuffer frame;
@@ -257,7 +257,7 @@ Result<ImageF32> readExr(const fs::path& path) {
         flipRows(std::span<float>(topFirst), static_cast<int>(width), static_cast<int>(height));
         return ImageF32{static_cast<int>(width), static_cast<int>(height), std::move(topFirst)};
     } catch (const std::exception& e) {
-        return fileError(path.string(), std::string("not a readable EXR file: ") + e.what(), "image.decode");
+        return fileError(path.string(), std::string("not a readable EXR file: ") + e.what(), Code::ImageDecode);
     }
 }
 

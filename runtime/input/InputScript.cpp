@@ -42,7 +42,7 @@ public:
         : source_(source), field_("event " + std::to_string(index)) {}
     Error error(const std::string& what) const {
         Diagnostic d;
-        d.code = "script.event";
+        d.code = Code::ScriptEvent;
         d.file = source_;
         d.field = field_;
         d.message = what;
@@ -55,12 +55,12 @@ private:
 };
 
 Result<json> parseArray(std::string_view text, std::string_view source) {
-    Result<json> parsed = parseJsonStrictly(text, std::string(source), "script.json");
+    Result<json> parsed = parseJsonStrictly(text, std::string(source), Code::ScriptJson);
     if (!parsed) return parsed.error();
     json doc = std::move(*parsed);
     if (!doc.is_array())
         return fileError(std::string(source), std::string("expected a JSON array of events, got ") + doc.type_name(),
-                         "script.json");
+                         Code::ScriptJson);
     return doc;
 }
 

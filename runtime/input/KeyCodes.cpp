@@ -68,13 +68,13 @@ Result<int> keyCodeFromName(std::string_view name) {
         long long code = -1;
         auto [end, ec] = std::from_chars(lower.data(), lower.data() + lower.size(), code);
         if (ec != std::errc() || code > 255)
-            return Error("key code " + lower + " is out of range 0..255", "script.key");
+            return Error("key code " + lower + " is out of range 0..255", Code::ScriptKey);
         return static_cast<int>(code);
     }
     for (const NamedKey& key : kNamedKeys)
         if (key.name == lower) return key.code;
     if (int code = numberedKey(lower); code >= 0) return code;
-    return Error("unknown key \"" + std::string(name) + "\"", "script.key");
+    return Error("unknown key \"" + std::string(name) + "\"", Code::ScriptKey);
 }
 
 }  // namespace toyhost

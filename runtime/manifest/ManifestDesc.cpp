@@ -2,10 +2,10 @@
 
 namespace toyhost {
 
-Diagnostic fieldDiagnostic(std::string file, std::string field, std::string message, std::string code,
+Diagnostic fieldDiagnostic(std::string file, std::string field, std::string message, Code code,
                            std::optional<PassId> pass, int channel) {
     Diagnostic d;
-    d.code = std::move(code);
+    d.code = code;
     d.file = std::move(file);
     d.field = std::move(field);
     d.message = std::move(message);

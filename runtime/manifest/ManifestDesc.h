@@ -25,7 +25,7 @@ const char* passName(PassId id);            // "Buffer A" .. "Cube A", "Image"
 
 // A problem at JSON path `field` of `file` (a manifest or an export), about `pass` / `channel`
 // when set.
-Diagnostic fieldDiagnostic(std::string file, std::string field, std::string message, std::string code,
+Diagnostic fieldDiagnostic(std::string file, std::string field, std::string message, Code code,
                            std::optional<PassId> pass = std::nullopt, int channel = -1);
 inline bool isBuffer(PassId id) { return static_cast<int>(id) < kBufferCount; }  // Buffer A..D
 inline int bufferIndex(PassId id) { return static_cast<int>(id); }  // only for buffers

@@ -30,7 +30,7 @@ class Problems {
 public:
     explicit Problems(std::string file) : file_(std::move(file)) {}
     // `field` is the JSON path; `pass`/`channel` are set when the problem is about one.
-    void add(const std::string& field, const std::string& message, const char* code = "manifest.value",
+    void add(const std::string& field, const std::string& message, Code code = Code::ManifestValue,
              std::optional<PassId> pass = std::nullopt, int channel = -1) {
         diagnostics_.push_back(fieldDiagnostic(file_, field, message, code, pass, channel));
     }
@@ -54,7 +54,7 @@ void rejectUnknownFields(const json& object, const std::set<std::string>& known,
         std::string list;
         for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
         problems.add(where, "unknown field " + quote(key) + didYouMean(key, candidates) + " (known: " + list + ")",
-                     "manifest.unknown-field");
+                     Code::ManifestUnknownField);
     }
 }
 
@@ -87,10 +87,10 @@ public:
         : path_(manifestPath), dir_(manifestPath.parent_path()), problems_(manifestPath.string()) {}
 
     Result<ManifestDesc> load(std::string_view text) {
-        Result<json> parsed = parseJsonStrictly(text, path_.string(), "manifest.json");
+        Result<json> parsed = parseJsonStrictly(text, path_.string(), Code::ManifestJson);
         if (!parsed) return parsed.error();
         const json root = std::move(*parsed);
-        if (!root.is_object()) return fileError(path_.string(), "the manifest must be a JSON object", "manifest.json");
+        if (!root.is_object()) return fileError(path_.string(), "the manifest must be a JSON object", Code::ManifestJson);
 
         desc_.manifestPath = path_;
         rejectUnknownFields(root, {"name", "common", "passes", "media", "defaults"}, "", problems_);
@@ -117,7 +117,7 @@ private:
         auto it = object.find(key);
         if (it == object.end()) return std::nullopt;
         if (!it->is_string() || it->get<std::string>().empty()) {
-            problems_.add(where, quote(key) + " must be a non-empty string, not " + typeName(*it), "manifest.type");
+            problems_.add(where, quote(key) + " must be a non-empty string, not " + typeName(*it), Code::ManifestType);
             return std::nullopt;
         }
         return it->get<std::string>();
@@ -133,7 +133,7 @@ private:
         if (!text) {
             const Diagnostic& cause = text.error().first();
             problems_.add(where.empty() ? key : where + "." + key, file.string() + ": " + cause.message,
-                          cause.code.c_str());
+                          cause.code);
             return std::nullopt;
         }
         return std::make_pair(file, std::move(*text));
@@ -150,7 +150,7 @@ private:
         if (it == root.end()) return;
         if (!it->is_object()) {
             problems_.add("defaults", "must be an object such as {\"size\": \"1280x720\", \"fps\": 60, \"frames\": 600}",
-                          "manifest.type");
+                          Code::ManifestType);
             return;
         }
         rejectUnknownFields(*it, {"size", "fps", "frames"}, "defaults", problems_);
@@ -173,7 +173,7 @@ private:
                 problems_.add("defaults.size",
                               "must be \"WxH\" or [W, H] with sides 1.." + std::to_string(kMaxSide) + ", not " +
                                   size->dump(),
-                              "manifest.value");
+                              Code::ManifestValue);
             else {
                 d.width = static_cast<int>(w);
                 d.height = static_cast<int>(h);
@@ -183,14 +183,14 @@ private:
             if (!fps->is_number() || !std::isfinite(fps->get<double>()) || fps->get<double>() < defaults::kMinFps ||
                 fps->get<double>() > defaults::kMaxFps)
                 problems_.add("defaults.fps", "must be a number of frames per second (0.001 .. 1000000), not " + fps->dump(),
-                              "manifest.value");
+                              Code::ManifestValue);
             else d.fps = fps->get<double>();
         }
         if (auto frames = it->find("frames"); frames != it->end()) {
             if (!frames->is_number_unsigned() || frames->get<std::uint64_t>() < 1 ||
                 frames->get<std::uint64_t>() > static_cast<std::uint64_t>(INT32_MAX))
                 problems_.add("defaults.frames", "must be a whole number of frames >= 1, not " + frames->dump(),
-                              "manifest.value");
+                              Code::ManifestValue);
             else d.frames = frames->get<int>();
         }
     }
@@ -208,19 +208,19 @@ private:
         auto it = root.find("media");
         if (it == root.end()) return;
         if (!it->is_object()) {
-            problems_.add("media", "must be an object mapping stock media ids to files", "manifest.type");
+            problems_.add("media", "must be an object mapping stock media ids to files", Code::ManifestType);
             return;
         }
         for (const auto& [id, file] : it->items()) {
             const std::string where = "media." + quote(id);
             if (!file.is_string()) {
-                problems_.add(where, "must be a file path string, not " + typeName(file), "manifest.type");
+                problems_.add(where, "must be a file path string, not " + typeName(file), Code::ManifestType);
                 continue;
             }
             fs::path resolved = resolve(file.get<std::string>());
             if (Status regular = checkRegularFile(resolved); !regular)
                 problems_.add(where, resolved.string() + ": " + regular.error().first().message,
-                              regular.error().first().code.c_str());
+                              regular.error().first().code);
             desc_.mediaOverrides[id] = resolved;
         }
     }
@@ -230,14 +230,14 @@ private:
     void checkMediaOverridesUsed() {
         for (const auto& [id, file] : desc_.mediaOverrides)
             if (!findStockMedia(id) && !mediaRefs_.count(id))
-                problems_.add("media." + quote(id), "not a stock media id, and no channel uses it", "manifest.unused");
+                problems_.add("media." + quote(id), "not a stock media id, and no channel uses it", Code::ManifestUnused);
     }
 
     void readPasses(const json& root) {
         auto it = root.find("passes");
         if (it == root.end() || !it->is_object() || it->empty()) {
             problems_.add("passes", "must be an object with an \"Image\" pass and optionally "
-                                    "\"Buffer A\" .. \"Buffer D\", \"Cube A\", \"Sound\"", "manifest.missing");
+                                    "\"Buffer A\" .. \"Buffer D\", \"Cube A\", \"Sound\"", Code::ManifestMissing);
             return;
         }
         for (const auto& [name, body] : it->items()) {
@@ -248,11 +248,11 @@ private:
                 problems_.add(where,
                               "unknown pass" + didYouMean(name, passNames()) +
                                   " (known: Buffer A, Buffer B, Buffer C, Buffer D, Cube A, Image, Sound)",
-                              "manifest.unknown-pass");
+                              Code::ManifestUnknownPass);
                 continue;
             }
             if (!body.is_object()) {
-                problems_.add(where, "must be an object with \"source\" and \"channels\"", "manifest.type", *id);
+                problems_.add(where, "must be an object with \"source\" and \"channels\"", Code::ManifestType, *id);
                 continue;
             }
             readPass(*id, body, where, sound);
@@ -262,14 +262,14 @@ private:
         for (const auto& [name, body] : it->items())
             imageMisspelt = imageMisspelt || (!passFromName(name) && closestMatch(name, passNames()) == "Image");
         if (!desc_.find(PassId::Image) && !it->contains("Image") && !imageMisspelt)
-            problems_.add("passes", "the \"Image\" pass is missing", "manifest.missing");
+            problems_.add("passes", "the \"Image\" pass is missing", Code::ManifestMissing);
         // Buffer references can only be checked once every pass is known.
         for (const auto& [pass, channel, buffer] : bufferRefs_) {
             const char* read = buffer < 0 ? "Cube A" : passName(bufferPass(buffer));
             if (!it->contains(read))
                 problems_.add(channelWhere(pass, channel),
                               std::string("reads ") + read + ", which this manifest does not define",
-                              "manifest.reference", pass, channel);
+                              Code::ManifestReference, pass, channel);
         }
     }
 
@@ -281,7 +281,7 @@ private:
         rejectUnknownFields(body, {"source", "channels"}, where, problems_);
         PassDesc pass;
         pass.id = id;
-        if (!body.contains("source")) problems_.add(where, "\"source\" is missing", "manifest.missing", id);
+        if (!body.contains("source")) problems_.add(where, "\"source\" is missing", Code::ManifestMissing, id);
         if (auto source = readSourceFile(body, "source", where)) {
             pass.source = source->first;
             pass.sourceName = source->first.string();
@@ -298,14 +298,14 @@ private:
     void readChannels(PassDesc& pass, const json& channels, const std::string& where) {
         if (channels.is_array()) {
             if (channels.size() > kChannelCount)
-                problems_.add(where, "at most 4 channels, got " + std::to_string(channels.size()), "manifest.value",
+                problems_.add(where, "at most 4 channels, got " + std::to_string(channels.size()), Code::ManifestValue,
                               pass.id);
             for (size_t i = 0; i < channels.size() && i < kChannelCount; ++i)
                 readChannel(pass, static_cast<int>(i), channels[i]);
             return;
         }
         if (!channels.is_object()) {
-            problems_.add(where, "must be an object keyed iChannel0..iChannel3 or an array", "manifest.type", pass.id);
+            problems_.add(where, "must be an object keyed iChannel0..iChannel3 or an array", Code::ManifestType, pass.id);
             return;
         }
         for (const auto& [key, value] : channels.items()) {
@@ -317,7 +317,7 @@ private:
                 problems_.add(where,
                               "unknown channel " + quote(key) + didYouMean(key, channelKeys) +
                                   " (known: iChannel0..iChannel3)",
-                              "manifest.unknown-field", pass.id);
+                              Code::ManifestUnknownField, pass.id);
                 continue;
             }
             readChannel(pass, index, value);
@@ -329,7 +329,7 @@ private:
         ChannelDesc& channel = pass.channels[index];
         if (value.is_null()) return;
         if (!value.is_object()) {
-            problems_.add(where, "must be an object such as {\"buffer\": \"A\"}, or null", "manifest.type", pass.id, index);
+            problems_.add(where, "must be an object such as {\"buffer\": \"A\"}, or null", Code::ManifestType, pass.id, index);
             return;
         }
         static const std::vector<std::string> sourceKeys{"buffer", "texture", "media", "keyboard", "cubemap",
@@ -348,12 +348,12 @@ private:
             problems_.add(where,
                           "needs exactly one of \"buffer\", \"texture\", \"media\", \"keyboard\", \"cubemap\", "
                           "\"volume\", \"video\", \"music\", \"webcam\", \"mic\"",
-                          "manifest.value", pass.id, index);
+                          Code::ManifestValue, pass.id, index);
             return;
         }
         if (value.contains("kind") && !value.contains("media")) {
             problems_.add(where, "\"kind\" goes with \"media\" only (it says what a stock id the table does not know is)",
-                          "manifest.value", pass.id, index);
+                          Code::ManifestValue, pass.id, index);
             return;
         }
         if (auto buffer = readString(value, "buffer", where)) {
@@ -366,7 +366,7 @@ private:
             std::optional<int> bufferIndex = bufferFromName(*buffer);
             if (!bufferIndex) {
                 problems_.add(where, "buffer " + quote(*buffer) + " does not exist (known: A, B, C, D, Cube A)",
-                              "manifest.reference", pass.id, index);
+                              Code::ManifestReference, pass.id, index);
                 return;
             }
             channel.kind = ChannelKind::Buffer;
@@ -388,11 +388,11 @@ private:
             if (Status regular = checkRegularFile(channel.file); !regular)
                 problems_.add(where, std::string(key) + " " + channel.file.string() + ": " +
                                          regular.error().first().message,
-                              regular.error().first().code.c_str(), pass.id, index);
+                              regular.error().first().code, pass.id, index);
         } else if (value.contains("webcam") || value.contains("mic")) {
             const char* key = value.contains("webcam") ? "webcam" : "mic";
             if (value[key] != true) {
-                problems_.add(where, std::string("\"") + key + "\" must be true", "manifest.value", pass.id, index);
+                problems_.add(where, std::string("\"") + key + "\" must be true", Code::ManifestValue, pass.id, index);
                 return;
             }
             channel.kind = std::string(key) == "webcam" ? ChannelKind::Webcam : ChannelKind::Mic;
@@ -401,7 +401,7 @@ private:
             channel.file = resolve(*texture);
             if (Status regular = checkRegularFile(channel.file); !regular)
                 problems_.add(where, "texture " + channel.file.string() + ": " + regular.error().first().message,
-                              regular.error().first().code.c_str(), pass.id, index);
+                              regular.error().first().code, pass.id, index);
         } else if (auto media = readString(value, "media", where)) {
             channel.kind = ChannelKind::StockMedia;
             channel.media = *media;
@@ -421,7 +421,7 @@ private:
                     problems_.add(where,
                                   "kind " + quote(*named) + didYouMean(*named, kinds) +
                                       " is not one of texture, cubemap, volume, video, music",
-                                  "manifest.value", pass.id, index);
+                                  Code::ManifestValue, pass.id, index);
                     return;
                 }
                 static const ChannelKind byName[] = {ChannelKind::StockMedia, ChannelKind::Cubemap, ChannelKind::Volume,
@@ -443,16 +443,16 @@ private:
                 problems_.add(where,
                               "unknown stock media " + quote(*media) + " (did you mean " + quote(std::string(near->name)) +
                                   ", " + stockMediaPath(*near) + "?)",
-                              "manifest.media-near-miss", pass.id, index);
+                              Code::ManifestMediaNearMiss, pass.id, index);
             else if (!mediaPath && !findStockMedia(*media) && !desc_.mediaOverrides.count(*media))
                 problems_.add(where,
                               "unknown stock media " + quote(*media) +
                                   " (use a /media/a/<hash>.<ext> id, a stock name such as \"Abstract 3\", "
                                   "or add it to \"media\" with a file)",
-                              "manifest.reference", pass.id, index);
+                              Code::ManifestReference, pass.id, index);
         } else if (value.contains("keyboard")) {
             if (value["keyboard"] != true) {
-                problems_.add(where, "\"keyboard\" must be true", "manifest.value", pass.id, index);
+                problems_.add(where, "\"keyboard\" must be true", Code::ManifestValue, pass.id, index);
                 return;
             }
             channel.kind = ChannelKind::Keyboard;
@@ -470,7 +470,7 @@ private:
                 if (value.contains(key))
                     problems_.add(where,
                                   std::string("the keyboard texture takes no \"") + key + "\" (it is always nearest/clamp)",
-                                  "manifest.value", pass, index);
+                                  Code::ManifestValue, pass, index);
             return;
         }
         if (auto filter = readString(value, "filter", where)) {
@@ -482,7 +482,7 @@ private:
                 problems_.add(where,
                               "filter " + quote(*filter) + didYouMean(*filter, filters) +
                                   " is not one of nearest, linear, mipmap",
-                              "manifest.value", pass, index);
+                              Code::ManifestValue, pass, index);
             }
         }
         if (auto wrap = readString(value, "wrap", where)) {
@@ -492,16 +492,16 @@ private:
                 static const std::vector<std::string> wraps{"clamp", "repeat"};
                 problems_.add(where,
                               "wrap " + quote(*wrap) + didYouMean(*wrap, wraps) + " is not one of clamp, repeat",
-                              "manifest.value", pass, index);
+                              Code::ManifestValue, pass, index);
             }
         }
         if (auto vflip = value.find("vflip"); vflip != value.end()) {
-            if (!vflip->is_boolean()) problems_.add(where, "\"vflip\" must be true or false", "manifest.type", pass, index);
+            if (!vflip->is_boolean()) problems_.add(where, "\"vflip\" must be true or false", Code::ManifestType, pass, index);
             else if (!takesVflip(channel.kind))
                 problems_.add(where,
                               std::string("\"vflip\" applies only to image textures, cubemaps and videos, not ") +
                                   channelKindName(channel.kind) + " channels",
-                              "manifest.value", pass, index);
+                              Code::ManifestValue, pass, index);
             else channel.sampler.vflip = vflip->get<bool>();
         }
     }

@@ -92,7 +92,7 @@ std::string manifestJson(const ManifestDesc& desc) {
 Status writeManifestFolder(const ManifestDesc& desc, const fs::path& dir, bool overwrite) {
     std::error_code ec;
     if (!overwrite && fs::exists(dir / "manifest.json", ec))
-        return fileError((dir / "manifest.json").string(), "already exists (use --force to overwrite)", "io.exists");
+        return fileError((dir / "manifest.json").string(), "already exists (use --force to overwrite)", Code::IoExists);
     if (desc.commonSource)
         if (Status s = writeText(dir / "common.glsl", desc.commonCode); !s) return s;
     for (const PassDesc& pass : desc.passes)

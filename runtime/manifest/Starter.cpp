@@ -121,7 +121,7 @@ Result<StarterLayout> parseStarterLayout(std::string_view text) {
         else
             return Error("--passes: \"" + word +
                              "\" is not a pass (use image, buffers, or a comma list of common, a, b, c, d, image)",
-                         "usage.passes");
+                         Code::UsagePasses);
         start = comma + 1;
     }
     return layout;
@@ -172,9 +172,9 @@ ManifestDesc starterManifest(const fs::path& dir, const StarterLayout& layout) {
 Status writeStarter(const fs::path& dir, const StarterLayout& layout, bool overwrite) {
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-        return fileError(dir.string(), "exists and is not a folder", "io.not-a-folder");
+        return fileError(dir.string(), "exists and is not a folder", Code::IoNotAFolder);
     fs::create_directories(dir, ec);
-    if (ec) return fileError(dir.string(), "cannot create the folder: " + ec.message(), "io.write");
+    if (ec) return fileError(dir.string(), "cannot create the folder: " + ec.message(), Code::IoWrite);
     const ManifestDesc desc = starterManifest(dir, layout);
     if (!overwrite) {
         std::vector<fs::path> files{dir / "manifest.json", dir / "README.md"};
@@ -182,7 +182,7 @@ Status writeStarter(const fs::path& dir, const StarterLayout& layout, bool overw
         for (const PassDesc& pass : desc.passes) files.push_back(dir / passFileName(pass.id));
         for (const fs::path& file : files)
             if (fs::exists(file, ec))
-                return fileError(file.string(), "already exists (use --force to overwrite)", "io.exists");
+                return fileError(file.string(), "already exists (use --force to overwrite)", Code::IoExists);
     }
     if (Status written = writeManifestFolder(desc, dir, overwrite); !written) return written;
     return writeText(dir / "README.md", readme(desc));

@@ -48,7 +48,7 @@ Status validateAnalyserSettings(const AnalyserSettings& s) {
     std::vector<Diagnostic> problems;
     auto problem = [&](const std::string& field, const std::string& message) {
         Diagnostic d;
-        d.code = "audio.settings";
+        d.code = Code::AudioSettings;
         d.field = field;
         d.message = message;
         problems.push_back(std::move(d));

@@ -44,7 +44,7 @@ struct AnalyserSettings {
     double maxDecibels = -30.0;           // maps to byte 255; greater than minDecibels
 };
 
-// Ok, or an error ("audio.settings") listing every invalid field.
+// Ok, or an error (Code::AudioSettings) listing every invalid field.
 Status validateAnalyserSettings(const AnalyserSettings& settings);
 
 class AudioAnalyser {

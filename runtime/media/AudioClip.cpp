@@ -37,14 +37,14 @@ Result<AudioClip> decodeAudioFile(const fs::path& path, int sampleRate) {
     if (sampleRate < kMinSampleRate || sampleRate > kMaxSampleRate)
         return fileError(name, "cannot decode audio: sample rate " + std::to_string(sampleRate) + " is not in " +
                                    std::to_string(kMinSampleRate) + ".." + std::to_string(kMaxSampleRate),
-                         "audio.decode");
+                         Code::AudioDecode);
     if (Status regular = checkRegularFile(path, "audio"); !regular) return regular.error();
     if (!findExecutable("ffmpeg"))
         return fileError(name, "cannot decode audio: ffmpeg was not found in PATH (install ffmpeg to use audio files)",
-                         "audio.ffmpeg-missing");
+                         Code::AudioFfmpegMissing);
 
     TemporaryFiles temp("audio", {"f32", "log"});
-    if (!temp.registerAll()) return fileError(name, "not decoded: toyhost is stopping", "interrupted");
+    if (!temp.registerAll()) return fileError(name, "not decoded: toyhost is stopping", Code::Interrupted);
     // "file:" keeps a name such as "concat:x" or "http:x" a local file; -t one second past the
     // limit tells a file over the limit from one exactly at it without decoding all of a long one.
     std::error_code ec;
@@ -60,7 +60,7 @@ Result<AudioClip> decodeAudioFile(const fs::path& path, int sampleRate) {
     auto failed = [&](const std::string& what) {
         std::string message = "cannot decode audio: " + what;
         if (std::string tail = logTail(temp[1]); !tail.empty()) message += "; ffmpeg said: " + tail;
-        return fileError(name, message, "audio.decode");
+        return fileError(name, message, Code::AudioDecode);
     };
     if (!exit) return failed(exit.error().first().message);
     if (*exit != 0) return failed("ffmpeg failed (exit code " + std::to_string(*exit) + ")");
@@ -95,7 +95,7 @@ Result<AudioClip> decodeAudioFile(const fs::path& path, int sampleRate) {
                          "cannot decode audio: it is longer than the " + secondsText(kMaxAudioSeconds / 60.0) +
                              " minutes toyhost reads (cut it, e.g. ffmpeg -i IN -t " + secondsText(kMaxAudioSeconds) +
                              " OUT)",
-                         "audio.too-long");
+                         Code::AudioTooLong);
     if (count == 0) return failed("the file has no audio samples");
 
     // WebAudio's down-mix to mono: stereo (L+R)/2, quad (L+R+SL+SR)/4, 5.1

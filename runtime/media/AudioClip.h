@@ -23,9 +23,9 @@ struct AudioClip {
 // float at `sampleRate` (8000..192000), by running
 // `ffmpeg -v error -i FILE -f f32le -ac 1 -ar RATE` with its output in a temporary file (removed
 // afterwards, and by an emergency exit). ffmpeg's stereo-to-mono mix is (L+R)/2, the down-mix
-// WebAudio's AnalyserNode applies. Errors: "audio.ffmpeg-missing" when ffmpeg is not in PATH,
-// "audio.decode" when ffmpeg fails (with the last lines it printed) or finds no samples,
-// "audio.too-long" past kMaxAudioSeconds, the I/O error for a missing file or a folder.
+// WebAudio's AnalyserNode applies. Errors: Code::AudioFfmpegMissing when ffmpeg is not in PATH,
+// Code::AudioDecode when ffmpeg fails (with the last lines it printed) or finds no samples,
+// Code::AudioTooLong past kMaxAudioSeconds, the I/O error for a missing file or a folder.
 Result<AudioClip> decodeAudioFile(const std::filesystem::path& path, int sampleRate = 44100);
 
 

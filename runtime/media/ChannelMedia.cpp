@@ -47,7 +47,7 @@ Result<ChannelMedia> ChannelMedia::load(const ManifestDesc& manifest, const Medi
             auto standInNotice = [&](const std::string& message, const std::string& name) {
                 Diagnostic notice;
                 notice.severity = Severity::Notice;
-                notice.code = "media.stand-in";
+                notice.code = Code::MediaStandIn;
                 notice.message = message;
                 notice.pass = passName(pass.id);
                 notice.channel = c;
@@ -183,7 +183,7 @@ Result<ChannelMedia> ChannelMedia::load(const ManifestDesc& manifest, const Medi
                 image = Error("the image is " + std::to_string(image->width) + "x" + std::to_string(image->height) +
                                   ", larger than the " + std::to_string(defaults::kMaxCanvasSide) +
                                   " a side textures may have",
-                              "image.too-large");
+                              Code::ImageTooLarge);
             if (!image) {
                 fail(channel.kind == ChannelKind::ImageFile ? channel.file.string() : channel.media, image.error());
                 continue;

@@ -175,13 +175,13 @@ Result<CubeFaces8> loadCubemapFaces(const fs::path& face0) {
         const std::string size = std::to_string(image.width) + "x" + std::to_string(image.height);
         if (image.width != image.height)
             problems.push_back(fileError(cubemapFacePath(face0, face).string(),
-                                         what + " is " + size + "; cube faces must be square", "cubemap.face-size")
+                                         what + " is " + size + "; cube faces must be square", Code::CubemapFaceSize)
                                    .first());
         else if (face > 0 && image.width != cube.size)
             problems.push_back(fileError(cubemapFacePath(face0, face).string(),
                                          what + " is " + size + " but face 0 is " + std::to_string(cube.size) + "x" +
                                              std::to_string(cube.faces[0].height) + "; all six faces must be the same size",
-                                         "cubemap.face-size")
+                                         Code::CubemapFaceSize)
                                    .first());
     }
     if (!problems.empty()) return Error(std::move(problems));
@@ -224,7 +224,7 @@ Result<CubeFaces8> cubemapFromCross(const Image8& image) {
     const int w = image.width, h = image.height;
     const std::string size = std::to_string(w) + "x" + std::to_string(h);
     if (w <= 0 || h <= 0 || image.rgba.size() != frameBytes(w, h, PixelFormat::Rgba8))
-        return Error("the cubemap image is empty or its pixels do not match its " + size + " size", "cubemap.layout");
+        return Error("the cubemap image is empty or its pixels do not match its " + size + " size", Code::CubemapLayout);
     CrossLayout layout;
     int n = 0;
     if (3 * w == 4 * h && w % 4 == 0) layout = CrossLayout::HorizontalCross, n = w / 4;
@@ -235,7 +235,7 @@ Result<CubeFaces8> cubemapFromCross(const Image8& image) {
         return Error("a cubemap image " + size +
                          " has none of the supported layouts: a horizontal cross (4:3, faces n x n with width 4n), "
                          "a vertical cross (3:4), a horizontal strip (6:1) or a vertical strip (1:6)",
-                     "cubemap.layout");
+                     Code::CubemapLayout);
 
     const int squaresDown = h / n;
     const std::size_t rowBytes = static_cast<std::size_t>(w) * 4, faceRowBytes = static_cast<std::size_t>(n) * 4;

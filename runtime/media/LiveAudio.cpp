@@ -18,9 +18,9 @@ LiveAudio::LiveAudio(ChildProcess child, std::unique_ptr<TemporaryFiles> log, st
 
 Result<std::unique_ptr<LiveAudio>> LiveAudio::open(const std::string& spec, int sampleRate) {
     if (!isLiveSource(spec))
-        return Error(spec + ": not a live audio source (alsa:DEVICE, pulse:DEVICE or lavfi:GRAPH)", "audio.live");
+        return Error(spec + ": not a live audio source (alsa:DEVICE, pulse:DEVICE or lavfi:GRAPH)", Code::AudioLive);
     if (!findExecutable("ffmpeg"))
-        return Error(spec + ": a live audio input needs ffmpeg, which was not found in PATH", "audio.ffmpeg-missing");
+        return Error(spec + ": a live audio input needs ffmpeg, which was not found in PATH", Code::AudioFfmpegMissing);
     const std::size_t colon = spec.find(':');
     const std::string format = spec.substr(0, colon), device = spec.substr(colon + 1);
     std::vector<std::string> args = {"ffmpeg", "-nostdin", "-hide_banner", "-v", "error"};
@@ -28,9 +28,9 @@ Result<std::unique_ptr<LiveAudio>> LiveAudio::open(const std::string& spec, int 
     args.insert(args.end(), {"-f", format, "-i", device, "-map", "0:a:0", "-f", "f32le", "-ac", "1", "-ar",
                              std::to_string(sampleRate), "pipe:1"});
     auto log = std::make_unique<TemporaryFiles>("live-audio", std::initializer_list<const char*>{"log"});
-    if (!log->registerAll()) return Error(spec + ": not started: toyhost is stopping", "interrupted");
+    if (!log->registerAll()) return Error(spec + ": not started: toyhost is stopping", Code::Interrupted);
     Result<ChildProcess> child = ChildProcess::spawnReading(args, (*log)[0]);
-    if (!child) return Error(spec + ": " + child.error().first().message, "audio.live");
+    if (!child) return Error(spec + ": " + child.error().first().message, Code::AudioLive);
     std::unique_ptr<LiveAudio> live(new LiveAudio(std::move(*child), std::move(log), spec));
     live->reader_ = std::thread([raw = live.get()] { raw->readLoop(); });
     std::unique_lock lock(live->mutex_);
@@ -41,7 +41,7 @@ Result<std::unique_ptr<LiveAudio>> LiveAudio::open(const std::string& spec, int 
         const std::string said = logTail((*live->log_)[0]);
         return Error(spec + ": " + (ended ? "ffmpeg could not open it" : "no samples came in 5 s") +
                          (said.empty() ? std::string() : "; ffmpeg said: " + said),
-                     "audio.live");
+                     Code::AudioLive);
     }
     return live;
 }

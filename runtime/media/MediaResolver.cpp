@@ -105,7 +105,7 @@ Result<ResolvedMedia> MediaResolver::resolve(std::string_view ref) const {
         // A warning, not a notice: the size is a guess, and shaders that use the size (hash
         // tables, atlases) will differ from the site until the real file is supplied.
         standIn.notice.severity = Severity::Warning;
-        standIn.notice.code = "media.unknown-stand-in";
+        standIn.notice.code = Code::MediaUnknownStandIn;
         standIn.notice.message = "stock texture " + std::string(ref) +
                                  " is not in toyhost's table; using a stand-in whose size, 512x512 RGB, is a guess. "
                                  "Supply the real file with --media-file " + hash + "=<path> or --media DIR "
@@ -115,13 +115,13 @@ Result<ResolvedMedia> MediaResolver::resolve(std::string_view ref) const {
     if (!info) {
         return Error("media '" + std::string(ref) +
                          "' is not a Shadertoy stock texture and was found in no override or media folder",
-                     "media.not-found");
+                     Code::MediaNotFound);
     }
 
     const std::string path = stockMediaPath(*info);
     ResolvedMedia standIn{makeStandIn(*info), true, {}};
     standIn.notice.severity = Severity::Notice;
-    standIn.notice.code = "media.stand-in";
+    standIn.notice.code = Code::MediaStandIn;
     standIn.notice.message = "stock texture '" + std::string(info->name) + "' (" + path + ", " +
                              std::to_string(info->width) + "x" + std::to_string(info->height) +
                              ") is not available; using a deterministic stand-in. Supply the real file with "

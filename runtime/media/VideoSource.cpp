@@ -90,9 +90,9 @@ int displayRotation(const json& stream) {
 // Runs ffprobe with `arguments` (after "ffprobe") and parses its JSON. Errors name `file`.
 Result<json> runFfprobe(const std::vector<std::string>& arguments, const std::string& file, const std::string& input) {
     if (!findExecutable("ffprobe"))
-        return fileError(file, "cannot read video: ffprobe (part of ffmpeg) is not installed", "video.no-ffmpeg");
+        return fileError(file, "cannot read video: ffprobe (part of ffmpeg) is not installed", Code::VideoNoFfmpeg);
     TemporaryFiles temp("ffprobe", {"log"});
-    if (!temp.registerAll()) return fileError(file, "not started: toyhost is stopping", "interrupted");
+    if (!temp.registerAll()) return fileError(file, "not started: toyhost is stopping", Code::Interrupted);
     const fs::path& log = temp[0];
     std::vector<std::string> argv = {"ffprobe"};
     argv.insert(argv.end(), arguments.begin(), arguments.end());
@@ -104,7 +104,7 @@ Result<json> runFfprobe(const std::vector<std::string>& arguments, const std::st
     if (*exit != 0) {
         // The log holds ffprobe's error lines around the empty JSON document it still prints.
         const std::string reason = output ? toolMessage(*output, input) : std::string();
-        return fileError(file, "cannot read as a video: " + (reason.empty() ? "ffprobe failed" : reason), "video.probe");
+        return fileError(file, "cannot read as a video: " + (reason.empty() ? "ffprobe failed" : reason), Code::VideoProbe);
     }
     if (!output) return inFile(file, output.error());
     // Error lines a successful run printed (a damaged packet) come before or after the document.
@@ -114,7 +114,7 @@ Result<json> runFfprobe(const std::vector<std::string>& arguments, const std::st
     if (open != std::string::npos && close != std::string::npos && close > open)
         document = json::parse(output->substr(open, close - open + 1), nullptr, /*allow_exceptions=*/false);
     if (document.is_discarded() || !document.is_object())
-        return fileError(file, "cannot read as a video: ffprobe printed no readable description", "video.probe");
+        return fileError(file, "cannot read as a video: ffprobe printed no readable description", Code::VideoProbe);
     return document;
 }
 
@@ -124,25 +124,25 @@ Result<VideoInfo> videoInfoFrom(const json& document, const std::string& file, b
     const json& streams = document.contains("streams") ? document["streams"] : kNone;
     if (!streams.is_array() || streams.empty() || !streams[0].is_object())
         return fileError(file, live ? "the camera gives no video stream" : "not a video: it has no video stream",
-                         "video.no-stream");
+                         Code::VideoNoStream);
     const json& stream = streams[0];
     if (!live && document.contains("format") && document["format"].contains("format_name") &&
         document["format"]["format_name"].is_string()) {
         const std::string format = document["format"]["format_name"].get<std::string>();
         const bool still = format == "image2" || (format.size() > 5 && format.ends_with("_pipe"));
-        if (still) return fileError(file, "not a video: it is a still image (bind it as a texture)", "video.still-image");
+        if (still) return fileError(file, "not a video: it is a still image (bind it as a texture)", Code::VideoStillImage);
     }
     VideoInfo info;
     info.width = static_cast<int>(parseNumber(stream, "width"));
     info.height = static_cast<int>(parseNumber(stream, "height"));
     if (info.width <= 0 || info.height <= 0 || info.width > 16384 || info.height > 16384)
         return fileError(file, "the video stream has no usable size (" + std::to_string(info.width) + "x" +
-                                   std::to_string(info.height) + ")", "video.size");
+                                   std::to_string(info.height) + ")", Code::VideoSize);
     if (displayRotation(stream) % 180 == 90) std::swap(info.width, info.height);
     info.fps = parseRate(stream.value("avg_frame_rate", json()));
     if (info.fps <= 0 || info.fps > 1000) info.fps = parseRate(stream.value("r_frame_rate", json()));
     if (info.fps <= 0 || info.fps > 1000) {
-        if (!live) return fileError(file, "the video stream has no frame rate", "video.rate");
+        if (!live) return fileError(file, "the video stream has no frame rate", Code::VideoRate);
         info.fps = 30;  // a camera that does not say: the site asks browsers for 30
     }
     if (live) return info;
@@ -155,7 +155,7 @@ Result<VideoInfo> videoInfoFrom(const json& document, const std::string& file, b
         if (seconds <= 0 && document.contains("format")) seconds = parseNumber(document["format"], "duration");
         count = std::round(seconds * info.fps);
     }
-    if (count < 1) return fileError(file, "not a video: it has no frames", "video.no-frames");
+    if (count < 1) return fileError(file, "not a video: it has no frames", Code::VideoNoFrames);
     info.frameCount = static_cast<std::int64_t>(count);
     return info;
 }
@@ -178,9 +178,9 @@ Result<bool> readFrameFlipped(int fd, std::uint8_t* rgba, std::size_t rowBytes, 
         const int polled = ::poll(&ready, 1, timeoutMs);
         if (polled < 0) {
             if (errno == EINTR) continue;
-            return Error(std::string("poll failed: ") + std::strerror(errno), "video.read");
+            return Error(std::string("poll failed: ") + std::strerror(errno), Code::VideoRead);
         }
-        if (polled == 0) return Error("ffmpeg sent no frame for " + std::to_string(timeoutMs / 1000) + " s", "video.read");
+        if (polled == 0) return Error("ffmpeg sent no frame for " + std::to_string(timeoutMs / 1000) + " s", Code::VideoRead);
         const std::size_t firstRow = done / rowBytes;
         std::size_t into = done % rowBytes;
         int count = 0;
@@ -192,11 +192,11 @@ Result<bool> readFrameFlipped(int fd, std::uint8_t* rgba, std::size_t rowBytes, 
         const ssize_t got = ::readv(fd, parts.data(), count);
         if (got < 0) {
             if (errno == EINTR || errno == EAGAIN) continue;
-            return Error(std::string("reading ffmpeg's output failed: ") + std::strerror(errno), "video.read");
+            return Error(std::string("reading ffmpeg's output failed: ") + std::strerror(errno), Code::VideoRead);
         }
         if (got == 0) {
             if (done == 0) return false;
-            return Error("ffmpeg's output ended in the middle of a frame", "video.read");
+            return Error("ffmpeg's output ended in the middle of a frame", Code::VideoRead);
         }
         done += static_cast<std::size_t>(got);
     }
@@ -227,7 +227,7 @@ Result<std::unique_ptr<VideoSource>> VideoSource::openFile(const fs::path& path)
     video->path_ = path;
     video->info_ = *info;
     video->log_ = std::make_unique<TemporaryFiles>("ffmpeg-video", std::initializer_list<const char*>{"log"});
-    if (!video->log_->registerAll()) return fileError(file, "not started: toyhost is stopping", "interrupted");
+    if (!video->log_->registerAll()) return fileError(file, "not started: toyhost is stopping", Code::Interrupted);
     const std::size_t bytes = frameBytes(info->width, info->height, PixelFormat::Rgba8);
     video->frame_ = Image8{info->width, info->height, std::vector<std::uint8_t>(bytes)};
     video->spare_.resize(bytes);
@@ -240,8 +240,8 @@ Result<std::unique_ptr<VideoSource>> VideoSource::openFile(const fs::path& path)
 Result<std::unique_ptr<VideoSource>> VideoSource::openDevice(const std::string& device) {
     struct stat node {};
     if (::stat(device.c_str(), &node) != 0)
-        return fileError(device, std::string("camera not found: ") + std::strerror(errno), "video.device");
-    if (!S_ISCHR(node.st_mode)) return fileError(device, "not a camera device (a V4L2 device such as /dev/video0)", "video.device");
+        return fileError(device, std::string("camera not found: ") + std::strerror(errno), Code::VideoDevice);
+    if (!S_ISCHR(node.st_mode)) return fileError(device, "not a camera device (a V4L2 device such as /dev/video0)", Code::VideoDevice);
     Result<json> probe = runFfprobe({"-hide_banner", "-loglevel", "error", "-f", "v4l2", "-select_streams", "v:0",
                                      "-show_entries", "stream=width,height,avg_frame_rate,r_frame_rate", "-of", "json",
                                      device},
@@ -255,7 +255,7 @@ Result<std::unique_ptr<VideoSource>> VideoSource::openDevice(const std::string& 
     video->info_ = *info;
     video->live_ = true;
     video->log_ = std::make_unique<TemporaryFiles>("ffmpeg-camera", std::initializer_list<const char*>{"log"});
-    if (!video->log_->registerAll()) return fileError(device, "not started: toyhost is stopping", "interrupted");
+    if (!video->log_->registerAll()) return fileError(device, "not started: toyhost is stopping", Code::Interrupted);
     const std::size_t bytes = frameBytes(info->width, info->height, PixelFormat::Rgba8);
     video->frame_ = Image8{info->width, info->height, std::vector<std::uint8_t>(bytes)};
     video->spare_.resize(bytes);
@@ -296,7 +296,7 @@ Error VideoSource::decoderFailed(const std::string& what) const {
     Result<std::string> log = readTextFile((*log_)[0]);
     if (std::string said = log ? toolMessage(*log, input) : std::string(); !said.empty())
         message += "; ffmpeg said: " + said;
-    return fileError(path_.string(), message, "video.decode");
+    return fileError(path_.string(), message, Code::VideoDecode);
 }
 
 std::string VideoSource::decoderEnded() {

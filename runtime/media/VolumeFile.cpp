@@ -27,7 +27,7 @@ std::uint64_t mix64(std::uint64_t z) {  // the splitmix64 finaliser
 
 Result<Volume8> readVolumeFile(const fs::path& path) {
     const std::string name = path.string();
-    auto bad = [&](const std::string& message) { return fileError(name, "cannot read volume: " + message, "volume.decode"); };
+    auto bad = [&](const std::string& message) { return fileError(name, "cannot read volume: " + message, Code::VolumeDecode); };
     if (Status regular = checkRegularFile(path, "volume"); !regular) return regular.error();
     Result<std::string> bytes = readTextFile(path, kMaxVolumeBytes + kVolumeHeaderBytes);
     if (!bytes) return bytes.error();

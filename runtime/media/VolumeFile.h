@@ -39,7 +39,7 @@ inline constexpr int kMaxVolumeSide = 1024;
 inline constexpr std::uint64_t kMaxVolumeBytes = std::uint64_t(256) << 20;
 inline constexpr std::size_t kVolumeHeaderBytes = 20;
 
-// Reads an 8-bit volume file. Errors (code "volume.decode", naming the file): shorter than the
+// Reads an 8-bit volume file. Errors (code Code::VolumeDecode, naming the file): shorter than the
 // header, a zero side, a side over kMaxVolumeSide or data over kMaxVolumeBytes, a channel count
 // not 1..4, a format other than 0 (8-bit) or 10 (32-bit float, as the site also reads), and voxel
 // data shorter or longer than the header says. A missing file or a folder gets the I/O error.

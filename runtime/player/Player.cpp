@@ -16,7 +16,7 @@ Status checkSizeForGl(int width, int height) {
     if (width > limit || height > limit)
         return Error("canvas size " + std::to_string(width) + "x" + std::to_string(height) +
                          " is larger than this GL allows (GL_MAX_TEXTURE_SIZE " + std::to_string(limit) + ")",
-                     "gl.texture-size");
+                     Code::GlTextureSize);
     return okStatus();
 }
 
@@ -46,7 +46,7 @@ std::vector<std::string> channelSources(const ManifestDesc& manifest) {
 }  // namespace
 
 Result<std::unique_ptr<Player>> Player::create(std::shared_ptr<GlContext> context, PlayerPlan plan, PlayerDesc desc) {
-    if (!context) return Error("the player needs a GL context", "internal");
+    if (!context) return Error("the player needs a GL context", Code::Internal);
     if (Status current = context->makeCurrent(); !current) return current.error();
     desc = withDefaults(std::move(desc));
     if (Status size = checkSizeForGl(desc.width, desc.height); !size) return size.error();
@@ -113,31 +113,31 @@ Status Player::restoreState(const PlayerState& state) {
         return Error("the state is for a " + std::to_string(state.width) + "x" + std::to_string(state.height) +
                          " canvas, this one is " + std::to_string(renderer_->width()) + "x" +
                          std::to_string(renderer_->height()),
-                     "state.size");
+                     Code::StateSize);
     std::array<bool, kBufferCount> saved{};
     const std::size_t values = static_cast<std::size_t>(state.width) * state.height * 4;
     for (const PlayerState::Buffer& buffer : state.buffers) {
         if (buffer.index < 0 || buffer.index >= kBufferCount || !renderer_->hasBuffer(buffer.index))
             return Error(std::string("the state holds ") + passName(bufferPass(std::clamp(buffer.index, 0, 3))) +
                              ", which this shadertoy does not render",
-                         "state.buffers");
+                         Code::StateBuffers);
         for (const std::vector<float>& slot : buffer.slots)
-            if (slot.size() != values) return Error("a buffer of the state has the wrong size", "state.buffers");
+            if (slot.size() != values) return Error("a buffer of the state has the wrong size", Code::StateBuffers);
         saved[buffer.index] = true;
     }
     for (int b = 0; b < kBufferCount; ++b)
         if (renderer_->hasBuffer(b) && !saved[b])
             return Error(std::string("the state has no ") + passName(bufferPass(b)) + ", which this shadertoy renders",
-                         "state.buffers");
+                         Code::StateBuffers);
     if (renderer_->hasCube() != (state.cubeSize > 0))
         return Error(renderer_->hasCube() ? "the state has no Cube A, which this shadertoy renders"
                                           : "the state holds Cube A, which this shadertoy does not render",
-                     "state.buffers");
+                     Code::StateBuffers);
     if (state.cubeSize > 0) {
         const std::size_t cubeValues = std::size_t(6) * state.cubeSize * state.cubeSize * 4;
         if (state.cubeSize != defaults::kCubeBufferSize || state.cube[0].size() != cubeValues ||
             state.cube[1].size() != cubeValues)
-            return Error("Cube A of the state has the wrong size", "state.buffers");
+            return Error("Cube A of the state has the wrong size", Code::StateBuffers);
     }
     for (const PlayerState::Buffer& buffer : state.buffers)
         for (int slot = 0; slot < 2; ++slot) renderer_->writeBufferSlot(buffer.index, slot, buffer.slots[slot]);

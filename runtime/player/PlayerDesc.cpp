@@ -18,7 +18,7 @@ Status checkCanvasSize(int width, int height) {
     if (width < 1 || height < 1 || width > defaults::kMaxCanvasSide || height > defaults::kMaxCanvasSide)
         return Error("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " is not between 1x1 and " +
                          std::to_string(defaults::kMaxCanvasSide) + "x" + std::to_string(defaults::kMaxCanvasSide),
-                     "usage.size");
+                     Code::UsageSize);
     return okStatus();
 }
 

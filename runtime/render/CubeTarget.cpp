@@ -23,7 +23,7 @@ Result<CubeTarget> CubeTarget::create(int size, bool mipmapped) {
     if (size < 1 || size > maxTextureSize())
         return Error("GL: a " + std::to_string(size) + "x" + std::to_string(size) +
                          " cubemap face is larger than this GL allows",
-                     "gl.texture-size");
+                     Code::GlTextureSize);
     CubeTarget target;
     target.size_ = size;
     target.mipmapped_ = mipmapped;
@@ -38,7 +38,7 @@ Result<CubeTarget> CubeTarget::create(int size, bool mipmapped) {
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
         if (GLenum error = glGetError(); error != GL_NO_ERROR)
-            return Error(std::string("GL: allocating the Cube A cubemap failed: ") + glErrorName(error), "gl.texture");
+            return Error(std::string("GL: allocating the Cube A cubemap failed: ") + glErrorName(error), Code::GlTexture);
         for (int face = 0; face < 6; ++face) {
             slot.faces[face] = makeFramebuffer();
             glBindFramebuffer(GL_FRAMEBUFFER, slot.faces[face].id());
@@ -46,7 +46,7 @@ Result<CubeTarget> CubeTarget::create(int size, bool mipmapped) {
                                    slot.texture.id(), 0);
             if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
                 glBindFramebuffer(GL_FRAMEBUFFER, 0);
-                return Error("GL: a Cube A face cannot be rendered to (RGBA16F framebuffer incomplete)", "gl.texture");
+                return Error("GL: a Cube A face cannot be rendered to (RGBA16F framebuffer incomplete)", Code::GlTexture);
             }
         }
     }

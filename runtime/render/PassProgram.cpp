@@ -71,7 +71,7 @@ Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassD
                                                                                : "shader compile failed";
         if (diagnostics.empty()) {
             Diagnostic d;
-            d.code = "shader.compile";
+            d.code = Code::ShaderCompile;
             d.pass = name;
             d.file = pass.sourceName;
             d.message = std::string(what) + " (the driver gave no message)";
@@ -79,7 +79,7 @@ Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassD
         }
         if (build.failedStage == ProgramBuild::Stage::Link)
             for (Diagnostic& d : diagnostics) {
-                d.code = "shader.link";
+                d.code = Code::ShaderLink;
                 d.message = "link: " + d.message;
             }
         return Error(std::move(diagnostics));

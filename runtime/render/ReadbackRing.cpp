@@ -13,7 +13,7 @@ GLenum glType(PixelFormat format) { return format == PixelFormat::Rgba8 ? GL_UNS
 }  // namespace
 
 Result<ReadbackRing> ReadbackRing::create(int width, int height, PixelFormat format, int slots) {
-    if (slots < 1) return Error("readback ring: needs at least one slot", "capture.readback");
+    if (slots < 1) return Error("readback ring: needs at least one slot", Code::CaptureReadback);
     ReadbackRing ring;
     ring.width_ = width;
     ring.height_ = height;
@@ -27,7 +27,7 @@ Result<ReadbackRing> ReadbackRing::create(int width, int height, PixelFormat for
     }
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
-        return Error(std::string("GL: cannot create the readback buffers: ") + glErrorName(error), "gl.readback");
+        return Error(std::string("GL: cannot create the readback buffers: ") + glErrorName(error), Code::GlReadback);
     return ring;
 }
 
@@ -61,7 +61,7 @@ void ReadbackRing::dropOldest() {
 
 Status ReadbackRing::takeOldest(std::span<std::byte> out) {
     Slot& slot = slots_[oldest_];
-    if (out.size() != bytes_) return Error("readback ring: destination has the wrong size", "capture.readback");
+    if (out.size() != bytes_) return Error("readback ring: destination has the wrong size", Code::CaptureReadback);
     for (;;) {
         // One second at a time: a large frame on a CPU renderer can take longer than any fixed
         // timeout, and GL_TIMEOUT_EXPIRED only means "not yet".
@@ -69,18 +69,18 @@ Status ReadbackRing::takeOldest(std::span<std::byte> out) {
         if (state == GL_ALREADY_SIGNALED || state == GL_CONDITION_SATISFIED) break;
         if (state == GL_WAIT_FAILED)
             return Error(std::string("GL: waiting for a frame's readback failed: ") + glErrorName(glGetError()),
-                         "gl.readback");
+                         Code::GlReadback);
     }
     slot.fence.reset();
     glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.buffer.id());
     const void* mapped = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(bytes_), GL_MAP_READ_BIT);
     Status copied = okStatus();
     if (!mapped) {
-        copied = Error(std::string("GL: cannot map a readback buffer: ") + glErrorName(glGetError()), "gl.readback");
+        copied = Error(std::string("GL: cannot map a readback buffer: ") + glErrorName(glGetError()), Code::GlReadback);
     } else {
         std::memcpy(out.data(), mapped, bytes_);
         if (glUnmapBuffer(GL_PIXEL_PACK_BUFFER) != GL_TRUE)
-            copied = Error("GL: a readback buffer's content was lost (glUnmapBuffer)", "gl.readback");
+            copied = Error("GL: a readback buffer's content was lost (glUnmapBuffer)", Code::GlReadback);
     }
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     oldest_ = (oldest_ + 1) % static_cast<int>(slots_.size());

@@ -23,7 +23,7 @@ Result<RenderTexture> createRenderTexture(int width, int height, GLenum internal
         return Error("GL: a " + std::to_string(width) + "x" + std::to_string(height) +
                          " render target is outside what this GL allows (1 .. GL_MAX_TEXTURE_SIZE " +
                          std::to_string(limit) + ")",
-                     "gl.texture-size");
+                     Code::GlTextureSize);
     RenderTexture target{makeTexture(), makeFramebuffer(), width, height, 1};
     target.levels = mipmapped ? 1 + static_cast<int>(std::floor(std::log2(std::max(width, height)))) : 1;
     glBindTexture(GL_TEXTURE_2D, target.texture.id());
@@ -36,7 +36,7 @@ Result<RenderTexture> createRenderTexture(int width, int height, GLenum internal
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
         return Error(std::string("GL: allocating a ") + std::to_string(width) + "x" + std::to_string(height) +
                          " render target failed: " + glErrorName(error),
-                     "gl.texture");
+                     Code::GlTexture);
 
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.texture.id(), 0);
@@ -45,13 +45,13 @@ Result<RenderTexture> createRenderTexture(int width, int height, GLenum internal
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         return Error("GL: a " + std::to_string(width) + "x" + std::to_string(height) +
                          " render target is incomplete (status " + hex(status) + ")",
-                     "gl.texture");
+                     Code::GlTexture);
     }
     const GLfloat zero[4] = {0, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, zero);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
-        return Error(std::string("GL: creating a render target failed: ") + glErrorName(error), "gl.texture");
+        return Error(std::string("GL: creating a render target failed: ") + glErrorName(error), Code::GlTexture);
     return target;
 }
 

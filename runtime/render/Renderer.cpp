@@ -120,7 +120,7 @@ struct Renderer::Impl {
         if (program && program->browserPreprocessed) {
             Diagnostic notice;
             notice.severity = Severity::Notice;
-            notice.code = "shader.preprocessed";
+            notice.code = Code::ShaderPreprocessed;
             notice.pass = passName(pass.id);
             notice.file = pass.sourceName;
             notice.message = "Mesa's GLSL preprocessor refused this pass; it compiled after preprocessing the way "
@@ -224,14 +224,14 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
                     const Image8* pixels = images.find(passDesc.channels[c]);
                     if (!pixels)
                         return inPass(passName(plan.id),
-                                      Error("the channel's image was not loaded before rendering", "internal"), c);
+                                      Error("the channel's image was not loaded before rendering", Code::Internal), c);
                     // GL would refuse it with a bare GL_INVALID_VALUE; say which image and the limit.
                     if (const int limit = maxTextureSize(); pixels->width > limit || pixels->height > limit)
                         return inPass(passName(plan.id),
                                       Error("the image is " + std::to_string(pixels->width) + "x" +
                                                 std::to_string(pixels->height) + ", larger than this GL allows "
                                                 "(GL_MAX_TEXTURE_SIZE " + std::to_string(limit) + ")",
-                                            "gl.texture-size"),
+                                            Code::GlTextureSize),
                                       c);
                     const auto key = std::make_tuple(channelImageKey(passDesc.channels[c]), channel.sampler.vflip,
                                                      channel.sampler.filter == Filter::Mipmap);
@@ -251,7 +251,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
                     if (channel.kind == ChannelKind::Cubemap) {
                         const CubeFaces8* faces = images.findCubemap(desc);
                         if (!faces)
-                            return inPass(passName(plan.id), Error("the cubemap was not loaded before rendering", "internal"), c);
+                            return inPass(passName(plan.id), Error("the cubemap was not loaded before rendering", Code::Internal), c);
                         if (it == impl->inputs.end()) it = impl->inputs.emplace(key, uploadCubemap(*faces, channel.sampler)).first;
                         // The site leaves iChannelResolution at 0 for a cubemap input (only Cube
                         // A gets a size): effect.js Paint_Image sets no resolution for it.
@@ -259,7 +259,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
                     } else {
                         const Volume8* volume = images.findVolume(desc);
                         if (!volume)
-                            return inPass(passName(plan.id), Error("the volume was not loaded before rendering", "internal"), c);
+                            return inPass(passName(plan.id), Error("the volume was not loaded before rendering", Code::Internal), c);
                         if (it == impl->inputs.end()) it = impl->inputs.emplace(key, uploadVolume(*volume, channel.sampler)).first;
                         binding.resolution = {float(volume->width), float(volume->height), float(volume->depth)};
                     }
@@ -273,7 +273,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
                     const ChannelDesc& desc = passDesc.channels[c];
                     const TimedInput* input = images.findTimed(desc);
                     if (!input)
-                        return inPass(passName(plan.id), Error("the channel's media was not found before rendering", "internal"), c);
+                        return inPass(passName(plan.id), Error("the channel's media was not found before rendering", Code::Internal), c);
                     const auto key = std::make_tuple(channelImageKey(desc), channel.sampler.vflip,
                                                      channel.sampler.filter == Filter::Mipmap);
                     auto it = impl->timed.find(key);
@@ -294,7 +294,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
         impl->passes.push_back(std::move(pass));
     }
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
-        return Error(std::string("GL: setting up the passes failed: ") + glErrorName(error), "gl.setup");
+        return Error(std::string("GL: setting up the passes failed: ") + glErrorName(error), Code::GlSetup);
 
     std::unique_ptr<Renderer> renderer(new Renderer(std::move(impl)));
     renderer->width_ = w;

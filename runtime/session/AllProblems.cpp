@@ -8,10 +8,13 @@
 namespace toyhost {
 
 Error withCompileProblems(const RunOptions& options, Error failure) {
-    for (const Diagnostic& d : failure.diagnostics)
-        if (d.code.rfind("usage", 0) == 0 || d.code.rfind("shader.", 0) == 0 || d.code.rfind("manifest.", 0) == 0 ||
-            d.code.rfind("export.", 0) == 0 || d.code.rfind("json.", 0) == 0 || d.code == "interrupted")
+    // Usage errors and stops end the run as they are; problems of the code's text were found by
+    // the same checks a compile would repeat; a manifest that does not load has nothing to compile.
+    for (const Diagnostic& d : failure.diagnostics) {
+        const Category category = categoryOf(d.code);
+        if (category == Category::Usage || category == Category::Shader || category == Category::Interrupted)
             return failure;
+    }
     Result<ManifestDesc> manifest = loadShadertoy(options.target);
     if (!manifest) return failure;
     HeadlessOptions headless;

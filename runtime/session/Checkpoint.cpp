@@ -49,7 +49,7 @@ bool unhex(const std::string& text, std::span<std::uint8_t> out) {
 }
 
 Error bad(const fs::path& path, const std::string& what) {
-    return fileError(path.string(), "not a usable checkpoint: " + what, "checkpoint.format");
+    return fileError(path.string(), "not a usable checkpoint: " + what, Code::CheckpointFormat);
 }
 }  // namespace
 
@@ -102,7 +102,7 @@ Status writeCheckpoint(const fs::path& path, const Checkpoint& c) {
     if (s.cubeSize > 0) header["cube"] = s.cubeSize;  // Cube A's two slots follow the buffers
     return writeFileAtomically(path, [&](const fs::path& temp) -> Status {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) return fileError(path.string(), std::string("cannot open for writing: ") + std::strerror(errno), "io.write");
+        if (!out) return fileError(path.string(), std::string("cannot open for writing: ") + std::strerror(errno), Code::IoWrite);
         out << kMagic << "\n" << header.dump() << "\n";
         for (const PlayerState::Buffer& b : s.buffers)
             for (const std::vector<float>& slot : b.slots)
@@ -113,7 +113,7 @@ Status writeCheckpoint(const fs::path& path, const Checkpoint& c) {
         out.close();
         if (!out)
             return fileError(path.string(), std::string("write failed: ") + std::strerror(errno),
-                             errno == ENOSPC ? "io.no-space" : "io.write");
+                             errno == ENOSPC ? Code::IoNoSpace : Code::IoWrite);
         return okStatus();
     });
 }
@@ -121,11 +121,11 @@ Status writeCheckpoint(const fs::path& path, const Checkpoint& c) {
 Result<Checkpoint> readCheckpoint(const fs::path& path) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) {
-        if (!fs::exists(path, ec)) return fileError(path.string(), "file not found", "io.not-found");
-        return fileError(path.string(), "is not a regular file", "io.not-a-file");
+        if (!fs::exists(path, ec)) return fileError(path.string(), "file not found", Code::IoNotFound);
+        return fileError(path.string(), "is not a regular file", Code::IoNotAFile);
     }
     std::ifstream in(path, std::ios::binary);
-    if (!in) return fileError(path.string(), std::string("cannot open: ") + std::strerror(errno), "io.read");
+    if (!in) return fileError(path.string(), std::string("cannot open: ") + std::strerror(errno), Code::IoRead);
     std::string magic, line;
     std::getline(in, magic);
     if (magic != kMagic) return bad(path, "it does not start with \"" + std::string(kMagic) + "\"");

@@ -9,7 +9,7 @@ std::optional<Diagnostic> FiniteCheck::check(PassId pass, int frame, const NonFi
     reported_[static_cast<int>(pass)] = true;
     Diagnostic d;
     d.severity = Severity::Warning;
-    d.code = "buffer.non-finite";
+    d.code = Code::BufferNonFinite;
     d.pass = passName(pass);
     std::string what;
     if (found.nan) what += std::to_string(found.nan) + " NaN";

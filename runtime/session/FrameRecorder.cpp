@@ -84,7 +84,7 @@ Status FrameRecorder::captureCube(const Player& player, int frame) {
     int size = 0;
     for (int face = 0; face < 6; ++face) {
         player.readCubeFace(face, cubeFace_, size);
-        if (size != height_) return Error("capture: Cube A's faces are not " + std::to_string(height_) + " wide", "capture.size");
+        if (size != height_) return Error("capture: Cube A's faces are not " + std::to_string(height_) + " wide", Code::CaptureSize);
         for (int y = 0; y < size; ++y)
             std::copy_n(cubeFace_.begin() + static_cast<std::ptrdiff_t>(y) * size * 4, size * 4,
                         strip + (static_cast<std::ptrdiff_t>(y) * width_ + static_cast<std::ptrdiff_t>(face) * size) * 4);
@@ -101,7 +101,7 @@ Status FrameRecorder::capture(const Player& player, int frame) {
         return Error("capture: the canvas changed size during a recording (" + std::to_string(width_) + "x" +
                          std::to_string(height_) + " -> " + std::to_string(output.width) + "x" +
                          std::to_string(output.height) + ")",
-                     "capture.size");
+                     Code::CaptureSize);
     if (!ring_) {
         Result<std::optional<std::vector<std::byte>>> pixels = takeBuffer(frameBytes(width_, height_, format_));
         if (!pixels) return pixels.error();

@@ -35,7 +35,7 @@ public:
     virtual void notice(const Diagnostic& notice) = 0;
     // Called on the render thread after every frame; keep it cheap.
     virtual void progress(const RunProgress& progress) { (void)progress; }
-    // Polled before every frame; true ends the run with an "interrupted" error, cleanly (a video
+    // Polled before every frame; true ends the run with an interrupted error (Code::Interrupted), cleanly (a video
     // being encoded is discarded, image files already written stay).
     virtual bool stopRequested() const { return false; }
     // --watch: a round of frames ended (`report`) or failed (`error`); the run now waits for the

@@ -18,7 +18,7 @@ int countCaptured(int first, int end, int frames, int every) {
     return n;
 }
 
-Error usage(std::string message) { return Error(std::move(message), "usage"); }
+Error usage(std::string message) { return Error(std::move(message), Code::Usage); }
 }  // namespace
 
 RunOptions withDefaults(RunOptions o) {
@@ -53,7 +53,7 @@ Result<RunOptions> withCheckpointSettings(RunOptions o, const Checkpoint& c) {
     auto differs = [&](const std::string& option, const std::string& value) {
         return fileError(file, "the checkpoint was made with " + option + " " + value +
                                    "; resume with the same (or leave the option out)",
-                         "usage.resume");
+                         Code::UsageResume);
     };
     if (o.width && (*o.width != c.state.width || *o.height != c.state.height))
         return differs("--size", std::to_string(c.state.width) + "x" + std::to_string(c.state.height));
@@ -106,7 +106,7 @@ Result<PreparedRun> prepareRun(const RunOptions& options) {
             return fileError(folder.string(),
                              fs::exists(folder, ec) ? "is not a folder (--media or $TOYHOST_MEDIA)"
                                                     : "media folder not found (--media or $TOYHOST_MEDIA)",
-                             "io.not-found");
+                             Code::IoNotFound);
     }
     if (o.fps && (!std::isfinite(*o.fps) || *o.fps < defaults::kMinFps || *o.fps > defaults::kMaxFps))
         return usage("--fps must be a number of frames per second from 0.001 to 1000000");
@@ -153,14 +153,14 @@ Result<PreparedRun> prepareRun(const RunOptions& options) {
             return fileError(o.resume->string(),
                              "the checkpoint is at frame " + std::to_string(resume->state.frame) +
                                  ", after the first frame this run must render (" + std::to_string(run.first) + ")",
-                             "usage.resume");
+                             Code::UsageResume);
         if (resume->shadertoy != manifest->name || resume->codeHash != codeHash(*manifest))
             return fileError(o.resume->string(),
                              "the checkpoint was made from other code (shadertoy \"" + resume->shadertoy +
                                  "\"): a resumed run would not continue the same frames",
-                             "checkpoint.mismatch");
+                             Code::CheckpointMismatch);
         if (resume->media != channelMedia(*manifest))
-            return fileError(o.resume->string(), "the checkpoint was made with other channel inputs", "checkpoint.mismatch");
+            return fileError(o.resume->string(), "the checkpoint was made with other channel inputs", Code::CheckpointMismatch);
         run.resume = std::move(resume);
     }
     if (o.outPattern) {
@@ -178,7 +178,7 @@ Result<PreparedRun> prepareRun(const RunOptions& options) {
         if (pattern->format() == OutputFormat::Video && !findExecutable("ffmpeg"))
             return Error("--out " + *o.outPattern + ": video needs ffmpeg, which is not in PATH "
                          "(Debian: apt-get install ffmpeg)",
-                         "capture.ffmpeg");
+                         Code::CaptureFfmpeg);
         run.output = std::move(*pattern);
     }
     if ((o.video.codec || o.video.quality) && (!run.output || run.output->format() != OutputFormat::Video))

@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 Result<std::vector<float>> renderSound(GlContext& context, const PlayerPlan& plan, const SoundRenderDesc& desc) {
     const ManifestDesc& manifest = plan.manifest;
-    if (!manifest.sound) return Error("the shadertoy has no Sound pass (mainSound)", "sound.missing");
+    if (!manifest.sound) return Error("the shadertoy has no Sound pass (mainSound)", Code::SoundMissing);
     const PassDesc& pass = *manifest.sound;
     const double seconds = desc.seconds > 0 ? desc.seconds : defaults::kSoundSeconds;
     if (Status current = context.makeCurrent(); !current) return current.error();
@@ -58,7 +58,7 @@ Result<std::vector<float>> renderSound(GlContext& context, const PlayerPlan& pla
         } else {
             return inPass("Sound", Error(std::string("the Sound pass is rendered before any frame, so it cannot read a ") +
                                              channelKindName(channel.kind) + " channel",
-                                         "sound.channel"),
+                                         Code::SoundChannel),
                           c);
         }
         ids[c] = textures.back().texture.id();
@@ -104,7 +104,7 @@ Result<std::vector<float>> renderSound(GlContext& context, const PlayerPlan& pla
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glUseProgram(0);
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
-        return Error(std::string("GL: rendering the Sound pass failed: ") + glErrorName(error), "gl.sound");
+        return Error(std::string("GL: rendering the Sound pass failed: ") + glErrorName(error), Code::GlSound);
     return stereo;
 }
 
@@ -115,13 +115,13 @@ Status writeSoundFile(const fs::path& path, const std::vector<float>& stereo) {
     if (extension == ".wav") return writeWav16(path, stereo, rate);
     if (!findExecutable("ffmpeg"))
         return fileError(path.string(), "writing " + extension + " audio needs ffmpeg, which was not found in PATH "
-                                        "(or write a .wav)", "sound.ffmpeg-missing");
+                                        "(or write a .wav)", Code::SoundFfmpegMissing);
     TemporaryFiles temp("sound", {"wav", "log"});
-    if (!temp.registerAll()) return Error("not written: toyhost is stopping", "interrupted");
+    if (!temp.registerAll()) return Error("not written: toyhost is stopping", Code::Interrupted);
     if (Status wav = writeWav16(temp[0], stereo, rate); !wav) return wav;
     // ffmpeg writes next to the target, which is renamed into place only when it succeeded.
     const fs::path partial = temporarySibling(path);
-    if (!inflight::addFile(partial)) return Error("not written: toyhost is stopping", "interrupted");
+    if (!inflight::addFile(partial)) return Error("not written: toyhost is stopping", Code::Interrupted);
     const std::string format = extension == ".m4a" ? "ipod" : extension.substr(1);
     const std::vector<std::string> args = {"ffmpeg", "-nostdin", "-hide_banner", "-v", "error", "-y", "-i",
                                            "file:" + temp[0].string(), "-f", format, "file:" + partial.string()};
@@ -136,9 +136,9 @@ Status writeSoundFile(const fs::path& path, const std::vector<float>& stereo) {
     Result<int> exit = ffmpeg->closeAndWait();
     if (!exit || *exit != 0)
         return finish(fileError(path.string(), "ffmpeg could not write " + extension + " audio: " + logTail(temp[1]),
-                                "sound.encode"));
+                                Code::SoundEncode));
     fs::rename(partial, path, ec);
-    if (ec) return finish(fileError(path.string(), "cannot write the audio file: " + ec.message(), "io.write"));
+    if (ec) return finish(fileError(path.string(), "cannot write the audio file: " + ec.message(), Code::IoWrite));
     return finish(okStatus());
 }
 

@@ -55,7 +55,7 @@ long lineMarker(std::string_view line) {
 
 Result<std::string> preprocessLikeBrowsers(std::string_view shader) {
     if (!findExecutable("cpp"))
-        return Error("preprocessing as browsers do needs GCC's cpp, which was not found in PATH", "shader.preprocess");
+        return Error("preprocessing as browsers do needs GCC's cpp, which was not found in PATH", Code::ShaderPreprocess);
     std::vector<std::string> kept;
     std::string input;
     for (std::string_view line : splitLines(shader)) {
@@ -69,7 +69,7 @@ Result<std::string> preprocessLikeBrowsers(std::string_view shader) {
     }
 
     TemporaryFiles temp("cpp", {"glsl", "log"});
-    if (!temp.registerAll()) return Error("not preprocessed: toyhost is stopping", "interrupted");
+    if (!temp.registerAll()) return Error("not preprocessed: toyhost is stopping", Code::Interrupted);
     // GLSL ES 3.00's predefined macros; nothing of C's (-undef), no include paths, no warnings
     // about what is valid GLSL but odd C (an apostrophe in a skipped block).
     const std::vector<std::string> args = {"cpp", "-undef", "-nostdinc", "-w", "-x", "c", "-U__VERSION__",
@@ -78,11 +78,11 @@ Result<std::string> preprocessLikeBrowsers(std::string_view shader) {
     if (!cpp) return cpp.error();
     if (Status written = cpp->write(std::as_bytes(std::span(input.data(), input.size()))); !written) {
         (void)cpp->closeAndWait();
-        return Error("the preprocessor stopped reading: " + logTail(temp[1]), "shader.preprocess");
+        return Error("the preprocessor stopped reading: " + logTail(temp[1]), Code::ShaderPreprocess);
     }
     Result<int> exit = cpp->closeAndWait();
     if (!exit || *exit != 0)
-        return Error("the preprocessor rejected the shader: " + logTail(temp[1]), "shader.preprocess");
+        return Error("the preprocessor rejected the shader: " + logTail(temp[1]), Code::ShaderPreprocess);
     Result<std::string> output = readTextFile(temp[0], std::size_t(64) << 20);
     if (!output) return output.error();
 

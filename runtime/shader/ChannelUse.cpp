@@ -53,7 +53,7 @@ std::vector<Diagnostic> unboundChannelWarnings(const ManifestDesc& manifest) {
         if (!count) continue;
         Diagnostic d;
         d.severity = Severity::Warning;
-        d.code = "channel.unbound";
+        d.code = Code::ChannelUnbound;
         d.file = pass.sourceName;
         d.pass = passName(pass.id);
         d.message = "the code samples " + list + (count == 1 ? ", which has" : ", which have") +

@@ -38,7 +38,7 @@ std::vector<Diagnostic> parseCompilerLog(std::string_view log, const CompilerLog
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line.find_first_not_of(" \t") == std::string::npos) continue;
         Diagnostic d;
-        d.code = "shader.compile";
+        d.code = Code::ShaderCompile;
         d.pass = names.pass;
         int reported = 0;
         std::smatch m;

@@ -20,7 +20,7 @@ struct CompilerLogNames {
     std::string commonFile;  // ... and Common's
 };
 
-// One diagnostic per message line (code "shader.compile"; warnings keep Severity::Warning).
+// One diagnostic per message line (code Code::ShaderCompile; warnings keep Severity::Warning).
 // Lines the parser does not recognise are kept as messages about the pass without a line.
 std::vector<Diagnostic> parseCompilerLog(std::string_view log, const CompilerLogNames& names);
 

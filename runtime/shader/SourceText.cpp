@@ -23,7 +23,7 @@ std::pair<long, std::size_t> decode(const std::string& s, std::size_t i) {
 void checkShaderText(std::string& code, const std::string& file, const std::string& pass,
                      std::vector<Diagnostic>& problems) {
     if (code.rfind("\xEF\xBB\xBF", 0) == 0) code.erase(0, 3);
-    auto problem = [&](int line, int column, std::string message, const char* kind) {
+    auto problem = [&](int line, int column, std::string message, Code kind) {
         Diagnostic d;
         d.code = kind;
         d.file = file;
@@ -39,7 +39,7 @@ void checkShaderText(std::string& code, const std::string& file, const std::stri
         const char c = code[i];
         std::size_t advance = 1;
         if (c == '\0') {
-            problem(line, column, "a NUL byte: GL would silently ignore everything after it; remove it", "shader.nul");
+            problem(line, column, "a NUL byte: GL would silently ignore everything after it; remove it", Code::ShaderNul);
         } else if (static_cast<unsigned char>(c) >= 0x80) {
             const auto [cp, length] = decode(code, i);
             advance = length;
@@ -52,7 +52,7 @@ void checkShaderText(std::string& code, const std::string& file, const std::stri
                 problem(line, column,
                         std::string("a non-ASCII ") + text +
                             " outside a comment: GLSL ES allows only ASCII in code (comments may hold any text)",
-                        "shader.non-ascii");
+                        Code::ShaderNonAscii);
             }
         } else if (state == State::Code && c == '/' && i + 1 < code.size() && code[i + 1] == '/') {
             state = State::LineComment;

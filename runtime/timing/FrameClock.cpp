@@ -38,7 +38,7 @@ Result<double> parseWallClock(const std::string& text) {
     const int n = std::sscanf(text.c_str(), "%d-%d-%d%n%c%d:%d:%lf%n", &year, &month, &day, &dateEnd, &sep, &hour,
                               &minute, &second, &fullEnd);
     const int length = static_cast<int>(text.size());
-    const Error bad("date \"" + text + "\" is not YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS", "usage.date");
+    const Error bad("date \"" + text + "\" is not YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS", Code::UsageDate);
     // `!(second >= 0 && ...)` also rejects the NaN that %lf reads from "nan".
     if (!((n == 3 && dateEnd == length) || (n == 7 && fullEnd == length && (sep == 'T' || sep == ' '))) ||
         month < 1 || month > 12 || day < 1 || day > 31 || hour < 0 || hour > 23 || minute < 0 || minute > 59 ||

@@ -114,7 +114,7 @@ TEST_F(PlayerTest, AResizeThatFailsHalfwayLeavesTheOldSizeAndContent) {
     int calls = 0;
     int failAt = -1;  // the allocation (counted from 1) that fails; -1: none
     auto p = player([&](int w, int h, GLenum format, bool mipmapped) -> Result<RenderTexture> {
-        if (++calls == failAt) return Error("injected allocation failure", "test");
+        if (++calls == failAt) return Error("injected allocation failure", Code::GlTexture);
         return createRenderTexture(w, h, format, mipmapped);
     });
     ASSERT_TRUE(p);

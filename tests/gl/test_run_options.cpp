@@ -36,7 +36,7 @@ TEST(RunOptions, ImpossibleValuesAreUsageErrorsBeforeAnyWork) {
     auto refused = [](RunOptions options, const std::string& mentions) {
         Result<PreparedRun> run = prepareRun(options);
         ASSERT_FALSE(run.ok()) << mentions;
-        EXPECT_EQ(run.error().first().code.rfind("usage", 0), 0u) << run.error().text();
+        EXPECT_EQ(run.error().category(), Category::Usage) << run.error().text();
         EXPECT_NE(run.error().text().find(mentions), std::string::npos) << run.error().text();
     };
     RunOptions o = probeOptions();

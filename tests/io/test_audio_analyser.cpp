@@ -193,7 +193,7 @@ TEST(AudioAnalyser, InvalidSettingsAreReportedAndReplaced) {
     ASSERT_FALSE(status.ok());
     ASSERT_EQ(status.error().diagnostics.size(), 3u) << status.error().text();
     EXPECT_EQ(status.error().diagnostics[0].field, "fftSize");
-    EXPECT_EQ(status.error().diagnostics[0].code, "audio.settings");
+    EXPECT_EQ(status.error().diagnostics[0].code, Code::AudioSettings);
     EXPECT_EQ(status.error().diagnostics[1].field, "smoothingTimeConstant");
     EXPECT_TRUE(validateAnalyserSettings(AnalyserSettings{}).ok());
 
@@ -275,13 +275,13 @@ TEST(AudioClip, DecodingErrorsSayWhatWentWrong) {
 
     Result<AudioClip> badRate = decodeAudioFile(folder.write("x.wav", "x"), 100);
     ASSERT_FALSE(badRate.ok());
-    EXPECT_EQ(badRate.error().first().code, "audio.decode");
+    EXPECT_EQ(badRate.error().first().code, Code::AudioDecode);
 
     if (!haveFfmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
     const fs::path text = folder.write("notes.mp3", "these are not the samples you are looking for\n");
     Result<AudioClip> notAudio = decodeAudioFile(text);
     ASSERT_FALSE(notAudio.ok());
-    EXPECT_EQ(notAudio.error().first().code, "audio.decode");
+    EXPECT_EQ(notAudio.error().first().code, Code::AudioDecode);
     EXPECT_EQ(notAudio.error().first().file, text.string());
     EXPECT_NE(notAudio.error().text().find("ffmpeg"), std::string::npos) << notAudio.error().text();
 }
@@ -294,6 +294,6 @@ TEST(AudioClip, AMissingFfmpegIsAClearError) {
     ScopedEnv path("PATH", emptyBin.string());
     Result<AudioClip> clip = decodeAudioFile(wav);
     ASSERT_FALSE(clip.ok());
-    EXPECT_EQ(clip.error().first().code, "audio.ffmpeg-missing");
+    EXPECT_EQ(clip.error().first().code, Code::AudioFfmpegMissing);
     EXPECT_NE(clip.error().text().find("ffmpeg was not found"), std::string::npos) << clip.error().text();
 }

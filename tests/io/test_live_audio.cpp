@@ -50,5 +50,5 @@ TEST(LiveAudio, ASourceFfmpegCannotOpenIsOneClearError) {
     ASSERT_FALSE(live);
     const std::string text = live.error().text();
     EXPECT_NE(text.find("lavfi:this_is_not_a_filter=1: ffmpeg could not open it"), std::string::npos) << text;
-    EXPECT_EQ(LiveAudio::open("song.mp3").error().first().code, "audio.live");
+    EXPECT_EQ(LiveAudio::open("song.mp3").error().first().code, Code::AudioLive);
 }

@@ -192,7 +192,7 @@ TEST(MediaResolver, FallsBackToAStandInWithAOneLineNotice) {
     EXPECT_EQ(media->image.rgba, makeStandIn(*findStockMedia(kAbstract3)).rgba);
     const std::string notice = formatDiagnostic(media->notice);
     EXPECT_EQ(media->notice.severity, Severity::Notice);
-    EXPECT_EQ(media->notice.code, "media.stand-in");
+    EXPECT_EQ(media->notice.code, Code::MediaStandIn);
     EXPECT_EQ(notice.find('\n'), std::string::npos);
     for (const std::string& part :
          {std::string("'Abstract 3'"), kAbstract3, std::string("1024x1024"),

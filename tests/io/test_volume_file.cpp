@@ -40,7 +40,7 @@ void expectRejected(const TestFolder& folder, const std::string& bytes, const st
     const auto path = folder.write("bad.bin", bytes);
     Result<Volume8> volume = readVolumeFile(path);
     ASSERT_FALSE(volume.ok()) << "accepted: " << fragment;
-    EXPECT_EQ(volume.error().first().code, "volume.decode");
+    EXPECT_EQ(volume.error().first().code, Code::VolumeDecode);
     EXPECT_EQ(volume.error().first().file, path.string());
     EXPECT_NE(volume.error().text().find(fragment), std::string::npos) << volume.error().text();
 }

@@ -121,11 +121,11 @@ TEST(WavFile, BadArgumentsAreErrorsAndWriteNothing) {
     const std::vector<float> odd = {0.1f, 0.2f, 0.3f};
     Status oddCount = writeWav16(path, odd, 44100);
     ASSERT_FALSE(oddCount.ok());
-    EXPECT_EQ(oddCount.error().first().code, "capture.wav");
+    EXPECT_EQ(oddCount.error().first().code, Code::CaptureWav);
     EXPECT_NE(oddCount.error().text().find("3 values are not whole left/right pairs"), std::string::npos);
     Status zeroRate = writeWav16(path, std::vector<float>{0.0f, 0.0f}, 0);
     ASSERT_FALSE(zeroRate.ok());
-    EXPECT_EQ(zeroRate.error().first().code, "capture.wav");
+    EXPECT_EQ(zeroRate.error().first().code, Code::CaptureWav);
     EXPECT_TRUE(folder.files().empty());
 }
 

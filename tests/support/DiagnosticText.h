@@ -10,9 +10,9 @@
 namespace toyhost::testing {
 
 // formatDiagnostic's line without the code and the severity word.
-inline std::string plainLine(Diagnostic d) {
-    d.code.clear();
+inline std::string plainLine(const Diagnostic& d) {
     std::string out = formatDiagnostic(d);
+    if (d.code != Code::Unclassified) out.erase(out.rfind(" ["));  // the code
     const std::string severity = std::string(severityName(d.severity)) + ": ";
     const std::size_t place = d.file.empty() ? 0 : out.find(": ") + 2;  // after FILE[:L[:C]]
     if (out.compare(place, severity.size(), severity) == 0) out.erase(place, severity.size());

@@ -2,6 +2,9 @@
 // number of lines capped; and the frame counters that pick ping-pong slots.
 #include <gtest/gtest.h>
 
+#include <set>
+#include <string_view>
+
 #include "core/Diagnostic.h"
 #include "graph/FrameSequence.h"
 #include "graph/PassGraph.h"
@@ -12,7 +15,7 @@ TEST(Diagnostic, FormatPutsEveryKnownPartInItsPlace) {
     Diagnostic d;
     d.message = "undeclared identifier";
     EXPECT_EQ(formatDiagnostic(d), "error: undeclared identifier");
-    d.code = "shader.compile";
+    d.code = Code::ShaderCompile;
     d.file = "/toy/image.glsl";
     d.line = 12;
     d.column = 5;
@@ -31,9 +34,9 @@ TEST(Diagnostic, FormatPutsEveryKnownPartInItsPlace) {
 
 TEST(Diagnostic, EveryLineOfAReportHasThePrefixAndTheListIsCapped) {
     std::vector<Diagnostic> many;
-    for (int i = 1; i <= 5; ++i) many.push_back(Diagnostic{Severity::Error, "x", "problem " + std::to_string(i)});
+    for (int i = 1; i <= 5; ++i) many.push_back(Diagnostic{Severity::Error, Code::Internal, "problem " + std::to_string(i)});
     EXPECT_EQ(formatDiagnostics(many, "toyhost: ", 3),
-              "toyhost: error: problem 1 [x]\ntoyhost: error: problem 2 [x]\ntoyhost: error: problem 3 [x]\n"
+              "toyhost: error: problem 1 [internal]\ntoyhost: error: problem 2 [internal]\ntoyhost: error: problem 3 [internal]\n"
               "toyhost: ... and 2 more");
     EXPECT_EQ(formatDiagnostics(many, "> ", 5).find("more"), std::string::npos);
     EXPECT_EQ(formatDiagnostics({}, "toyhost: "), "");
@@ -68,4 +71,21 @@ TEST(FrameSequence, ThePreviousSlotAfterARestartIsTheLastFrameWritten) {
     EXPECT_NE(slotRead(FrameAge::Previous, sequence.step()), slotWritten(sequence.step()));
     // Counting by iFrame instead would read the slot written at `written`, two frames old.
     EXPECT_EQ(slotRead(FrameAge::Previous, static_cast<std::uint64_t>(sequence.frame())), slotWritten(written));
+}
+
+TEST(DiagnosticCode, EveryCodeHasItsOwnTextAndTheCategoryDecidesTheKind) {
+    std::set<std::string_view> texts;
+    int count = 0;
+#define TOYHOST_CHECK_CODE(name, text, category)                                   \
+    ++count;                                                                        \
+    EXPECT_EQ(codeName(Code::name), std::string_view(text));                        \
+    EXPECT_TRUE(texts.insert(codeName(Code::name)).second) << text << " is used twice"; \
+    EXPECT_EQ(categoryOf(Code::name), Category::category) << text;
+    TOYHOST_DIAGNOSTIC_CODES(TOYHOST_CHECK_CODE)
+#undef TOYHOST_CHECK_CODE
+    EXPECT_GT(count, 100);
+    // Exit codes follow categories: every usage code is a usage error, whatever its text says.
+    EXPECT_EQ(Error("bad option", Code::UsageSize).category(), Category::Usage);
+    EXPECT_EQ(Error("stopped", Code::Interrupted).category(), Category::Interrupted);
+    EXPECT_EQ(categoryName(Category::Shader), "shader");
 }

@@ -182,7 +182,7 @@ TEST(InputScriptParse, ErrorsUseTheGivenSourceName) {
     EXPECT_EQ(toyhost::testing::plainText(result.error()), "scripts/demo/keys.json: event 0: unknown key \"nope\"");
     EXPECT_EQ(result.error().first().file, "scripts/demo/keys.json");
     EXPECT_EQ(result.error().first().field, "event 0");
-    EXPECT_EQ(result.error().first().code, "script.event");
+    EXPECT_EQ(result.error().first().code, Code::ScriptEvent);
 }
 
 TEST(InputScriptParse, MomentDueRules) {

@@ -241,7 +241,7 @@ TEST(PortToolsManifestNearMiss, MisspelledChannelFieldSuggestsBuffer) {
               f.line(kImageCh0, R"(unknown field "bufer" (did you mean "buffer"?) )"
                                 R"((known: buffer, cubemap, filter, keyboard, kind, media, mic, music, texture, vflip, video, volume, webcam, wrap))"));
     ASSERT_FALSE(result.ok());
-    EXPECT_EQ(result.error().first().code, "manifest.unknown-field");
+    EXPECT_EQ(result.error().first().code, Code::ManifestUnknownField);
 }
 
 TEST(PortToolsManifestNearMiss, MisspelledChannelKeySuggestsIChannel) {
@@ -347,7 +347,7 @@ TEST(PortToolsStockMedia, LoaderRejectsAHashNearMissNamingTheTexture) {
                                                      "?)"));
     ASSERT_FALSE(result.ok());
     ASSERT_EQ(result.error().diagnostics.size(), 1u);
-    EXPECT_EQ(result.error().first().code, "manifest.media-near-miss");
+    EXPECT_EQ(result.error().first().code, Code::ManifestMediaNearMiss);
     EXPECT_EQ(result.error().first().pass, "Image");
     EXPECT_EQ(result.error().first().channel, 0);
 }
@@ -366,7 +366,7 @@ TEST(PortToolsStockMedia, NameTypoSuggestsTheStockName) {
     EXPECT_EQ(errorOf(result),
               f.line(kImageCh0, "unknown stock media \"Abstrac 3\" (did you mean \"Abstract 3\", " + kAbstract3Path + "?)"));
     ASSERT_FALSE(result.ok());
-    EXPECT_EQ(result.error().first().code, "manifest.media-near-miss");
+    EXPECT_EQ(result.error().first().code, Code::ManifestMediaNearMiss);
 }
 
 TEST(PortToolsStockMedia, GenuinelyUnknownIdStillLoads) {
@@ -489,7 +489,7 @@ TEST(PortToolsManifestDefaults, EachBadValueIsOneErrorAtItsField) {
         if (result.ok()) continue;
         EXPECT_EQ(result.error().diagnostics.size(), 1u) << c.defaults;
         EXPECT_EQ(result.error().first().field, c.field) << c.defaults;
-        EXPECT_EQ(result.error().first().code, "manifest.value") << c.defaults;
+        EXPECT_EQ(result.error().first().code, Code::ManifestValue) << c.defaults;
     }
 }
 
@@ -499,7 +499,7 @@ TEST(PortToolsManifestDefaults, UnknownKeyAndWrongShape) {
     EXPECT_EQ(errorOf(result),
               f.line("defaults", R"(unknown field "fsp" (did you mean "fps"?) (known: fps, frames, size))"));
     ASSERT_FALSE(result.ok());
-    EXPECT_EQ(result.error().first().code, "manifest.unknown-field");
+    EXPECT_EQ(result.error().first().code, Code::ManifestUnknownField);
     EXPECT_EQ(errorOf(f.parse(imageWithDefaults(R"({"frame": 60})"))),
               f.line("defaults", R"(unknown field "frame" (did you mean "frames"?) (known: fps, frames, size))"));
     EXPECT_EQ(errorOf(f.parse(imageWithDefaults(R"({"resolution": 60})"))),
@@ -556,7 +556,7 @@ TEST(PortToolsChannelUse, OneWarningPerPassListingTheUnboundChannels) {
     const std::vector<Diagnostic> warnings = unboundChannelWarnings(manifest);
     ASSERT_EQ(warnings.size(), 2u);
     EXPECT_EQ(warnings[0].severity, Severity::Warning);
-    EXPECT_EQ(warnings[0].code, "channel.unbound");
+    EXPECT_EQ(warnings[0].code, Code::ChannelUnbound);
     EXPECT_EQ(warnings[0].pass, "Buffer A");
     EXPECT_EQ(warnings[0].file, a.sourceName);
     EXPECT_EQ(warnings[0].channel, -1);
@@ -564,7 +564,7 @@ TEST(PortToolsChannelUse, OneWarningPerPassListingTheUnboundChannels) {
               "the code samples iChannel1, iChannel3, which have nothing bound and read as black "
               "(bind an input in the manifest's \"channels\")");
     EXPECT_EQ(warnings[1].severity, Severity::Warning);
-    EXPECT_EQ(warnings[1].code, "channel.unbound");
+    EXPECT_EQ(warnings[1].code, Code::ChannelUnbound);
     EXPECT_EQ(warnings[1].pass, "Image");
     EXPECT_EQ(warnings[1].file, image.sourceName);
     EXPECT_EQ(warnings[1].message,
@@ -800,7 +800,7 @@ TEST(PortToolsStarterLayout, UnknownWordIsNamed) {
     ASSERT_FALSE(layout.ok());
     EXPECT_EQ(layout.error().first().message,
               "--passes: \"e\" is not a pass (use image, buffers, or a comma list of common, a, b, c, d, image)");
-    EXPECT_EQ(layout.error().first().code, "usage.passes");
+    EXPECT_EQ(layout.error().first().code, Code::UsagePasses);
     auto other = parseStarterLayout("image,sound");
     ASSERT_FALSE(other.ok());
     EXPECT_EQ(other.error().first().message,
@@ -905,7 +905,7 @@ TEST(PortToolsStarter, SecondWriteWithoutOverwriteFailsAndWritesNothing) {
     ASSERT_TRUE(layout.ok());
     Status again = writeStarter(s.dir, *layout, false);
     ASSERT_FALSE(again.ok());
-    EXPECT_EQ(again.error().first().code, "io.exists");
+    EXPECT_EQ(again.error().first().code, Code::IoExists);
     EXPECT_EQ(again.error().first().file, (s.dir / "manifest.json").string());
     EXPECT_EQ(again.error().first().message, "already exists (use --force to overwrite)");
     EXPECT_EQ(folderContents(s.dir), before);
@@ -923,7 +923,7 @@ TEST(PortToolsStarter, RefusesAFolderHoldingOneOfItsPassFiles) {
     ASSERT_TRUE(layout.ok());
     Status written = writeStarter(s.dir, *layout, false);
     ASSERT_FALSE(written.ok());
-    EXPECT_EQ(written.error().first().code, "io.exists");
+    EXPECT_EQ(written.error().first().code, Code::IoExists);
     EXPECT_EQ(written.error().first().file, (s.dir / "image.glsl").string());
     EXPECT_EQ(folderContents(s.dir), (std::map<std::string, std::string>{{"image.glsl", "// my own work\n"}}));
 }

@@ -31,7 +31,7 @@ void printError(const Error& error) { std::cerr << formatDiagnostics(error.diagn
 int fail(const Error& error) {
     printError(error);
     if (stopSignalNumber) return 128 + stopSignalNumber;  // the shell's convention for a signal
-    if (error.first().code.rfind("usage", 0) == 0) return kExitUsage;
+    if (error.category() == Category::Usage) return kExitUsage;
     return kExitFailure;
 }
 

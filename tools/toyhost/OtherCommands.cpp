@@ -148,7 +148,7 @@ int soundCommand(const SoundCommandOptions& o) {
     Result<ManifestDesc> manifest = loadShadertoy(o.target);
     if (!manifest) return fail(manifest.error());
     if (!manifest->sound)
-        return fail(fileError(manifest->manifestPath.string(), "the shadertoy has no Sound pass (mainSound)", "sound.missing"));
+        return fail(fileError(manifest->manifestPath.string(), "the shadertoy has no Sound pass (mainSound)", Code::SoundMissing));
     MediaOptions media;
     for (const std::string& folder : o.mediaFolders) media.folders.emplace_back(folder);
     if (const char* folder = std::getenv("TOYHOST_MEDIA"); folder && *folder) media.folders.emplace_back(folder);

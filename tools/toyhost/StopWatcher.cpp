@@ -78,24 +78,27 @@ void StopWatcher::loop() {
 
         const RunActivity::Snapshot now = activity_.snapshot();
         Diagnostic d;
+        bool expired = true;
         if (frameLimit_ > 0 && now.phase == RunActivity::Phase::Drawing && now.seconds > frameLimit_) {
-            d.code = "watchdog.frame";
+            d.code = Code::WatchdogFrame;
             d.pass = now.pass;
             d.message = "frame " + std::to_string(now.frame) + " has been drawing this pass for " +
                         seconds(now.seconds) + " s, longer than --frame-timeout " + seconds(frameLimit_) +
                         ": the run is ended (a shader that loops too long? --frame-timeout 0 turns the limit off)";
         } else if (frameLimit_ > 0 && now.phase == RunActivity::Phase::WaitingForOutput && now.seconds > frameLimit_) {
-            d.code = "watchdog.output";
+            d.code = Code::WatchdogOutput;
             d.message = "the encoders have taken no frame for " + seconds(now.seconds) +
                         " s, longer than --frame-timeout " + seconds(frameLimit_) +
                         ": the run is ended (a stalled ffmpeg, or a reader of --out - that stopped reading?)";
         } else if (compileLimit_ > 0 && now.phase == RunActivity::Phase::Compiling && now.seconds > compileLimit_) {
-            d.code = "watchdog.compile";
+            d.code = Code::WatchdogCompile;
             d.pass = now.pass;
             d.message = "compiling has taken " + seconds(now.seconds) + " s, longer than --compile-timeout " +
                         seconds(compileLimit_) + ": the run is ended (--compile-timeout 0 turns the limit off)";
+        } else {
+            expired = false;
         }
-        if (!d.code.empty()) endNow(kExitTimeout, formatDiagnostic(d).c_str());
+        if (expired) endNow(kExitTimeout, formatDiagnostic(d).c_str());
     }
 }
 

@@ -53,7 +53,7 @@ Error interrupted(int frame, int frames, FrameRecorder* recorder, const Prepared
         }
         if (a.dropped > 0) message += ", " + plural(a.dropped, "captured frame") + " not written (dropped)";
     }
-    return Error(message, "interrupted");
+    return Error(message, Code::Interrupted);
 }
 
 // Renders frames 0..frames-1 of `player` (from iFrame 0) with the fixed clock, the input scripts
@@ -224,7 +224,7 @@ Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) 
             const std::size_t skip =
                 std::min(stereo->size(), 2 * static_cast<std::size_t>(std::llround(o.startTime * defaults::kSampleRate)));
             soundTrack.emplace("soundtrack", std::initializer_list<const char*>{"wav"});
-            if (!soundTrack->registerAll()) return Error("not started: toyhost is stopping", "interrupted");
+            if (!soundTrack->registerAll()) return Error("not started: toyhost is stopping", Code::Interrupted);
             if (Status wav = writeWav16((*soundTrack)[0], std::span<const float>(*stereo).subspan(skip),
                                         static_cast<int>(defaults::kSampleRate));
                 !wav)
@@ -233,7 +233,7 @@ Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) 
         } else {
             Diagnostic notice;
             notice.severity = Severity::Notice;
-            notice.code = "sound.skipped";
+            notice.code = Code::SoundSkipped;
             notice.pass = "Sound";
             notice.message = video ? "the Sound pass ends at 180 s, before this run starts: the video has no sound"
                                    : "the Sound pass is not rendered: only a video --out (.mp4, .webm, .mov, .mkv) "
@@ -280,7 +280,7 @@ Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) 
     while (true) {
         if (round) observer.roundFinished(report);
         else observer.roundFinished(round.error());
-        if (!round && round.error().first().code == "interrupted") return round.error();
+        if (!round && round.error().first().code == Code::Interrupted) return round.error();
         std::optional<Result<PlayerPlan>> next = watcher->wait(stop);
         if (!next) return report;  // stopped while waiting: the last round's files are complete
         if (!*next) {

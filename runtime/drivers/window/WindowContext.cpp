@@ -33,7 +33,7 @@ Status acquireGlfw() {
         if (!glfwInit())
             return Error("cannot open a window: " + lastGlfwError +
                              (displayAvailable() ? "" : "; no $DISPLAY or $WAYLAND_DISPLAY is set: use --headless"),
-                         "window.init");
+                         Code::WindowInit);
     }
     ++glfwUsers;
     return okStatus();
@@ -68,7 +68,7 @@ bool displayAvailable() {
 }
 
 Result<std::shared_ptr<WindowContext>> WindowContext::create(const WindowOptions& options) {
-    if (options.width <= 0 || options.height <= 0) return Error("window size must be positive", "internal");
+    if (options.width <= 0 || options.height <= 0) return Error("window size must be positive", Code::Internal);
     if (Status glfw = acquireGlfw(); !glfw) return glfw.error();
     std::shared_ptr<WindowContext> context(new WindowContext());
     context->window_ = openWindow(options, GLFW_EGL_CONTEXT_API);
@@ -79,7 +79,7 @@ Result<std::shared_ptr<WindowContext>> WindowContext::create(const WindowOptions
         context->api_ = "native";
         if (!context->window_) {
             releaseGlfw();
-            return Error("cannot open an OpenGL ES 3 window: " + eglError + "; native: " + lastGlfwError, "window.create");
+            return Error("cannot open an OpenGL ES 3 window: " + eglError + "; native: " + lastGlfwError, Code::WindowCreate);
         }
     }
     glfwMakeContextCurrent(context->window_);

@@ -116,11 +116,11 @@ std::string fileSafe(std::string name) {
     return name.empty() ? std::string("toyhost") : name;
 }
 
-Diagnostic notice(std::string message, std::string code, std::string file = {}) {
+Diagnostic notice(std::string message, Code code, std::string file = {}) {
     Diagnostic d;
     d.severity = Severity::Notice;
     d.message = std::move(message);
-    d.code = std::move(code);
+    d.code = code;
     d.file = std::move(file);
     return d;
 }
@@ -216,7 +216,7 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
 
         // Controls.
         const double now = monotonicNow();
-        if (takeControl(input, Control::Help)) observer.notice(notice(controlsHelp(), "window.help"));
+        if (takeControl(input, Control::Help)) observer.notice(notice(controlsHelp(), Code::WindowHelp));
         if (takeControl(input, Control::Quit)) window->requestClose();
         if (takeControl(input, Control::Restart)) {
             player.restart();
@@ -235,7 +235,7 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
             std::vector<std::uint8_t> pixels;
             player.readRgba8(PassId::Image, pixels);
             Status written = writePng(file, player.width(), player.height(), pixels);
-            if (written) observer.notice(notice("screenshot written", "window.screenshot", file.string()));
+            if (written) observer.notice(notice("screenshot written", Code::WindowScreenshot, file.string()));
             else showProblems(written.error().diagnostics);
         }
         if (window->closeRequested()) break;
@@ -260,7 +260,7 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
                     for (const std::string& pass : reloaded.recompiled) passes += (passes.empty() ? "" : ", ") + pass;
                     observer.notice(notice(reloaded.structureChanged ? "reloaded (new structure, restarted): " + passes
                                                                      : "reloaded: " + passes,
-                                           "window.reload"));
+                                           Code::WindowReload));
                 }
                 if (reloaded.structureChanged && reloaded.applied) {
                     player.restart();
@@ -306,7 +306,7 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
     }
 
     if (interrupted)
-        return Error("interrupted after " + std::to_string(rendered) + " frames", "interrupted");
+        return Error("interrupted after " + std::to_string(rendered) + " frames", Code::Interrupted);
     if (recorder) {
         if (Status finished = recorder->finish(); !finished) return finished.error();
         report.bytesWritten = recorder->bytesWritten();
@@ -321,7 +321,7 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
             observer.notice(notice(std::to_string(recorder->droppedFrames()) +
                                        " frames were not recorded: the encoders were behind and real-time mode "
                                        "does not wait for them (use --fps for every frame)",
-                                   "capture.dropped"));
+                                   Code::CaptureDropped));
         if (run.output->format() == OutputFormat::Video) report.files.push_back(run.output->pathFor(0));
     }
     player.finish();
