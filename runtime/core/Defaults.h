@@ -1,4 +1,4 @@
-// Defaults: every default value of a run, in one place. Descriptions (PlayerDesc, RunOptions)
+// Defaults: every default value of a run, in one place. Descriptions (PlayerDesc, SessionOptions)
 // leave a field at zero/absent to mean "the default", and one function per description
 // (withDefaults) fills them from here; the CLI shows these same numbers in --help. No GL needed.
 #pragma once

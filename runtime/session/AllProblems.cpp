@@ -7,7 +7,7 @@
 
 namespace toyhost {
 
-Error withCompileProblems(const RunOptions& options, Error failure) {
+Error withCompileProblems(const SessionOptions& options, Error failure) {
     // Usage errors and stops end the run as they are; problems of the code's text were found by
     // the same checks a compile would repeat; a manifest that does not load has nothing to compile.
     for (const Diagnostic& d : failure.diagnostics) {

@@ -5,12 +5,12 @@
 #pragma once
 
 #include "core/Result.h"
-#include "session/RunOptions.h"
+#include "session/SessionOptions.h"
 
 namespace toyhost {
 
-// `failure` (prepareRun's error for `options`) plus the compile errors of every pass, when the
+// `failure` (prepareSession's error for `options`) plus the compile errors of every pass, when the
 // shadertoy itself loads and the failure was not a usage error or a problem of the code's text.
-Error withCompileProblems(const RunOptions& options, Error failure);
+Error withCompileProblems(const SessionOptions& options, Error failure);
 
 }  // namespace toyhost

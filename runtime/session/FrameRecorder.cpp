@@ -59,8 +59,8 @@ FrameRecorder::~FrameRecorder() {
     ring_.reset();
 }
 
-RecorderSettings recorderSettings(const PreparedRun& run, RunActivity* activity) {
-    const RunOptions& o = run.options;
+RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity) {
+    const SessionOptions& o = run.options;
     RecorderSettings settings;
     settings.output = *run.output;
     settings.pass = o.capturePass;

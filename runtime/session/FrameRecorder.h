@@ -18,7 +18,7 @@
 #include "image/ImageStats.h"
 #include "manifest/ManifestDesc.h"
 #include "player/Player.h"
-#include "session/RunOptions.h"
+#include "session/SessionOptions.h"
 #include "render/ReadbackRing.h"
 
 namespace toyhost {
@@ -43,7 +43,7 @@ struct RecorderSettings {
 // The recorder settings a run asks for: its output, pass, PNG level, encoders, memory cap, video
 // settings and frame rate (the default rate when a window runs in real time, which then also
 // drops frames rather than wait for the encoders).
-RecorderSettings recorderSettings(const PreparedRun& run, RunActivity* activity = nullptr);
+RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity = nullptr);
 
 class FrameRecorder {
 public:

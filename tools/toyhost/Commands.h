@@ -1,4 +1,4 @@
-// The toyhost subcommands: `run` (options parsed into RunOptions), `import`, `inspect`, `new` and
+// The toyhost subcommands: `run` (options parsed into SessionOptions), `import`, `inspect`, `new` and
 // `media`.
 #pragma once
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "session/RunOptions.h"
+#include "session/SessionOptions.h"
 
 namespace toyhost::cli {
 
@@ -15,11 +15,11 @@ class RunCommand {
 public:
     // Declares the options of `run` on `command`.
     void define(CLI::App& command);
-    // Turns the parsed options into RunOptions and runs; returns the exit code.
+    // Turns the parsed options into SessionOptions and runs; returns the exit code.
     int execute();
 
 private:
-    RunOptions options_;
+    SessionOptions options_;
     std::string target_, size_, capturePass_, mouse_, date_, codec_, frameRange_, shard_;
     std::optional<int> frames_, captureEvery_, pngLevel_, videoQuality_, captureMemoryMiB_, encoderThreads_;
     std::optional<double> fps_, startTime_;

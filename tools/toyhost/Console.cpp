@@ -54,10 +54,10 @@ int stopSignalFd() { return signalPipe[0]; }
 
 int stopSignal() { return stopSignalNumber; }
 
-ConsoleObserver::ConsoleObserver(bool quiet, std::function<void(const RunReport&)> summary, RunActivity* activity)
+ConsoleObserver::ConsoleObserver(bool quiet, std::function<void(const SessionReport&)> summary, RunActivity* activity)
     : summary_(std::move(summary)), activity_(activity), quiet_(quiet), show_(!quiet && isatty(STDERR_FILENO)) {}
 
-void ConsoleObserver::roundFinished(const Result<RunReport>& round) {
+void ConsoleObserver::roundFinished(const Result<SessionReport>& round) {
     if (shown_) std::cerr << "\r\033[K";
     shown_ = false;
     if (round) {

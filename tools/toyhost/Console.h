@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/Result.h"
-#include "session/RunObserver.h"
+#include "session/SessionObserver.h"
 
 namespace toyhost::cli {
 
@@ -33,20 +33,20 @@ void installStopSignals();
 int stopSignal();
 int stopSignalFd();
 
-class ConsoleObserver final : public RunObserver {
+class ConsoleObserver final : public SessionObserver {
 public:
     // `summary` prints a finished round of a --watch run. `quiet`: no progress line and no
     // notices (warnings and errors still print).
-    explicit ConsoleObserver(bool quiet, std::function<void(const RunReport&)> summary = {},
+    explicit ConsoleObserver(bool quiet, std::function<void(const SessionReport&)> summary = {},
                              RunActivity* activity = nullptr);
     RunActivity* activity() override { return activity_; }
     void notice(const Diagnostic& notice) override;
     bool stopRequested() const override { return stopSignal() != 0; }
     void progress(const RunProgress& p) override;
-    void roundFinished(const Result<RunReport>& round) override;
+    void roundFinished(const Result<SessionReport>& round) override;
 
 private:
-    std::function<void(const RunReport&)> summary_;
+    std::function<void(const SessionReport&)> summary_;
     RunActivity* activity_;
     bool quiet_;
     bool show_;

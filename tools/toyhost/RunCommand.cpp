@@ -38,7 +38,7 @@ std::string plural(int n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-void printSummary(const RunReport& report, const char* mode, const RunOptions& o) {
+void printSummary(const SessionReport& report, const char* mode, const SessionOptions& o) {
     const double fps = report.seconds > 0 ? report.framesRendered / report.seconds : 0;
     std::fprintf(stderr, "toyhost: %s: %s at %dx%d in %.3f s (%.1f frames/s, first frame after %.0f ms), %s on %s\n",
                  report.manifestName.c_str(), plural(report.framesRendered, "frame", "frames").c_str(), report.width,
@@ -134,7 +134,7 @@ void RunCommand::define(CLI::App& run) {
 }
 
 int RunCommand::execute() {
-    RunOptions& o = options_;
+    SessionOptions& o = options_;
     o.target = target_;
     if (!size_.empty()) {
         int w = 0, h = 0;
@@ -218,10 +218,10 @@ int RunCommand::execute() {
     o.watch = watch_;
 
     const char* mode = windowMode ? "in a window" : "headless";
-    const RunOptions limits = withDefaults(o);
+    const SessionOptions limits = withDefaults(o);
     StopWatcher watcher(*limits.frameTimeout, *limits.compileTimeout, defaults::kStopGraceSeconds);
-    ConsoleObserver observer(quiet_, [&](const RunReport& report) { printSummary(report, mode, o); }, watcher.activity());
-    Result<RunReport> report = windowMode ? runWindow(o, observer) : runHeadless(o, observer);
+    ConsoleObserver observer(quiet_, [&](const SessionReport& report) { printSummary(report, mode, o); }, watcher.activity());
+    Result<SessionReport> report = windowMode ? runWindow(o, observer) : runHeadless(o, observer);
     if (!report) return fail(report.error());
     if (!o.watch) printSummary(*report, mode, o);
     return kExitOk;

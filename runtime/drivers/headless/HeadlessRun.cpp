@@ -37,7 +37,7 @@ namespace {
 
 // The error of a run stopped by a signal before frame `frame` of `frames`: what was written and
 // what was not (queued frames are dropped).
-Error interrupted(int frame, int frames, FrameRecorder* recorder, const PreparedRun& run) {
+Error interrupted(int frame, int frames, FrameRecorder* recorder, const SessionPlan& run) {
     std::string message = frame < frames
                               ? "interrupted after " + std::to_string(frame) + " of " + std::to_string(frames) + " frames"
                               : "interrupted while the last captured frames were written";
@@ -58,10 +58,10 @@ Error interrupted(int frame, int frames, FrameRecorder* recorder, const Prepared
 
 // Renders frames 0..frames-1 of `player` (from iFrame 0) with the fixed clock, the input scripts
 // and, when `run` has an output, a new FrameRecorder; fills `report`.
-Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observer, RunReport& report,
+Status renderFrames(Player& player, const SessionPlan& run, SessionObserver& observer, SessionReport& report,
                     std::chrono::steady_clock::time_point started) {
     using Clock = std::chrono::steady_clock;
-    const RunOptions& o = run.options;
+    const SessionOptions& o = run.options;
     std::unique_ptr<FrameRecorder> recorder;
     if (run.output) {
         Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(recorderSettings(run, observer.activity()), player);
@@ -196,12 +196,12 @@ Status renderFrames(Player& player, const PreparedRun& run, RunObserver& observe
 
 }  // namespace
 
-Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) {
+Result<SessionReport> runHeadless(const SessionOptions& options, SessionObserver& observer) {
     const auto started = std::chrono::steady_clock::now();
-    Result<PreparedRun> prepared = prepareRun(options);
+    Result<SessionPlan> prepared = prepareSession(options);
     if (!prepared) return withCompileProblems(options, prepared.error());
-    PreparedRun& run = *prepared;
-    const RunOptions& o = run.options;
+    SessionPlan& run = *prepared;
+    const SessionOptions& o = run.options;
     for (const Diagnostic& line : run.plan.notices) observer.notice(line);
 
     HeadlessOptions headless;
@@ -269,7 +269,7 @@ Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) 
     Player& player = **made;
     for (const Diagnostic& notice : player.compileNotices()) observer.notice(notice);
 
-    RunReport report;
+    SessionReport report;
     Status round = renderFrames(player, run, observer, report, started);
     if (!watcher) {
         if (!round) return round.error();

@@ -1,4 +1,4 @@
-// HeadlessRun: the `toyhost run --headless` driver. prepareRun checks everything that needs no GL
+// HeadlessRun: the `toyhost run --headless` driver. prepareSession checks everything that needs no GL
 // (manifest, images, output pattern, input scripts, ffmpeg) before any GL call; then a Player on
 // a headless EGL context renders frames with a fixed time step, input scripts feed it events, and
 // a FrameRecorder captures (async readback, encoder threads).
@@ -10,13 +10,13 @@
 #include <vector>
 
 #include "core/Result.h"
-#include "session/RunObserver.h"
-#include "session/RunOptions.h"
+#include "session/SessionObserver.h"
+#include "session/SessionOptions.h"
 
 namespace toyhost {
 
 
-Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer);
+Result<SessionReport> runHeadless(const SessionOptions& options, SessionObserver& observer);
 
 // The files a run with `output` writes for frames [first, end) of 0..frames-1 (one for a video,
 // none for raw).

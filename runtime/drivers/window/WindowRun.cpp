@@ -127,12 +127,12 @@ Diagnostic notice(std::string message, Code code, std::string file = {}) {
 
 }  // namespace
 
-Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
+Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& observer) {
     const auto started = std::chrono::steady_clock::now();
-    Result<PreparedRun> prepared = prepareRun(options);
+    Result<SessionPlan> prepared = prepareSession(options);
     if (!prepared) return withCompileProblems(options, prepared.error());
-    PreparedRun& run = *prepared;
-    const RunOptions& o = run.options;
+    SessionPlan& run = *prepared;
+    const SessionOptions& o = run.options;
     for (const Diagnostic& line : run.plan.notices) observer.notice(line);
 
     WindowOptions windowOptions;
@@ -185,7 +185,7 @@ Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer) {
     RealTimeClock clock(clockOptions, monotonicNow());
     const double wallStart = o.wallClock ? *o.wallClock : localWallClockNow();
 
-    RunReport report;
+    SessionReport report;
     report.manifestName = manifestName;
     report.context = window->describe();
     int rendered = 0;       // frames rendered since the window opened (captured files are numbered so)

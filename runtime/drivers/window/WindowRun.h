@@ -3,18 +3,18 @@
 // scripts make (iMouse in canvas pixels as the site computes it, keys as JavaScript keyCodes,
 // auto-repeat ignored), the canvas following the window's framebuffer size, a few control keys
 // (window/WindowControls.h), hot reload through a ShadertoyWatcher, a title with the state, and
-// --out recording what is shown. It checks everything prepareRun checks before opening the window.
+// --out recording what is shown. It checks everything prepareSession checks before opening the window.
 #pragma once
 
 #include "core/Result.h"
-#include "session/RunObserver.h"
-#include "session/RunObserver.h"
-#include "session/RunOptions.h"
+#include "session/SessionObserver.h"
+#include "session/SessionObserver.h"
+#include "session/SessionOptions.h"
 
 namespace toyhost {
 
 // `options.interactive` should be set (frames and fps then default to "until closed" and real
 // time). Ends when the window closes, Esc / Ctrl+Q, the observer asks to stop, or after --frames.
-Result<RunReport> runWindow(const RunOptions& options, RunObserver& observer);
+Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& observer);
 
 }  // namespace toyhost

@@ -1,7 +1,7 @@
-// RunOptions: what a user asks of a run (`toyhost run`), as plain settings whose absent fields
+// SessionOptions: what a user asks of a run (`toyhost run`), as plain settings whose absent fields
 // mean "the default" (withDefaults fills them from core/Defaults.h; a value the user gave, such as
-// --frames 0, is kept so that prepareRun can refuse it), and the checks that need no GL
-// (prepareRun: the manifest, images, output pattern, input scripts, ffmpeg), shared by the
+// --frames 0, is kept so that prepareSession can refuse it), and the checks that need no GL
+// (prepareSession: the manifest, images, output pattern, input scripts, ffmpeg), shared by the
 // headless and window drivers. No GL needed.
 #pragma once
 
@@ -25,7 +25,7 @@
 
 namespace toyhost {
 
-struct RunOptions {
+struct SessionOptions {
     std::filesystem::path target;          // folder with manifest.json, the manifest file, or an export
     std::optional<int> width;              // default defaults::kCanvasWidth x kCanvasHeight
     std::optional<int> height;
@@ -62,7 +62,7 @@ struct RunOptions {
     // float frames.
     bool checkFinite = false;
     // Watchdog limits in seconds (0: off); defaults from core/Defaults.h, no frame limit in a
-    // window. Enforced by whoever watches RunObserver::activity() (the CLI).
+    // window. Enforced by whoever watches SessionObserver::activity() (the CLI).
     std::optional<double> frameTimeout;
     std::optional<double> compileTimeout;
 
@@ -82,11 +82,11 @@ struct RunOptions {
 
 // `options` with every absent field set to its default (frames 0 then means "no end"; an
 // interactive run keeps fps absent: real time).
-RunOptions withDefaults(RunOptions options);
+SessionOptions withDefaults(SessionOptions options);
 
 // `options` with each setting the user left absent taken from the manifest's "defaults" (size
 // always; fps and frames only for headless runs: a window runs in real time until closed).
-RunOptions withManifestDefaults(RunOptions options, const RunDefaults& manifest);
+SessionOptions withManifestDefaults(SessionOptions options, const RunDefaults& manifest);
 
 // Frames n with n % captureEvery == 0, and the last frame.
 inline bool isCapturedFrame(int frame, int frames, int captureEvery) {
@@ -94,8 +94,8 @@ inline bool isCapturedFrame(int frame, int frames, int captureEvery) {
 }
 
 // Everything a run needs that can be checked without GL.
-struct PreparedRun {
-    RunOptions options;                    // with defaults applied
+struct SessionPlan {
+    SessionOptions options;                    // with defaults applied
     PlayerPlan plan;
     std::optional<OutputPattern> output;
     MouseScript mouse;
@@ -107,6 +107,6 @@ struct PreparedRun {
 
 // Validates `options` (after withDefaults), loads the shadertoy and decodes its images, parses
 // the output pattern and the input scripts. No GL.
-Result<PreparedRun> prepareRun(const RunOptions& options);
+Result<SessionPlan> prepareSession(const SessionOptions& options);
 
 }  // namespace toyhost

@@ -1,4 +1,4 @@
-// RunObserver: how a run talks to whoever started it (the CLI) while it runs: notices, progress,
+// SessionObserver: how a run talks to whoever started it (the CLI) while it runs: notices, progress,
 // and the question "should I stop?". The library never prints; the CLI decides how to show these.
 // No GL needed.
 #pragma once
@@ -16,7 +16,7 @@
 namespace toyhost {
 
 // What a run did (for the one-line summary).
-struct RunReport {
+struct SessionReport {
     std::string manifestName;
     std::string context;                   // GL backend description
     int width = 0;
@@ -29,9 +29,9 @@ struct RunReport {
     int encoderThreads = 0;                // encoder threads the capture used (0: synchronous)
 };
 
-class RunObserver {
+class SessionObserver {
 public:
-    virtual ~RunObserver() = default;
+    virtual ~SessionObserver() = default;
     virtual void notice(const Diagnostic& notice) = 0;
     // Called on the render thread after every frame; keep it cheap.
     virtual void progress(const RunProgress& progress) { (void)progress; }
@@ -40,7 +40,7 @@ public:
     virtual bool stopRequested() const { return false; }
     // --watch: a round of frames ended (`report`) or failed (`error`); the run now waits for the
     // next change of the shadertoy's files.
-    virtual void roundFinished(const Result<RunReport>& round) { (void)round; }
+    virtual void roundFinished(const Result<SessionReport>& round) { (void)round; }
     // Where the run publishes what its render thread is doing, for a watchdog on another thread
     // (core/RunActivity.h); nullptr when nobody watches (then passes are not waited for one by one).
     virtual RunActivity* activity() { return nullptr; }

@@ -1,4 +1,4 @@
-#include "session/RunOptions.h"
+#include "session/SessionOptions.h"
 
 #include <cmath>
 
@@ -21,7 +21,7 @@ int countCaptured(int first, int end, int frames, int every) {
 Error usage(std::string message) { return Error(std::move(message), Code::Usage); }
 }  // namespace
 
-RunOptions withDefaults(RunOptions o) {
+SessionOptions withDefaults(SessionOptions o) {
     if (!o.width) o.width = defaults::kCanvasWidth;
     if (!o.height) o.height = defaults::kCanvasHeight;
     if (!o.frames) o.frames = o.interactive ? 0 : defaults::kFrames;
@@ -34,7 +34,7 @@ RunOptions withDefaults(RunOptions o) {
     return o;
 }
 
-RunOptions withManifestDefaults(RunOptions o, const RunDefaults& manifest) {
+SessionOptions withManifestDefaults(SessionOptions o, const RunDefaults& manifest) {
     if (!o.width && !o.height && manifest.width && manifest.height) {
         o.width = manifest.width;
         o.height = manifest.height;
@@ -48,7 +48,7 @@ RunOptions withManifestDefaults(RunOptions o, const RunDefaults& manifest) {
 }
 
 // --resume: the clock and canvas come from the checkpoint unless given, and must then agree.
-Result<RunOptions> withCheckpointSettings(RunOptions o, const Checkpoint& c) {
+Result<SessionOptions> withCheckpointSettings(SessionOptions o, const Checkpoint& c) {
     const std::string file = o.resume->string();
     auto differs = [&](const std::string& option, const std::string& value) {
         return fileError(file, "the checkpoint was made with " + option + " " + value +
@@ -68,7 +68,7 @@ Result<RunOptions> withCheckpointSettings(RunOptions o, const Checkpoint& c) {
     return o;
 }
 
-Result<PreparedRun> prepareRun(const RunOptions& options) {
+Result<SessionPlan> prepareSession(const SessionOptions& options) {
     if (options.frames && *options.frames < 1) return usage("--frames must be at least 1");
     if (options.checkpointEvery && *options.checkpointEvery < 1) return usage("--checkpoint-every must be at least 1");
     if (options.checkpointEvery && !options.checkpoint) return usage("--checkpoint-every needs --checkpoint FILE");
@@ -80,16 +80,16 @@ Result<PreparedRun> prepareRun(const RunOptions& options) {
     Result<ManifestDesc> manifest = loadShadertoy(options.target);
     if (!manifest) return manifest.error();
     std::optional<Checkpoint> resume;
-    RunOptions given = withManifestDefaults(options, manifest->runDefaults);
+    SessionOptions given = withManifestDefaults(options, manifest->runDefaults);
     if (options.resume) {
         Result<Checkpoint> read = readCheckpoint(*options.resume);
         if (!read) return read.error();
-        Result<RunOptions> merged = withCheckpointSettings(std::move(given), *read);
+        Result<SessionOptions> merged = withCheckpointSettings(std::move(given), *read);
         if (!merged) return merged.error();
         given = std::move(*merged);
         resume = std::move(*read);
     }
-    const RunOptions o = withDefaults(std::move(given));
+    const SessionOptions o = withDefaults(std::move(given));
     if (Status size = checkCanvasSize(*o.width, *o.height); !size) {
         Error error = size.error();
         if (options.width) error.diagnostics.front().message = "--size: " + error.diagnostics.front().message;
@@ -129,7 +129,7 @@ Result<PreparedRun> prepareRun(const RunOptions& options) {
         return usage(std::string("--capture-pass ") + passName(o.capturePass) + ": " +
                      manifest->manifestPath.string() + " has no such pass");
 
-    PreparedRun run{o, {}, std::nullopt, {}, {}, 0, *o.frames, std::nullopt};
+    SessionPlan run{o, {}, std::nullopt, {}, {}, 0, *o.frames, std::nullopt};
     if (o.frameRange) {
         const auto [first, end] = *o.frameRange;
         if (first < 0 || end <= first || end > *o.frames)

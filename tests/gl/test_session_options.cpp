@@ -1,23 +1,23 @@
-// RunOptions and prepareRun: defaults come from one place, and what a run cannot do is refused
+// SessionOptions and prepareSession: defaults come from one place, and what a run cannot do is refused
 // before any GL work, with the usage code the CLI turns into exit status 2.
 #include "GlTestSupport.h"
 
 #include "core/Defaults.h"
-#include "session/RunOptions.h"
+#include "session/SessionOptions.h"
 
 namespace toyhost::testing {
 namespace {
 
-RunOptions probeOptions() {
-    RunOptions options;
+SessionOptions probeOptions() {
+    SessionOptions options;
     options.target = sourceDir() / "shadertoys/pingpong-probe";
     options.width = 8;
     options.height = 8;
     return options;
 }
 
-TEST(RunOptions, AbsentFieldsTakeTheDefaultsAndGivenOnesStay) {
-    const RunOptions filled = withDefaults(RunOptions{});
+TEST(SessionOptions, AbsentFieldsTakeTheDefaultsAndGivenOnesStay) {
+    const SessionOptions filled = withDefaults(SessionOptions{});
     EXPECT_EQ(*filled.width, defaults::kCanvasWidth);
     EXPECT_EQ(*filled.height, defaults::kCanvasHeight);
     EXPECT_EQ(*filled.frames, defaults::kFrames);
@@ -25,21 +25,21 @@ TEST(RunOptions, AbsentFieldsTakeTheDefaultsAndGivenOnesStay) {
     EXPECT_EQ(*filled.captureEvery, defaults::kCaptureEvery);
     EXPECT_EQ(*filled.pngLevel, defaults::kPngLevel);
     EXPECT_EQ(*filled.captureMemoryBytes, defaults::kCaptureMemoryMiB << 20);
-    RunOptions given;
-    given.frames = 0;  // a user's 0 is kept, so that prepareRun can refuse it
+    SessionOptions given;
+    given.frames = 0;  // a user's 0 is kept, so that prepareSession can refuse it
     given.pngLevel = 0;
     EXPECT_EQ(*withDefaults(given).frames, 0);
     EXPECT_EQ(*withDefaults(given).pngLevel, 0);
 }
 
-TEST(RunOptions, ImpossibleValuesAreUsageErrorsBeforeAnyWork) {
-    auto refused = [](RunOptions options, const std::string& mentions) {
-        Result<PreparedRun> run = prepareRun(options);
+TEST(SessionOptions, ImpossibleValuesAreUsageErrorsBeforeAnyWork) {
+    auto refused = [](SessionOptions options, const std::string& mentions) {
+        Result<SessionPlan> run = prepareSession(options);
         ASSERT_FALSE(run.ok()) << mentions;
         EXPECT_EQ(run.error().category(), Category::Usage) << run.error().text();
         EXPECT_NE(run.error().text().find(mentions), std::string::npos) << run.error().text();
     };
-    RunOptions o = probeOptions();
+    SessionOptions o = probeOptions();
     o.encoderThreads = 100000;
     refused(o, "--encoder-threads");
     o = probeOptions();
@@ -62,10 +62,10 @@ TEST(RunOptions, ImpossibleValuesAreUsageErrorsBeforeAnyWork) {
     refused(o, "--capture-every");
 }
 
-TEST(RunOptions, PrepareDecodesTheImagesAndReportsStandIns) {
-    RunOptions o;
+TEST(SessionOptions, PrepareDecodesTheImagesAndReportsStandIns) {
+    SessionOptions o;
     o.target = sourceDir() / "shadertoys/uniform-probe";
-    Result<PreparedRun> run = prepareRun(o);
+    Result<SessionPlan> run = prepareSession(o);
     ASSERT_TRUE(run.ok()) << run.error().text();
     EXPECT_EQ(*run->options.width, defaults::kCanvasWidth);
     ASSERT_FALSE(run->plan.images.standIns().empty());
