@@ -128,6 +128,7 @@ enum class Category : std::uint8_t {
     X(WatchdogCompile,        "watchdog.compile",          Watchdog) \
     X(WatchdogFrame,          "watchdog.frame",            Watchdog) \
     X(WatchdogOutput,         "watchdog.output",           Watchdog) \
+    X(WatchChanged,           "watch.changed",             Report) \
     X(WindowCreate,           "window.create",             Gl) \
     X(WindowHelp,             "window.help",               Report) \
     X(WindowInit,             "window.init",               Gl) \

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "core/Result.h"
 
@@ -18,10 +19,11 @@ namespace toyhost {
 // user set in the environment is kept.
 void requestWebGlDriverBehaviour();
 
-// While it lives, the driver's own stderr lines are dropped when glsl_zero_init is "true" (set by
-// toyhost, or inherited from a toyhost that started this process): Mesa prints "ATTENTION: default value of option glsl_zero_init overridden by
-// environment." when a display initialises, which would break toyhost's one-message errors.
-// Wrap only the calls that initialise a display (nothing else writes then).
+// While it lives, stderr goes into a pipe; when it ends, what was written there goes to stderr
+// except the driver's announcement of glsl_zero_init ("ATTENTION: default value of option
+// glsl_zero_init overridden by environment.", printed by Mesa when a display initialises), which
+// would break toyhost's one-message errors. Lines other threads write meanwhile are kept, only
+// delayed. Wrap only the calls that initialise a display.
 class DriverStartupQuiet {
 public:
     DriverStartupQuiet();
@@ -29,8 +31,12 @@ public:
     DriverStartupQuiet(const DriverStartupQuiet&) = delete;
     DriverStartupQuiet& operator=(const DriverStartupQuiet&) = delete;
 
+    // `text` without the driver's glsl_zero_init announcement lines.
+    static std::string withoutAnnouncement(std::string_view text);
+
 private:
     int savedStderr_ = -1;
+    int pipe_ = -1;  // read end
 };
 
 class GlSurface {

@@ -43,6 +43,35 @@ std::vector<std::string> channelSources(const ManifestDesc& manifest) {
     return keys;
 }
 
+bool samePixels(const Image8& a, const Image8& b) {
+    return a.width == b.width && a.height == b.height && a.rgba == b.rgba;
+}
+
+// Whether every picture channel of `a` shows the same pixels in `b` (same bindings assumed): a
+// file edited in place has the same path but new content, which must be uploaded again.
+bool samePictures(const PlayerPlan& a, const PlayerPlan& b) {
+    for (std::size_t p = 0; p < a.manifest.passes.size(); ++p)
+        for (int c = 0; c < kChannelCount; ++c) {
+            const ChannelDesc& ca = a.manifest.passes[p].channels[c];
+            const ChannelDesc& cb = b.manifest.passes[p].channels[c];
+            if (const Image8* x = a.images.find(ca)) {
+                const Image8* y = b.images.find(cb);
+                if (!y || !samePixels(*x, *y)) return false;
+            } else if (const CubeFaces8* x = a.images.findCubemap(ca)) {
+                const CubeFaces8* y = b.images.findCubemap(cb);
+                if (!y || x->size != y->size) return false;
+                for (int f = 0; f < 6; ++f)
+                    if (!samePixels(x->faces[f], y->faces[f])) return false;
+            } else if (const Volume8* x = a.images.findVolume(ca)) {
+                const Volume8* y = b.images.findVolume(cb);
+                if (!y || x->width != y->width || x->height != y->height || x->depth != y->depth ||
+                    x->channels != y->channels || x->floats != y->floats || x->voxels != y->voxels)
+                    return false;
+            }
+        }
+    return true;
+}
+
 }  // namespace
 
 Result<std::unique_ptr<Player>> Player::create(std::shared_ptr<GlContext> context, PlayerPlan plan, PlayerDesc desc) {
@@ -169,8 +198,9 @@ void Player::restart() {
 
 ReloadReport Player::reload(PlayerPlan next) {
     ReloadReport report;
-    const bool sameStructure =
-        plan_.graph.sameStructure(next.graph) && channelSources(plan_.manifest) == channelSources(next.manifest);
+    const bool sameStructure = plan_.graph.sameStructure(next.graph) &&
+                               channelSources(plan_.manifest) == channelSources(next.manifest) &&
+                               samePictures(plan_, next);
     if (!sameStructure) {
         report.structureChanged = true;
         Result<std::unique_ptr<Renderer>> renderer = Renderer::create(

@@ -24,8 +24,9 @@
 namespace toyhost {
 
 struct ReloadReport {
-    // The passes, channels or images changed: the renderer was rebuilt (when `applied`), carrying
-    // over the content of every buffer the new manifest still has. Drivers usually restart then.
+    // The passes, channels or images (their pixels, not only their files' names) changed: the
+    // renderer was rebuilt (when `applied`), carrying over the content of every buffer the new
+    // manifest still has.
     bool structureChanged = false;
     bool applied = false;                 // the new manifest (or some of its passes) runs now
     std::vector<std::string> recompiled;  // passes whose new code runs now

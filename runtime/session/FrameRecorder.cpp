@@ -79,7 +79,10 @@ RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity)
 Status FrameRecorder::captureCube(const Player& player, int frame) {
     Result<std::optional<std::vector<std::byte>>> pixels = takeBuffer(frameBytes(width_, height_, format_));
     if (!pixels) return pixels.error();
-    if (!*pixels) return okStatus();  // dropped
+    if (!*pixels) {
+        ++captured_;
+        return dropped(frame);
+    }
     float* strip = reinterpret_cast<float*>((*pixels)->data());
     int size = 0;
     for (int face = 0; face < 6; ++face) {
@@ -105,7 +108,10 @@ Status FrameRecorder::capture(const Player& player, int frame) {
     if (!ring_) {
         Result<std::optional<std::vector<std::byte>>> pixels = takeBuffer(frameBytes(width_, height_, format_));
         if (!pixels) return pixels.error();
-        if (!*pixels) return okStatus();  // dropped
+        if (!*pixels) {
+            ++captured_;
+            return dropped(frame);
+        }
         readFramebuffer(output.framebuffer, width_, height_, format_, **pixels);
         ++captured_;
         scanFloatFrame(frame, **pixels);
@@ -126,9 +132,7 @@ Status FrameRecorder::poll() {
 
 Result<std::optional<std::vector<std::byte>>> FrameRecorder::takeBuffer(std::size_t bytes) {
     if (settings_.dropWhenBusy) {
-        Result<std::optional<std::vector<std::byte>>> buffer = pool_->tryAcquire(bytes);
-        if (buffer && !*buffer) ++dropped_;
-        return buffer;
+        return pool_->tryAcquire(bytes);
     }
     // Blocks while the encoders hold the memory cap: back-pressure reaches the render loop here.
     if (settings_.activity) settings_.activity->begin(RunActivity::Phase::WaitingForOutput);
@@ -142,8 +146,9 @@ Status FrameRecorder::collectOldest() {
     Result<std::optional<std::vector<std::byte>>> pixels = takeBuffer(ring_->frameBytes());
     if (!pixels) return pixels.error();
     if (!*pixels) {
+        const int frame = ring_->oldestFrame();
         ring_->dropOldest();
-        return okStatus();
+        return dropped(frame);
     }
     const int frame = ring_->oldestFrame();
     if (Status copied = ring_->takeOldest(**pixels); !copied) return copied;
@@ -158,17 +163,27 @@ void FrameRecorder::scanFloatFrame(int frame, const std::vector<std::byte>& pixe
     if (found.count()) firstNonFinite_.emplace(frame, found);
 }
 
+Status FrameRecorder::dropped(int frame) {
+    droppedFrames_.push_back(frame);
+    return okStatus();
+}
+
 FrameRecorder::Abandoned FrameRecorder::abandon() {
     pool_->abandon();
     const int written = pool_->framesWritten();
-    return {written, captured_ - written - dropped_};
+    return {written, captured_ - written - static_cast<int>(droppedFrames_.size())};
 }
 
 Status FrameRecorder::finish() {
     settings_.dropWhenBusy = false;  // what is still in the ring is written
     while (ring_ && !ring_->empty())
         if (Status collected = collectOldest(); !collected) return collected;
-    return pool_->finish();
+    // The encoders write the last frames and the sink closes (ffmpeg finishing a video): a stalled
+    // encoder here is the watchdog's to end, as while rendering.
+    if (settings_.activity) settings_.activity->begin(RunActivity::Phase::WaitingForOutput);
+    Status finished = pool_->finish();
+    if (settings_.activity) settings_.activity->idle();
+    return finished;
 }
 
 }  // namespace toyhost

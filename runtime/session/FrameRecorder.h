@@ -68,7 +68,8 @@ public:
     };
     Abandoned abandon();
     int encoderThreads() const { return pool_->threads(); }
-    int droppedFrames() const { return dropped_; }
+    // Frames that were not recorded because the encoders were behind (dropWhenBusy), by number.
+    const std::vector<int>& droppedFrames() const { return droppedFrames_; }
     // Float captures (EXR of a buffer, or of Image): the first captured frame that held NaN or Inf,
     // found by scanning what was read back anyway.
     const std::optional<std::pair<int, NonFiniteFind>>& firstNonFinite() const { return firstNonFinite_; }
@@ -89,7 +90,8 @@ private:
     std::shared_ptr<GlContext> context_;  // declared first: outlives the readback buffers
     RecorderSettings settings_;
     int width_ = 0, height_ = 0;
-    int dropped_ = 0;
+    std::vector<int> droppedFrames_;
+    Status dropped(int frame);
     int captured_ = 0;  // capture() calls that took a frame
     std::optional<std::pair<int, NonFiniteFind>> firstNonFinite_;
     // A pixel buffer for a frame: waits for one, or (dropWhenBusy) gives nothing when none is free.

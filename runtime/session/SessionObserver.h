@@ -1,49 +1,59 @@
-// SessionObserver: how a run talks to whoever started it (the CLI) while it runs: notices, progress,
-// and the question "should I stop?". The library never prints; the CLI decides how to show these.
-// No GL needed.
+// SessionObserver and SessionReport: how a session talks to whoever runs it (the CLI, a program
+// that embeds toyhost) while it runs, and what it did. The library never prints; the observer
+// decides how to show notices and progress, and summaryLines() is the one text form of a report
+// every command prints. No GL needed.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/Diagnostic.h"
 #include "core/Result.h"
-#include "core/RunActivity.h"
 #include "timing/ProgressLine.h"
 
 namespace toyhost {
 
-// What a run did (for the one-line summary).
+// What a run (or one round of a --watch run) did.
 struct SessionReport {
-    std::string manifestName;
-    std::string context;                   // GL backend description
+    std::string name;        // the shadertoy's
+    std::string context;     // the GL backend, one line
+    std::string mode;        // "headless", "in a window"
     int width = 0;
     int height = 0;
-    int framesRendered = 0;
-    std::vector<std::filesystem::path> files;
-    double seconds = 0;                    // wall time of the frame loop, GPU and encoders included
-    double firstFrameSeconds = 0;          // from start of run() to the first frame finished
-    std::uint64_t bytesWritten = 0;        // by the capture (file sizes; the video's size)
-    int encoderThreads = 0;                // encoder threads the capture used (0: synchronous)
+    int frames = 0;          // frames rendered (not those simulated before a --frame-range)
+    // From the start of the command to the start of the first frame (loading, decoding images,
+    // the GL context, compiling), the first frame itself (GPU work included), and every later
+    // frame until every output was written.
+    double startupSeconds = 0;
+    double firstFrameSeconds = 0;
+    double restSeconds = 0;
+    std::vector<std::filesystem::path> files;  // complete output files (frames, a video, audio)
+    std::optional<std::filesystem::path> checkpoint;
+    std::uint64_t bytesWritten = 0;  // the captured frames' files (a video's size)
+    int encoderThreads = 0;
+    bool interactive = false;  // a window: no output is the normal case
+    bool toStdout = false;     // raw frames went to stdout
+    bool outputAsked = false;  // --out was given
+    double soundSeconds = 0;   // `toyhost sound`: the length of the audio written
 };
+
+// The summary a command prints after a run, one line each ("ocean: 60 frames at 1280x720 ...",
+// "wrote ..."), without the "toyhost: " prefix.
+std::vector<std::string> summaryLines(const SessionReport& report);
 
 class SessionObserver {
 public:
     virtual ~SessionObserver() = default;
+    // Notices, warnings and problems that do not end the run (a reload that failed, a stand-in).
     virtual void notice(const Diagnostic& notice) = 0;
-    // Called on the render thread after every frame; keep it cheap.
+    // After every frame, on the render thread; keep it cheap.
     virtual void progress(const RunProgress& progress) { (void)progress; }
-    // Polled before every frame; true ends the run with an interrupted error (Code::Interrupted), cleanly (a video
-    // being encoded is discarded, image files already written stay).
-    virtual bool stopRequested() const { return false; }
-    // --watch: a round of frames ended (`report`) or failed (`error`); the run now waits for the
+    // A round of a --watch run ended (its report) or failed (its error); the run now waits for the
     // next change of the shadertoy's files.
     virtual void roundFinished(const Result<SessionReport>& round) { (void)round; }
-    // Where the run publishes what its render thread is doing, for a watchdog on another thread
-    // (core/RunActivity.h); nullptr when nobody watches (then passes are not waited for one by one).
-    virtual RunActivity* activity() { return nullptr; }
 };
 
 }  // namespace toyhost

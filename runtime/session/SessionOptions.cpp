@@ -6,6 +6,10 @@
 #include "core/ChildProcess.h"
 #include "core/Defaults.h"
 #include "export/LoadShadertoy.h"
+#include "timing/FrameClock.h"
+
+#include <algorithm>
+#include <cctype>
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -68,7 +72,38 @@ Result<SessionOptions> withCheckpointSettings(SessionOptions o, const Checkpoint
     return o;
 }
 
-Result<SessionPlan> prepareSession(const SessionOptions& options) {
+namespace {
+// `toyhost sound --out`: an audio file by its extension, or "-" for WAV on stdout.
+Status checkSoundRequest(const SoundRequest& sound) {
+    if (!(sound.seconds >= 0) || sound.seconds > defaults::kMaxSoundSeconds)
+        return usage("--seconds must be more than 0 and at most " + std::to_string(int(defaults::kMaxSoundSeconds)));
+    if (sound.out == "-") return okStatus();
+    std::string extension = sound.out.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    static const char* const known[] = {".wav", ".flac", ".ogg", ".opus", ".mp3", ".m4a"};
+    std::error_code ec;
+    // A device or a pipe (/dev/full, a FIFO) has no extension: it gets WAV.
+    const bool device = extension.empty() && fs::exists(sound.out, ec) && !fs::is_regular_file(sound.out, ec) &&
+                        !fs::is_directory(sound.out, ec);
+    if (!device && std::find(std::begin(known), std::end(known), extension) == std::end(known))
+        return usage("--out " + sound.out.string() + ": the audio format comes from the extension: .wav, .flac, "
+                     ".ogg, .opus, .mp3 or .m4a (or - for WAV on stdout)");
+    if (fs::is_directory(sound.out, ec)) return usage("--out " + sound.out.string() + ": is a folder; give a file name");
+    if (!device && extension != ".wav" && !findExecutable("ffmpeg"))
+        return Error("--out " + sound.out.string() + ": " + extension.substr(1) +
+                         " audio needs ffmpeg, which is not in PATH (Debian: apt-get install ffmpeg), or write a .wav",
+                     Code::SoundFfmpegMissing);
+    return okStatus();
+}
+}  // namespace
+
+Result<SessionPlan> prepareSession(const SessionOptions& asked) {
+    SessionOptions options = asked;
+    if (!options.startedAt) options.startedAt = std::chrono::steady_clock::now();
+    if (options.sound) {
+        if (Status sound = checkSoundRequest(*options.sound); !sound) return sound.error();
+        if (options.outPattern) return usage("a sound session writes audio, not frames (no --out pattern)");
+    }
     if (options.frames && *options.frames < 1) return usage("--frames must be at least 1");
     if (options.checkpointEvery && *options.checkpointEvery < 1) return usage("--checkpoint-every must be at least 1");
     if (options.checkpointEvery && !options.checkpoint) return usage("--checkpoint-every needs --checkpoint FILE");
@@ -79,6 +114,8 @@ Result<SessionPlan> prepareSession(const SessionOptions& options) {
         return usage("--checkpoint, --resume, --frame-range and --shard cannot be combined with --watch");
     Result<ManifestDesc> manifest = loadShadertoy(options.target);
     if (!manifest) return manifest.error();
+    if (options.sound && !manifest->sound)
+        return fileError(manifest->manifestPath.string(), "the shadertoy has no Sound pass (mainSound)", Code::SoundMissing);
     std::optional<Checkpoint> resume;
     SessionOptions given = withManifestDefaults(options, manifest->runDefaults);
     if (options.resume) {
@@ -89,7 +126,10 @@ Result<SessionPlan> prepareSession(const SessionOptions& options) {
         given = std::move(*merged);
         resume = std::move(*read);
     }
-    const SessionOptions o = withDefaults(std::move(given));
+    SessionOptions o = withDefaults(std::move(given));
+    // A headless run's iDate is the wall clock at frame 0 unless --date (or a checkpoint) says
+    // otherwise; a window shows the live date.
+    if (!o.interactive && !o.wallClock) o.wallClock = localWallClockNow();
     if (Status size = checkCanvasSize(*o.width, *o.height); !size) {
         Error error = size.error();
         if (options.width) error.diagnostics.front().message = "--size: " + error.diagnostics.front().message;
@@ -175,6 +215,11 @@ Result<SessionPlan> prepareSession(const SessionOptions& options) {
                 return usage("--out " + *o.outPattern + ": the file name is " + std::to_string(name.size()) +
                              " bytes long, more than the 255 a file system allows");
         }
+        // A video has one frame rate; a window in real time renders at whatever rate it manages,
+        // so its recording would play at the wrong speed: ask for the step it should have.
+        if (pattern->format() == OutputFormat::Video && o.interactive && !o.fps)
+            return usage("--out " + *o.outPattern + ": a video recorded from a window needs --fps (each frame then "
+                         "advances iTime by exactly 1/fps, and the video plays at that rate); image files need none");
         if (pattern->format() == OutputFormat::Video && !findExecutable("ffmpeg"))
             return Error("--out " + *o.outPattern + ": video needs ffmpeg, which is not in PATH "
                          "(Debian: apt-get install ffmpeg)",
@@ -207,7 +252,7 @@ Result<SessionPlan> prepareSession(const SessionOptions& options) {
     }
     Result<PlayerPlan> plan = planPlayer(std::move(*manifest), o.media);
     if (!plan) return plan.error();
-    run.plan = std::move(*plan);
+    run.shadertoy = std::move(*plan);
     return run;
 }
 

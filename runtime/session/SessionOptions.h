@@ -1,10 +1,11 @@
-// SessionOptions: what a user asks of a run (`toyhost run`), as plain settings whose absent fields
-// mean "the default" (withDefaults fills them from core/Defaults.h; a value the user gave, such as
-// --frames 0, is kept so that prepareSession can refuse it), and the checks that need no GL
-// (prepareSession: the manifest, images, output pattern, input scripts, ffmpeg), shared by the
-// headless and window drivers. No GL needed.
+// SessionOptions: what a user asks of a session (`toyhost run`, `toyhost sound`, a program that
+// embeds toyhost), as plain settings whose absent fields mean "the default" (withDefaults fills
+// them from core/Defaults.h; a value the user gave, such as --frames 0, is kept so that
+// prepareSession can refuse it), and the checks that need no GL (prepareSession: the manifest,
+// images and media, output pattern, input scripts, ffmpeg), shared by every driver. No GL needed.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -25,8 +26,16 @@
 
 namespace toyhost {
 
+// `toyhost sound`: the Sound pass rendered to an audio file instead of frames.
+struct SoundRequest {
+    std::filesystem::path out;             // .wav, or .flac/.ogg/.opus/.mp3/.m4a through ffmpeg; "-": WAV on stdout
+    double seconds = 0;                    // 0: the site's 180 s
+};
+
 struct SessionOptions {
     std::filesystem::path target;          // folder with manifest.json, the manifest file, or an export
+    // When the command started, for the report's start-up time; default: when prepareSession ran.
+    std::optional<std::chrono::steady_clock::time_point> startedAt;
     std::optional<int> width;              // default defaults::kCanvasWidth x kCanvasHeight
     std::optional<int> height;
     // Window mode: no frame count means "until the window closes" and no fps means real time.
@@ -61,8 +70,12 @@ struct SessionOptions {
     // buffer and frame). Without it, buffers are checked at the end of the run and on captured
     // float frames.
     bool checkFinite = false;
+    // Render the Image pass into RGBA32F even without an EXR capture of it (to read its floats).
+    bool floatImage = false;
+    // Render only the Sound pass, to this file (no frames, no Player).
+    std::optional<SoundRequest> sound;
     // Watchdog limits in seconds (0: off); defaults from core/Defaults.h, no frame limit in a
-    // window. Enforced by whoever watches SessionObserver::activity() (the CLI).
+    // window. Enforced by the session's Watchdog (session/Watchdog.h), when it has one.
     std::optional<double> frameTimeout;
     std::optional<double> compileTimeout;
 
@@ -96,7 +109,7 @@ inline bool isCapturedFrame(int frame, int frames, int captureEvery) {
 // Everything a run needs that can be checked without GL.
 struct SessionPlan {
     SessionOptions options;                    // with defaults applied
-    PlayerPlan plan;
+    PlayerPlan shadertoy;                  // the shadertoy, planned (graph, decoded images, media)
     std::optional<OutputPattern> output;
     MouseScript mouse;
     KeyScript keys;

@@ -20,7 +20,7 @@ std::vector<fs::path> watchedFiles(const fs::path& target, const ManifestDesc& m
     for (const PassDesc& pass : manifest.passes) {
         add(pass.source);
         for (const ChannelDesc& channel : pass.channels)
-            if (channel.kind == ChannelKind::ImageFile) add(channel.file);
+            if (!channel.file.empty()) add(channel.file);  // images, cubemaps, volumes, videos, audio
     }
     return files;
 }
@@ -72,6 +72,10 @@ void ShadertoyWatcher::run() {
                 if (again == now) break;
                 now = std::move(again);
             }
+            std::vector<fs::path> changed;
+            for (const auto& [file, stamp] : now)
+                if (auto before = seen.find(file); before == seen.end() || !(before->second == stamp))
+                    changed.push_back(file);
             seen = now;
             Result<PlayerPlan> plan = [&]() -> Result<PlayerPlan> {
                 Result<ManifestDesc> manifest = loadShadertoy(target_);
@@ -83,7 +87,11 @@ void ShadertoyWatcher::run() {
                 seen = stampAll();
             }
             lock.lock();
-            ready_ = std::move(plan);
+            // Changes not taken yet are merged: the driver sees every file that changed.
+            if (ready_)
+                for (fs::path& file : ready_->files)
+                    if (std::find(changed.begin(), changed.end(), file) == changed.end()) changed.push_back(std::move(file));
+            ready_.emplace(ShadertoyChange{std::move(changed), std::move(plan)});
             changed_.notify_all();
             continue;
         }
@@ -91,17 +99,17 @@ void ShadertoyWatcher::run() {
     }
 }
 
-std::optional<Result<PlayerPlan>> ShadertoyWatcher::take() {
+std::optional<ShadertoyChange> ShadertoyWatcher::take() {
     std::lock_guard lock(mutex_);
-    std::optional<Result<PlayerPlan>> out = std::move(ready_);
+    std::optional<ShadertoyChange> out = std::move(ready_);
     ready_.reset();
     return out;
 }
 
-std::optional<Result<PlayerPlan>> ShadertoyWatcher::wait(const std::function<bool()>& stop) {
+std::optional<ShadertoyChange> ShadertoyWatcher::wait(const std::function<bool()>& stop) {
     std::unique_lock lock(mutex_);
     while (!ready_ && !stop()) changed_.wait_for(lock, interval_);
-    std::optional<Result<PlayerPlan>> out = std::move(ready_);
+    std::optional<ShadertoyChange> out = std::move(ready_);
     ready_.reset();
     return out;
 }

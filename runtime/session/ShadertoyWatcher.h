@@ -23,8 +23,15 @@
 namespace toyhost {
 
 // The files whose change means "reload": the target, the manifest, Common, the pass files and
-// the image files of `manifest`.
+// the files every channel of `manifest` reads (images, cubemaps, volumes, videos, audio).
 std::vector<std::filesystem::path> watchedFiles(const std::filesystem::path& target, const ManifestDesc& manifest);
+
+// A change the watcher saw: which files changed, and the shadertoy loaded and planned again (or
+// why it could not be).
+struct ShadertoyChange {
+    std::vector<std::filesystem::path> files;
+    Result<PlayerPlan> plan;
+};
 
 class ShadertoyWatcher {
 public:
@@ -36,10 +43,10 @@ public:
     ShadertoyWatcher(const ShadertoyWatcher&) = delete;
     ShadertoyWatcher& operator=(const ShadertoyWatcher&) = delete;
 
-    // The plan (or the errors of loading it) made after the latest change, once; else nothing.
-    std::optional<Result<PlayerPlan>> take();
+    // The change loaded after the latest change of the files, once; else nothing.
+    std::optional<ShadertoyChange> take();
     // Waits until a change was loaded or `stop()` returns true (checked every `interval`).
-    std::optional<Result<PlayerPlan>> wait(const std::function<bool()>& stop);
+    std::optional<ShadertoyChange> wait(const std::function<bool()>& stop);
 
 private:
     struct Stamp {
@@ -57,7 +64,7 @@ private:
     std::vector<std::filesystem::path> files_;  // watcher thread only
     std::mutex mutex_;
     std::condition_variable changed_;
-    std::optional<Result<PlayerPlan>> ready_;
+    std::optional<ShadertoyChange> ready_;
     bool stopping_ = false;
     std::thread thread_;
 };

@@ -4,24 +4,24 @@
 
 namespace toyhost {
 
-namespace {
-// Weight of the newest frame in the smoothed frame rate (about the last 10 frames count).
-constexpr double kRateSmoothing = 0.1;
-}  // namespace
-
 RealTimeClock::RealTimeClock(const RealTimeClockOptions& options, double now)
-    : options_(options), origin_(now), lastTime_(options.startTime), frameRate_(options.nominalFps) {
-    if (options_.fixedFps) frameRate_ = *options_.fixedFps;
-}
+    : options_(options), origin_(now), lastTime_(options.startTime), counter_(now) {}
 
 FrameTime RealTimeClock::frame(double now, double wallClock) {
     FrameTime t;
-    if (options_.fixedFps) {
+    // The site counts every frame it paints, forced ones included, before painting it.
+    counter_.count(now);
+    if (forcePending_ && !stepPending_ && paused_) {
+        // Forced while paused: the paused time again (the site paints mTf with a 1/60 delta).
+        t.time = lastTime_;
+        t.timeDelta = 1.0 / options_.nominalFps;
+        t.frameRate = options_.fixedFps ? *options_.fixedFps : counter_.rate();
+    } else if (options_.fixedFps) {
         const double fps = *options_.fixedFps;
         t.time = options_.startTime + static_cast<double>(framesSinceRestart_) / fps;
         t.timeDelta = 1.0 / fps;
         t.frameRate = fps;
-        frameRate_ = fps;
+        ++framesSinceRestart_;
     } else {
         if (stepPending_) {
             // A single step while paused: one nominal frame later, and the clock stays put.
@@ -32,14 +32,14 @@ FrameTime RealTimeClock::frame(double now, double wallClock) {
         }
         t.timeDelta = fresh_ || stepPending_ ? 1.0 / options_.nominalFps : t.time - lastTime_;
         if (t.timeDelta <= 0) t.timeDelta = 1.0 / options_.nominalFps;
-        frameRate_ = fresh_ ? frameRate_ : frameRate_ + kRateSmoothing * (1.0 / t.timeDelta - frameRate_);
-        t.frameRate = frameRate_;
+        t.frameRate = counter_.rate();
+        ++framesSinceRestart_;
     }
     t.date = dateAt(wallClock);
     lastTime_ = t.time;
     fresh_ = false;
     stepPending_ = false;
-    ++framesSinceRestart_;
+    forcePending_ = false;
     return t;
 }
 
@@ -53,6 +53,7 @@ void RealTimeClock::setPaused(bool paused, double now) {
     }
     paused_ = paused;
     stepPending_ = false;
+    forcePending_ = false;
 }
 
 void RealTimeClock::restart(double now) {
@@ -61,6 +62,7 @@ void RealTimeClock::restart(double now) {
     framesSinceRestart_ = 0;
     lastTime_ = options_.startTime;
     fresh_ = true;
+    forcePending_ = paused_;  // the site paints the restarted frame even while paused
 }
 
 }  // namespace toyhost

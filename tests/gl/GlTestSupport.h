@@ -1,6 +1,6 @@
-// Shared helpers for GL tests: one headless EGL context per test process, a shadertoy loaded
-// into a Player (the engine every driver runs), running the CLI, and paths of the repo and
-// ../shared.
+// Shared helpers for GL tests: one headless EGL context per test process, a shadertoy started as a
+// Session (what every command runs) and stepped frame by frame, running the CLI, and paths of the
+// repo and ../shared. (tests/gl/test_player.cpp tests the Player below the Session directly.)
 #pragma once
 
 #include <gtest/gtest.h>
@@ -16,6 +16,7 @@
 #include "export/LoadShadertoy.h"
 #include "gl/HeadlessContext.h"
 #include "player/Player.h"
+#include "session/Session.h"
 
 namespace toyhost::testing {
 
@@ -47,32 +48,38 @@ inline FrameTime fixedStep(int frame, double fps = 60.0) {
     return FrameTime{frame / fps, 1.0 / fps, fps, glm::vec4(0.0f)};
 }
 
-// A shadertoy (folder, manifest or export) in a Player on `context`, with the same loading as
-// real runs (images decoded, stand-ins for stock media).
-inline std::unique_ptr<Player> loadPlayer(const std::shared_ptr<GlContext>& context, const std::filesystem::path& target,
-                                          int width, int height, bool floatImage = false,
-                                          TextureAllocator allocate = {}) {
-    auto manifest = loadShadertoy(target);
-    EXPECT_TRUE(manifest.ok()) << manifest.error().text();
-    if (!manifest.ok()) return nullptr;
-    auto plan = planPlayer(std::move(*manifest), MediaOptions{});
-    EXPECT_TRUE(plan.ok()) << plan.error().text();
-    if (!plan.ok()) return nullptr;
-    PlayerDesc desc;
-    desc.width = width;
-    desc.height = height;
-    desc.floatImage = floatImage;
-    desc.allocate = std::move(allocate);
-    auto player = Player::create(context, std::move(*plan), desc);
-    EXPECT_TRUE(player.ok()) << player.error().text();
-    if (!player.ok()) return nullptr;
-    return std::move(*player);
+// What sessions started by the tests say: kept, for the tests that look at notices.
+struct TestObserver final : SessionObserver {
+    std::vector<Diagnostic> notices;
+    void notice(const Diagnostic& notice) override { notices.push_back(notice); }
+};
+inline TestObserver& testObserver() {
+    static TestObserver observer;
+    return observer;
 }
 
-// Steps `player` through its next frame at the fixed time step of that frame.
-inline void stepAt(Player& player, std::span<const InputEvent> events = {}, bool renderImage = true,
-                   double fps = 60.0) {
-    player.step(fixedStep(player.frame(), fps), events, renderImage);
+// A shadertoy (folder, manifest or export) started as a Session on `context`, prepared as real runs
+// are (images decoded, stand-ins for stock media), without output.
+inline std::unique_ptr<Session> loadSession(const std::shared_ptr<GlContext>& context, const std::filesystem::path& target,
+                                            int width, int height, bool floatImage = false) {
+    SessionOptions options;
+    options.target = target;
+    options.width = width;
+    options.height = height;
+    options.floatImage = floatImage;
+    auto plan = prepareSession(options);
+    EXPECT_TRUE(plan.ok()) << plan.error().text();
+    if (!plan.ok()) return nullptr;
+    auto session = Session::start(std::move(*plan), context, testObserver());
+    EXPECT_TRUE(session.ok()) << session.error().text();
+    if (!session.ok()) return nullptr;
+    return std::move(*session);
+}
+
+// Renders the session's next frame at the fixed time step of that frame.
+inline void stepAt(Session& session, std::span<const InputEvent> events = {}, double fps = 60.0) {
+    const Status rendered = session.renderFrame(fixedStep(session.player().frame(), fps), events);
+    EXPECT_TRUE(rendered.ok()) << rendered.error().text();
 }
 
 struct CommandResult {

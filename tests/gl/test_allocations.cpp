@@ -28,11 +28,11 @@ class Allocations : public GlTest {};
 TEST_F(Allocations, APlayerFrameAllocatesNothing) {
     TOYHOST_REQUIRE_SHARED("shadertoys/7tSSDD");
     // Mountains & Lakes: Common, four buffers with feedback, the keyboard, mipmapped buffers.
-    auto player = loadPlayer(context_, sourceDir() / "shadertoys/mountains-lakes", 64, 36);
-    ASSERT_TRUE(player);
+    auto toy = loadSession(context_, sourceDir() / "shadertoys/mountains-lakes", 64, 36);
+    ASSERT_TRUE(toy);
     std::vector<InputEvent> events;
     events.reserve(8);
-    for (int i = 0; i < 3; ++i) stepAt(*player);  // warm-up: first uses of every program
+    for (int i = 0; i < 3; ++i) stepAt(*toy);  // warm-up: first uses of every program
     allocations = 0;
     counting = true;
     for (int i = 0; i < 20; ++i) {
@@ -41,10 +41,10 @@ TEST_F(Allocations, APlayerFrameAllocatesNothing) {
         if (i % 4 == 2) events.push_back(InputEvent::mouseUp());
         if (i % 5 == 0) events.push_back(InputEvent::keyDown(32));
         if (i % 5 == 3) events.push_back(InputEvent::keyUp(32));
-        stepAt(*player, events);
+        stepAt(*toy, events);
     }
     counting = false;
-    player->finish();
+    toy->player().finish();
     EXPECT_EQ(allocations.load(), 0) << "heap allocations in 20 frames";
 }
 

@@ -23,24 +23,24 @@ const fs::path kProbe = sourceDir() / "shadertoys/pingpong-probe";
 class CapturePipeline : public GlTest {};
 
 TEST_F(CapturePipeline, RingReturnsTheSameBytesAsASynchronousReadWithFramesInFlight) {
-    auto player = loadPlayer(context_, kProbe, 24, 10);
-    ASSERT_TRUE(player);
+    auto toy = loadSession(context_, kProbe, 24, 10);
+    ASSERT_TRUE(toy);
     for (PassId pass : {PassId::Image, PassId::BufferA}) {
-        const PixelFormat format = player->output(pass).format;
+        const PixelFormat format = toy->player().output(pass).format;
         auto ring = ReadbackRing::create(24, 10, format, 3);
         ASSERT_TRUE(ring.ok()) << ring.error().text();
         std::vector<std::vector<std::byte>> expected;
         std::vector<std::byte> got(ring->frameBytes());
         for (int frame = 0; frame < 8; ++frame) {
-            stepAt(*player);
+            stepAt(*toy);
             expected.emplace_back(ring->frameBytes());
-            readFramebuffer(player->output(pass).framebuffer, 24, 10, format, expected.back());
+            readFramebuffer(toy->player().output(pass).framebuffer, 24, 10, format, expected.back());
             if (ring->full()) {
                 const int oldest = ring->oldestFrame();
                 ASSERT_TRUE(ring->takeOldest(got).ok());
                 EXPECT_EQ(got, expected[oldest]) << passName(pass) << " frame " << oldest;
             }
-            ring->start(player->output(pass).framebuffer, frame);
+            ring->start(toy->player().output(pass).framebuffer, frame);
         }
         while (!ring->empty()) {
             const int oldest = ring->oldestFrame();

@@ -76,14 +76,14 @@ TEST_F(EveryInput, CubeAFacesCarryTheSitesRaysAndGlSamplesThemBackByDirection) {
         "cube_rays", {{"cube.glsl", cube}, {"image.glsl", image}},
         R"({"passes": {"Cube A": {"source": "cube.glsl"},
                        "Image": {"source": "image.glsl", "channels": {"iChannel0": {"buffer": "Cube A"}}}}})");
-    auto player = loadPlayer(context_, dir, 8, 1, true);
-    ASSERT_TRUE(player);
-    stepAt(*player);
-    ASSERT_TRUE(player->hasCube());
+    auto toy = loadSession(context_, dir, 8, 1, true);
+    ASSERT_TRUE(toy);
+    stepAt(*toy);
+    ASSERT_TRUE(toy->player().hasCube());
     std::vector<float> face;
     int n = 0;
     for (int f = 0; f < 6; ++f) {
-        player->readCubeFace(f, face, n);
+        toy->player().readCubeFace(f, face, n);
         ASSERT_EQ(n, 1024);
         std::vector<std::pair<int, int>> pixels{{0, 0}, {n - 1, 0}, {0, n - 1}, {n - 1, n - 1}, {n / 2, n / 2}, {n / 2 - 1, n / 2 - 1}};
         for (int k = 0; k < 64; ++k) pixels.push_back({(k * 97 + 13) % n, (k * 389 + 7) % n});
@@ -98,7 +98,7 @@ TEST_F(EveryInput, CubeAFacesCarryTheSitesRaysAndGlSamplesThemBackByDirection) {
         }
     }
     std::vector<float> image8;
-    player->readRgba32f(PassId::Image, image8);
+    toy->player().readRgba32f(PassId::Image, image8);
     const float dirs[8][3] = {{1, .2f, .3f}, {-1, -.4f, .1f}, {.1f, 1, -.5f}, {.3f, -1, .2f},
                               {-.2f, .1f, 1}, {.4f, .3f, -1}, {1, 1, .99f}, {-.7f, .7f, -.7f}};
     for (int i = 0; i < 8; ++i) {
@@ -137,21 +137,21 @@ TEST_F(EveryInput, CubeAReadsItsPreviousFrameAndImageItsCurrentOne) {
         "cube_feedback", {{"cube.glsl", cube}, {"image.glsl", image}},
         R"({"passes": {"Cube A": {"source": "cube.glsl", "channels": {"iChannel0": {"buffer": "Cube A", "filter": "nearest"}}},
                        "Image": {"source": "image.glsl", "channels": {"iChannel0": {"buffer": "Cube A"}}}}})");
-    auto player = loadPlayer(context_, dir, 4, 4, true);
-    ASSERT_TRUE(player);
+    auto toy = loadSession(context_, dir, 4, 4, true);
+    ASSERT_TRUE(toy);
     std::vector<float> pixels, face;
     int n = 0;
     for (int frame = 0; frame < 5; ++frame) {
-        stepAt(*player);
-        player->readRgba32f(PassId::Image, pixels);
+        stepAt(*toy);
+        toy->player().readRgba32f(PassId::Image, pixels);
         EXPECT_FLOAT_EQ(pixels[0] * 16.0f, float(frame + 1)) << "Image sees this frame's faces at frame " << frame;
-        player->readCubeFace(frame % 6, face, n);
+        toy->player().readCubeFace(frame % 6, face, n);
         EXPECT_FLOAT_EQ(face[(static_cast<std::size_t>(n / 3) * n + n / 5) * 4], float(frame + 1)) << frame;
     }
     // A restart clears the cube like the buffers (frame 0 starts from zero).
-    player->restart();
-    stepAt(*player);
-    player->readRgba32f(PassId::Image, pixels);
+    toy->player().restart();
+    stepAt(*toy);
+    toy->player().readRgba32f(PassId::Image, pixels);
     EXPECT_FLOAT_EQ(pixels[0] * 16.0f, 1.0f);
 }
 
@@ -196,11 +196,11 @@ TEST_F(EveryInput, VolumeVoxelsAreWhereTheBinFileSaysAndTheirSizeIsTheChannelRes
                                          R"({"passes": {"Image": {"source": "image.glsl", "channels": {
                                                "iChannel0": {"volume": "v.bin", "filter": "nearest"}}}}})");
     writeFile(dir / "v.bin", std::string(bytes.begin(), bytes.end()));
-    auto player = loadPlayer(context_, dir, 4, 7, true);
-    ASSERT_TRUE(player);
-    stepAt(*player);
+    auto toy = loadSession(context_, dir, 4, 7, true);
+    ASSERT_TRUE(toy);
+    stepAt(*toy);
     std::vector<float> pixels;
-    player->readRgba32f(PassId::Image, pixels);
+    toy->player().readRgba32f(PassId::Image, pixels);
     for (int y = 0; y < 6; ++y)
         for (int x = 0; x < 4; ++x) {
             const float* p = &pixels[(static_cast<std::size_t>(y) * 4 + x) * 4];
@@ -224,11 +224,11 @@ TEST_F(EveryInput, AFloatVolumeKeepsItsValuesOutsideZeroToOne) {
         "volume_float", {{"image.glsl", "void mainImage(out vec4 c, in vec2 f) { c = texelFetch(iChannel0, ivec3(f.x, 0, 0), 0).rrrr; }\n"}},
         R"({"passes": {"Image": {"source": "image.glsl", "channels": {"iChannel0": {"volume": "f.bin", "filter": "nearest"}}}}})");
     writeFile(dir / "f.bin", std::string(bytes.begin(), bytes.end()));
-    auto player = loadPlayer(context_, dir, 2, 1, true);
-    ASSERT_TRUE(player);
-    stepAt(*player);
+    auto toy = loadSession(context_, dir, 2, 1, true);
+    ASSERT_TRUE(toy);
+    stepAt(*toy);
     std::vector<float> pixels;
-    player->readRgba32f(PassId::Image, pixels);
+    toy->player().readRgba32f(PassId::Image, pixels);
     EXPECT_EQ(pixels[0], -0.5f);
     EXPECT_EQ(pixels[4], 7.25f);
 }
@@ -248,13 +248,13 @@ TEST_F(EveryInput, AVideoShowsItsFrameAtITimeAndICannelTimeIsItsLoopingPlaybackT
     const std::string encode = "ffmpeg -v error -y -f rawvideo -pix_fmt rgba -video_size 32x16 -framerate 10 -i '" +
                                (dir / "clip.rgba").string() + "' -c:v ffv1 '" + (dir / "clip.mkv").string() + "'";
     ASSERT_EQ(std::system(encode.c_str()), 0);
-    auto player = loadPlayer(context_, dir, 2, 2, true);
-    ASSERT_TRUE(player);
+    auto toy = loadSession(context_, dir, 2, 2, true);
+    ASSERT_TRUE(toy);
     std::vector<float> pixels;
     for (int frame = 0; frame <= 130; ++frame) {
-        stepAt(*player);
+        stepAt(*toy);
         if (frame != 0 && frame != 7 && frame != 59 && frame != 60 && frame != 130) continue;
-        player->readRgba32f(PassId::Image, pixels);
+        toy->player().readRgba32f(PassId::Image, pixels);
         const double t = frame / 60.0;
         const int videoFrame = static_cast<int>(std::floor(t * 10 + 1e-9)) % 20;
         EXPECT_NEAR(pixels[0] * 255, 12 * videoFrame, 1.01) << "iTime " << t;
@@ -277,11 +277,11 @@ TEST_F(EveryInput, APureToneInAMusicChannelPeaksInItsBinOfRowZero) {
                                  "iChannelTime[0], iChannelResolution[0].xy / 1000.0); }\n"}},
         R"({"passes": {"Image": {"source": "image.glsl", "channels": {"iChannel0": {"music": "tone.wav"}}}}})");
     ASSERT_TRUE(writeWav16(dir / "tone.wav", stereo, rate));
-    auto player = loadPlayer(context_, dir, 512, 2, true);
-    ASSERT_TRUE(player);
-    for (int frame = 0; frame < 31; ++frame) stepAt(*player);  // iTime 0.5: the window is full
+    auto toy = loadSession(context_, dir, 512, 2, true);
+    ASSERT_TRUE(toy);
+    for (int frame = 0; frame < 31; ++frame) stepAt(*toy);  // iTime 0.5: the window is full
     std::vector<float> pixels;
-    player->readRgba32f(PassId::Image, pixels);
+    toy->player().readRgba32f(PassId::Image, pixels);
     std::vector<float> row0(512), row1(512);
     for (int x = 0; x < 512; ++x) {
         row0[x] = pixels[static_cast<std::size_t>(x) * 4];
@@ -424,11 +424,11 @@ TEST_F(EveryInput, UninitialisedVariablesAndAnUnwrittenOutputAreZeroAsInWebGl) {
     const fs::path dir = shadertoyFolder("zero_init", {{"image.glsl", image}},
                                          R"({"passes": {"Image": {"source": "image.glsl"}}})");
     for (int run = 0; run < 2; ++run) {
-        auto player = loadPlayer(context_, dir, 2, 1, true);
-        ASSERT_TRUE(player);
-        stepAt(*player);
+        auto toy = loadSession(context_, dir, 2, 1, true);
+        ASSERT_TRUE(toy);
+        stepAt(*toy);
         std::vector<float> pixels;
-        player->readRgba32f(PassId::Image, pixels);
+        toy->player().readRgba32f(PassId::Image, pixels);
         // Pixel 0: the uninitialised values (alpha forced to 1 by Image); pixel 1: mainImage never
         // wrote its out, which WebGL zero-initialises (black).
         EXPECT_EQ(std::vector<float>(pixels.begin(), pixels.begin() + 3), (std::vector<float>{0, 0, 0}));
@@ -444,11 +444,11 @@ TEST_F(EveryInput, MipmapsOfAnImageAreExactBoxAverages) {
         "mips", {{"image.glsl", "void mainImage(out vec4 c, in vec2 f) { c = textureLod(iChannel0, vec2(0.5), f.x < 1.0 ? 6.0 : 3.0); }\n"}},
         R"({"passes": {"Image": {"source": "image.glsl", "channels": {"iChannel0": {"texture": "grey.png", "filter": "mipmap"}}}}})");
     ASSERT_TRUE(writePng(dir / "grey.png", side, side, rgba));
-    auto player = loadPlayer(context_, dir, 2, 1, true);
-    ASSERT_TRUE(player);
-    stepAt(*player);
+    auto toy = loadSession(context_, dir, 2, 1, true);
+    ASSERT_TRUE(toy);
+    stepAt(*toy);
     std::vector<float> pixels;
-    player->readRgba32f(PassId::Image, pixels);
+    toy->player().readRgba32f(PassId::Image, pixels);
     EXPECT_NEAR(pixels[0] * 255, 128, 0.01) << "1x1 level";
     EXPECT_NEAR(pixels[4] * 255, 128, 0.01) << "8x8 level";
 }
@@ -468,11 +468,11 @@ TEST_F(EveryInput, TwoChannelsReadingOneBufferShareTheHigherChannelsFilter) {
                           "iChannel0": {"buffer": "A", "filter": "linear"},
                           "iChannel1": {"buffer": "A", "filter": "nearest"},
                           "iChannel2": {"buffer": "B", "filter": "linear"}}}}})");
-    auto player = loadPlayer(context_, dir, 8, 2, true);
-    ASSERT_TRUE(player);
-    stepAt(*player);
+    auto toy = loadSession(context_, dir, 8, 2, true);
+    ASSERT_TRUE(toy);
+    stepAt(*toy);
     std::vector<float> pixels;
-    player->readRgba32f(PassId::Image, pixels);
+    toy->player().readRgba32f(PassId::Image, pixels);
     EXPECT_TRUE(pixels[0] == 0.0f || pixels[0] == 1.0f) << "channel 0 sampled with nearest: " << pixels[0];
     EXPECT_EQ(pixels[0], pixels[1]);
     EXPECT_NEAR(pixels[2], 0.5f, 1e-3) << "Buffer B alone keeps its linear filter";
@@ -491,10 +491,10 @@ TEST_F(EveryInput, ShadersMesasPreprocessorRefusesCompileAsInBrowsers) {
         R"({"passes": {"Image": {"source": "image.glsl"}}})");
     std::vector<float> pixels;
     for (auto [dir, want] : {std::pair{negate, 0.7071f}, std::pair{directive, 0.5f}}) {
-        auto player = loadPlayer(context_, dir, 1, 1, true);
-        ASSERT_TRUE(player) << dir;
-        stepAt(*player);
-        player->readRgba32f(PassId::Image, pixels);
+        auto toy = loadSession(context_, dir, 1, 1, true);
+        ASSERT_TRUE(toy) << dir;
+        stepAt(*toy);
+        toy->player().readRgba32f(PassId::Image, pixels);
         EXPECT_NEAR(pixels[0], want, 1e-6) << dir;
     }
     // A real error still names the user's line after the preprocessed retry fails too.
@@ -515,11 +515,11 @@ TEST_F(EveryInput, AUsersOwnLowpMacroCompiles) {
         {{"image.glsl", "#define lowp\n#define mediump\nvoid mainImage(out vec4 c, in vec2 f) { lowp float x = 0.25; "
                         "mediump vec2 y = vec2(0.5); c = vec4(x, y, 1.0); }\n"}},
         R"({"passes": {"Image": {"source": "image.glsl"}}})");
-    auto player = loadPlayer(context_, dir, 1, 1, true);
-    ASSERT_TRUE(player);
-    stepAt(*player);
+    auto toy = loadSession(context_, dir, 1, 1, true);
+    ASSERT_TRUE(toy);
+    stepAt(*toy);
     std::vector<float> pixels;
-    player->readRgba32f(PassId::Image, pixels);
+    toy->player().readRgba32f(PassId::Image, pixels);
     EXPECT_EQ(std::vector<float>(pixels.begin(), pixels.begin() + 3), (std::vector<float>{0.25f, 0.5f, 0.5f}));
 }
 

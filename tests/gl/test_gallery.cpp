@@ -81,20 +81,20 @@ float height(const std::vector<float>& rgba, int x, int y) {
 }
 
 TEST_F(RipplePool, OneDropSpreadsSymmetricallyAtSteadySpeedAndDecays) {
-    auto player = loadPlayer(context_, sourceDir() / "shadertoys/ripple-pool", kWidth, kHeight);
-    ASSERT_TRUE(player);
-    stepAt(*player);
-    stepAt(*player);
+    auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", kWidth, kHeight);
+    ASSERT_TRUE(toy);
+    stepAt(*toy);
+    stepAt(*toy);
     const InputEvent click[] = {InputEvent::mouseDown(kDropX + 0.25f, kDropY + 0.75f), InputEvent::mouseUp()};
-    stepAt(*player, click);  // frame 2: the drop lands
+    stepAt(*toy, click);  // frame 2: the drop lands
 
     std::vector<float> field;
     std::vector<int> radii;
     std::vector<float> peaks;
     for (int after = 1; after <= 40; ++after) {
-        stepAt(*player);
+        stepAt(*toy);
         if (after % 10) continue;
-        player->readRgba32f(PassId::BufferA, field);
+        toy->player().readRgba32f(PassId::BufferA, field);
         // Four-fold symmetry about the drop's pixel centre (and the diagonal), out to the ring
         // and beyond, until reflections from the walls (70+ px away) could arrive.
         float peak = 0.0f;
@@ -133,8 +133,8 @@ TEST_F(RipplePool, OneDropSpreadsSymmetricallyAtSteadySpeedAndDecays) {
 // shadertoys/ripple-pool/drag.json, the script of the golden frames, as a user runs it: the
 // height field is disturbed along the drag and still flat far from it.
 TEST_F(RipplePool, ScriptedDragDisturbsTheWaterAlongItsPathOnly) {
-    auto player = loadPlayer(context_, sourceDir() / "shadertoys/ripple-pool", kWidth, kHeight);
-    ASSERT_TRUE(player);
+    auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", kWidth, kHeight);
+    ASSERT_TRUE(toy);
     auto text = readTextFile(sourceDir() / "shadertoys/ripple-pool/drag.json");
     ASSERT_TRUE(text.ok());
     auto script = parseMouseScript(*text, "drag.json");
@@ -144,10 +144,10 @@ TEST_F(RipplePool, ScriptedDragDisturbsTheWaterAlongItsPathOnly) {
     for (int frame = 0; frame <= 45; ++frame) {  // the drag ends on frame 43
         events.clear();
         mouse.eventsBeforeFrame(frame, frame / 60.0, events);
-        stepAt(*player, events);
+        stepAt(*toy, events);
     }
     std::vector<float> field;
-    player->readRgba32f(PassId::BufferA, field);
+    toy->player().readRgba32f(PassId::BufferA, field);
     // Points of the drag: the start (60, 70), the turn (150, 100), the end (260, 40).
     for (auto [x, y] : {std::pair{60, 70}, {105, 85}, {150, 100}, {205, 70}, {260, 40}}) {
         float largest = 0.0f;
@@ -161,11 +161,11 @@ TEST_F(RipplePool, ScriptedDragDisturbsTheWaterAlongItsPathOnly) {
 }
 
 TEST_F(RipplePool, CalmPoolStaysFlatWithoutInput) {
-    auto player = loadPlayer(context_, sourceDir() / "shadertoys/ripple-pool", 64, 36);
-    ASSERT_TRUE(player);
-    for (int i = 0; i < 30; ++i) stepAt(*player);
+    auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", 64, 36);
+    ASSERT_TRUE(toy);
+    for (int i = 0; i < 30; ++i) stepAt(*toy);
     std::vector<float> field;
-    player->readRgba32f(PassId::BufferA, field);
+    toy->player().readRgba32f(PassId::BufferA, field);
     for (std::size_t i = 0; i < field.size(); i += 4) ASSERT_EQ(field[i], 0.0f) << "pixel " << i / 4;
 }
 
@@ -200,19 +200,19 @@ struct LakeColours {
 // Each key of `keys` is pressed for one frame, one after the other (frames 1, 3, ...), then one
 // more frame is rendered and read. Every frame is at iTime 2 so that only the keys differ.
 LakeColours lakeColours(const std::shared_ptr<GlContext>& context, std::initializer_list<int> keys) {
-    auto player = loadPlayer(context, sourceDir() / "shadertoys/lake-optics", kWidth, kHeight, /*floatImage=*/true);
-    EXPECT_TRUE(player);
-    if (!player) return {};
+    auto toy = loadSession(context, sourceDir() / "shadertoys/lake-optics", kWidth, kHeight, /*floatImage=*/true);
+    EXPECT_TRUE(toy);
+    if (!toy) return {};
     const FrameTime atTwo{2.0, 1.0 / 60.0, 60.0, glm::vec4(0.0f)};
-    stepAt(*player);
+    stepAt(*toy);
     for (int key : keys) {
         const InputEvent down[] = {InputEvent::keyDown(key)}, up[] = {InputEvent::keyUp(key)};
-        player->step(atTwo, down);
-        player->step(atTwo, up);
+        (void)toy->renderFrame(atTwo, down);
+        (void)toy->renderFrame(atTwo, up);
     }
-    player->step(atTwo);
+    (void)toy->renderFrame(atTwo, {});
     std::vector<float> image;
-    player->readRgba32f(PassId::Image, image);
+    toy->player().readRgba32f(PassId::Image, image);
     // Regions at 320x180 (x, y, w, h; origin bottom-left) from the shader's README: water 0.2-1.4 m
     // deep over sand, and water whose floor lies 29 m down.
     return {meanColour(image, kWidth, 160, 30, 40, 22), meanColour(image, kWidth, 210, 80, 80, 40)};

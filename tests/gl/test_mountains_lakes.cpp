@@ -20,17 +20,17 @@ double totalWater(const std::vector<float>& rgba, int width) {
 TEST_F(MountainsLakes, WaterVolumeIsConservedFor300FramesAndImageShowsLakes) {
     TOYHOST_REQUIRE_SHARED("shadertoys/7tSSDD/image.glsl");
     constexpr int kW = 320, kH = 256, kFrames = 300;
-    auto player = loadPlayer(context_, sourceDir() / "shadertoys/mountains-lakes", kW, kH);
-    ASSERT_TRUE(player);
+    auto toy = loadSession(context_, sourceDir() / "shadertoys/mountains-lakes", kW, kH);
+    ASSERT_TRUE(toy);
     const double expected = 256.0 * 256.0 * 0.05;
     std::vector<float> c;
     double worst = 0;
     int checks = 0;
     for (int n = 0; n < kFrames; ++n) {
         // Image only on the last frame: buffers alone drive the simulation.
-        stepAt(*player, {}, n == kFrames - 1);
+        stepAt(*toy);
         if (n % 25 != 0 && n != kFrames - 1) continue;
-        player->readRgba32f(PassId::BufferC, c);
+        toy->player().readRgba32f(PassId::BufferC, c);
         const double total = totalWater(c, kW);
         const double relative = std::abs(total - expected) / expected;
         worst = std::max(worst, relative);
@@ -53,7 +53,7 @@ TEST_F(MountainsLakes, WaterVolumeIsConservedFor300FramesAndImageShowsLakes) {
     EXPECT_LT(driest, 0.01) << "no cell ever drained";
 
     std::vector<std::uint8_t> image;
-    player->readRgba8(PassId::Image, image);
+    toy->player().readRgba8(PassId::Image, image);
     size_t blue = 0;
     double mean = 0, meanSq = 0;
     const size_t pixels = image.size() / 4;

@@ -20,14 +20,14 @@ void expectEveryPixel(const std::vector<float>& rgba, float r, float g, float b,
 }
 
 TEST_F(PingPong, BuffersFollowThisFramePreviousFrameRuleFromClearedStart) {
-    auto player = loadPlayer(context_, sourceDir() / "shadertoys/pingpong-probe", 16, 8, /*floatImage=*/true);
-    ASSERT_TRUE(player);
+    auto toy = loadSession(context_, sourceDir() / "shadertoys/pingpong-probe", 16, 8, /*floatImage=*/true);
+    ASSERT_TRUE(toy);
     std::vector<float> a, b, image;
     for (int n = 0; n < 6; ++n) {
-        stepAt(*player);
-        player->readRgba32f(PassId::BufferA, a);
-        player->readRgba32f(PassId::BufferB, b);
-        player->readRgba32f(PassId::Image, image);
+        stepAt(*toy);
+        toy->player().readRgba32f(PassId::BufferA, a);
+        toy->player().readRgba32f(PassId::BufferB, b);
+        toy->player().readRgba32f(PassId::Image, image);
         const float f = static_cast<float>(n);
         // A reads itself and the later B: previous frame's values, zero at frame 0.
         expectEveryPixel(a, f + 1, f, 10 * f, 0.25f, "Buffer A", n);
@@ -66,13 +66,13 @@ namespace {
 // Resize: new textures at the new size hold the old content in their bottom-left
 // min(old, new) region (both slots), the rest is zero, and the frame count goes on.
 TEST_F(PingPong, ResizeKeepsBufferContentBottomLeftInBothSlots) {
-    auto player = loadPlayer(context_, sourceDir() / "shadertoys/pingpong-probe", 16, 8);
-    ASSERT_TRUE(player);
-    for (int n = 0; n < 3; ++n) stepAt(*player);
-    ASSERT_TRUE(player->resize(8, 12).ok());
-    EXPECT_EQ(player->width(), 8);
+    auto toy = loadSession(context_, sourceDir() / "shadertoys/pingpong-probe", 16, 8);
+    ASSERT_TRUE(toy);
+    for (int n = 0; n < 3; ++n) stepAt(*toy);
+    ASSERT_TRUE(toy->player().resize(8, 12).ok());
+    EXPECT_EQ(toy->player().width(), 8);
     std::vector<float> a;
-    player->readRgba32f(PassId::BufferA, a);
+    toy->player().readRgba32f(PassId::BufferA, a);
     ASSERT_EQ(a.size(), 8u * 12u * 4u);
     for (int y = 0; y < 12; ++y) {
         const float expected = y < 8 ? 3.0f : 0.0f;  // frame 2 wrote A.x = 3
@@ -80,8 +80,8 @@ TEST_F(PingPong, ResizeKeepsBufferContentBottomLeftInBothSlots) {
     }
     // Frame 3 reads the other slot (frame 2's output survived there too): A.x = 4 where the old
     // content was copied, 1 in the new rows.
-    stepAt(*player);
-    player->readRgba32f(PassId::BufferA, a);
+    stepAt(*toy);
+    toy->player().readRgba32f(PassId::BufferA, a);
     EXPECT_EQ(a[(2 * 8 + 1) * 4], 4.0f);
     EXPECT_EQ(a[(10 * 8 + 1) * 4], 1.0f);
     EXPECT_EQ(a[(10 * 8 + 1) * 4 + 1], 3.0f) << "iFrame is not reset";

@@ -13,6 +13,31 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The Player itself, below the Session: planned as real runs plan it, with an allocator tests can
+// make fail.
+std::unique_ptr<Player> loadPlayer(const std::shared_ptr<GlContext>& context, const fs::path& target, int width,
+                                   int height, bool floatImage = false, TextureAllocator allocate = {}) {
+    auto manifest = loadShadertoy(target);
+    EXPECT_TRUE(manifest.ok()) << manifest.error().text();
+    if (!manifest.ok()) return nullptr;
+    auto plan = planPlayer(std::move(*manifest), MediaOptions{});
+    EXPECT_TRUE(plan.ok()) << plan.error().text();
+    if (!plan.ok()) return nullptr;
+    PlayerDesc desc;
+    desc.width = width;
+    desc.height = height;
+    desc.floatImage = floatImage;
+    desc.allocate = std::move(allocate);
+    auto player = Player::create(context, std::move(*plan), desc);
+    EXPECT_TRUE(player.ok()) << player.error().text();
+    if (!player.ok()) return nullptr;
+    return std::move(*player);
+}
+
+void stepAt(Player& player, std::span<const InputEvent> events = {}) {
+    player.step(fixedStep(player.frame()), events);
+}
+
 // Buffer A adds `increment` to its previous value every frame (red), and writes iFrame (green).
 std::string counterCode(const std::string& increment) {
     return "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"

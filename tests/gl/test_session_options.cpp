@@ -68,8 +68,8 @@ TEST(SessionOptions, PrepareDecodesTheImagesAndReportsStandIns) {
     Result<SessionPlan> run = prepareSession(o);
     ASSERT_TRUE(run.ok()) << run.error().text();
     EXPECT_EQ(*run->options.width, defaults::kCanvasWidth);
-    ASSERT_FALSE(run->plan.images.standIns().empty());
-    EXPECT_EQ(run->plan.images.standIns().front().name, "RGBA Noise Small");
+    ASSERT_FALSE(run->shadertoy.images.standIns().empty());
+    EXPECT_EQ(run->shadertoy.images.standIns().front().name, "RGBA Noise Small");
 }
 
 }  // namespace

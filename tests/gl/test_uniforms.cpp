@@ -13,21 +13,21 @@ protected:
     // llvmpipe turns 8-bit texels into floats to within about 1e-4, not exactly.
     static constexpr float k8BitTolerance = 0.25f / 255.0f;
     void SetUp() override {
-        player_ = loadPlayer(context_, sourceDir() / "shadertoys/uniform-probe", kW, kH, /*floatImage=*/true);
-        ASSERT_TRUE(player_);
+        toy_ = loadSession(context_, sourceDir() / "shadertoys/uniform-probe", kW, kH, /*floatImage=*/true);
+        ASSERT_TRUE(toy_);
     }
-    // Renders the Player's next frame and returns `pass`'s bottom row (pixel x at [4x .. 4x+3]).
+    // Renders the Session's next frame and returns `pass`'s bottom row (pixel x at [4x .. 4x+3]).
     std::vector<float> render(PassId pass, std::span<const InputEvent> events = {}) {
-        stepAt(*player_, events);
+        stepAt(*toy_, events);
         return read(pass);
     }
     std::vector<float> renderAt(const FrameTime& time, PassId pass) {
-        player_->step(time);
+        EXPECT_TRUE(toy_->renderFrame(time, {}).ok());
         return read(pass);
     }
     std::vector<float> read(PassId pass) const {
         std::vector<float> rgba;
-        player_->readRgba32f(pass, rgba);
+        toy_->player().readRgba32f(pass, rgba);
         return rgba;
     }
     static void expectPixel(const std::vector<float>& row, int x, float r, float g, float b, float a,
@@ -37,7 +37,7 @@ protected:
         EXPECT_NEAR(row[4 * x + 2], b, tolerance) << what << " .z";
         EXPECT_NEAR(row[4 * x + 3], a, tolerance) << what << " .w";
     }
-    std::unique_ptr<Player> player_;
+    std::unique_ptr<Session> toy_;
 };
 
 TEST_F(Uniforms, ScalarAndVectorUniformsHaveShadertoyValues) {
@@ -54,7 +54,7 @@ TEST_F(Uniforms, ScalarAndVectorUniformsHaveShadertoyValues) {
     EXPECT_EQ(a[4 * 9], 44100.0f) << "iSampleRate";
     // vflip = true: texel (0,0) is the file's bottom-left pixel (10, 20, 30, 40).
     expectPixel(a, 10, 10 / 255.f, 20 / 255.f, 30 / 255.f, 40 / 255.f, "vflip true", k8BitTolerance);
-    while (player_->frame() < 7) stepAt(*player_);
+    while (toy_->player().frame() < 7) stepAt(*toy_);
     a = render(PassId::BufferA);
     EXPECT_EQ(a[4 * 1 + 3], 7.0f) << "iFrame";
 }
@@ -97,8 +97,8 @@ TEST_F(Uniforms, SamplersFlipWrapFilterAndMipmapLikeShadertoy) {
     expectPixel(b, 4, 0.5f, 1.0f / 3.0f, 0, 1, "top mip level of Buffer C is its mean", 1e-6f);
     // texelFetch (0,0) of the noise is the first row GL was given: the stand-in's bottom row
     // (vflip) or its top row.
-    const ChannelDesc& noise = player_->manifest().find(PassId::BufferB)->channels[2];
-    const Image8* pixels = player_->plan().images.find(noise);
+    const ChannelDesc& noise = toy_->player().manifest().find(PassId::BufferB)->channels[2];
+    const Image8* pixels = toy_->player().plan().images.find(noise);
     ASSERT_NE(pixels, nullptr);
     const std::size_t first = noise.sampler.vflip ? 0 : static_cast<std::size_t>(pixels->height - 1) * pixels->width * 4;
     expectPixel(b, 5, pixels->rgba[first] / 255.f, pixels->rgba[first + 1] / 255.f, pixels->rgba[first + 2] / 255.f,

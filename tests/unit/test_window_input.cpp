@@ -84,8 +84,7 @@ TEST(RealTimeClock, RealTimeFollowsTheClockMinusPauses) {
     t = clock.frame(100.02, 0);
     EXPECT_NEAR(t.time, 0.02, 1e-9);
     EXPECT_NEAR(t.timeDelta, 0.02, 1e-9);
-    EXPECT_GT(t.frameRate, 50.0);
-    EXPECT_LT(t.frameRate, 60.0) << "smoothed toward 1/0.02 = 50";
+    EXPECT_DOUBLE_EQ(t.frameRate, 60.0) << "the site's counter says 60 until half a second has passed";
     clock.setPaused(true, 100.05);
     EXPECT_FALSE(clock.shouldRender());
     clock.setPaused(false, 105.05);  // five seconds paused do not count
@@ -93,6 +92,57 @@ TEST(RealTimeClock, RealTimeFollowsTheClockMinusPauses) {
     t = clock.frame(105.06, 0);
     EXPECT_NEAR(t.time, 0.06, 1e-9);
     EXPECT_DOUBLE_EQ(t.timeDelta, 1.0 / 60.0) << "first frame after a pause";
+}
+
+// iFrameRate is piLibs' FPS counter, as the site's render loop counts before each Paint: 60 until
+// more than 0.5 s passed since the player started, then frames / seconds of each closed window.
+TEST(RealTimeClock, FrameRateIsTheSitesHalfSecondCounter) {
+    RealTimeClock clock(RealTimeClockOptions{}, 100.0);
+    double rate = 0;
+    int changes = 0;
+    for (int k = 0; k <= 26; ++k) {
+        rate = clock.frame(100.0 + 0.02 * k, 0).frameRate;
+        if (k < 26) EXPECT_DOUBLE_EQ(rate, 60.0) << k;
+    }
+    EXPECT_NEAR(rate, 27 / 0.52, 1e-9) << "27 frames counted in the first window of 0.52 s";
+    ASSERT_TRUE(clock.measuredFrameRate());
+    EXPECT_NEAR(*clock.measuredFrameRate(), 27 / 0.52, 1e-9);
+    for (int k = 27; k <= 52; ++k) {
+        const double next = clock.frame(100.0 + 0.02 * k, 0).frameRate;
+        changes += next != rate;
+        rate = next;
+    }
+    EXPECT_EQ(changes, 1);
+    EXPECT_NEAR(rate, 26 / 0.52, 1e-9);
+    // A restart does not reset the counter (the site resets it only when the player starts).
+    clock.restart(101.05);
+    EXPECT_NEAR(clock.frame(101.06, 0).frameRate, 26 / 0.52, 1e-9);
+    RealTimeClock fresh(RealTimeClockOptions{}, 0.0);
+    EXPECT_FALSE(fresh.measuredFrameRate()) << "nothing measured before the first window closes";
+}
+
+TEST(RealTimeClock, InputOrARestartWhilePausedForcesOneFrameAtThePausedTime) {
+    RealTimeClock clock(RealTimeClockOptions{}, 0.0);
+    clock.frame(0.0, 0);
+    clock.frame(0.4, 0);
+    clock.setPaused(true, 0.5);
+    EXPECT_FALSE(clock.shouldRender());
+    clock.forceFrame();
+    ASSERT_TRUE(clock.shouldRender());
+    FrameTime t = clock.frame(3.0, 0);
+    EXPECT_DOUBLE_EQ(t.time, 0.4) << "the paused time, as the site paints mTf";
+    EXPECT_DOUBLE_EQ(t.timeDelta, 1.0 / 60.0);
+    EXPECT_FALSE(clock.shouldRender());
+    clock.restart(4.0);
+    ASSERT_TRUE(clock.shouldRender()) << "a restart while paused shows the restarted frame";
+    t = clock.frame(4.5, 0);
+    EXPECT_DOUBLE_EQ(t.time, 0.0);
+    EXPECT_FALSE(clock.shouldRender());
+    clock.forceFrame();
+    clock.setPaused(false, 5.0);
+    clock.forceFrame();
+    EXPECT_TRUE(clock.shouldRender());
+    EXPECT_NEAR(clock.frame(5.25, 0).time, 0.25, 1e-9) << "not paused: forcing changes nothing";
 }
 
 TEST(RealTimeClock, StepWhilePausedRendersExactlyOneFrame) {

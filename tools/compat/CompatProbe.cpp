@@ -12,12 +12,23 @@
 #include "gl/GlContext.h"
 #include "gl/HeadlessContext.h"
 #include "player/Player.h"
+#include "session/Session.h"
 #include "timing/FrameClock.h"
 
 namespace toyhost::compat {
 namespace fs = std::filesystem;
 
 namespace {
+
+// The session's notices (stand-ins, preprocessing, warnings) as the table's lines.
+class NoticeCollector final : public SessionObserver {
+public:
+    explicit NoticeCollector(std::vector<std::string>& lines) : lines_(lines) {}
+    void notice(const Diagnostic& notice) override { lines_.push_back(formatDiagnostic(notice)); }
+
+private:
+    std::vector<std::string>& lines_;
+};
 
 std::string firstLines(const std::string& text, int lines) {
     size_t end = 0;
@@ -71,34 +82,39 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
     result.loaded = true;
     result.name = manifest->name;
     result.passes = static_cast<int>(manifest->passes.size()) + (manifest->commonSource ? 1 : 0);
-    for (const Diagnostic& notice : manifest->notices) result.notices.push_back(formatDiagnostic(notice));
 
-    MediaOptions media;
-    media.folders = settings.mediaFolders;
-    Result<PlayerPlan> plan = planPlayer(std::move(*manifest), media);
+    // The probe is a session like any run (the same preparation, compile checks and GL thread),
+    // driven frame by frame with the visitor's mouse below.
+    SessionOptions options;
+    options.target = exportFile;
+    options.width = settings.width;
+    options.height = settings.height;
+    options.frames = 1;
+    options.media.folders = settings.mediaFolders;
+    options.eglPlatform = settings.eglPlatform;
+    Result<SessionPlan> plan = prepareSession(options);
     if (!plan) {
         result.error = firstLines(plan.error().text(), 3);
         return result;
     }
-    for (const StandInUse& standIn : plan->images.standIns())
+    for (const StandInUse& standIn : plan->shadertoy.images.standIns())
         if (std::find(result.standIns.begin(), result.standIns.end(), standIn.name) == result.standIns.end())
             result.standIns.push_back(standIn.name);
-
-    auto context = createHeadlessContext();
+    HeadlessOptions headless;
+    headless.platform = settings.eglPlatform;
+    auto context = createHeadlessContext(headless);
     if (!context) {
         result.error = context.error().text();
         return result;
     }
-    PlayerDesc desc;
-    desc.width = settings.width;
-    desc.height = settings.height;
-    auto player = Player::create(*context, std::move(*plan), desc);
-    if (!player) {
-        result.error = firstLines(player.error().text(), 4);
+    NoticeCollector notices(result.notices);
+    auto session = Session::start(std::move(*plan), *context, notices);
+    if (!session) {
+        result.error = firstLines(session.error().text(), 4);
         return result;
     }
     result.compiled = true;
-    for (const Diagnostic& notice : (*player)->compileNotices()) result.notices.push_back(formatDiagnostic(notice));
+    Player* player = &(*session)->player();
 
     // Like a visitor, the probe drags the mouse across the canvas from frame 1 on, so shaders
     // that show nothing until clicked get their click. Time and date come from the same fixed-step
@@ -112,10 +128,10 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
             const float t = std::min(1.0f, frame / static_cast<float>(std::max(2, settings.frames)));
             events.push_back(InputEvent::mouseMove(settings.width * (0.3f + 0.4f * t), settings.height * (0.4f + 0.2f * t)));
         }
-        (*player)->step(clock.frameTime(frame), events);
+        (void)(*session)->renderFrame(clock.frameTime(frame), events);
         // Finish each frame so ms/frame is the real shading cost: llvmpipe drops queued work for
         // tiles that a later draw overwrites before anything reads them.
-        (*player)->finish();
+        player->finish();
         result.framesRendered = frame + 1;
     };
     const auto start = std::chrono::steady_clock::now();
@@ -130,7 +146,7 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
         }
     };
     checkGl();
-    judgeOutput(**player, result, firstUniform);
+    judgeOutput(*player, result, firstUniform);
     // Patience for fade-ins and shaders that need time: check every quarter second of iTime.
     for (int frame = settings.frames;
          result.uniformImage && !result.uniformColourChanged && frame / 60.0 < settings.patienceSeconds; ++frame) {
@@ -139,7 +155,7 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > settings.wallBudgetSeconds)
             break;
         result.nonFiniteBuffers.clear();
-        judgeOutput(**player, result, firstUniform);
+        judgeOutput(*player, result, firstUniform);
         if (!result.uniformImage || result.uniformColourChanged) result.firstNonUniformTime = frame / 60.0;
     }
     checkGl();

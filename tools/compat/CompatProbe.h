@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gl/HeadlessContext.h"
+
 namespace toyhost::compat {
 
 struct ProbeSettings {
@@ -20,6 +22,7 @@ struct ProbeSettings {
     double patienceSeconds = 5.0;
     double wallBudgetSeconds = 20.0;
     std::vector<std::filesystem::path> mediaFolders;
+    toyhost::EglPlatform eglPlatform = toyhost::EglPlatform::Automatic;
 };
 
 struct ProbeResult {

@@ -17,6 +17,7 @@
 
 #include "CompatProbe.h"
 #include "core/AtomicFile.h"
+#include "gl/GlThread.h"
 
 namespace fs = std::filesystem;
 using namespace toyhost;
@@ -37,7 +38,9 @@ ProbeResult probeInChild(const fs::path& file, const ProbeSettings& settings, in
     const pid_t pid = fork();
     if (pid == 0) {
         close(fds[0]);
-        const std::string text = toJson(runProbe(file, settings)).dump();
+        // On a GL thread, as every toyhost run: large shaders need its stack.
+        std::string text;
+        runOnGlThread([&] { text = toJson(runProbe(file, settings)).dump(); });
         size_t done = 0;
         while (done < text.size()) {
             ssize_t n = write(fds[1], text.data() + done, text.size() - done);
@@ -163,9 +166,16 @@ std::string markdown(const std::vector<ProbeResult>& results, const ProbeSetting
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Before any thread: the driver hints and TOYHOST_EGL_PLATFORM, as for toyhost itself.
+    const Result<GlProcess> process = prepareGlProcess();
+    if (!process) {
+        std::cerr << "toyhost-compat: " << process.error().text() << "\n";
+        return 2;
+    }
     CLI::App app{"toyhost-compat: run a folder of Shadertoy exports and tabulate what works"};
     std::string dir, size = "160x90", markdownOut, jsonOut, knownFile;
     ProbeSettings settings;
+    settings.eglPlatform = process->eglPlatform;
     int timeout = 60;
     double minPassRate = 0;
     std::vector<std::string> mediaFolders;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/GlThread.h"
 #include "session/SessionOptions.h"
 
 namespace toyhost::cli {
@@ -16,7 +17,7 @@ public:
     // Declares the options of `run` on `command`.
     void define(CLI::App& command);
     // Turns the parsed options into SessionOptions and runs; returns the exit code.
-    int execute();
+    int execute(const GlProcess& process);
 
 private:
     SessionOptions options_;
@@ -38,6 +39,6 @@ struct SoundCommandOptions {
     std::vector<std::string> mediaFolders;
     bool quiet = false;
 };
-int soundCommand(const SoundCommandOptions& options);
+int soundCommand(const SoundCommandOptions& options, const GlProcess& process);
 
 }  // namespace toyhost::cli

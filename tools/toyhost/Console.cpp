@@ -1,28 +1,14 @@
 #include "Console.h"
 
-#include <cerrno>
-#include <fcntl.h>
+#include <csignal>
 #include <iostream>
 #include <unistd.h>
 
+#include "core/InFlight.h"
+#include "session/StopSignals.h"
 #include "timing/ProgressLine.h"
 
 namespace toyhost::cli {
-
-namespace {
-// Set by SIGINT/SIGTERM: the run stops before its next frame. Every signal is also written to a
-// pipe that the StopWatcher thread reads: it acknowledges the signal, and ends the process (after
-// removing unfinished files) at a second signal or when the run does not stop in time.
-volatile std::sig_atomic_t stopSignalNumber = 0;
-int signalPipe[2] = {-1, -1};
-extern "C" void onStopSignal(int signal) {
-    const int savedErrno = errno;
-    if (!stopSignalNumber) stopSignalNumber = signal;
-    const unsigned char byte = static_cast<unsigned char>(signal);
-    (void)!::write(signalPipe[1], &byte, 1);
-    errno = savedErrno;
-}
-}  // namespace
 
 void printDiagnostic(const Diagnostic& diagnostic) { std::cerr << "toyhost: " << formatDiagnostic(diagnostic) << "\n"; }
 
@@ -30,9 +16,14 @@ void printError(const Error& error) { std::cerr << formatDiagnostics(error.diagn
 
 int fail(const Error& error) {
     printError(error);
-    if (stopSignalNumber) return 128 + stopSignalNumber;  // the shell's convention for a signal
-    if (error.category() == Category::Usage) return kExitUsage;
-    return kExitFailure;
+    // Whatever ended a run that a signal asked to stop, the shell's convention says so.
+    if (stopSignal()) return 128 + stopSignal();
+    switch (error.category()) {
+        case Category::Usage: return kExitUsage;
+        case Category::Watchdog: return kExitWatchdog;
+        case Category::Interrupted: return 128 + (stopSignal() ? stopSignal() : SIGINT);
+        default: return kExitFailure;
+    }
 }
 
 int usage(const std::string& message) {
@@ -40,52 +31,86 @@ int usage(const std::string& message) {
     return kExitUsage;
 }
 
-void installStopSignals() {
-    if (signalPipe[0] < 0 && ::pipe2(signalPipe, O_CLOEXEC | O_NONBLOCK) != 0) signalPipe[0] = signalPipe[1] = -1;
-    struct sigaction action {};
-    action.sa_handler = onStopSignal;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART;
-    ::sigaction(SIGINT, &action, nullptr);
-    ::sigaction(SIGTERM, &action, nullptr);
-}
+ConsoleObserver::ConsoleObserver(bool quiet) : quiet_(quiet), show_(!quiet && isatty(STDERR_FILENO)) {}
 
-int stopSignalFd() { return signalPipe[0]; }
-
-int stopSignal() { return stopSignalNumber; }
-
-ConsoleObserver::ConsoleObserver(bool quiet, std::function<void(const SessionReport&)> summary, RunActivity* activity)
-    : summary_(std::move(summary)), activity_(activity), quiet_(quiet), show_(!quiet && isatty(STDERR_FILENO)) {}
-
-void ConsoleObserver::roundFinished(const Result<SessionReport>& round) {
+void ConsoleObserver::clearProgress() {
     if (shown_) std::cerr << "\r\033[K";
     shown_ = false;
-    if (round) {
-        if (summary_) summary_(*round);
-    } else {
-        printError(round.error());
-    }
-    std::fprintf(stderr, "toyhost: watching the shadertoy's files; Ctrl-C ends\n");
+}
+
+void ConsoleObserver::summary(const SessionReport& report) {
+    std::lock_guard lock(mutex_);
+    clearProgress();
+    for (const std::string& line : summaryLines(report)) std::cerr << "toyhost: " << line << "\n";
+}
+
+void ConsoleObserver::roundFinished(const Result<SessionReport>& round) {
+    if (round) summary(*round);
+    std::lock_guard lock(mutex_);
+    clearProgress();
+    if (!round) printError(round.error());
+    std::cerr << "toyhost: watching the shadertoy's files; Ctrl-C ends\n";
 }
 
 void ConsoleObserver::notice(const Diagnostic& notice) {
     if (quiet_ && notice.severity == Severity::Notice) return;
-    if (shown_) std::cerr << "\r\033[K";
-    shown_ = false;
+    std::lock_guard lock(mutex_);
+    clearProgress();
     printDiagnostic(notice);
 }
 
 void ConsoleObserver::progress(const RunProgress& p) {
     if (!show_) return;
+    std::lock_guard lock(mutex_);
     // At most five updates a second: a terminal write per frame would cost more than a fast
     // shader's frame.
     const auto now = std::chrono::steady_clock::now();
     const bool last = p.frames > 0 && p.framesDone == p.frames;
     if (!last && shown_ && now - lastShown_ < std::chrono::milliseconds(200)) return;
     lastShown_ = now;
-    shown_ = !last;
-    if (last) std::cerr << "\r\033[K" << std::flush;
-    else std::cerr << "\r\033[K" << formatProgressLine(p) << std::flush;
+    if (last) {
+        clearProgress();
+        std::cerr << std::flush;
+        return;
+    }
+    shown_ = true;
+    std::cerr << "\r\033[K" << formatProgressLine(p) << std::flush;
+}
+
+namespace {
+// Written with write(2): the expiry runs on the watchdog's thread while the render thread may hold
+// the stream locks.
+void say(const std::string& line) {
+    const std::string text = (isatty(STDERR_FILENO) ? "\r\033[K" : "") + line + "\n";
+    (void)!::write(STDERR_FILENO, text.data(), text.size());
+}
+}  // namespace
+
+int runSession(const SessionOptions& options, bool quiet, const SessionRunner& driver) {
+    const SessionOptions limits = withDefaults(options);
+    WatchdogDesc desc;
+    desc.frameLimit = *limits.frameTimeout;
+    desc.compileLimit = *limits.compileTimeout;
+    desc.watchSignals = true;
+    desc.acknowledge = [](const Diagnostic& d) { say("toyhost: " + formatDiagnostic(d)); };
+    desc.expire = [](const Diagnostic& d, int exitCode) {
+        // Nothing half-written may stay: unfinished files go and encoders are stopped before the
+        // process ends.
+        const inflight::CleanupReport cleaned = inflight::emergencyCleanup();
+        std::string line = "toyhost: " + formatDiagnostic(d);
+        if (cleaned.files || cleaned.children)
+            line += " (removed " + std::to_string(cleaned.files) + " unfinished file" + (cleaned.files == 1 ? "" : "s") +
+                    ", stopped " + std::to_string(cleaned.children) + " child process" +
+                    (cleaned.children == 1 ? "" : "es") + ")";
+        say(line);
+        ::_exit(exitCode);
+    };
+    Watchdog watchdog(std::move(desc));
+    ConsoleObserver observer(quiet);
+    Result<SessionReport> report = driver(options, observer, &watchdog);
+    if (!report) return fail(report.error());
+    if (!options.watch) observer.summary(*report);
+    return kExitOk;
 }
 
 }  // namespace toyhost::cli

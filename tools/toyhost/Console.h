@@ -1,16 +1,19 @@
 // Console: how the toyhost CLI talks to the user. Every diagnostic is printed the same way
-// ("toyhost: " + formatDiagnostic), notices and progress go to stderr (stdout may carry raw
-// frames), and the exit code follows from the error (docs/cli.md lists them). Ctrl-C and SIGTERM
-// ask a running job to stop.
+// ("toyhost: " + formatDiagnostic), notices, progress and summaries go to stderr (stdout may carry
+// raw frames or audio), and the exit code follows the error's category (docs/cli.md lists them).
+// runSession is the one way every command that renders runs: a Session behind a watchdog whose
+// expiry ends the process (after removing unfinished files), printing what the session reports.
 #pragma once
 
 #include <chrono>
-#include <csignal>
 #include <functional>
+#include <mutex>
 #include <string>
 
 #include "core/Result.h"
 #include "session/SessionObserver.h"
+#include "session/SessionOptions.h"
+#include "session/Watchdog.h"
 
 namespace toyhost::cli {
 
@@ -21,37 +24,35 @@ inline constexpr int kExitUsage = 2;    // bad command line
 
 void printDiagnostic(const Diagnostic& diagnostic);
 void printError(const Error& error);
-// Prints `error` and returns its exit code: 2 for usage errors, 128 + signal when a signal
-// interrupted the run, else 1.
+// Prints `error` and returns its exit code: 2 for usage errors, 124 when the watchdog ended the
+// run, 128 + signal when a signal interrupted it, else 1.
 int fail(const Error& error);
 // A usage error with one message; returns 2.
 int usage(const std::string& message);
 
-// SIGINT/SIGTERM set a flag that stopRequested() reads, and wake the StopWatcher (readable on
-// stopSignalFd()), which acknowledges them and ends the process if the run cannot stop in time.
-void installStopSignals();
-int stopSignal();
-int stopSignalFd();
-
 class ConsoleObserver final : public SessionObserver {
 public:
-    // `summary` prints a finished round of a --watch run. `quiet`: no progress line and no
-    // notices (warnings and errors still print).
-    explicit ConsoleObserver(bool quiet, std::function<void(const SessionReport&)> summary = {},
-                             RunActivity* activity = nullptr);
-    RunActivity* activity() override { return activity_; }
+    // `quiet`: no progress line and no notices (warnings and errors still print).
+    explicit ConsoleObserver(bool quiet);
     void notice(const Diagnostic& notice) override;
-    bool stopRequested() const override { return stopSignal() != 0; }
     void progress(const RunProgress& p) override;
     void roundFinished(const Result<SessionReport>& round) override;
+    // Prints the summary of a finished run.
+    void summary(const SessionReport& report);
 
 private:
-    std::function<void(const SessionReport&)> summary_;
-    RunActivity* activity_;
+    void clearProgress();
+    std::mutex mutex_;  // notices may come from the watchdog's thread
     bool quiet_;
     bool show_;
     bool shown_ = false;
     std::chrono::steady_clock::time_point lastShown_;
 };
+
+// The way a command runs a session (`driver` is runHeadless or runWindow): with the watchdog the
+// options ask for and SIGINT/SIGTERM handling, printing notices, progress and the summary.
+// Returns the exit code.
+using SessionRunner = std::function<Result<SessionReport>(const SessionOptions&, SessionObserver&, Watchdog*)>;
+int runSession(const SessionOptions& options, bool quiet, const SessionRunner& driver);
 
 }  // namespace toyhost::cli

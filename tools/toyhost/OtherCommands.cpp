@@ -15,9 +15,9 @@
 #include "media/MediaResolver.h"
 #include "core/Defaults.h"
 #include "export/LoadShadertoy.h"
-#include "gl/HeadlessContext.h"
-#include "player/PlayerDesc.h"
-#include "session/SoundRender.h"
+#include "drivers/headless/HeadlessDriver.h"
+#include "gl/GlThread.h"
+#include <unistd.h>
 
 namespace toyhost::cli {
 
@@ -141,32 +141,25 @@ int mediaCommand(const std::vector<std::string>& folders) {
 
 namespace toyhost::cli {
 
-// `toyhost sound`: the Sound pass rendered up front as the site does, written as audio.
-int soundCommand(const SoundCommandOptions& o) {
-    if (!(o.seconds > 0) || o.seconds > defaults::kMaxSoundSeconds)
-        return usage("--seconds must be more than 0 and at most " + std::to_string(int(defaults::kMaxSoundSeconds)));
-    Result<ManifestDesc> manifest = loadShadertoy(o.target);
-    if (!manifest) return fail(manifest.error());
-    if (!manifest->sound)
-        return fail(fileError(manifest->manifestPath.string(), "the shadertoy has no Sound pass (mainSound)", Code::SoundMissing));
-    MediaOptions media;
-    for (const std::string& folder : o.mediaFolders) media.folders.emplace_back(folder);
-    if (const char* folder = std::getenv("TOYHOST_MEDIA"); folder && *folder) media.folders.emplace_back(folder);
-    Result<PlayerPlan> plan = planPlayer(std::move(*manifest), media);
-    if (!plan) return fail(plan.error());
-    for (const Diagnostic& notice : plan->notices)
-        if (!o.quiet || notice.severity != Severity::Notice) printDiagnostic(notice);
-    Result<std::shared_ptr<GlContext>> context = createHeadlessContext();
-    if (!context) return fail(context.error());
-    SoundRenderDesc desc;
-    desc.seconds = o.seconds;
-    Result<std::vector<float>> stereo = renderSound(**context, *plan, desc);
-    if (!stereo) return fail(stereo.error());
-    if (Status written = writeSoundFile(o.out, *stereo); !written) return fail(written.error());
-    // Rendered at 44100 Hz; an encoder may resample (Opus is 48 kHz).
-    std::cerr << "toyhost: wrote " << o.out << " (" << o.seconds << " s of stereo rendered at "
-              << static_cast<int>(defaults::kSampleRate) << " Hz)\n";
-    return kExitOk;
+// `toyhost sound`: the Sound pass rendered up front as the site does, written as audio, through a
+// Session like every run (signals, the watchdog, an all-or-nothing output file).
+int soundCommand(const SoundCommandOptions& o, const GlProcess& process) {
+    SessionOptions options;
+    options.target = o.target;
+    options.sound = SoundRequest{o.out, o.seconds};
+    options.eglPlatform = process.eglPlatform;
+    options.startedAt = process.startedAt;
+    for (const std::string& folder : o.mediaFolders) options.media.folders.emplace_back(folder);
+    if (const char* folder = std::getenv("TOYHOST_MEDIA"); folder && *folder) options.media.folders.emplace_back(folder);
+    if (o.out == "-" && process.closedAtStart[STDOUT_FILENO])
+        return usage("--out -: stdout is closed; give it a file or a pipe (or --out music.wav)");
+    if (o.out == "-" && isatty(STDOUT_FILENO))
+        return usage("--out -: stdout is a terminal; redirect the WAV stream to a file or a pipe");
+    // A runaway mainSound is ended like a runaway frame (each block of samples is one draw).
+    options.frameTimeout = defaults::kFrameTimeoutSeconds;
+    int code = kExitOk;
+    runOnGlThread([&] { code = runSession(options, o.quiet, runHeadless); });
+    return code;
 }
 
 }  // namespace toyhost::cli

@@ -4,13 +4,11 @@
 
 #include "Commands.h"
 #include "Console.h"
-#include "StopWatcher.h"
 #include "core/Defaults.h"
+#include "drivers/headless/HeadlessDriver.h"
 #include "drivers/window/WindowContext.h"
-#include "drivers/headless/HeadlessRun.h"
-#include "drivers/window/WindowRun.h"
+#include "drivers/window/WindowDriver.h"
 #include "timing/FrameClock.h"
-#include "timing/ProgressLine.h"
 
 namespace toyhost::cli {
 
@@ -32,26 +30,6 @@ std::string number(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", value);
     return text;
-}
-
-std::string plural(int n, const char* one, const char* many) {
-    return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
-void printSummary(const SessionReport& report, const char* mode, const SessionOptions& o) {
-    const double fps = report.seconds > 0 ? report.framesRendered / report.seconds : 0;
-    std::fprintf(stderr, "toyhost: %s: %s at %dx%d in %.3f s (%.1f frames/s, first frame after %.0f ms), %s on %s\n",
-                 report.manifestName.c_str(), plural(report.framesRendered, "frame", "frames").c_str(), report.width,
-                 report.height, report.seconds, fps, report.firstFrameSeconds * 1000.0, mode, report.context.c_str());
-    if (report.files.size() == 1)
-        std::fprintf(stderr, "toyhost: wrote %s (%s)\n", report.files.front().c_str(), formatBytes(report.bytesWritten).c_str());
-    else if (!report.files.empty())
-        std::fprintf(stderr, "toyhost: wrote %zu files (%s): %s .. %s\n", report.files.size(),
-                     formatBytes(report.bytesWritten).c_str(), report.files.front().c_str(), report.files.back().c_str());
-    else if (o.outPattern && *o.outPattern == "-")
-        std::fprintf(stderr, "toyhost: wrote %s of raw RGBA8 frames to stdout\n", formatBytes(report.bytesWritten).c_str());
-    else if (!o.outPattern && !o.interactive)
-        std::fprintf(stderr, "toyhost: no files written (no --out; e.g. --out frame_%%04d.png captures the frames)\n");
 }
 
 }  // namespace
@@ -133,7 +111,7 @@ void RunCommand::define(CLI::App& run) {
     run.add_flag("--quiet", quiet_, "No progress line and no notices (warnings and errors still print)");
 }
 
-int RunCommand::execute() {
+int RunCommand::execute(const GlProcess& process) {
     SessionOptions& o = options_;
     o.target = target_;
     if (!size_.empty()) {
@@ -179,12 +157,8 @@ int RunCommand::execute() {
         if (!wallClock) return usage("--date: " + wallClock.error().first().message);
         o.wallClock = *wallClock;
     }
-    if (const char* platform = std::getenv("TOYHOST_EGL_PLATFORM"); platform && *platform) {
-        const std::string name = platform;
-        if (name == "device") o.eglPlatform = EglPlatform::Device;
-        else if (name == "surfaceless") o.eglPlatform = EglPlatform::Surfaceless;
-        else if (name != "automatic") return usage("TOYHOST_EGL_PLATFORM=" + name + ": expected surfaceless, device or automatic");
-    }
+    o.eglPlatform = process.eglPlatform;
+    o.startedAt = process.startedAt;
     auto pair = [](const std::string& text, char separator) -> std::optional<std::pair<int, int>> {
         long long a = 0, b = 0;
         char sep = 0, extra = 0;
@@ -203,11 +177,10 @@ int RunCommand::execute() {
     }
     if (!codec_.empty()) o.video.codec = codec_;
     if (videoQuality_) o.video.quality = *videoQuality_;
+    if (o.outPattern && *o.outPattern == "-" && process.closedAtStart[STDOUT_FILENO])
+        return usage("--out -: stdout is closed; give it a file or a pipe (or --out frame_%04d.png)");
     if (o.outPattern && *o.outPattern == "-" && isatty(STDOUT_FILENO))
         return usage("--out -: stdout is a terminal; redirect the raw frames to a file or a pipe");
-    // A closed stdout (`--out - | head -c ...`) must end the run with a message, not kill it.
-    std::signal(SIGPIPE, SIG_IGN);
-    installStopSignals();
 
     if (window_ && headless_) return usage("--window and --headless cannot be combined");
     const bool windowMode = window_ || (!headless_ && displayAvailable());
@@ -217,14 +190,12 @@ int RunCommand::execute() {
     o.interactive = windowMode;
     o.watch = watch_;
 
-    const char* mode = windowMode ? "in a window" : "headless";
-    const SessionOptions limits = withDefaults(o);
-    StopWatcher watcher(*limits.frameTimeout, *limits.compileTimeout, defaults::kStopGraceSeconds);
-    ConsoleObserver observer(quiet_, [&](const SessionReport& report) { printSummary(report, mode, o); }, watcher.activity());
-    Result<SessionReport> report = windowMode ? runWindow(o, observer) : runHeadless(o, observer);
-    if (!report) return fail(report.error());
-    if (!o.watch) printSummary(*report, mode, o);
-    return kExitOk;
+    // A window's events are handled on this (the main) thread and it renders on a GL thread of its
+    // own; headless runs render on a GL thread.
+    if (windowMode) return runSession(o, quiet_, runWindow);
+    int code = kExitOk;
+    runOnGlThread([&] { code = runSession(o, quiet_, runHeadless); });
+    return code;
 }
 
 }  // namespace toyhost::cli

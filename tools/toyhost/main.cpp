@@ -8,43 +8,21 @@
 #include <cstdlib>
 #include <iostream>
 #include <string>
-#include <functional>
-#include <pthread.h>
 #include <unistd.h>
 
 #include "Commands.h"
 #include "Console.h"
 #include "core/Defaults.h"
+#include "gl/GlThread.h"
+#include "session/StopSignals.h"
 
 using namespace toyhost;
 using namespace toyhost::cli;
 
-namespace {
-// Runs `job` on a new thread with a 1 GiB stack (address space only: pages are used as touched)
-// and returns its result; runs it here if such a thread cannot be made.
-int onLargeStack(std::function<int()> job) {
-    struct Call {
-        std::function<int()> job;
-        int result = 0;
-    } call{std::move(job)};
-    pthread_attr_t attributes;
-    pthread_attr_init(&attributes);
-    pthread_attr_setstacksize(&attributes, std::size_t(1) << 30);
-    pthread_t thread;
-    auto run = [](void* data) -> void* {
-        auto* c = static_cast<Call*>(data);
-        c->result = c->job();
-        return nullptr;
-    };
-    const bool started = pthread_create(&thread, &attributes, run, &call) == 0;
-    pthread_attr_destroy(&attributes);
-    if (!started) return call.job();
-    pthread_join(thread, nullptr);
-    return call.result;
-}
-}  // namespace
 
 int main(int argc, char** argv) {
+    // Before any thread exists: the driver hints, TOYHOST_EGL_PLATFORM, standard streams.
+    const Result<GlProcess> process = prepareGlProcess();
     CLI::App app{"toyhost: run Shadertoy shaders unmodified, in a window (GLFW) or headless on EGL (no display needed)"};
     app.name("toyhost");  // not argv[0]: the help text is the same however toyhost was started
     app.set_version_flag("--version", std::string("toyhost ") + TOYHOST_VERSION);
@@ -111,15 +89,15 @@ int main(int argc, char** argv) {
     }
 
     if (import->parsed()) return importCommand(importSource, importDir, importForce);
-    if (sound->parsed()) return onLargeStack([&] { return soundCommand(soundOptions); });
     if (inspect->parsed()) return inspectCommand(inspectFiles, regionText);
     if (create->parsed()) return newCommand(newDir, newPasses, newForce);
     if (media->parsed()) {
         if (const char* folder = std::getenv("TOYHOST_MEDIA"); folder && *folder) mediaFolders.emplace_back(folder);
         return mediaCommand(mediaFolders);
     }
-    // Mesa's GLSL compiler recurses once per statement of a long function: a large shader that
-    // compiles on the site overflows a main thread's usual 8 MiB stack (and ends the process with
-    // no message). The run gets a thread with a stack that such shaders fit in.
-    return onLargeStack([&] { return runCommand.execute(); });
+    // What renders: its GL work on a GL thread (gl/GlThread.h), SIGINT/SIGTERM asking it to stop.
+    if (!process) return fail(process.error());
+    installStopSignals();
+    if (sound->parsed()) return soundCommand(soundOptions, *process);
+    return runCommand.execute(*process);
 }

@@ -98,6 +98,8 @@ Status WindowContext::makeCurrent() {
     return okStatus();
 }
 
+void WindowContext::releaseCurrent() { glfwMakeContextCurrent(nullptr); }
+
 void* WindowContext::procAddress(const char* name) const {
     return reinterpret_cast<void*>(glfwGetProcAddress(name));
 }

@@ -31,6 +31,8 @@ public:
 
     // GlContext
     Status makeCurrent() override;
+    // The context is no longer current on this thread (so that another thread can make it current).
+    void releaseCurrent();
     void* procAddress(const char* name) const override;
     std::string describe() const override;
     GlSurface* surface() override { return this; }

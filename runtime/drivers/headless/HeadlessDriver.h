@@ -1,0 +1,37 @@
+// The headless driver: what a run without a window brings to a Session (session/Session.h): a
+// fixed-step clock (frame n at iTime = start + n / fps, timing/FrameClock.h) and the input scripts
+// (--mouse, --mouse-script, --key-script) replayed by frame number, so every headless run of the
+// same options renders the same frames. runHeadless is `toyhost run --headless` (and `--watch`)
+// and `toyhost sound`. Needs no display; it makes its own EGL context on the calling thread (the
+// GL thread, gl/GlThread.h).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/Result.h"
+#include "input/InputScriptPlayer.h"
+#include "session/Session.h"
+#include "timing/FrameClock.h"
+
+namespace toyhost {
+
+class HeadlessDriver final : public SessionDriver {
+public:
+    explicit HeadlessDriver(const SessionPlan& plan);
+    std::optional<FrameTime> nextFrame(int frame, std::vector<InputEvent>& events) override;
+    void restart() override;
+
+private:
+    const SessionPlan& plan_;
+    FrameClock clock_;
+    MouseScriptPlayer mouse_;
+    KeyScriptPlayer keys_;
+    int next_ = 0;  // the scripts' next frame
+};
+
+// Prepares `options` (every check before GL), creates a headless EGL context and runs the session:
+// frames, or the Sound pass to an audio file (options.sound). `watchdog` may be null.
+Result<SessionReport> runHeadless(const SessionOptions& options, SessionObserver& observer, Watchdog* watchdog);
+
+}  // namespace toyhost

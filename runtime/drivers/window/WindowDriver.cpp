@@ -1,0 +1,173 @@
+#include "drivers/window/WindowDriver.h"
+
+#include <GLES3/gl3.h>
+
+#include <atomic>
+#include <cstdio>
+
+#include "core/Defaults.h"
+#include "drivers/window/WindowContext.h"
+#include "drivers/window/WindowEvents.h"
+#include "gl/GlThread.h"
+#include "render/Present.h"
+#include "session/AllProblems.h"
+#include "timing/FrameClock.h"
+#include "timing/RealTimeClock.h"
+
+namespace toyhost {
+
+namespace {
+
+double monotonicNow() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+class WindowDriver final : public SessionDriver {
+public:
+    WindowDriver(WindowContext& window, WindowEvents& events, const SessionOptions& o, SessionObserver& observer)
+        : window_(window), events_(events), o_(o), observer_(observer), clock_(clockOptions(o), monotonicNow()),
+          wallStart_(o.wallClock.value_or(localWallClockNow())) {}
+
+    bool poll(Session& s) override {
+        if (events_.quitRequested()) return false;
+        const double now = monotonicNow();
+        if (events_.takeControl(Control::Help)) observer_.notice(notice(controlsHelp(), Code::WindowHelp));
+        if (events_.takeControl(Control::Restart)) {
+            s.restart();
+            clock_.restart(now);  // while paused, the restarted frame is still shown
+        }
+        if (events_.takeControl(Control::Pause)) clock_.setPaused(!clock_.paused(), now);
+        if (events_.takeControl(Control::Step)) clock_.stepOnce();
+        if (events_.takeControl(Control::Screenshot))
+            if (Status shot = s.screenshot(); !shot) observer_.notice(shot.error().first());
+        // The canvas is the framebuffer (HiDPI: pixels, not window coordinates), except while
+        // recording: a recording has one size, so the canvas stays at --size and is scaled to fit.
+        framebuffer_ = events_.framebufferSize();
+        if (s.running() && !o_.outPattern && framebuffer_.width > 0 && framebuffer_.height > 0)
+            if (Status resized = s.resize(framebuffer_.width, framebuffer_.height); !resized)
+                observer_.notice(resized.error().first());
+        showTitle(s, now);
+        return true;
+    }
+
+    std::optional<FrameTime> nextFrame(int, std::vector<InputEvent>& events) override {
+        // Input while paused makes the site paint one frame at the paused time.
+        if (clock_.paused() && events_.hasEvents()) clock_.forceFrame();
+        if (!clock_.shouldRender()) return std::nullopt;
+        events_.takeEvents(events);
+        FrameTime time = clock_.frame(monotonicNow(), localWallClockNow());
+        if (o_.fps || o_.wallClock) time.date = dateAt(wallStart_ + (time.time - o_.startTime));
+        return time;
+    }
+
+    void present(Session& s) override {
+        events_.setCanvasSize(s.player().width(), s.player().height());
+        presentToDefaultFramebuffer(s.player().output(PassId::Image), framebuffer_.width, framebuffer_.height);
+        (void)window_.present();
+    }
+
+    void idle(Session& s) override {
+        // Paused, or waiting for a shadertoy that compiles: keep the window's content and wait.
+        if (s.running() && s.player().frame() > 0) {
+            present(s);
+        } else {
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, framebuffer_.width, framebuffer_.height);
+            glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+            (void)window_.present();
+        }
+        events_.waitForInput(0.05);
+    }
+
+private:
+    static RealTimeClockOptions clockOptions(const SessionOptions& o) {
+        RealTimeClockOptions c;
+        c.fixedFps = o.fps;
+        c.startTime = o.startTime;
+        c.nominalFps = 1.0 / defaults::kRestartTimeDelta;
+        return c;
+    }
+    static Diagnostic notice(std::string message, Code code) {
+        Diagnostic d;
+        d.severity = Severity::Notice;
+        d.code = code;
+        d.message = std::move(message);
+        return d;
+    }
+    void showTitle(Session& s, double now) {
+        // The state changes at once; the counters a few times a second.
+        const bool paused = clock_.paused();
+        if (paused == titlePaused_ && now - titleShownAt_ < 0.25) return;
+        titlePaused_ = paused;
+        titleShownAt_ = now;
+        char text[160];
+        const std::optional<double> rate = clock_.measuredFrameRate();
+        const int shown = s.running() ? s.player().frame() - 1 : -1;
+        std::string title = s.name().empty() ? std::string("toyhost") : s.name();
+        if (shown >= 0) {
+            std::snprintf(text, sizeof text, " | %s fps | iFrame %d | iTime %.2f",
+                          rate ? std::to_string(static_cast<int>(*rate + 0.5)).c_str() : "--", shown, clock_.time());
+            title += text;
+        }
+        if (paused) title += " | paused (F6)";
+        if (!s.problems().empty()) title += " | " + formatDiagnostic(s.problems().front());
+        events_.setTitle(title);
+    }
+
+    WindowContext& window_;
+    WindowEvents& events_;
+    const SessionOptions& o_;
+    SessionObserver& observer_;
+    RealTimeClock clock_;
+    double wallStart_;
+    GlSurface::Size framebuffer_;
+    bool titlePaused_ = false;
+    double titleShownAt_ = -1;
+};
+
+}  // namespace
+
+Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& observer, Watchdog* watchdog) {
+    Result<SessionPlan> prepared = prepareSession(options);
+    if (!prepared) return withCompileProblems(options, prepared.error());
+    WindowOptions windowOptions;
+    windowOptions.width = *prepared->options.width;
+    windowOptions.height = *prepared->options.height;
+    const std::string& name = prepared->shadertoy.manifest.name;
+    windowOptions.title = name.empty() ? "toyhost" : name + " - toyhost";
+    Result<std::shared_ptr<WindowContext>> window = WindowContext::create(windowOptions);
+    if (!window) return window.error();
+    (*window)->releaseCurrent();  // the GL thread makes it current
+
+    std::atomic<bool> done{false};
+    std::optional<Result<SessionReport>> result;
+    WindowEvents events(**window, [&] {
+        if (watchdog) watchdog->requestStop(StopReason::Quit);  // the grace period starts now
+    });
+    GlThread gl([&] {
+        if (!prepared->options.outPattern) {  // the canvas is the framebuffer, in pixels
+            const GlSurface::Size fb = events.framebufferSize();
+            prepared->options.width = fb.width;
+            prepared->options.height = fb.height;
+        }
+        {
+            Result<std::unique_ptr<Session>> session = Session::start(std::move(*prepared), *window, observer, watchdog);
+            if (session) {
+                (void)(*window)->setSwapInterval(1);
+                WindowDriver driver(**window, events, (*session)->plan().options, observer);
+                result = (*session)->run(driver);
+            } else {
+                result = session.error();
+            }
+        }  // the Session ends here, on the thread its context is current on
+        (*window)->releaseCurrent();
+        done = true;
+        events.wake();
+    });
+    while (!done) events.pump(0.1);
+    gl.join();
+    return std::move(*result);
+}
+
+}  // namespace toyhost

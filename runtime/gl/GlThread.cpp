@@ -1,0 +1,63 @@
+#include "gl/GlThread.h"
+
+#include <cstdlib>
+#include <fcntl.h>
+#include <pthread.h>
+#include <string>
+#include <unistd.h>
+
+#include "gl/GlContext.h"
+
+namespace toyhost {
+
+Result<GlProcess> prepareGlProcess() {
+    GlProcess process;
+    for (int fd = 0; fd < 3; ++fd) {
+        if (::fcntl(fd, F_GETFD) != -1) continue;
+        // Read-only /dev/null for an output stream: writing to it fails with EBADF, which the
+        // writer reports ("stdout: write failed"), and nothing else can take the number.
+        const int opened = ::open("/dev/null", fd == 0 ? O_RDONLY : O_RDONLY);
+        if (opened >= 0 && opened != fd) {
+            ::dup2(opened, fd);
+            ::close(opened);
+        }
+        process.closedAtStart[fd] = true;
+    }
+    requestWebGlDriverBehaviour();
+    if (const char* platform = std::getenv("TOYHOST_EGL_PLATFORM"); platform && *platform) {
+        const std::string name = platform;
+        if (name == "device") process.eglPlatform = EglPlatform::Device;
+        else if (name == "surfaceless") process.eglPlatform = EglPlatform::Surfaceless;
+        else if (name != "automatic")
+            return Error("TOYHOST_EGL_PLATFORM=" + name + ": expected surfaceless, device or automatic", Code::Usage);
+    }
+    return process;
+}
+
+GlThread::GlThread(std::function<void()> job) : job_(std::move(job)) {
+    pthread_attr_t attributes;
+    pthread_attr_init(&attributes);
+    pthread_attr_setstacksize(&attributes, kGlThreadStackBytes);
+    auto run = [](void* data) -> void* {
+        (*static_cast<std::function<void()>*>(data))();
+        return nullptr;
+    };
+    started_ = pthread_create(&thread_, &attributes, run, &job_) == 0;
+    pthread_attr_destroy(&attributes);
+}
+
+GlThread::~GlThread() { join(); }
+
+void GlThread::join() {
+    if (joined_) return;
+    joined_ = true;
+    if (started_) pthread_join(thread_, nullptr);
+    else job_();
+}
+
+void runOnGlThread(const std::function<void()>& job) {
+    GlThread thread(job);
+    thread.join();
+}
+
+}  // namespace toyhost

@@ -1,0 +1,58 @@
+// GlThread: what a program that renders with toyhost sets up once, before any other thread exists
+// (environment changes are not thread-safe): the driver hints that make Mesa behave as browsers
+// do (glsl_zero_init), the EGL platform TOYHOST_EGL_PLATFORM asks for, and standard streams that
+// are really open (a closed fd 1 would otherwise be reused by toyhost's own pipes, and raw frames
+// for stdout would go into them); then the thread every GL call runs on, with a stack large
+// enough for Mesa's recursive GLSL compiler. Every command and the compatibility runner use it.
+// No GL context needed (it makes none).
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <functional>
+#include <pthread.h>
+
+#include "core/Result.h"
+#include "gl/HeadlessContext.h"
+
+namespace toyhost {
+
+struct GlProcess {
+    EglPlatform eglPlatform = EglPlatform::Automatic;  // from TOYHOST_EGL_PLATFORM
+    // Standard streams (0, 1, 2) that were closed when the process started; each is now /dev/null
+    // opened so that writes fail (EBADF) instead of landing in a pipe that took its number.
+    std::array<bool, 3> closedAtStart{};
+    // When the process started (as near as prepareGlProcess knows), for start-up times in reports.
+    std::chrono::steady_clock::time_point startedAt = std::chrono::steady_clock::now();
+};
+
+// Call once, first thing in main(), before any thread starts. Errors: a TOYHOST_EGL_PLATFORM that
+// is not surfaceless, device or automatic (a usage error).
+Result<GlProcess> prepareGlProcess();
+
+// The stack of the GL thread: Mesa's GLSL compiler recurses once per statement of a long
+// function, so a large shader that compiles on the site overflows the usual 8 MiB and ends the
+// process with no message. Address space only: pages are used as they are touched.
+inline constexpr std::size_t kGlThreadStackBytes = std::size_t(1) << 30;
+
+// A thread with kGlThreadStackBytes of stack running `job` (on the calling thread, at join(), if
+// such a thread cannot be made).
+class GlThread {
+public:
+    explicit GlThread(std::function<void()> job);
+    ~GlThread();  // joins
+    GlThread(const GlThread&) = delete;
+    GlThread& operator=(const GlThread&) = delete;
+    void join();
+
+private:
+    std::function<void()> job_;
+    pthread_t thread_{};
+    bool started_ = false;
+    bool joined_ = false;
+};
+
+// Runs `job` on a GlThread and waits for it.
+void runOnGlThread(const std::function<void()>& job);
+
+}  // namespace toyhost

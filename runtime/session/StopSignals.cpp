@@ -1,0 +1,42 @@
+#include "session/StopSignals.h"
+
+#include <cerrno>
+#include <csignal>
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace toyhost {
+
+namespace {
+volatile std::sig_atomic_t firstSignal = 0;
+int signalPipe[2] = {-1, -1};
+
+extern "C" void onStopSignal(int signal) {
+    const int savedErrno = errno;
+    if (!firstSignal) firstSignal = signal;
+    const unsigned char byte = static_cast<unsigned char>(signal);
+    (void)!::write(signalPipe[1], &byte, 1);
+    errno = savedErrno;
+}
+}  // namespace
+
+void installStopSignals() {
+    if (signalPipe[0] < 0 && ::pipe2(signalPipe, O_CLOEXEC | O_NONBLOCK) != 0) signalPipe[0] = signalPipe[1] = -1;
+    struct sigaction action {};
+    action.sa_handler = onStopSignal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    ::sigaction(SIGINT, &action, nullptr);
+    ::sigaction(SIGTERM, &action, nullptr);
+    std::signal(SIGPIPE, SIG_IGN);
+}
+
+int stopSignal() { return firstSignal; }
+
+int stopSignalFd() { return signalPipe[0]; }
+
+const char* stopSignalName(int signal) {
+    return signal == SIGTERM ? "SIGTERM" : signal == SIGINT ? "SIGINT" : "a signal";
+}
+
+}  // namespace toyhost

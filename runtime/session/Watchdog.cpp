@@ -1,0 +1,137 @@
+#include "session/Watchdog.h"
+
+#include <cstdio>
+#include <poll.h>
+#include <string>
+#include <unistd.h>
+
+#include "session/StopSignals.h"
+
+namespace toyhost {
+
+namespace {
+std::string seconds(double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, s == static_cast<long long>(s) ? "%.0f" : "%.1f", s);
+    return text;
+}
+
+Diagnostic problem(Code code, std::string message, const char* pass = "") {
+    Diagnostic d;
+    d.code = code;
+    d.message = std::move(message);
+    d.pass = pass;
+    return d;
+}
+}  // namespace
+
+Watchdog::Watchdog(WatchdogDesc desc) : desc_(std::move(desc)), thread_([this] { loop(); }) {}
+
+Watchdog::~Watchdog() {
+    done_.cancel();
+    thread_.join();
+}
+
+void Watchdog::requestStop(StopReason reason, int signal) {
+    std::lock_guard lock(mutex_);
+    if (stop_.reason != StopReason::None) return;
+    stop_ = {reason, signal};
+    stopAt_ = std::chrono::steady_clock::now();
+    graceArmed_ = true;
+    stopped_.store(true, std::memory_order_release);
+}
+
+StopState Watchdog::stop() const {
+    std::lock_guard lock(mutex_);
+    return stop_;
+}
+
+void Watchdog::quitHonoured() {
+    std::lock_guard lock(mutex_);
+    if (stop_.reason == StopReason::Quit) graceArmed_ = false;
+}
+
+std::optional<Diagnostic> Watchdog::expired() const {
+    std::lock_guard lock(mutex_);
+    return expired_;
+}
+
+void Watchdog::expireWith(Diagnostic diagnostic, int exitCode) {
+    {
+        std::lock_guard lock(mutex_);
+        if (expired_) return;
+        expired_ = diagnostic;
+    }
+    if (desc_.expire) desc_.expire(diagnostic, exitCode);
+    requestStop(StopReason::Request);
+}
+
+void Watchdog::acknowledgeSignal(int signal) {
+    if (++signals_ > 1) {
+        const StopState first = stop();
+        expireWith(problem(Code::Interrupted, std::string(stopSignalName(signal)) + " again: stopped at once"),
+                   128 + (first.signal ? first.signal : signal));
+        return;
+    }
+    requestStop(StopReason::Signal, signal);
+    if (desc_.acknowledge) {
+        Diagnostic d = problem(Code::Interrupted, std::string(stopSignalName(signal)) +
+                                                      ": stopping before the next frame (again to stop at once)");
+        d.severity = Severity::Notice;
+        desc_.acknowledge(d);
+    }
+}
+
+void Watchdog::loop() {
+    using Clock = std::chrono::steady_clock;
+    const int signalFd = desc_.watchSignals ? stopSignalFd() : -1;
+    pollfd fds[2] = {{done_.pollFd(), POLLIN, 0}, {signalFd, POLLIN, 0}};
+    while (true) {
+        ::poll(fds, signalFd >= 0 ? 2 : 1, 50);
+        if (fds[0].revents) return;
+        if (signalFd >= 0 && (fds[1].revents & POLLIN)) {
+            unsigned char received[16];
+            const ssize_t n = ::read(signalFd, received, sizeof received);
+            for (ssize_t i = 0; i < n; ++i) acknowledgeSignal(received[i]);
+        }
+        {
+            std::unique_lock lock(mutex_);
+            const StopState s = stop_;
+            const double since = std::chrono::duration<double>(Clock::now() - stopAt_).count();
+            const bool armed = graceArmed_ && !expired_;
+            lock.unlock();
+            if (armed && since > desc_.graceSeconds) {
+                const std::string what = s.reason == StopReason::Quit ? "the window was closed, but the frame being drawn"
+                                                                      : "the render thread";
+                expireWith(problem(Code::Interrupted, what + " did not stop within " + seconds(desc_.graceSeconds) +
+                                                          " s (GL cannot be interrupted): stopped"),
+                           s.reason == StopReason::Signal ? 128 + s.signal : 130);
+            }
+        }
+
+        const RunActivity::Snapshot now = activity_.snapshot();
+        const double frameLimit = desc_.frameLimit, compileLimit = desc_.compileLimit;
+        if (frameLimit > 0 && now.phase == RunActivity::Phase::Drawing && now.seconds > frameLimit)
+            expireWith(problem(Code::WatchdogFrame,
+                               "frame " + std::to_string(now.frame) + " has been drawing this pass for " +
+                                   seconds(now.seconds) + " s, longer than --frame-timeout " + seconds(frameLimit) +
+                                   ": the run is ended (a shader that loops too long? --frame-timeout 0 turns the "
+                                   "limit off)",
+                               now.pass),
+                       kExitWatchdog);
+        else if (frameLimit > 0 && now.phase == RunActivity::Phase::WaitingForOutput && now.seconds > frameLimit)
+            expireWith(problem(Code::WatchdogOutput,
+                               "the encoders have taken no frame for " + seconds(now.seconds) +
+                                   " s, longer than --frame-timeout " + seconds(frameLimit) +
+                                   ": the run is ended (a stalled ffmpeg, or a reader of --out - that stopped reading?)"),
+                       kExitWatchdog);
+        else if (compileLimit > 0 && now.phase == RunActivity::Phase::Compiling && now.seconds > compileLimit)
+            expireWith(problem(Code::WatchdogCompile,
+                               "compiling has taken " + seconds(now.seconds) + " s, longer than --compile-timeout " +
+                                   seconds(compileLimit) + ": the run is ended (--compile-timeout 0 turns the limit off)",
+                               now.pass),
+                       kExitWatchdog);
+    }
+}
+
+}  // namespace toyhost
