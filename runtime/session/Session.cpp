@@ -520,7 +520,8 @@ Result<SessionReport> Session::runRound(SessionDriver& driver) {
 }
 
 Result<SessionReport> Session::run(SessionDriver& driver) {
-    Result<SessionReport> round = player_ ? runRound(driver) : Result<SessionReport>(Error(problems_));
+    // A window waits (in its loop) for a shadertoy that does not compile yet; --watch (below) too.
+    Result<SessionReport> round = player_ || live_ ? runRound(driver) : Result<SessionReport>(Error(problems_));
     if (!plan_.options.watch) {
         if (!round && !player_ && !problems_.empty()) return Error(problems_);
         return round;

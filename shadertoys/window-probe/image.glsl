@@ -3,7 +3,8 @@
 // the mouse and a clock so a person sees it working. Column 0: iMouse.xy and |iMouse.z| (pixels,
 // up to 255); column 1: |iMouse.w|, iMouse.z > 0, iMouse.w > 0; column 2: keyboard A held, A
 // went down, A toggle; column 3: Buffer A's frame counter and iFrame (mod 256), Space held;
-// column 4: iResolution.xy / 4; column 5: a constant colour that the hot-reload test edits.
+// column 4: iResolution.xy / 4; column 5: a constant colour that the hot-reload test edits;
+// column 6: the texture probe.png (one pixel), which the hot-reload test rewrites.
 float key(int code, int row) { return texelFetch(iChannel0, ivec2(code, row), 0).x; }
 
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
@@ -19,4 +20,5 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
                          key(32, 0), 1);
     else if (column == 4) fragColor = vec4(iResolution.xy / 4.0, 0, 255) / 255.0;
     else if (column == 5) fragColor = vec4(10, 20, 30, 255) / 255.0;
+    else if (column == 6) fragColor = texelFetch(iChannel2, ivec2(0), 0);
 }

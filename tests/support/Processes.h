@@ -18,12 +18,13 @@ namespace toyhost::testing {
 
 class BackgroundProcess {
 public:
-    // Runs `program` with `arguments`; stdout and stderr go to `log`.
+    // Runs `program` with `arguments` (in `workingDir` when given); stdout and stderr go to `log`.
     BackgroundProcess(const std::filesystem::path& program, const std::vector<std::string>& arguments,
-                      const std::filesystem::path& log)
+                      const std::filesystem::path& log, const std::filesystem::path& workingDir = {})
         : log_(log) {
         pid_ = ::fork();
         if (pid_ == 0) {
+            if (!workingDir.empty() && ::chdir(workingDir.c_str()) != 0) std::_Exit(126);
             const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
             ::dup2(fd, 1);
             ::dup2(fd, 2);
