@@ -49,9 +49,20 @@ public:
     ~PendingPasses() {
         for (std::size_t i = 0; i < count_; ++i) glDeleteSync(items_[i].fence);
     }
+    // Right before a pass's draw call: llvmpipe compiles a shader's machine code lazily inside the
+    // first draw that uses it, which can take minutes (a huge local array), so the call itself
+    // counts as drawing that pass when nothing older is pending.
+    void beforeDraw(RunActivity& activity, const char* pass, int frame) {
+        if (count_ != 0) return;
+        activity.begin(RunActivity::Phase::Drawing, pass, frame);
+        drawPublished_ = true;
+    }
     void add(const char* pass, int frame) {
         if (count_ == items_.size()) dropOldest();
         items_[count_++] = {glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0), pass, frame};
+        // The pass published before its draw call keeps its start time.
+        if (drawPublished_ && count_ == 1) published_ = items_[0].fence;
+        drawPublished_ = false;
     }
     // Forgets the passes that have finished (asking without waiting), then publishes the oldest
     // one still drawing, keeping its start time when it was already the one published.
@@ -89,6 +100,7 @@ private:
     std::array<Item, 4 * (kBufferCount + 2)> items_{};  // about three frames of six passes
     std::size_t count_ = 0;
     GLsync published_ = nullptr;  // compared only, never used after its deletion
+    bool drawPublished_ = false;
 };
 }  // namespace
 
@@ -357,6 +369,7 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
             const int size = s.cube->size();
             glViewport(0, 0, size, size);
             glUniform4f(loc.viewport, 0.0f, 0.0f, float(size), float(size));
+            if (s.watchDraws) s.pending.beforeDraw(*s.activity, passName(pass.plan.id), u.frame);
             for (int face = 0; face < 6; ++face) {
                 glBindFramebuffer(GL_FRAMEBUFFER, s.cube->faceFramebuffer(slotWritten(step), face));
                 float corners[15] = {};
@@ -367,6 +380,7 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
             glViewport(0, 0, width_, height_);
             s.cube->generateMipmaps(slotWritten(step));
         } else {
+            if (s.watchDraws) s.pending.beforeDraw(*s.activity, passName(pass.plan.id), u.frame);
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }
         // Mipmaps of a buffer are regenerated only when some channel samples it with `mipmap`.

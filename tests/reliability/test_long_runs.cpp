@@ -1,8 +1,8 @@
 // Long unattended runs, through the CLI as a farm or a user runs them: checkpoints that resume
 // byte-identically (Mountains & Lakes: its water total and its pixels), render-farm shards whose
 // union is the single run (GNU parallel, 4 shards), signals that stop a run stuck in a long draw
-// within the grace period, and SIGTERM at random moments of PNG, EXR, raw and video captures
-// leaving only complete files.
+// within the grace period (signals at random moments of every kind of run are in
+// test_adversarial.cpp).
 #include "GlTestSupport.h"
 
 #include <chrono>
@@ -224,64 +224,6 @@ TEST(Signals, SigintDuringALongDrawIsAcknowledgedAndEndsWithinTheGracePeriod) {
     EXPECT_TRUE(entries(dir / "out2").empty()) << "a second signal left files";
     EXPECT_EQ(shell("pgrep -a ffmpeg").second.find((dir / "out2").string()), std::string::npos)
         << "an ffmpeg was left running";
-}
-
-// SIGTERM at random moments of captures of every kind: what is left is complete, or nothing.
-TEST(Signals, SigtermAtRandomMomentsLeavesOnlyCompleteFiles) {
-    const fs::path dir = freshOutputDir("reliability/sigterm-loop");
-    const fs::path toy = sourceDir() / "shadertoys/ripple-pool";
-    std::mt19937 random(20261123);
-    std::uniform_int_distribution<int> delayMs(30, 1000);
-    const char* kinds[] = {"png", "exr", "raw", "mp4", "webm"};
-    constexpr int kRuns = 55;
-    int interrupted = 0;
-    for (int i = 0; i < kRuns; ++i) {
-        const std::string kind = kinds[i % 5];
-        const fs::path out = dir / ("run" + std::to_string(i));
-        fs::create_directories(out);
-        const std::string target = kind == "raw" ? "-" : kind == "png" || kind == "exr" ? (out / ("f_%04d." + kind)).string()
-                                                                                          : (out / ("movie." + kind)).string();
-        std::vector<std::string> args = {"run", toy.string(), "--headless", "--size", "160x90", "--frames", "240",
-                                         "--quiet", "--out", target};
-        if (kind == "exr") args.insert(args.end(), {"--capture-pass", "A"});
-        // Raw frames go to stdout, here a file of their own (through a shell that execs toyhost,
-        // so the signal reaches toyhost), which must then hold whole frames only.
-        std::vector<std::string> command = args;
-        fs::path program = toyhostBinary();
-        if (kind == "raw") {
-            std::string line = "exec " + quoted(toyhostBinary());
-            for (const std::string& a : args) line += " " + quoted(fs::path(a));
-            line += " > " + quoted(out / "frames.raw");
-            program = "/bin/sh";
-            command = {"-c", line};
-        }
-        BackgroundProcess run(program, command, out / "log");
-        std::this_thread::sleep_for(std::chrono::milliseconds(delayMs(random)));
-        run.signal(SIGTERM);
-        const int code = run.wait(15);
-        SCOPED_TRACE("run " + std::to_string(i) + " (" + kind + "), exit " + std::to_string(code));
-        ASSERT_TRUE(code == 143 || code == 0) << run.log();
-        interrupted += code == 143;
-        for (const std::string& name : entries(out)) {
-            if (name == "log") continue;
-            if (name == "frames.raw") {
-                EXPECT_EQ(fs::file_size(out / name) % (160 * 90 * 4), 0u) << "a partial raw frame";
-                continue;
-            }
-            EXPECT_NE(name[0], '.') << "a hidden temporary file was left: " << name;
-            const fs::path file = out / name;
-            if (kind == "png") EXPECT_TRUE(loadImageFile(file).ok()) << name << " is not a complete PNG";
-            if (kind == "exr") EXPECT_TRUE(readExr(file).ok()) << name << " is not a complete EXR";
-            if (kind == "mp4" || kind == "webm") {
-                EXPECT_EQ(code, 0) << "an interrupted video must be discarded, found " << name;
-                auto frames = shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                                    "stream=nb_read_frames -of csv=p=0 " + quoted(file));
-                EXPECT_EQ(frames.second, "240\n") << name;
-            }
-        }
-    }
-    std::printf("%d of %d runs were interrupted by SIGTERM (the others had finished)\n", interrupted, kRuns);
-    EXPECT_GT(interrupted, kRuns / 2) << "too few runs were still going when the signal came";
 }
 
 }  // namespace
