@@ -29,4 +29,11 @@ void presentToDefaultFramebuffer(const PassOutput& output, int framebufferW, int
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }
 
+void clearDefaultFramebuffer(int framebufferW, int framebufferH) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, framebufferW, framebufferH);
+    glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+}
+
 }  // namespace toyhost

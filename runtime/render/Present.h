@@ -16,5 +16,7 @@ struct PresentRect {
 PresentRect presentRect(int canvasW, int canvasH, int framebufferW, int framebufferH);
 
 void presentToDefaultFramebuffer(const PassOutput& output, int framebufferW, int framebufferH);
+// A dark grey default framebuffer: what a window shows before its shadertoy has a frame.
+void clearDefaultFramebuffer(int framebufferW, int framebufferH);
 
 }  // namespace toyhost

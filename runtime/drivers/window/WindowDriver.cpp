@@ -1,9 +1,6 @@
 #include "drivers/window/WindowDriver.h"
 
-#include <GLES3/gl3.h>
-
 #include <atomic>
-#include <cstdio>
 
 #include "core/Defaults.h"
 #include "drivers/window/WindowContext.h"
@@ -12,6 +9,7 @@
 #include "render/Present.h"
 #include "session/AllProblems.h"
 #include "timing/FrameClock.h"
+#include "timing/ProgressLine.h"
 #include "timing/RealTimeClock.h"
 
 namespace toyhost {
@@ -71,10 +69,7 @@ public:
         if (s.running() && s.player().frame() > 0) {
             present(s);
         } else {
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            glViewport(0, 0, framebuffer_.width, framebuffer_.height);
-            glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
-            glClear(GL_COLOR_BUFFER_BIT);
+            clearDefaultFramebuffer(framebuffer_.width, framebuffer_.height);
             (void)window_.present();
         }
         events_.waitForInput(0.05);
@@ -82,37 +77,18 @@ public:
 
 private:
     static RealTimeClockOptions clockOptions(const SessionOptions& o) {
-        RealTimeClockOptions c;
-        c.fixedFps = o.fps;
-        c.startTime = o.startTime;
-        c.nominalFps = 1.0 / defaults::kRestartTimeDelta;
-        return c;
+        return {o.fps, o.startTime, 1.0 / defaults::kRestartTimeDelta};
     }
-    static Diagnostic notice(std::string message, Code code) {
-        Diagnostic d;
-        d.severity = Severity::Notice;
-        d.code = code;
-        d.message = std::move(message);
-        return d;
-    }
+    static Diagnostic notice(std::string message, Code code) { return {Severity::Notice, code, std::move(message)}; }
     void showTitle(Session& s, double now) {
         // The state changes at once; the counters a few times a second.
         const bool paused = clock_.paused();
         if (paused == titlePaused_ && now - titleShownAt_ < 0.25) return;
         titlePaused_ = paused;
         titleShownAt_ = now;
-        char text[160];
-        const std::optional<double> rate = clock_.measuredFrameRate();
-        const int shown = s.running() ? s.player().frame() - 1 : -1;
-        std::string title = s.name().empty() ? std::string("toyhost") : s.name();
-        if (shown >= 0) {
-            std::snprintf(text, sizeof text, " | %s fps | iFrame %d | iTime %.2f",
-                          rate ? std::to_string(static_cast<int>(*rate + 0.5)).c_str() : "--", shown, clock_.time());
-            title += text;
-        }
-        if (paused) title += " | paused (F6)";
-        if (!s.problems().empty()) title += " | " + formatDiagnostic(s.problems().front());
-        events_.setTitle(title);
+        events_.setTitle(formatWindowTitle({s.name(), clock_.measuredFrameRate(), s.running() ? s.player().frame() - 1 : -1,
+                                            clock_.time(), paused,
+                                            s.problems().empty() ? "" : formatDiagnostic(s.problems().front())}));
     }
 
     WindowContext& window_;
