@@ -16,7 +16,7 @@ enum class Category : std::uint8_t {
     Shader,       // a pass does not compile or link
     Output,       // writing results: files, encoders, stdout
     Gl,           // the GL driver, EGL or the window system
-    Interrupted,  // a stop was asked for (SIGINT / SIGTERM / Session::requestStop)
+    Interrupted,  // a stop was asked for (SIGINT / SIGTERM / SessionCore::requestStop)
     Watchdog,     // a time limit ended the run
     Internal,     // a bug in toyhost
     Report,       // not a problem: notices and warnings about a run that goes on

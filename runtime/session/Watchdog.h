@@ -26,7 +26,7 @@ enum class StopReason {
     None,
     Signal,   // SIGINT / SIGTERM: the run ends as interrupted (exit 128 + signal)
     Quit,     // the user closed the window (Esc, Ctrl+Q, the close button): outputs are completed
-    Request,  // Session::requestStop from a program: the run ends as interrupted
+    Request,  // SessionCore::requestStop from a program: the run ends as interrupted
 };
 
 struct StopState {

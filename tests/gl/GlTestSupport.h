@@ -1,6 +1,6 @@
 // Shared helpers for GL tests: one headless EGL context per test process, a shadertoy started as a
-// Session (what every command runs) and stepped frame by frame, running the CLI, and paths of the
-// repo and ../shared. (tests/gl/test_player.cpp tests the Player below the Session directly.)
+// SessionCore (what every command runs) and stepped frame by frame, running the CLI, and paths of the
+// repo and ../shared. (tests/gl/test_player.cpp tests the Player below the SessionCore directly.)
 #pragma once
 
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@
 #include "export/LoadShadertoy.h"
 #include "gl/HeadlessContext.h"
 #include "player/Player.h"
-#include "session/Session.h"
+#include "session/SessionCore.h"
 
 namespace toyhost::testing {
 
@@ -58,9 +58,9 @@ inline TestObserver& testObserver() {
     return observer;
 }
 
-// A shadertoy (folder, manifest or export) started as a Session on `context`, prepared as real runs
+// A shadertoy (folder, manifest or export) started as a SessionCore on `context`, prepared as real runs
 // are (images decoded, stand-ins for stock media), without output.
-inline std::unique_ptr<Session> loadSession(const std::shared_ptr<GlContext>& context, const std::filesystem::path& target,
+inline std::unique_ptr<SessionCore> loadSession(const std::shared_ptr<GlContext>& context, const std::filesystem::path& target,
                                             int width, int height, bool floatImage = false) {
     SessionOptions options;
     options.target = target;
@@ -70,14 +70,14 @@ inline std::unique_ptr<Session> loadSession(const std::shared_ptr<GlContext>& co
     auto plan = prepareSession(options);
     EXPECT_TRUE(plan.ok()) << plan.error().text();
     if (!plan.ok()) return nullptr;
-    auto session = Session::start(std::move(*plan), context, testObserver());
+    auto session = SessionCore::start(std::move(*plan), context, testObserver());
     EXPECT_TRUE(session.ok()) << session.error().text();
     if (!session.ok()) return nullptr;
     return std::move(*session);
 }
 
 // Renders the session's next frame at the fixed time step of that frame.
-inline void stepAt(Session& session, std::span<const InputEvent> events = {}, double fps = 60.0) {
+inline void stepAt(SessionCore& session, std::span<const InputEvent> events = {}, double fps = 60.0) {
     const Status rendered = session.renderFrame(fixedStep(session.player().frame(), fps), events);
     EXPECT_TRUE(rendered.ok()) << rendered.error().text();
 }

@@ -13,7 +13,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The Player itself, below the Session: planned as real runs plan it, with an allocator tests can
+// The Player itself, below the SessionCore: planned as real runs plan it, with an allocator tests can
 // make fail.
 std::unique_ptr<Player> loadPlayer(const std::shared_ptr<GlContext>& context, const fs::path& target, int width,
                                    int height, bool floatImage = false, TextureAllocator allocate = {}) {

@@ -16,7 +16,7 @@ protected:
         toy_ = loadSession(context_, sourceDir() / "shadertoys/uniform-probe", kW, kH, /*floatImage=*/true);
         ASSERT_TRUE(toy_);
     }
-    // Renders the Session's next frame and returns `pass`'s bottom row (pixel x at [4x .. 4x+3]).
+    // Renders the SessionCore's next frame and returns `pass`'s bottom row (pixel x at [4x .. 4x+3]).
     std::vector<float> render(PassId pass, std::span<const InputEvent> events = {}) {
         stepAt(*toy_, events);
         return read(pass);
@@ -37,7 +37,7 @@ protected:
         EXPECT_NEAR(row[4 * x + 2], b, tolerance) << what << " .z";
         EXPECT_NEAR(row[4 * x + 3], a, tolerance) << what << " .w";
     }
-    std::unique_ptr<Session> toy_;
+    std::unique_ptr<SessionCore> toy_;
 };
 
 TEST_F(Uniforms, ScalarAndVectorUniformsHaveShadertoyValues) {

@@ -12,7 +12,7 @@
 #include "gl/GlContext.h"
 #include "gl/HeadlessContext.h"
 #include "player/Player.h"
-#include "session/Session.h"
+#include "session/SessionCore.h"
 #include "timing/FrameClock.h"
 
 namespace toyhost::compat {
@@ -108,7 +108,7 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
         return result;
     }
     NoticeCollector notices(result.notices);
-    auto session = Session::start(std::move(*plan), *context, notices);
+    auto session = SessionCore::start(std::move(*plan), *context, notices);
     if (!session) {
         result.error = firstLines(session.error().text(), 4);
         return result;

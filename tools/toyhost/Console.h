@@ -1,7 +1,7 @@
 // Console: how the toyhost CLI talks to the user. Every diagnostic is printed the same way
 // ("toyhost: " + formatDiagnostic), notices, progress and summaries go to stderr (stdout may carry
 // raw frames or audio), and the exit code follows the error's category (docs/cli.md lists them).
-// runSession is the one way every command that renders runs: a Session behind a watchdog whose
+// runSession is the one way every command that renders runs: a SessionCore behind a watchdog whose
 // expiry ends the process (after removing unfinished files), printing what the session reports.
 #pragma once
 

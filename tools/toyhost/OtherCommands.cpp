@@ -142,7 +142,7 @@ int mediaCommand(const std::vector<std::string>& folders) {
 namespace toyhost::cli {
 
 // `toyhost sound`: the Sound pass rendered up front as the site does, written as audio, through a
-// Session like every run (signals, the watchdog, an all-or-nothing output file).
+// SessionCore like every run (signals, the watchdog, an all-or-nothing output file).
 int soundCommand(const SoundCommandOptions& o, const GlProcess& process) {
     SessionOptions options;
     options.target = o.target;

@@ -38,7 +38,7 @@ Result<SessionReport> runHeadless(const SessionOptions& options, SessionObserver
     headless.platform = prepared->options.eglPlatform;
     Result<std::shared_ptr<GlContext>> context = createHeadlessContext(headless);
     if (!context) return context.error();
-    Result<std::unique_ptr<Session>> session = Session::start(std::move(*prepared), *context, observer, watchdog);
+    Result<std::unique_ptr<SessionCore>> session = SessionCore::start(std::move(*prepared), *context, observer, watchdog);
     if (!session) return session.error();
     if (options.sound) return (*session)->writeSound();
     HeadlessDriver driver((*session)->plan());

@@ -1,4 +1,4 @@
-// The headless driver: what a run without a window brings to a Session (session/Session.h): a
+// The headless driver: what a run without a window brings to a SessionCore (session/SessionCore.h): a
 // fixed-step clock (frame n at iTime = start + n / fps, timing/FrameClock.h) and the input scripts
 // (--mouse, --mouse-script, --key-script) replayed by frame number, so every headless run of the
 // same options renders the same frames. runHeadless is `toyhost run --headless` (and `--watch`)
@@ -11,7 +11,7 @@
 
 #include "core/Result.h"
 #include "input/InputScriptPlayer.h"
-#include "session/Session.h"
+#include "session/SessionCore.h"
 #include "timing/FrameClock.h"
 
 namespace toyhost {

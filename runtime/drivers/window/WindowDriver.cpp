@@ -26,7 +26,7 @@ public:
         : window_(window), events_(events), o_(o), observer_(observer), clock_(clockOptions(o), monotonicNow()),
           wallStart_(o.wallClock.value_or(localWallClockNow())) {}
 
-    bool poll(Session& s) override {
+    bool poll(SessionCore& s) override {
         if (events_.quitRequested()) return false;
         const double now = monotonicNow();
         if (events_.takeControl(Control::Help)) observer_.notice(notice(controlsHelp(), Code::WindowHelp));
@@ -58,13 +58,13 @@ public:
         return time;
     }
 
-    void present(Session& s) override {
+    void present(SessionCore& s) override {
         events_.setCanvasSize(s.player().width(), s.player().height());
         presentToDefaultFramebuffer(s.player().output(PassId::Image), framebuffer_.width, framebuffer_.height);
         (void)window_.present();
     }
 
-    void idle(Session& s) override {
+    void idle(SessionCore& s) override {
         // Paused, or waiting for a shadertoy that compiles: keep the window's content and wait.
         if (s.running() && s.player().frame() > 0) {
             present(s);
@@ -80,7 +80,7 @@ private:
         return {o.fps, o.startTime, 1.0 / defaults::kRestartTimeDelta};
     }
     static Diagnostic notice(std::string message, Code code) { return {Severity::Notice, code, std::move(message)}; }
-    void showTitle(Session& s, double now) {
+    void showTitle(SessionCore& s, double now) {
         // The state changes at once; the counters a few times a second.
         const bool paused = clock_.paused();
         if (paused == titlePaused_ && now - titleShownAt_ < 0.25) return;
@@ -128,7 +128,7 @@ Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& 
             prepared->options.height = fb.height;
         }
         {
-            Result<std::unique_ptr<Session>> session = Session::start(std::move(*prepared), *window, observer, watchdog);
+            Result<std::unique_ptr<SessionCore>> session = SessionCore::start(std::move(*prepared), *window, observer, watchdog);
             if (session) {
                 (void)(*window)->setSwapInterval(1);
                 WindowDriver driver(**window, events, (*session)->plan().options, observer);
@@ -136,7 +136,7 @@ Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& 
             } else {
                 result = session.error();
             }
-        }  // the Session ends here, on the thread its context is current on
+        }  // the SessionCore ends here, on the thread its context is current on
         (*window)->releaseCurrent();
         done = true;
         events.wake();

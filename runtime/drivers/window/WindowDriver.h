@@ -1,4 +1,4 @@
-// The window driver: what a window brings to a Session (session/Session.h): a real-time clock
+// The window driver: what a window brings to a SessionCore (session/SessionCore.h): a real-time clock
 // (or a fixed step with --fps, timing/RealTimeClock.h), the mouse and keys from WindowEvents, a
 // few controls (F5 restart, F6 pause, F7 step, F12 screenshot, F1 help; input/WindowControls.h),
 // the canvas following the window's framebuffer (not while recording), the frame presented, and a
@@ -7,7 +7,7 @@
 #pragma once
 
 #include "core/Result.h"
-#include "session/Session.h"
+#include "session/SessionCore.h"
 #include "session/SessionObserver.h"
 #include "session/SessionOptions.h"
 #include "session/Watchdog.h"

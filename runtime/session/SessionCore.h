@@ -1,4 +1,4 @@
-// Session: one shadertoy running, with everything around it that every way of running it shares:
+// SessionCore: one shadertoy running, with everything around it that every way of running it shares:
 // the Player (the engine), the recorder (--out), checkpoints, the finite-value checks, hot reload
 // with its one rule, the watchdog (compiling, drawing, and writing the last frames), stopping
 // (signals, a closed window, an API call) and the report. A driver brings only what differs (a
@@ -36,20 +36,20 @@
 
 namespace toyhost {
 
-class Session;
+class SessionCore;
 class FrameRecorder;
 class BackgroundWriter;
 class FiniteCheck;
 class ShadertoyWatcher;
 class TemporaryFiles;
 
-// What differs between ways of running a session (session/Session.h's run()).
+// What differs between ways of running a session (session/SessionCore.h's run()).
 class SessionDriver {
 public:
     virtual ~SessionDriver() = default;
     // Before every frame: window events, controls (restart, pause, screenshot, resize). False ends
     // the run as complete (the window was closed).
-    virtual bool poll(Session& session) {
+    virtual bool poll(SessionCore& session) {
         (void)session;
         return true;
     }
@@ -58,10 +58,10 @@ public:
     // `events`; nothing when no frame is due now (a paused window). Called once per frame, in order.
     virtual std::optional<FrameTime> nextFrame(int frame, std::vector<InputEvent>& events) = 0;
     // After a frame was rendered.
-    virtual void present(Session& session) { (void)session; }
+    virtual void present(SessionCore& session) { (void)session; }
     // Nothing to render now (paused, or waiting for a shader that compiles): wait a little for
     // events, showing what should be shown.
-    virtual void idle(Session& session) { (void)session; }
+    virtual void idle(SessionCore& session) { (void)session; }
     // A new --watch round starts at frame 0: the clock and input scripts start over.
     virtual void restart() {}
 };
@@ -77,18 +77,18 @@ struct ReloadOutcome {
     std::vector<Diagnostic> problems;
 };
 
-class Session {
+class SessionCore {
 public:
     // Starts `plan` (prepareSession's) on `context`, made current here: compiles every pass,
     // creates the recorder, restores a --resume checkpoint. A shadertoy that does not compile is an
     // error, except in a window or with --watch, where the session starts without it and waits for
     // the fix (running() is false and problems() says why). `watchdog` may be null: no limits, and
     // stops come only from requestStop().
-    static Result<std::unique_ptr<Session>> start(SessionPlan plan, std::shared_ptr<GlContext> context,
+    static Result<std::unique_ptr<SessionCore>> start(SessionPlan plan, std::shared_ptr<GlContext> context,
                                                   SessionObserver& observer, Watchdog* watchdog = nullptr);
-    ~Session();
-    Session(const Session&) = delete;
-    Session& operator=(const Session&) = delete;
+    ~SessionCore();
+    SessionCore(const SessionCore&) = delete;
+    SessionCore& operator=(const SessionCore&) = delete;
 
     // The loop every driver shares: frames until the run's frame count, the driver's end or a
     // stop; hot reload in a window; --watch rounds. Ends with the report, or the error that ended
@@ -132,7 +132,7 @@ public:
     GlContext& context() { return *context_; }
 
 private:
-    Session(SessionPlan plan, std::shared_ptr<GlContext> context, SessionObserver& observer, Watchdog* watchdog);
+    SessionCore(SessionPlan plan, std::shared_ptr<GlContext> context, SessionObserver& observer, Watchdog* watchdog);
     Status createPlayer(PlayerPlan shadertoy);
     Status prepareSoundTrack();
     Result<SessionReport> runRound(SessionDriver& driver);

@@ -1,4 +1,4 @@
-#include "session/Session.h"
+#include "session/SessionCore.h"
 
 #include <algorithm>
 #include <csignal>
@@ -53,32 +53,32 @@ bool hasBuffers(const ManifestDesc& manifest) {
 
 }  // namespace
 
-Session::Session(SessionPlan plan, std::shared_ptr<GlContext> context, SessionObserver& observer, Watchdog* watchdog)
+SessionCore::SessionCore(SessionPlan plan, std::shared_ptr<GlContext> context, SessionObserver& observer, Watchdog* watchdog)
     : plan_(std::move(plan)), context_(std::move(context)), observer_(observer), watchdog_(watchdog) {}
 
-Session::~Session() {
+SessionCore::~SessionCore() {
     // GL objects go while their context is current; the recorder's encoders stop first.
     if (context_) (void)context_->makeCurrent();
     recorder_.reset();
     player_.reset();
 }
 
-RunActivity* Session::activity() { return watchdog_ ? &watchdog_->activity() : nullptr; }
+RunActivity* SessionCore::activity() { return watchdog_ ? &watchdog_->activity() : nullptr; }
 
-void Session::requestStop(StopReason reason) {
+void SessionCore::requestStop(StopReason reason) {
     if (watchdog_) watchdog_->requestStop(reason);
     else localStop_.store(static_cast<int>(reason));
 }
 
-bool Session::stopRequested() const {
+bool SessionCore::stopRequested() const {
     return watchdog_ ? watchdog_->stopRequested() : localStop_.load() != static_cast<int>(StopReason::None);
 }
 
-Result<std::unique_ptr<Session>> Session::start(SessionPlan plan, std::shared_ptr<GlContext> context,
+Result<std::unique_ptr<SessionCore>> SessionCore::start(SessionPlan plan, std::shared_ptr<GlContext> context,
                                                 SessionObserver& observer, Watchdog* watchdog) {
     if (!context) return Error("a session needs a GL context", Code::Internal);
     if (Status current = context->makeCurrent(); !current) return current.error();
-    std::unique_ptr<Session> s(new Session(std::move(plan), std::move(context), observer, watchdog));
+    std::unique_ptr<SessionCore> s(new SessionCore(std::move(plan), std::move(context), observer, watchdog));
     const SessionOptions& o = s->plan_.options;
     s->startedAt_ = o.startedAt.value_or(Clock::now());
     s->name_ = s->plan_.shadertoy.manifest.name;
@@ -110,7 +110,7 @@ Result<std::unique_ptr<Session>> Session::start(SessionPlan plan, std::shared_pt
     return s;
 }
 
-Status Session::createPlayer(PlayerPlan shadertoy) {
+Status SessionCore::createPlayer(PlayerPlan shadertoy) {
     const SessionOptions& o = plan_.options;
     PlayerDesc desc;
     // A window's canvas is its framebuffer, except while recording (one size for the recording).
@@ -129,7 +129,7 @@ Status Session::createPlayer(PlayerPlan shadertoy) {
     return okStatus();
 }
 
-Status Session::createRecorder() {
+Status SessionCore::createRecorder() {
     if (!plan_.output || recorder_ || !player_) return okStatus();
     Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(recorderSettings(plan_, activity()), *player_);
     if (!created) return created.error();
@@ -139,7 +139,7 @@ Status Session::createRecorder() {
 
 // The Sound pass of a shadertoy whose video output carries sound: rendered up front, from the
 // run's start time, and written as the video's sound track; other outputs carry no sound.
-Status Session::prepareSoundTrack() {
+Status SessionCore::prepareSoundTrack() {
     const SessionOptions& o = plan_.options;
     const ManifestDesc& manifest = plan_.shadertoy.manifest;
     if (!manifest.sound) return okStatus();
@@ -175,13 +175,13 @@ Status Session::prepareSoundTrack() {
     return okStatus();
 }
 
-Result<std::vector<float>> Session::renderSound(double seconds) {
+Result<std::vector<float>> SessionCore::renderSound(double seconds) {
     SoundRenderDesc desc;
     desc.seconds = seconds;
     return toyhost::renderSound(*context_, plan_.shadertoy, desc);
 }
 
-Result<SessionReport> Session::writeSound() {
+Result<SessionReport> SessionCore::writeSound() {
     const SoundRequest& request = *plan_.options.sound;
     const double seconds = request.seconds > 0 ? request.seconds : defaults::kSoundSeconds;
     roundStartedAt_ = Clock::now();
@@ -210,7 +210,7 @@ Result<SessionReport> Session::writeSound() {
     return report_;
 }
 
-Status Session::beginRound() {
+Status SessionCore::beginRound() {
     frameNumber_ = plan_.resume && plan_.resume->state.frame > 0 ? plan_.resume->state.frame : 0;
     framesRendered_ = 0;
     captured_.clear();
@@ -226,7 +226,7 @@ Status Session::beginRound() {
     return createRecorder();  // each round writes its own files
 }
 
-Status Session::renderFrame(const FrameTime& time, std::span<const InputEvent> events) {
+Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEvent> events) {
     if (!player_) return Error("no shadertoy runs yet (it did not compile)", Code::Internal);
     const SessionOptions& o = plan_.options;
     const int frame = frameNumber_;
@@ -279,7 +279,7 @@ Status Session::renderFrame(const FrameTime& time, std::span<const InputEvent> e
 }
 
 // Every buffer once: after every frame with --check-finite, else after the last one.
-void Session::checkBuffers(int frame) {
+void SessionCore::checkBuffers(int frame) {
     const SessionOptions& o = plan_.options;
     for (const PassDesc& pass : player_->manifest().passes) {
         if (!isBuffer(pass.id) || finite_->reported(pass.id)) continue;
@@ -291,7 +291,7 @@ void Session::checkBuffers(int frame) {
     }
 }
 
-Status Session::saveCheckpoint() {
+Status SessionCore::saveCheckpoint() {
     const SessionOptions& o = plan_.options;
     if (!o.checkpoint || !player_) return okStatus();
     const double wallClock = *o.wallClock;
@@ -313,7 +313,7 @@ Status Session::saveCheckpoint() {
     return okStatus();
 }
 
-void Session::reportWrites() {
+void SessionCore::reportWrites() {
     for (Result<fs::path>& written : writer_->takeFinished()) {
         if (!written) {
             for (const Diagnostic& d : written.error().diagnostics) observer_.notice(d);
@@ -323,7 +323,7 @@ void Session::reportWrites() {
     }
 }
 
-Status Session::screenshot() {
+Status SessionCore::screenshot() {
     if (!player_ || framesRendered_ == 0) return Error("nothing is shown yet: no screenshot", Code::WindowScreenshot);
     const SessionOptions& o = plan_.options;
     fs::path folder = ".";
@@ -353,16 +353,16 @@ Status Session::screenshot() {
     return okStatus();
 }
 
-void Session::restart() {
+void SessionCore::restart() {
     if (player_) player_->restart();
 }
 
-Status Session::resize(int width, int height) {
+Status SessionCore::resize(int width, int height) {
     if (!player_) return okStatus();
     return player_->resize(width, height);
 }
 
-ReloadOutcome Session::applyChange(std::vector<fs::path> changed, Result<PlayerPlan> plan) {
+ReloadOutcome SessionCore::applyChange(std::vector<fs::path> changed, Result<PlayerPlan> plan) {
     ReloadOutcome outcome;
     outcome.changed = std::move(changed);
     if (!plan) {
@@ -405,14 +405,14 @@ ReloadOutcome Session::applyChange(std::vector<fs::path> changed, Result<PlayerP
     return outcome;
 }
 
-std::optional<ReloadOutcome> Session::reloadIfChanged() {
+std::optional<ReloadOutcome> SessionCore::reloadIfChanged() {
     if (!watcher_) return std::nullopt;
     std::optional<ShadertoyChange> change = watcher_->take();
     if (!change) return std::nullopt;
     return applyChange(std::move(change->files), std::move(change->plan));
 }
 
-Error Session::interrupted() {
+Error SessionCore::interrupted() {
     const int frame = frameNumber_;
     std::string message = frame < plan_.end || plan_.end == 0 ? "interrupted after " + plural(framesRendered_, "frame")
                                                               : "interrupted while the last captured frames were written";
@@ -431,7 +431,7 @@ Error Session::interrupted() {
     return Error(message, Code::Interrupted);
 }
 
-Result<SessionReport> Session::finishRound() {
+Result<SessionReport> SessionCore::finishRound() {
     const SessionOptions& o = plan_.options;
     report_.name = name_;
     report_.frames = framesRendered_;
@@ -488,7 +488,7 @@ Result<SessionReport> Session::finishRound() {
     return report_;
 }
 
-Result<SessionReport> Session::runRound(SessionDriver& driver) {
+Result<SessionReport> SessionCore::runRound(SessionDriver& driver) {
     if (Status begun = beginRound(); !begun) return begun.error();
     while (true) {
         if (stopRequested()) {
@@ -519,7 +519,7 @@ Result<SessionReport> Session::runRound(SessionDriver& driver) {
     return finishRound();
 }
 
-Result<SessionReport> Session::run(SessionDriver& driver) {
+Result<SessionReport> SessionCore::run(SessionDriver& driver) {
     // A window waits (in its loop) for a shadertoy that does not compile yet; --watch (below) too.
     Result<SessionReport> round = player_ || live_ ? runRound(driver) : Result<SessionReport>(Error(problems_));
     if (!plan_.options.watch) {
