@@ -178,7 +178,8 @@ Status SessionCore::prepareSoundTrack() {
 Result<std::vector<float>> SessionCore::renderSound(double seconds) {
     SoundRenderDesc desc;
     desc.seconds = seconds;
-    return toyhost::renderSound(*context_, plan_.shadertoy, desc);
+    // Once the Player runs, the shadertoy's plan is its.
+    return toyhost::renderSound(*context_, player_ ? player_->plan() : plan_.shadertoy, desc);
 }
 
 Result<SessionReport> SessionCore::writeSound() {

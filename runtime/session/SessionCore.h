@@ -107,6 +107,9 @@ public:
     Status renderFrame(const FrameTime& time, std::span<const InputEvent> events);
     // Applies what the file watcher loaded since the last call, if anything (window mode).
     std::optional<ReloadOutcome> reloadIfChanged();
+    // Applies `plan` (the shadertoy loaded and planned again, or why it could not be) with the
+    // reload rule above.
+    ReloadOutcome reload(Result<PlayerPlan> plan) { return applyChange({}, std::move(plan)); }
     // iFrame back to 0 and every buffer cleared (the site's restart); the driver resets its clock.
     void restart();
     // New canvas size (window resize); buffers keep their content bottom-left.

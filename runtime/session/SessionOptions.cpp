@@ -112,8 +112,9 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
         return usage("--checkpoint, --resume, --frame-range and --shard are for headless runs");
     if (options.watch && (options.checkpoint || options.resume || options.frameRange || options.shard))
         return usage("--checkpoint, --resume, --frame-range and --shard cannot be combined with --watch");
-    Result<ManifestDesc> manifest = loadShadertoy(options.target);
+    Result<ManifestDesc> manifest = options.shadertoy ? Result<ManifestDesc>(*options.shadertoy) : loadShadertoy(options.target);
     if (!manifest) return manifest.error();
+    if (options.shadertoy && options.watch) return usage("--watch needs the shadertoy's files, not a loaded shadertoy");
     if (options.sound && !manifest->sound)
         return fileError(manifest->manifestPath.string(), "the shadertoy has no Sound pass (mainSound)", Code::SoundMissing);
     std::optional<Checkpoint> resume;

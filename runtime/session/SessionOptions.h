@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <memory>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -34,6 +35,9 @@ struct SoundRequest {
 
 struct SessionOptions {
     std::filesystem::path target;          // folder with manifest.json, the manifest file, or an export
+    // A shadertoy already loaded (the library API's Shadertoy, an export given as text): used instead
+    // of loading `target`, which then only names it.
+    std::shared_ptr<const ManifestDesc> shadertoy;
     // When the command started, for the report's start-up time; default: when prepareSession ran.
     std::optional<std::chrono::steady_clock::time_point> startedAt;
     std::optional<int> width;              // default defaults::kCanvasWidth x kCanvasHeight

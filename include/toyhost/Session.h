@@ -1,0 +1,130 @@
+// toyhost/Session.h (public API, stable): a shadertoy running, as a program that embeds toyhost
+// drives it: create it headless (toyhost's own EGL context) or on the caller's current OpenGL ES 3
+// context, step it with a time and input events, read a pass back into memory, or draw its Image
+// into the caller's framebuffer. It is toyhost's own session (the one every toyhost command runs:
+// same pass order, uniforms, ping-pong, reload rule), behind a small header.
+//
+// Threads: a session is used from the thread that created it, with its GL context current there
+// (a headless session makes its own context current at creation and at every call). Mesa's GLSL
+// compiler recurses deeply on large shaders: create sessions on a thread with a large stack
+// (toyhost uses 1 GiB: runOnGlThread() below), or small shaders only.
+//
+// Errors are returned, never printed, thrown or turned into exit(); notices (stand-ins used,
+// preprocessing) are kept for notices().
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <toyhost/Input.h>
+#include <toyhost/Result.h>
+#include <toyhost/Shadertoy.h>
+
+namespace toyhost {
+
+// How a session runs; zero or empty means the default (toyhost's own defaults).
+struct SessionSettings {
+    int width = 0;   // canvas (iResolution); 0: 800x450
+    int height = 0;
+    double fps = 0;  // step(): frame n at iTime = startTime + n / fps, iTimeDelta = 1 / fps; 0: 60
+    double startTime = 0;
+    // iDate at time 0 as "YYYY-MM-DDTHH:MM:SS" (local time); empty: now. Fixed dates make runs
+    // repeatable.
+    std::string date;
+    // Real files for Shadertoy's stock media (by hash or name), else deterministic stand-ins.
+    std::vector<std::filesystem::path> mediaFolders;
+    std::vector<std::pair<std::string, std::filesystem::path>> mediaFiles;  // stock id or name -> file
+    // Render Image into RGBA32F instead of RGBA8 (what the screen shows): read(..., float) then
+    // gives Image's unclamped floats.
+    bool floatImage = false;
+    // Limits in seconds (0: none): a pass drawing one frame, or compiling, for longer makes the
+    // call that was running return an error once it returns (GL cannot be interrupted).
+    double frameTimeout = 0;
+    double compileTimeout = 0;
+};
+
+enum class RowOrder { TopFirst, BottomFirst };
+
+// What a hot reload did (Session::reload).
+struct Reloaded {
+    bool applied = false;           // new code or structure runs now
+    bool structureChanged = false;  // passes, bindings or image contents changed: buffers carried over
+    std::vector<std::string> recompiled;
+    std::vector<Diagnostic> problems;  // empty: everything the shadertoy says runs now
+};
+
+class Session {
+public:
+    // With toyhost's own headless EGL context (no display needed).
+    static Result<std::unique_ptr<Session>> createHeadless(const Shadertoy& shadertoy, const SessionSettings& settings = {});
+    // On the caller's OpenGL ES 3 context, current on this thread. Every call that renders saves
+    // the GL state toyhost touches (framebuffer bindings, program, viewport, active texture and
+    // the textures and samplers of units 0-3, vertex array, blending, depth test, scissor test,
+    // pixel-store alignments and buffer bindings) and restores it before returning.
+    static Result<std::unique_ptr<Session>> createOnCurrentContext(const Shadertoy& shadertoy,
+                                                                   const SessionSettings& settings = {});
+    ~Session();
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
+
+    // Renders the next frame at the fixed step (settings.fps), after applying `events` in order.
+    Status step(std::span<const InputEvent> events = {});
+    // Renders the next frame at iTime `time`, with iTimeDelta `timeDelta` and iFrameRate
+    // `frameRate` (a real-time loop measures these itself).
+    Status stepAt(double time, double timeDelta, double frameRate, std::span<const InputEvent> events = {});
+    int frame() const;  // iFrame of the next frame
+    int width() const;
+    int height() const;
+
+    // A pass's latest output ("Image", "Buffer A" .. "Buffer D") as width * height * 4 values,
+    // RGBA, rows in `order`: 8-bit as the screen shows it (a buffer's floats clamped and rounded),
+    // or floats (Image's are the 8-bit levels / 255 unless floatImage). `out` must hold exactly
+    // width() * height() * 4 values.
+    Status read(std::string_view pass, std::span<std::uint8_t> out, RowOrder order = RowOrder::TopFirst) const;
+    Status read(std::string_view pass, std::span<float> out, RowOrder order = RowOrder::TopFirst) const;
+
+    // The Image output as a texture of the session's GL context (for sampling in the caller's own
+    // shaders: bottom row first, as GL textures are), valid until the next step() or resize().
+    unsigned int imageTexture() const;
+    // Draws Image into `framebuffer` (0: the default one) at x, y, width, height (bottom-left
+    // origin; scaled with linear filtering when the size differs).
+    Status drawImage(unsigned int framebuffer, int x, int y, int width, int height) const;
+
+    // iFrame back to 0 and every buffer cleared (the site's restart).
+    void restart();
+    // A new canvas size; buffers keep their content bottom-left, iFrame goes on.
+    Status resize(int width, int height);
+    // Switches to `next` (the same shadertoy's files loaded again): changed code is recompiled (a
+    // pass that fails keeps its last good program), a changed structure keeps the buffers that
+    // still exist; iFrame and time go on.
+    Result<Reloaded> reload(const Shadertoy& next);
+
+    // The Sound pass (mainSound) as the site renders it: interleaved stereo samples at 44100 Hz,
+    // `seconds` long (0: the site's 180 s).
+    Result<std::vector<float>> renderSound(double seconds = 0);
+
+    // Notices so far (stand-ins used, passes preprocessed as browsers do), oldest first.
+    const std::vector<Diagnostic>& notices() const;
+    // A description of the GL backend ("EGL surfaceless; OpenGL ES 3.2 Mesa ...").
+    std::string backend() const;
+
+    class Impl;
+
+private:
+    explicit Session(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+// Runs `job` on a thread with a stack large enough for Mesa's GLSL compiler and waits for it (a
+// session created there must also be used and destroyed there).
+void runOnGlThread(const std::function<void()>& job);
+
+}  // namespace toyhost
