@@ -89,7 +89,9 @@ enum class Category : std::uint8_t {
     X(ManifestUnused,         "manifest.unused",           Report) \
     X(ManifestValue,          "manifest.value",            Input) \
     X(MediaNotFound,          "media.not-found",           Input) \
+    X(MediaSizeMismatch,      "media.size-mismatch",       Report) \
     X(MediaStandIn,           "media.stand-in",            Report) \
+    X(MediaSupplied,          "media.supplied",            Report) \
     X(MediaUnknownStandIn,    "media.unknown-stand-in",    Report) \
     X(Process,                "process",                   Output) \
     X(ScriptEvent,            "script.event",              Input) \

@@ -77,7 +77,7 @@ void Player::step(const FrameTime& time, std::span<const InputEvent> events, boo
     }
     FrameUniforms uniforms;
     uniforms.frame = sequence_.frame();
-    uniforms.time = static_cast<float>(time.time);
+    uniforms.time = time.time;
     uniforms.timeDelta = static_cast<float>(time.timeDelta);
     uniforms.frameRate = static_cast<float>(time.frameRate);
     uniforms.mouse = mouse_.uniform();

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "graph/FrameSequence.h"
 #include "graph/PassGraph.h"
 

@@ -17,7 +17,8 @@
 #include "export/LoadShadertoy.h"
 #include "gl/HeadlessContext.h"
 #include "player/PlayerDesc.h"
-#include "session/SoundRender.h"
+#include "capture/SoundFile.h"
+#include "render/SoundRenderer.h"
 
 namespace toyhost::cli {
 
@@ -145,6 +146,8 @@ namespace toyhost::cli {
 int soundCommand(const SoundCommandOptions& o) {
     if (!(o.seconds > 0) || o.seconds > defaults::kMaxSoundSeconds)
         return usage("--seconds must be more than 0 and at most " + std::to_string(int(defaults::kMaxSoundSeconds)));
+    // The output's format (by its extension) is checked before anything is rendered.
+    if (Status out = checkSoundOutput(o.out); !out) return fail(out.error());
     Result<ManifestDesc> manifest = loadShadertoy(o.target);
     if (!manifest) return fail(manifest.error());
     if (!manifest->sound)
@@ -160,11 +163,12 @@ int soundCommand(const SoundCommandOptions& o) {
     if (!context) return fail(context.error());
     SoundRenderDesc desc;
     desc.seconds = o.seconds;
-    Result<std::vector<float>> stereo = renderSound(**context, *plan, desc);
+    Result<std::vector<float>> stereo = renderSound(**context, plan->manifest, plan->images, desc);
     if (!stereo) return fail(stereo.error());
     if (Status written = writeSoundFile(o.out, *stereo); !written) return fail(written.error());
     // Rendered at 44100 Hz; an encoder may resample (Opus is 48 kHz).
-    std::cerr << "toyhost: wrote " << o.out << " (" << o.seconds << " s of stereo rendered at "
+    std::cerr << "toyhost: wrote " << (o.out == "-" ? std::string("WAV to stdout") : o.out) << " ("
+              << o.seconds << " s of stereo rendered at "
               << static_cast<int>(defaults::kSampleRate) << " Hz)\n";
     return kExitOk;
 }

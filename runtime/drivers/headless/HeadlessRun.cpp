@@ -6,7 +6,7 @@
 #include "capture/WavFile.h"
 #include "core/Defaults.h"
 #include "core/TemporaryFiles.h"
-#include "session/SoundRender.h"
+#include "render/SoundRenderer.h"
 
 #include <chrono>
 #include <memory>
@@ -219,7 +219,9 @@ Result<RunReport> runHeadless(const RunOptions& options, RunObserver& observer) 
         if (video && *o.frames > 0 && end > o.startTime) {
             SoundRenderDesc sound;
             sound.seconds = end;
-            Result<std::vector<float>> stereo = renderSound(**context, run.plan, sound);
+            sound.activity = observer.activity();
+            sound.stopRequested = [&] { return observer.stopRequested(); };
+            Result<std::vector<float>> stereo = renderSound(**context, run.plan.manifest, run.plan.images, sound);
             if (!stereo) return stereo.error();
             const std::size_t skip =
                 std::min(stereo->size(), 2 * static_cast<std::size_t>(std::llround(o.startTime * defaults::kSampleRate)));
