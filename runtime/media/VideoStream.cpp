@@ -74,6 +74,12 @@ std::uint64_t VideoStream::waits() const {
     return waits_;
 }
 
+void VideoStream::waitUntilQueued() const {
+    if (live_) return;
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [&] { return stop_ || error_.has_value() || count_ == ring_.size(); });
+}
+
 std::int64_t VideoStream::forward(std::int64_t from, std::int64_t to) const {
     const std::int64_t count = std::max<std::int64_t>(info_.frameCount, 1);
     return ((to - from) % count + count) % count;

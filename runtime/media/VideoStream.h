@@ -62,6 +62,11 @@ public:
     // Changes whenever current() shows another frame.
     std::uint64_t currentVersion() const { return shownVersion_; }
 
+    // Blocks until the decoder has filled the queue ahead of the frame shown (or failed, or has
+    // nothing to do: a camera). For a driver that wants the first frames ready before it starts
+    // its clock, and for tests.
+    void waitUntilQueued() const;
+
     // For tests and measurements: how many times frame() had to wait for the decoder, and how
     // many ffmpeg processes were started.
     std::uint64_t waits() const;
@@ -88,7 +93,7 @@ private:
     std::size_t frameBytes_ = 0;
 
     mutable std::mutex mutex_;
-    std::condition_variable changed_;  // the queue, a request or an error changed
+    mutable std::condition_variable changed_;  // the queue, a request or an error changed
     std::vector<Entry> ring_;          // capacity fixed at open
     std::size_t head_ = 0;
     std::size_t count_ = 0;
