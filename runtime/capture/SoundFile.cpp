@@ -72,6 +72,13 @@ Status writeWavStream(const fs::path& path, std::span<const float> stereo) {
     PipeSignalBlock noSigpipe;  // a reader that went away is an error, not the end of the process
     const std::string name = toStdout ? "stdout" : path.string();
     Status written = writeAll(toStdout ? STDOUT_FILENO : opened.get(), std::as_bytes(std::span(bytes)), name);
+    if (!written && !toStdout) {
+        // In the one form of file problems: "FILE: error: write failed: ...".
+        Diagnostic problem = written.error().first();
+        problem.file = name;
+        if (problem.message.rfind(name + ": ", 0) == 0) problem.message.erase(0, name.size() + 2);
+        return Error(std::move(problem));
+    }
     if (!written) return written;
     if (!toStdout && !opened.reset())
         return fileError(path.string(), std::string("write failed: ") + std::strerror(errno),
