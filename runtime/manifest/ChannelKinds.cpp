@@ -19,33 +19,33 @@ constexpr SamplerDesc kLinearClamp{Filter::Linear, Wrap::Clamp, false};
 // The Sound pass is rendered before any frame exists, so it reads only what is there before:
 // pictures, cubemaps and volumes.
 //  kind                     name            key          value          mediaKind  export types
-//  sampler type, default sampler,                            vflip  timed  sound  source
+//      sampler type, default sampler,                  fixed  vflip  timed  sound  source
 constexpr std::array<ChannelKindInfo, 12> kKinds{{
     {ChannelKind::None,       "none",         "",         V::None,       "",        "",
-     k2D,  kLinearClamp,                                       false, false, true,  S::Unbound},
+         k2D,   kLinearClamp,                           false, false, false, true,  S::Unbound},
     {ChannelKind::Buffer,     "buffer",       "buffer",   V::BufferName, "",        "buffer",
-     k2D,  kLinearClamp,                                       false, false, false, S::Buffer},
+         k2D,   kLinearClamp,                           false, false, false, false, S::Buffer},
     {ChannelKind::ImageFile,  "texture file", "texture",  V::File,       "",        "",
-     k2D,  {Filter::Mipmap, Wrap::Repeat, true},               true,  false, true,  S::Picture},
+         k2D,   {Filter::Mipmap, Wrap::Repeat, true},   false, true,  false, true,  S::Picture},
     {ChannelKind::StockMedia, "texture",      "media",    V::StockId,    "texture", "texture",
-     k2D,  {Filter::Mipmap, Wrap::Repeat, true},               true,  false, true,  S::Picture},
+         k2D,   {Filter::Mipmap, Wrap::Repeat, true},   false, true,  false, true,  S::Picture},
     {ChannelKind::Keyboard,   "keyboard",     "keyboard", V::True,       "",        "keyboard",
-     k2D,  {Filter::Nearest, Wrap::Clamp, false},              false, false, false, S::Keyboard},
+         k2D,   {Filter::Nearest, Wrap::Clamp, false},  true,  false, false, false, S::Keyboard},
     {ChannelKind::CubeBuffer, "Cube A",       "buffer",   V::BufferName, "",        "",
-     kCube, kLinearClamp,                                      false, false, false, S::CubeBuffer},
+         kCube, kLinearClamp,                           false, false, false, false, S::CubeBuffer},
     {ChannelKind::Cubemap,    "cubemap",      "cubemap",  V::File,       "cubemap", "cubemap",
-     kCube, {Filter::Mipmap, Wrap::Clamp, false},              true,  false, true,  S::Cubemap},
+         kCube, {Filter::Mipmap, Wrap::Clamp, false},   false, true,  false, true,  S::Cubemap},
     {ChannelKind::Volume,     "volume",       "volume",   V::File,       "volume",  "volume",
-     k3D,  {Filter::Mipmap, Wrap::Repeat, false},              false, false, true,  S::Volume},
+         k3D,   {Filter::Mipmap, Wrap::Repeat, false},  false, false, false, true,  S::Volume},
     {ChannelKind::Video,      "video",        "video",    V::File,       "video",   "video",
-     k2D,  {Filter::Linear, Wrap::Clamp, true},                true,  true,  false, S::Video},
+         k2D,   {Filter::Linear, Wrap::Clamp, true},    false, true,  true,  false, S::Video},
     // A SoundCloud stream ("musicstream") plays as music.
     {ChannelKind::Music,      "music",        "music",    V::File,       "music",   "music musicstream",
-     k2D,  {Filter::Linear, Wrap::Clamp, true},                false, true,  false, S::Audio},
+         k2D,   {Filter::Linear, Wrap::Clamp, true},    false, false, true,  false, S::Audio},
     {ChannelKind::Webcam,     "webcam",       "webcam",   V::True,       "",        "webcam",
-     k2D,  {Filter::Linear, Wrap::Clamp, true},                true,  true,  false, S::Video},
+         k2D,   {Filter::Linear, Wrap::Clamp, true},    false, true,  true,  false, S::Video},
     {ChannelKind::Mic,        "mic",          "mic",      V::True,       "",        "mic",
-     k2D,  {Filter::Linear, Wrap::Clamp, true},                false, true,  false, S::Audio},
+         k2D,   {Filter::Linear, Wrap::Clamp, true},    false, false, true,  false, S::Audio},
 }};
 
 constexpr bool inKindOrder() {

@@ -54,6 +54,7 @@ struct ChannelKindInfo {
     const char* exportTypes;   // the site's ctype values that mean this kind, space separated
     SamplerType samplerType;
     SamplerDesc sampler;       // the site's defaults when such an input is added
+    bool fixedSampler;         // its filter and wrap cannot be set (the keyboard: nearest/clamp)
     bool vflip;                // `vflip` applies (uploaded flipped or not)
     bool timed;                // changes with time; iChannelTime is its playback time
     bool soundReads;           // the Sound pass (rendered before any frame) can read it

@@ -36,10 +36,7 @@ std::vector<std::string> channelSources(const ManifestDesc& manifest) {
     std::vector<std::string> keys;
     for (const PassDesc& pass : manifest.passes)
         for (const ChannelDesc& channel : pass.channels)
-            keys.push_back(channel.kind == ChannelKind::None || channel.kind == ChannelKind::Buffer ||
-                                   channel.kind == ChannelKind::CubeBuffer || channel.kind == ChannelKind::Keyboard
-                               ? std::string()
-                               : channelImageKey(channel));
+            keys.push_back(isMediaSource(channelSource(channel.kind)) ? channelImageKey(channel) : std::string());
     return keys;
 }
 

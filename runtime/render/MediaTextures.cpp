@@ -72,8 +72,7 @@ void siteSilentAudioTexels(double time, int bins, std::array<std::uint8_t, 1024>
 
 TimedTexture::TimedTexture(const TimedMedia& media, const SamplerDesc& sampler)
     : media_(media), sampler_(sampler), texture_(makeTexture()) {
-    const bool audio = media.kind == ChannelKind::Music || media.kind == ChannelKind::Mic;
-    if (audio) {
+    if (channelSource(media.kind) == ChannelSource::Audio) {
         width_ = kAudioWidth;
         height_ = kAudioHeight;
         analyser_ = std::make_unique<AudioAnalyser>();
@@ -127,9 +126,8 @@ Status TimedTexture::update(double time, const InputWait& wait) {
     waited_ = false;
     if (lastTime_ && *lastTime_ == time) return okStatus();
     lastTime_ = time;
-    switch (media_.kind) {
-        case ChannelKind::Video:
-        case ChannelKind::Webcam: {
+    switch (channelSource(media_.kind)) {
+        case ChannelSource::Video: {
             VideoStream* video = media_.video.get();
             if (!video) {
                 videoStandInFrame(time, standInFrame_);
@@ -149,8 +147,7 @@ Status TimedTexture::update(double time, const InputWait& wait) {
             }
             return okStatus();
         }
-        case ChannelKind::Music:
-        case ChannelKind::Mic: {
+        case ChannelSource::Audio: {
             if (media_.live) {
                 // A live microphone: the newest samples, whatever the frame's time; the site
                 // leaves a mic's iChannelTime at 0.
