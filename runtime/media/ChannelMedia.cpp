@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <functional>
+#include <iterator>
+#include <mutex>
 
 #include "image/ImageFile.h"
 #include "manifest/StockMedia.h"
@@ -112,6 +114,71 @@ private:
     std::vector<Diagnostic>& problems_;
 };
 
+// Sources that plans still in use have opened, shared by the plans made after them (the plan of a
+// hot reload is made while the running one holds its sources): a camera or a microphone device can
+// be opened only once, and decoding the same file again for every reload is wasted work. A file is
+// the same while its path, size and modification time are. Entries go when the last plan using
+// them does. Thread-safe (plans are made on a watcher's thread).
+class OpenSources {
+public:
+    template <class T, class Open>
+    Result<std::shared_ptr<T>> get(const std::string& key, Open open) {
+        {
+            std::lock_guard lock(mutex_);
+            for (auto it = entries_.begin(); it != entries_.end();)
+                it = it->second.expired() ? entries_.erase(it) : std::next(it);
+            if (auto it = entries_.find(key); it != entries_.end())
+                if (std::shared_ptr<void> alive = it->second.lock()) return std::static_pointer_cast<T>(alive);
+        }
+        Result<std::shared_ptr<T>> opened = open();  // may take seconds: not under the lock
+        if (!opened) return opened;
+        std::lock_guard lock(mutex_);
+        entries_[key] = *opened;
+        return opened;
+    }
+
+private:
+    std::mutex mutex_;
+    std::map<std::string, std::weak_ptr<void>> entries_;
+};
+
+OpenSources& openSources() {
+    static OpenSources sources;
+    return sources;
+}
+
+// "KIND:PATH:SIZE:MTIME" for a file (so an edited file is opened again), "KIND:DEVICE" for a device.
+std::string sourceKey(const std::string& kind, const std::string& source, bool file) {
+    if (!file) return kind + ":" + source;
+    std::error_code ec;
+    const auto size = fs::file_size(source, ec);
+    const auto time = fs::last_write_time(source, ec).time_since_epoch().count();
+    return kind + ":" + fs::absolute(source, ec).string() + ":" + std::to_string(size) + ":" + std::to_string(time);
+}
+
+Result<std::shared_ptr<VideoStream>> openVideo(const std::string& source) {
+    const bool device = source.rfind("/dev/", 0) == 0;
+    return openSources().get<VideoStream>(sourceKey(device ? "camera" : "video", source, !device), [&] {
+        return device ? VideoStream::openDevice(source) : VideoStream::openFile(source);
+    });
+}
+
+Result<std::shared_ptr<AudioClip>> openAudioFile(const fs::path& file) {
+    return openSources().get<AudioClip>(sourceKey("audio", file.string(), true), [&]() -> Result<std::shared_ptr<AudioClip>> {
+        Result<AudioClip> clip = decodeAudioFile(file);
+        if (!clip) return clip.error();
+        return std::make_shared<AudioClip>(std::move(clip).value());
+    });
+}
+
+Result<std::shared_ptr<LiveAudio>> openLiveAudio(const std::string& spec) {
+    return openSources().get<LiveAudio>(sourceKey("live-audio", spec, false), [&]() -> Result<std::shared_ptr<LiveAudio>> {
+        Result<std::unique_ptr<LiveAudio>> live = LiveAudio::open(spec);
+        if (!live) return live.error();
+        return std::shared_ptr<LiveAudio>(std::move(*live));
+    });
+}
+
 // Each loader returns what the channel shows, or nothing after reporting why.
 
 std::shared_ptr<const Image8> loadPicture(const ChannelLoad& at, Loader& report) {
@@ -199,10 +266,10 @@ std::optional<TimedMedia> loadVideo(const ChannelLoad& at, Loader& report) {
                            "webcam");
             return timed;
         }
-        opened = source.rfind("/dev/", 0) == 0 ? VideoStream::openDevice(source) : VideoStream::openFile(source);
+        opened = openVideo(source);
     } else if (std::optional<fs::path> file = at.stockFile()) {
         source = file->string();
-        opened = VideoStream::openFile(*file);
+        opened = openVideo(file->string());
         if (opened) report.supplied(at, "stock video", *file, "", "");
     } else {
         report.stockStandIn(at, at.stockInput ? "stock video" : "video", "a moving stand-in pattern");
@@ -224,7 +291,7 @@ std::optional<TimedMedia> loadAudio(const ChannelLoad& at, Loader& report) {
     if (at.desc.kind == ChannelKind::Mic) {
         const std::string& mic = at.options.mic;
         if (LiveAudio::isLiveSource(mic)) {
-            Result<std::unique_ptr<LiveAudio>> live = LiveAudio::open(mic);
+            Result<std::shared_ptr<LiveAudio>> live = openLiveAudio(mic);
             if (!live) {
                 report.fail(at, "", live.error());
                 return std::nullopt;
@@ -251,13 +318,13 @@ std::optional<TimedMedia> loadAudio(const ChannelLoad& at, Loader& report) {
                                 "the synthetic spectrum the site shows when audio is unavailable");
         return timed;
     }
-    Result<AudioClip> clip = decodeAudioFile(*file);
+    Result<std::shared_ptr<AudioClip>> clip = openAudioFile(*file);
     if (!clip) {
         report.fail(at, file->string(), clip.error());
         return std::nullopt;
     }
     report.supplied(at, "stock music", *file, "", "");
-    timed.clip = std::make_shared<const AudioClip>(std::move(clip).value());
+    timed.clip = std::move(*clip);
     return timed;
 }
 

@@ -36,7 +36,9 @@ struct MediaOptions {
 };
 
 // The opened source of a video, webcam, music or mic channel; none of them for a stand-in. Shared:
-// channels (and renderers) showing the same source read one decoder.
+// channels (and renderers) showing the same source read one decoder, and a plan made while another
+// plan holds the source (a hot reload's) gets the same one: a camera or microphone is opened once,
+// and a file is decoded again only when it changed (path, size, modification time).
 struct TimedMedia {
     ChannelKind kind = ChannelKind::Video;
     std::shared_ptr<VideoStream> video;     // a video file or a camera

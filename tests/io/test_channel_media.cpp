@@ -172,3 +172,42 @@ TEST(ChannelMedia, ASuppliedVolumeOfAnotherSizeIsAWarning) {
               std::string::npos)
         << mismatches[0];
 }
+
+TEST(ChannelMedia, APlanMadeWhileAnotherHoldsASourceSharesItUntilTheFileChanges) {
+    if (!haveFfmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
+    TestFolder folder;
+    ASSERT_EQ(std::system(("ffmpeg -v error -nostdin -f lavfi -i testsrc2=s=32x24:r=10:d=1 -c:v ffv1 '" +
+                           (folder.path / "clip.mkv").string() + "'").c_str()), 0);
+    ASSERT_EQ(std::system(("ffmpeg -v error -nostdin -f lavfi -i sine=d=0.3 '" + (folder.path / "tone.wav").string() + "'")
+                              .c_str()), 0);
+    const std::string manifest = R"({"passes": {"Image": {"source": "image.glsl", "channels": {
+        "iChannel0": {"video": "clip.mkv"}, "iChannel1": {"music": "tone.wav"}, "iChannel2": {"mic": true}}}}})";
+    MediaOptions options;
+    options.mic = "lavfi:sine=frequency=440";  // a live source: opened once, however many plans use it
+    Result<ChannelMedia> first = loadFolder(folder, manifest, options);
+    ASSERT_TRUE(first) << first.error().text();
+    Result<ChannelMedia> second = loadFolder(folder, manifest, options);  // a hot reload's plan
+    ASSERT_TRUE(second) << second.error().text();
+    const PassDesc image = [&] {
+        Result<ManifestDesc> desc = loadManifest(folder.path / "manifest.json");
+        return desc->passes.back();
+    }();
+    for (int c = 0; c < 3; ++c) {
+        const TimedMedia* a = first->findTimed(image.channels[c]);
+        const TimedMedia* b = second->findTimed(image.channels[c]);
+        ASSERT_TRUE(a && b) << c;
+        EXPECT_EQ(a->video, b->video) << c;
+        EXPECT_EQ(a->clip, b->clip) << c;
+        EXPECT_EQ(a->live, b->live) << c;
+        EXPECT_FALSE(a->standIn()) << c;
+    }
+    // An edited file is opened again.
+    ASSERT_EQ(std::system(("ffmpeg -v error -nostdin -y -f lavfi -i testsrc2=s=40x24:r=10:d=1 -c:v ffv1 '" +
+                           (folder.path / "clip.mkv").string() + "'").c_str()), 0);
+    Result<ChannelMedia> third = loadFolder(folder, manifest, options);
+    ASSERT_TRUE(third) << third.error().text();
+    const TimedMedia* edited = third->findTimed(image.channels[0]);
+    ASSERT_TRUE(edited && edited->video);
+    EXPECT_NE(edited->video, first->findTimed(image.channels[0])->video);
+    EXPECT_EQ(edited->video->width(), 40);
+}
