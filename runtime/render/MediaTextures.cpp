@@ -95,6 +95,14 @@ TimedTexture::TimedTexture(const TimedMedia& media, const SamplerDesc& sampler)
             sampler.filter == Filter::Mipmap ? 1 + static_cast<int>(std::floor(std::log2(std::max(width_, height_)))) : 1;
         glTexStorage2D(GL_TEXTURE_2D, levels, GL_RGBA8, width_, height_);
         glBindTexture(GL_TEXTURE_2D, 0);
+        if (media.video) {
+            // The frame the stream shows now (frame 0 of a stream just opened), without asking for
+            // another: a renderer made for a hot reload shares the running stream and must not
+            // wait for it here. The first frame asks for its own.
+            uploadRgba(media.video->current());
+            uploadedVersion_ = media.video->currentVersion();
+            return;
+        }
     }
     (void)update(0.0);
 }
