@@ -90,6 +90,8 @@ enum class Category : std::uint8_t {
     X(ManifestUnused,         "manifest.unused",           Report) \
     X(ManifestValue,          "manifest.value",            Input) \
     X(MediaNotFound,          "media.not-found",           Input) \
+    X(MediaSizeMismatch,      "media.size-mismatch",       Report) \
+    X(MediaSupplied,          "media.supplied",            Report) \
     X(MediaStandIn,           "media.stand-in",            Report) \
     X(MediaUnknownStandIn,    "media.unknown-stand-in",    Report) \
     X(Process,                "process",                   Output) \
@@ -128,6 +130,7 @@ enum class Category : std::uint8_t {
     X(VolumeDecode,           "volume.decode",             Input) \
     X(WatchdogCompile,        "watchdog.compile",          Watchdog) \
     X(WatchdogFrame,          "watchdog.frame",            Watchdog) \
+    X(WatchdogInput,          "watchdog.input",            Watchdog) \
     X(WatchdogOutput,         "watchdog.output",           Watchdog) \
     X(WatchChanged,           "watch.changed",             Report) \
     X(WindowCreate,           "window.create",             Gl) \

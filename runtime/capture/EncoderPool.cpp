@@ -1,5 +1,7 @@
 #include "capture/EncoderPool.h"
 
+#include "core/FileDescriptor.h"
+
 #include <algorithm>
 #include <csignal>
 #include <ctime>
@@ -9,39 +11,6 @@
 
 namespace toyhost {
 
-namespace {
-
-// Blocks SIGPIPE on the calling thread while it lives, for the synchronous path, which writes on
-// a thread the pool does not own: a closed pipe must give EPIPE there too, not end the process.
-// A SIGPIPE raised meanwhile is consumed before the old mask comes back, so it is never delivered.
-class PipeSignalBlock {
-public:
-    PipeSignalBlock() {
-        sigemptyset(&pipe_);
-        sigaddset(&pipe_, SIGPIPE);
-        sigset_t pending;
-        sigpending(&pending);
-        wasPending_ = sigismember(&pending, SIGPIPE) == 1;
-        pthread_sigmask(SIG_BLOCK, &pipe_, &previous_);
-    }
-    ~PipeSignalBlock() {
-        sigset_t pending;
-        sigpending(&pending);
-        if (!wasPending_ && sigismember(&pending, SIGPIPE) == 1) {
-            const timespec now{};
-            sigtimedwait(&pipe_, nullptr, &now);
-        }
-        pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
-    }
-    PipeSignalBlock(const PipeSignalBlock&) = delete;
-    PipeSignalBlock& operator=(const PipeSignalBlock&) = delete;
-
-private:
-    sigset_t pipe_{}, previous_{};
-    bool wasPending_ = false;
-};
-
-}  // namespace
 
 int defaultEncoderThreads() {
     const int hardware = static_cast<int>(std::thread::hardware_concurrency());

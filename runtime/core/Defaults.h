@@ -32,6 +32,10 @@ inline constexpr int kCubemapStandInSize = 256;
 inline constexpr int kVideoStandInWidth = 640;
 inline constexpr int kVideoStandInHeight = 360;
 inline constexpr int kVolumeStandInSize = 32;
+// Videos are decoded ahead of the frame shown on their own thread: at most this many frames
+// wait in the queue, and no more than this many bytes of them (one 4K frame is 33 MB).
+inline constexpr int kVideoAheadFrames = 3;
+inline constexpr std::size_t kVideoAheadBytes = std::size_t(96) << 20;
 // The Sound pass: the site renders 180 s, in blocks of 512x512 samples.
 inline constexpr double kSoundSeconds = 180.0;
 inline constexpr double kMaxSoundSeconds = 3600.0;  // `toyhost sound --seconds` limit

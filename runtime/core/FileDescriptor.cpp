@@ -1,5 +1,8 @@
 #include "core/FileDescriptor.h"
 
+#include <pthread.h>
+#include <ctime>
+
 #include <cerrno>
 #include <cstring>
 #include <algorithm>
@@ -29,6 +32,25 @@ void CancelSignal::cancel() {
 bool CancelSignal::cancelled() const {
     pollfd p{fd_.get(), POLLIN, 0};
     return fd_ && ::poll(&p, 1, 0) == 1;
+}
+
+PipeSignalBlock::PipeSignalBlock() {
+    sigemptyset(&pipe_);
+    sigaddset(&pipe_, SIGPIPE);
+    sigset_t pending;
+    sigpending(&pending);
+    wasPending_ = sigismember(&pending, SIGPIPE) == 1;
+    pthread_sigmask(SIG_BLOCK, &pipe_, &previous_);
+}
+
+PipeSignalBlock::~PipeSignalBlock() {
+    sigset_t pending;
+    sigpending(&pending);
+    if (!wasPending_ && sigismember(&pending, SIGPIPE) == 1) {
+        const timespec now{};
+        sigtimedwait(&pipe_, nullptr, &now);
+    }
+    pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
 }
 
 namespace {

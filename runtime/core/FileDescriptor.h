@@ -2,6 +2,7 @@
 // (pipes and stdout take partial writes). No GL needed.
 #pragma once
 
+#include <csignal>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -48,6 +49,22 @@ public:
 
 private:
     FileDescriptor fd_;  // an eventfd
+};
+
+// Blocks SIGPIPE on the calling thread while it lives, for writes to a pipe on a thread that does
+// not block it for good (stdout of the sound command, the capture's synchronous path): a closed
+// pipe must give EPIPE, not end the process. A SIGPIPE raised meanwhile is consumed before the old
+// mask comes back, so it is never delivered.
+class PipeSignalBlock {
+public:
+    PipeSignalBlock();
+    ~PipeSignalBlock();
+    PipeSignalBlock(const PipeSignalBlock&) = delete;
+    PipeSignalBlock& operator=(const PipeSignalBlock&) = delete;
+
+private:
+    sigset_t pipe_{}, previous_{};
+    bool wasPending_ = false;
 };
 
 // Writes every byte, retrying partial writes and EINTR. `what` names the destination in errors

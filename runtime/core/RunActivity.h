@@ -1,7 +1,8 @@
 // RunActivity: what the render thread is doing right now (compiling a pass, waiting for a pass to
-// finish drawing, waiting for the encoders), and since when, published for a watchdog on another
-// thread: GL cannot be interrupted, so a runaway shader can only be noticed from outside. The
-// render thread updates it without allocating; any thread reads it. No GL needed.
+// finish drawing, waiting for the encoders or for a video's decoder), and since when, published
+// for a watchdog on another thread: GL cannot be interrupted, so a runaway shader can only be
+// noticed from outside. The render thread updates it without allocating; any thread reads it.
+// No GL needed.
 #pragma once
 
 #include <chrono>
@@ -11,12 +12,14 @@ namespace toyhost {
 
 class RunActivity {
 public:
-    enum class Phase { Idle, Compiling, Drawing, WaitingForOutput };
+    // WaitingForInput: a frame waits for a video's decoder (media/VideoStream.h), which has not
+    // decoded the frame it shows yet; `pass` names the first pass that reads the video.
+    enum class Phase { Idle, Compiling, Drawing, WaitingForOutput, WaitingForInput };
 
     struct Snapshot {
         Phase phase = Phase::Idle;
-        const char* pass = "";  // a pass name ("Buffer A" .. "Image"), or "" when none
-        int frame = -1;         // iFrame being drawn, or -1
+        const char* pass = "";  // a pass name ("Buffer A" .. "Image", "Sound"), or "" when none
+        int frame = -1;         // iFrame being drawn (or the Sound pass's block), or -1
         double seconds = 0;     // how long the phase has lasted
     };
 

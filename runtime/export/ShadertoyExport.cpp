@@ -192,7 +192,15 @@ private:
             return problem(where + ".channel", "iChannel" + std::to_string(c) + " is bound twice", Code::ExportDuplicate,
                            pass.id, c);
 
-        if (kind == "buffer") {
+        // The ctype says the kind (manifest/ChannelKinds.h); how it names its source, the form.
+        const ChannelKindInfo* info = channelKindOfExportType(kind);
+        if (!info) {
+            notice((kind.empty() ? std::string("untyped") : "\"" + kind + "\"") +
+                       " inputs are not a Shadertoy input kind; the channel is left unbound",
+                   Code::ExportUnsupportedInput, pass.id, c);
+            return;
+        }
+        if (info->kind == ChannelKind::Buffer) {
             int buffer = bufferIndexFromExportId(input.contains("id") ? input["id"] : json());
             if (buffer < 0) {
                 // Site exports name the buffer's preview image: /media/previz/buffer02.png = Buffer C.
@@ -205,34 +213,20 @@ private:
                                pass.id, c);
             channel.kind = ChannelKind::Buffer;
             channel.buffer = buffer;
-        } else if (kind == "keyboard") {
-            channel.kind = ChannelKind::Keyboard;
-        } else if (kind == "texture") {
-            if (src.empty()) return problem(where + ".src", "texture input without a src", Code::ExportMissing, pass.id, c);
-            channel.kind = ChannelKind::StockMedia;
-            channel.media = src;
-        } else if (kind == "cubemap" && isCubeBufferInput(input, src)) {
+        } else if (info->kind == ChannelKind::Cubemap && isCubeBufferInput(input, src)) {
             channel.kind = ChannelKind::CubeBuffer;
-        } else if (kind == "cubemap" || kind == "volume" || kind == "video" || kind == "music" || kind == "musicstream") {
-            if (src.empty()) return problem(where + ".src", kind + " input without a src", Code::ExportMissing, pass.id, c);
-            channel.kind = kind == "cubemap" ? ChannelKind::Cubemap
-                           : kind == "volume" ? ChannelKind::Volume
-                           : kind == "video"  ? ChannelKind::Video
-                                              : ChannelKind::Music;  // a SoundCloud stream plays as music
-            channel.media = src;
-        } else if (kind == "webcam") {
-            channel.kind = ChannelKind::Webcam;
-        } else if (kind == "mic") {
-            channel.kind = ChannelKind::Mic;
+        } else if (info->value == ManifestValue::True) {
+            channel.kind = info->kind;  // the keyboard, a webcam, a microphone: nothing to name
         } else {
-            notice((kind.empty() ? std::string("untyped") : "\"" + kind + "\"") +
-                       " inputs are not a Shadertoy input kind; the channel is left unbound",
-                   Code::ExportUnsupportedInput, pass.id, c);
-            return;
+            // A stock texture, cubemap, volume, video or music (a SoundCloud stream plays as music).
+            if (src.empty())
+                return problem(where + ".src", kind + " input without a src", Code::ExportMissing, pass.id, c);
+            channel.kind = info->kind;
+            channel.media = src;
         }
         channel.samplerType = samplerTypeOf(channel.kind);
         channel.sampler = defaultSampler(channel.kind);
-        if (channel.kind == ChannelKind::Keyboard) return;  // always nearest/clamp
+        if (channelKindInfo(channel.kind).fixedSampler) return;  // the keyboard: always nearest/clamp
         const json& sampler = input.contains("sampler") && input["sampler"].is_object() ? input["sampler"] : json::object();
         const std::string filter = text(sampler, "filter"), wrap = text(sampler, "wrap");
         if (filter == "nearest") channel.sampler.filter = Filter::Nearest;

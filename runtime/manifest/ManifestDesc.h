@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/Diagnostic.h"
+#include "manifest/ChannelKinds.h"
 
 namespace toyhost {
 
@@ -31,37 +32,8 @@ inline bool isBuffer(PassId id) { return static_cast<int>(id) < kBufferCount; } 
 inline int bufferIndex(PassId id) { return static_cast<int>(id); }  // only for buffers
 inline PassId bufferPass(int index) { return static_cast<PassId>(index); }
 
-// What a channel binds. ImageFile/StockMedia are 2D pictures; Cubemap, Volume, Video and Music
-// come from a stock id (`media`) or the user's own file (`file`, when set); Webcam and Mic from a
-// device given on the command line, else a stand-in; CubeBuffer is the Cube A pass's output.
-enum class ChannelKind {
-    None, Buffer, ImageFile, StockMedia, Keyboard, CubeBuffer, Cubemap, Volume, Video, Music, Webcam, Mic
-};
-// The GLSL sampler type of an iChannel uniform.
-enum class SamplerType { Sampler2D, SamplerCube, Sampler3D };
-SamplerType samplerTypeOf(ChannelKind kind);
-const char* channelKindName(ChannelKind kind);  // "buffer", "cubemap", "music", ...
-// Kinds whose pictures are uploaded flipped or not by `vflip` (images, cubemaps, videos).
-inline bool takesVflip(ChannelKind kind) {
-    return kind == ChannelKind::ImageFile || kind == ChannelKind::StockMedia || kind == ChannelKind::Cubemap ||
-           kind == ChannelKind::Video || kind == ChannelKind::Webcam;
-}
-// Media whose content changes with time (iChannelTime is their playback time).
-inline bool isTimedMedia(ChannelKind kind) {
-    return kind == ChannelKind::Video || kind == ChannelKind::Music || kind == ChannelKind::Webcam ||
-           kind == ChannelKind::Mic;
-}
-enum class Filter { Nearest, Linear, Mipmap };
-enum class Wrap { Clamp, Repeat };
-
 const char* filterName(Filter f);
 const char* wrapName(Wrap w);
-
-struct SamplerDesc {
-    Filter filter = Filter::Linear;
-    Wrap wrap = Wrap::Clamp;
-    bool vflip = false;  // only meaningful for image textures
-};
 
 struct ChannelDesc {
     ChannelKind kind = ChannelKind::None;
@@ -106,9 +78,5 @@ struct ManifestDesc {
     const PassDesc* find(PassId id) const;
     bool hasBuffer(int index) const { return find(bufferPass(index)) != nullptr; }
 };
-
-// Shadertoy's defaults for a channel kind (exports: textures mipmap/repeat/vflip, buffers
-// linear/clamp; the keyboard is nearest/clamp).
-SamplerDesc defaultSampler(ChannelKind kind);
 
 }  // namespace toyhost

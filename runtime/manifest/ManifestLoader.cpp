@@ -332,8 +332,14 @@ private:
             problems_.add(where, "must be an object such as {\"buffer\": \"A\"}, or null", Code::ManifestType, pass.id, index);
             return;
         }
-        static const std::vector<std::string> sourceKeys{"buffer", "texture", "media", "keyboard", "cubemap",
-                                                         "volume", "video", "music", "webcam", "mic"};
+        // The keys that name a source come from the channel-kind table (manifest/ChannelKinds.h).
+        static const std::vector<std::string> sourceKeys = [] {
+            std::vector<std::string> keys;
+            for (const ChannelKindInfo& kind : channelKinds())
+                if (*kind.manifestKey && std::find(keys.begin(), keys.end(), kind.manifestKey) == keys.end())
+                    keys.push_back(kind.manifestKey);
+            return keys;
+        }();
         std::set<std::string> known(sourceKeys.begin(), sourceKeys.end());
         known.insert({"filter", "wrap", "vflip", "kind"});
         rejectUnknownFields(value, known, where, problems_);
@@ -345,10 +351,9 @@ private:
             sourceMisspelt = sourceMisspelt || (!known.count(key) && closestMatch(key, sourceKeys));
         if (sources == 0 && sourceMisspelt) return;
         if (sources != 1) {
-            problems_.add(where,
-                          "needs exactly one of \"buffer\", \"texture\", \"media\", \"keyboard\", \"cubemap\", "
-                          "\"volume\", \"video\", \"music\", \"webcam\", \"mic\"",
-                          Code::ManifestValue, pass.id, index);
+            std::string list;
+            for (const std::string& key : sourceKeys) list += (list.empty() ? "\"" : ", \"") + key + "\"";
+            problems_.add(where, "needs exactly one of " + list, Code::ManifestValue, pass.id, index);
             return;
         }
         if (value.contains("kind") && !value.contains("media")) {
@@ -356,120 +361,120 @@ private:
                           Code::ManifestValue, pass.id, index);
             return;
         }
-        if (auto buffer = readString(value, "buffer", where)) {
-            if (*buffer == "Cube A" || *buffer == "CubeA") {
-                channel.kind = ChannelKind::CubeBuffer;
-                bufferRefs_.push_back({pass.id, index, -1});
-                readSampler(pass.id, index, channel, value, where);
-                return;
+        const std::string key = *std::find_if(sourceKeys.begin(), sourceKeys.end(),
+                                              [&](const std::string& k) { return value.contains(k); });
+        const ChannelKindInfo& kind = *std::find_if(channelKinds().begin(), channelKinds().end(),
+                                                    [&](const ChannelKindInfo& k) { return key == k.manifestKey; });
+        switch (kind.value) {
+            case ManifestValue::None: return;
+            case ManifestValue::BufferName:
+                if (!readBufferName(pass, index, channel, value, key, where)) return;
+                break;
+            case ManifestValue::File: {
+                auto file = readString(value, key.c_str(), where);
+                if (!file) return;  // readString reported the bad value
+                channel.kind = kind.kind;
+                channel.file = resolve(*file);
+                if (Status regular = checkRegularFile(channel.file); !regular)
+                    problems_.add(where, key + " " + channel.file.string() + ": " + regular.error().first().message,
+                                  regular.error().first().code, pass.id, index);
+                break;
             }
-            std::optional<int> bufferIndex = bufferFromName(*buffer);
-            if (!bufferIndex) {
-                problems_.add(where, "buffer " + quote(*buffer) + " does not exist (known: A, B, C, D, Cube A)",
-                              Code::ManifestReference, pass.id, index);
-                return;
-            }
-            channel.kind = ChannelKind::Buffer;
-            channel.buffer = *bufferIndex;
-            bufferRefs_.push_back({pass.id, index, *bufferIndex});
-        } else if (value.contains("cubemap") || value.contains("volume") || value.contains("video") ||
-                   value.contains("music")) {
-            const char* key = value.contains("cubemap") ? "cubemap"
-                              : value.contains("volume") ? "volume"
-                              : value.contains("video")  ? "video"
-                                                         : "music";
-            auto file = readString(value, key, where);
-            if (!file) return;
-            channel.kind = std::string(key) == "cubemap" ? ChannelKind::Cubemap
-                           : std::string(key) == "volume" ? ChannelKind::Volume
-                           : std::string(key) == "video"  ? ChannelKind::Video
-                                                          : ChannelKind::Music;
-            channel.file = resolve(*file);
-            if (Status regular = checkRegularFile(channel.file); !regular)
-                problems_.add(where, std::string(key) + " " + channel.file.string() + ": " +
-                                         regular.error().first().message,
-                              regular.error().first().code, pass.id, index);
-        } else if (value.contains("webcam") || value.contains("mic")) {
-            const char* key = value.contains("webcam") ? "webcam" : "mic";
-            if (value[key] != true) {
-                problems_.add(where, std::string("\"") + key + "\" must be true", Code::ManifestValue, pass.id, index);
-                return;
-            }
-            channel.kind = std::string(key) == "webcam" ? ChannelKind::Webcam : ChannelKind::Mic;
-        } else if (auto texture = readString(value, "texture", where)) {
-            channel.kind = ChannelKind::ImageFile;
-            channel.file = resolve(*texture);
-            if (Status regular = checkRegularFile(channel.file); !regular)
-                problems_.add(where, "texture " + channel.file.string() + ": " + regular.error().first().message,
-                              regular.error().first().code, pass.id, index);
-        } else if (auto media = readString(value, "media", where)) {
-            channel.kind = ChannelKind::StockMedia;
-            channel.media = *media;
-            mediaRefs_.insert(*media);
-            // A stock cubemap, volume, video or music: its kind comes from the table, or from
-            // "kind" for an id the table does not know (an import of a newer stock input).
-            std::optional<ChannelKind> kind;
-            if (const StockInputInfo* input = findStockInput(*media))
-                kind = input->form == StockInputForm::Cubemap  ? ChannelKind::Cubemap
-                       : input->form == StockInputForm::Volume ? ChannelKind::Volume
-                       : input->form == StockInputForm::Video  ? ChannelKind::Video
-                                                               : ChannelKind::Music;
-            if (auto named = readString(value, "kind", where)) {
-                static const std::vector<std::string> kinds{"texture", "cubemap", "volume", "video", "music"};
-                const auto at = std::find(kinds.begin(), kinds.end(), *named);
-                if (at == kinds.end()) {
-                    problems_.add(where,
-                                  "kind " + quote(*named) + didYouMean(*named, kinds) +
-                                      " is not one of texture, cubemap, volume, video, music",
-                                  Code::ManifestValue, pass.id, index);
+            case ManifestValue::True:
+                if (value[key] != true) {
+                    problems_.add(where, "\"" + key + "\" must be true", Code::ManifestValue, pass.id, index);
                     return;
                 }
-                static const ChannelKind byName[] = {ChannelKind::StockMedia, ChannelKind::Cubemap, ChannelKind::Volume,
-                                                     ChannelKind::Video, ChannelKind::Music};
-                kind = byName[at - kinds.begin()];
-            }
-            if (kind && *kind != ChannelKind::StockMedia) {
-                channel.kind = *kind;
-                readSampler(pass.id, index, channel, value, where);
-                return;
-            }
-            // Any Shadertoy media path is accepted (one the table does not know runs with a flagged
-            // stand-in, as imported exports do); other names must be known or given a file.
-            const bool mediaPath = media->rfind("/media/a/", 0) == 0 && media->size() > 9;
-            const StockMediaInfo* near = desc_.mediaOverrides.count(*media) ? nullptr : nearStockMedia(*media);
-            if (near)
-                // A one-character slip in a hash would otherwise run with a stand-in of a guessed
-                // size, silently replacing a 256x256 noise with a 512x512 photo.
-                problems_.add(where,
-                              "unknown stock media " + quote(*media) + " (did you mean " + quote(std::string(near->name)) +
-                                  ", " + stockMediaPath(*near) + "?)",
-                              Code::ManifestMediaNearMiss, pass.id, index);
-            else if (!mediaPath && !findStockMedia(*media) && !desc_.mediaOverrides.count(*media))
-                problems_.add(where,
-                              "unknown stock media " + quote(*media) +
-                                  " (use a /media/a/<hash>.<ext> id, a stock name such as \"Abstract 3\", "
-                                  "or add it to \"media\" with a file)",
-                              Code::ManifestReference, pass.id, index);
-        } else if (value.contains("keyboard")) {
-            if (value["keyboard"] != true) {
-                problems_.add(where, "\"keyboard\" must be true", Code::ManifestValue, pass.id, index);
-                return;
-            }
-            channel.kind = ChannelKind::Keyboard;
-        } else {
-            return;  // readString already reported the bad value
+                channel.kind = kind.kind;
+                break;
+            case ManifestValue::StockId:
+                if (!readMedia(pass, index, channel, value, key, where)) return;
+                break;
         }
         readSampler(pass.id, index, channel, value, where);
+    }
+
+    // {"buffer": "A".."D"} or {"buffer": "Cube A"}.
+    bool readBufferName(PassDesc& pass, int index, ChannelDesc& channel, const json& value, const std::string& key,
+                        const std::string& where) {
+        auto buffer = readString(value, key.c_str(), where);
+        if (!buffer) return false;
+        if (*buffer == "Cube A" || *buffer == "CubeA") {
+            channel.kind = ChannelKind::CubeBuffer;
+            bufferRefs_.push_back({pass.id, index, -1});
+            return true;
+        }
+        std::optional<int> bufferIndex = bufferFromName(*buffer);
+        if (!bufferIndex) {
+            problems_.add(where, "buffer " + quote(*buffer) + " does not exist (known: A, B, C, D, Cube A)",
+                          Code::ManifestReference, pass.id, index);
+            return false;
+        }
+        channel.kind = ChannelKind::Buffer;
+        channel.buffer = *bufferIndex;
+        bufferRefs_.push_back({pass.id, index, *bufferIndex});
+        return true;
+    }
+
+    // {"media": ID}: a stock texture, or a stock cubemap, volume, video or music (its kind from the
+    // stock table, or from "kind" for an id the table does not know: an import of a newer input).
+    bool readMedia(PassDesc& pass, int index, ChannelDesc& channel, const json& value, const std::string& key,
+                   const std::string& where) {
+        auto media = readString(value, key.c_str(), where);
+        if (!media) return false;
+        channel.kind = ChannelKind::StockMedia;
+        channel.media = *media;
+        mediaRefs_.insert(*media);
+        const ChannelKindInfo* kind = nullptr;
+        if (const StockInputInfo* input = findStockInput(*media))
+            kind = channelKindOfMediaKind(stockInputFormName(input->form));
+        if (auto named = readString(value, "kind", where)) {
+            std::vector<std::string> kinds;
+            for (const ChannelKindInfo& info : channelKinds())
+                if (*info.mediaKind) kinds.push_back(info.mediaKind);
+            kind = channelKindOfMediaKind(*named);
+            if (!kind) {
+                std::string list;
+                for (const std::string& k : kinds) list += (list.empty() ? "" : ", ") + k;
+                problems_.add(where, "kind " + quote(*named) + didYouMean(*named, kinds) + " is not one of " + list,
+                              Code::ManifestValue, pass.id, index);
+                return false;
+            }
+        }
+        if (kind && kind->kind != ChannelKind::StockMedia) {
+            channel.kind = kind->kind;
+            return true;
+        }
+        // Any Shadertoy media path is accepted (one the table does not know runs with a flagged
+        // stand-in, as imported exports do); other names must be known or given a file.
+        const bool mediaPath = media->rfind("/media/a/", 0) == 0 && media->size() > 9;
+        const StockMediaInfo* near = desc_.mediaOverrides.count(*media) ? nullptr : nearStockMedia(*media);
+        if (near)
+            // A one-character slip in a hash would otherwise run with a stand-in of a guessed
+            // size, silently replacing a 256x256 noise with a 512x512 photo.
+            problems_.add(where,
+                          "unknown stock media " + quote(*media) + " (did you mean " + quote(std::string(near->name)) +
+                              ", " + stockMediaPath(*near) + "?)",
+                          Code::ManifestMediaNearMiss, pass.id, index);
+        else if (!mediaPath && !findStockMedia(*media) && !desc_.mediaOverrides.count(*media))
+            problems_.add(where,
+                          "unknown stock media " + quote(*media) +
+                              " (use a /media/a/<hash>.<ext> id, a stock name such as \"Abstract 3\", "
+                              "or add it to \"media\" with a file)",
+                          Code::ManifestReference, pass.id, index);
+        return true;
     }
 
     void readSampler(PassId pass, int index, ChannelDesc& channel, const json& value, const std::string& where) {
         channel.sampler = defaultSampler(channel.kind);
         channel.samplerType = samplerTypeOf(channel.kind);
-        if (channel.kind == ChannelKind::Keyboard) {
+        if (channelKindInfo(channel.kind).fixedSampler) {
             for (const char* key : {"filter", "wrap", "vflip"})
                 if (value.contains(key))
                     problems_.add(where,
-                                  std::string("the keyboard texture takes no \"") + key + "\" (it is always nearest/clamp)",
+                                  std::string("the ") + channelKindName(channel.kind) + " texture takes no \"" + key +
+                                      "\" (it is always " + filterName(channel.sampler.filter) + "/" +
+                                      wrapName(channel.sampler.wrap) + ")",
                                   Code::ManifestValue, pass, index);
             return;
         }

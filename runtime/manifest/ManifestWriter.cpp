@@ -19,39 +19,38 @@ std::string passFileName(PassId id) {
 namespace {
 
 ordered_json channelJson(const ChannelDesc& channel) {
+    const ChannelKindInfo& kind = channelKindInfo(channel.kind);
+    const std::string key = kind.manifestKey;
     ordered_json out;
-    switch (channel.kind) {
-        case ChannelKind::None: return nullptr;
-        case ChannelKind::Keyboard: out["keyboard"] = true; return out;
-        case ChannelKind::Buffer: out["buffer"] = std::string(1, static_cast<char>('A' + channel.buffer)); break;
-        case ChannelKind::ImageFile: out["texture"] = channel.file.string(); break;
-        case ChannelKind::StockMedia: {
+    switch (kind.value) {
+        case ManifestValue::None: return nullptr;
+        case ManifestValue::True: out[key] = true; break;
+        case ManifestValue::BufferName:
+            out[key] = channel.kind == ChannelKind::CubeBuffer ? std::string("Cube A")
+                                                               : std::string(1, static_cast<char>('A' + channel.buffer));
+            break;
+        case ManifestValue::StockId: {
             // The site's name ("Lichen") where toyhost knows the texture: the loader accepts it,
             // and a reader of the manifest sees what the channel shows.
             const StockMediaInfo* stock = findStockMedia(channel.media);
-            out["media"] = stock ? std::string(stock->name) : channel.media;
+            out[key] = stock ? std::string(stock->name) : channel.media;
             break;
         }
-        case ChannelKind::CubeBuffer: out["buffer"] = "Cube A"; break;
-        case ChannelKind::Cubemap:
-        case ChannelKind::Volume:
-        case ChannelKind::Video:
-        case ChannelKind::Music:
+        case ManifestValue::File:
             if (!channel.file.empty()) {
-                out[channelKindName(channel.kind)] = channel.file.string();
+                out[key] = channel.file.string();
             } else if (const StockInputInfo* stock = findStockInput(channel.media)) {
                 out["media"] = stockInputPath(*stock);
             } else {
                 out["media"] = channel.media;  // an id the table does not know: say what it is
-                out["kind"] = channelKindName(channel.kind);
+                out["kind"] = kind.mediaKind;
             }
             break;
-        case ChannelKind::Webcam: out["webcam"] = true; break;
-        case ChannelKind::Mic: out["mic"] = true; break;
     }
+    if (kind.fixedSampler) return out;
     out["filter"] = filterName(channel.sampler.filter);
     out["wrap"] = wrapName(channel.sampler.wrap);
-    if (takesVflip(channel.kind)) out["vflip"] = channel.sampler.vflip;
+    if (kind.vflip) out["vflip"] = channel.sampler.vflip;
     return out;
 }
 

@@ -13,8 +13,9 @@ namespace fs = std::filesystem;
 
 namespace {
 std::string overrideKey(std::string_view ref) {
-    const StockMediaInfo* info = findStockMedia(ref);
-    return info ? std::string(info->hash) : std::string(ref);
+    if (const StockMediaInfo* info = findStockMedia(ref)) return std::string(info->hash);
+    if (const StockInputInfo* input = findStockInput(ref)) return std::string(input->hash);
+    return std::string(ref);
 }
 
 bool hasImageExtension(const fs::path& file) {
@@ -56,9 +57,17 @@ std::optional<fs::path> findPlainFile(const fs::path& folder, std::string_view r
 Result<ResolvedMedia> loadReal(const fs::path& file) {
     Result<Image8> image = loadImageFile(file);
     if (!image) return image.error();
-    return ResolvedMedia{std::move(image).value(), false, {}};
+    return ResolvedMedia{std::move(image).value(), false, {}, file};
 }
 }  // namespace
+
+std::string mediaFileOption(std::string_view name, std::string_view value) {
+    const std::string argument = std::string(name) + "=" + std::string(value);
+    const bool plain = std::all_of(name.begin(), name.end(), [](unsigned char c) {
+        return std::isalnum(c) || c == '/' || c == '.' || c == '_' || c == '-';
+    });
+    return "--media-file " + (plain ? argument : "\"" + argument + "\"");
+}
 
 void MediaResolver::setOverride(std::string ref, fs::path file) {
     overrides_[overrideKey(ref)] = std::move(file);
@@ -71,8 +80,13 @@ void MediaResolver::addSearchFolder(fs::path folder) {
 std::optional<fs::path> MediaResolver::findFile(std::string_view ref) const {
     if (const auto it = overrides_.find(overrideKey(ref)); it != overrides_.end()) return it->second;
     const StockMediaInfo* info = findStockMedia(ref);
+    // A stock cubemap, volume, video or music named by its site name is looked for by its file name.
+    const StockInputInfo* input = info ? nullptr : findStockInput(ref);
+    const std::string inputPath = input ? stockInputPath(*input) : std::string();
     for (const fs::path& folder : searchFolders_)
-        if (std::optional<fs::path> file = info ? findStockFile(folder, *info) : findPlainFile(folder, ref)) return file;
+        if (std::optional<fs::path> file = info ? findStockFile(folder, *info)
+                                                : findPlainFile(folder, input ? std::string_view(inputPath) : ref))
+            return file;
     return std::nullopt;
 }
 
@@ -101,14 +115,14 @@ Result<ResolvedMedia> MediaResolver::resolve(std::string_view ref) const {
         const std::string hash(ref.substr(9, ref.find('.', 9) == std::string_view::npos ? std::string_view::npos
                                                                                          : ref.find('.', 9) - 9));
         const StockMediaInfo unknown{hash, "", "unknown stock texture", 512, 512, 3, StockMediaKind::Photo};
-        ResolvedMedia standIn{makeStandIn(unknown), true, {}};
+        ResolvedMedia standIn{makeStandIn(unknown), true, {}, {}};
         // A warning, not a notice: the size is a guess, and shaders that use the size (hash
         // tables, atlases) will differ from the site until the real file is supplied.
         standIn.notice.severity = Severity::Warning;
         standIn.notice.code = Code::MediaUnknownStandIn;
         standIn.notice.message = "stock texture " + std::string(ref) +
                                  " is not in toyhost's table; using a stand-in whose size, 512x512 RGB, is a guess. "
-                                 "Supply the real file with --media-file " + hash + "=<path> or --media DIR "
+                                 "Supply the real file with " + mediaFileOption(hash) + " or --media DIR "
                                  "(`toyhost media` lists the known ids).";
         return standIn;
     }
@@ -119,13 +133,13 @@ Result<ResolvedMedia> MediaResolver::resolve(std::string_view ref) const {
     }
 
     const std::string path = stockMediaPath(*info);
-    ResolvedMedia standIn{makeStandIn(*info), true, {}};
+    ResolvedMedia standIn{makeStandIn(*info), true, {}, {}};
     standIn.notice.severity = Severity::Notice;
     standIn.notice.code = Code::MediaStandIn;
     standIn.notice.message = "stock texture '" + std::string(info->name) + "' (" + path + ", " +
                              std::to_string(info->width) + "x" + std::to_string(info->height) +
-                             ") is not available; using a deterministic stand-in. Supply the real file with "
-                             "--media-file " + std::string(info->hash) + "=<path>.";
+                             ") is not available; using a deterministic stand-in. Supply the real file with " +
+                             mediaFileOption(info->name) + " or --media DIR.";
     return standIn;
 }
 

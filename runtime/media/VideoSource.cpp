@@ -306,7 +306,7 @@ std::string VideoSource::decoderEnded() {
 }
 
 Status VideoSource::startDecoder(std::int64_t firstFrame) {
-    decoder_.reset();
+    dropDecoder();
     std::vector<std::string> argv = {"ffmpeg", "-hide_banner", "-nostdin", "-loglevel", "error"};
     if (live_) {
         argv.insert(argv.end(), {"-f", "v4l2", "-i", path_.string()});
@@ -325,6 +325,8 @@ Status VideoSource::startDecoder(std::int64_t firstFrame) {
                              std::to_string(info_.width) + "x" + std::to_string(info_.height), "-pix_fmt", "rgba",
                              "-f", "rawvideo", "pipe:1"});
     // ffmpeg writes raw frames to a pipe read here (stdin /dev/null, stderr the log).
+    std::lock_guard lock(decoderMutex_);
+    if (interrupted_) return fileError(path_.string(), "the decoder was stopped", Code::Interrupted);
     Result<ChildProcess> started = ChildProcess::spawnReading(argv, (*log_)[0]);
     if (!started) return inFile(path_.string(), started.error());
     decoder_.emplace(std::move(*started));
@@ -347,7 +349,7 @@ Status VideoSource::readNextFrame() {
             // A decoder killed or crashed mid-frame ends like one that stopped between frames.
             const std::string why = read.error().first().message;
             const std::string ended = decoderEnded();
-            decoder_.reset();
+            dropDecoder();
             return decoderFailed("ffmpeg stopped decoding at frame " + std::to_string(next_) + " (" + why +
                                  (ended.empty() ? "" : "; " + ended) + ")");
         }
@@ -362,7 +364,7 @@ Status VideoSource::readNextFrame() {
         // killed is an error. One that ended cleanly short of the frame count (the count was wrong)
         // continues from the start.
         const std::string ended = decoderEnded();
-        decoder_.reset();
+        dropDecoder();
         if (looping_ || !ended.empty())
             return decoderFailed("ffmpeg stopped decoding at frame " + std::to_string(next_) +
                                  (ended.empty() ? "" : " (" + ended + ")"));
@@ -383,7 +385,7 @@ Result<const Image8*> VideoSource::newestCameraFrame() {
         Result<bool> read = readFrameFlipped(decoder_->outputFd(), spare_.data(), rowBytes, info_.height, kFrameTimeoutMs);
         if (!read || !*read) {
             Error failed = decoderFailed(read ? std::string("the camera stopped") : read.error().first().message);
-            decoder_.reset();
+            dropDecoder();
             return failed;
         }
         std::swap(frame_.rgba, spare_);
@@ -392,9 +394,44 @@ Result<const Image8*> VideoSource::newestCameraFrame() {
     return &frame_;
 }
 
+void VideoSource::dropDecoder() {
+    std::lock_guard lock(decoderMutex_);
+    decoder_.reset();
+}
+
+void VideoSource::interrupt() {
+    std::lock_guard lock(decoderMutex_);
+    interrupted_ = true;
+    if (decoder_) decoder_->killFromAnyThread();
+}
+
+void VideoSource::exchangeFrame(std::vector<std::uint8_t>& rgba) {
+    std::swap(frame_.rgba, rgba);
+    current_ = -1;  // frame_ no longer holds a decoded frame
+}
+
+Result<const Image8*> VideoSource::nextCameraFrame() {
+    if (!decoder_) return decoderFailed("the camera stopped");
+    const std::size_t rowBytes = static_cast<std::size_t>(info_.width) * 4;
+    Result<bool> read = readFrameFlipped(decoder_->outputFd(), spare_.data(), rowBytes, info_.height, kFrameTimeoutMs);
+    if (!read || !*read) {
+        Error failed = decoderFailed(read ? std::string("the camera stopped") : read.error().first().message);
+        dropDecoder();
+        return failed;
+    }
+    std::swap(frame_.rgba, spare_);
+    ++current_;
+    return &frame_;
+}
+
 Result<const Image8*> VideoSource::frameAt(double seconds) {
     if (live_) return newestCameraFrame();
-    const std::int64_t wanted = frameIndexAt(seconds);
+    return frameByIndex(frameIndexAt(seconds));
+}
+
+Result<const Image8*> VideoSource::frameByIndex(std::int64_t wanted) {
+    if (live_) return newestCameraFrame();
+    if (wanted < 0 || wanted >= info_.frameCount) wanted = 0;
     if (wanted == current_) return &frame_;
     const std::int64_t count = info_.frameCount;
     // Frames to read and drop before `wanted`, going forward (through the loop when ffmpeg loops;
@@ -459,8 +496,10 @@ void videoStandInFrame(double seconds, Image8& out) {
     constexpr int kRadius = 36, kRim = 4;
     const int cx = kRadius + static_cast<int>(triangle(tick, kPeriod / 2, kWidth - 2 * kRadius));
     const int cy = kRadius + static_cast<int>(triangle(tick, kPeriod / 3, kHeight - 2 * kRadius));
-    for (int y = cy - kRadius; y <= cy + kRadius; ++y) {
-        for (int x = cx - kRadius; x <= cx + kRadius; ++x) {
+    // Clipped to the frame: at the ends of its path the disc's edge touches the right or top side,
+    // where x = kWidth would wrap into the next row and y = kHeight is past the last one.
+    for (int y = std::max(cy - kRadius, 0); y <= std::min(cy + kRadius, kHeight - 1); ++y) {
+        for (int x = std::max(cx - kRadius, 0); x <= std::min(cx + kRadius, kWidth - 1); ++x) {
             const int d2 = (x - cx) * (x - cx) + (y - cy) * (y - cy);
             if (d2 > kRadius * kRadius) continue;
             std::uint8_t* p = pixels + static_cast<std::size_t>(y) * rowBytes + static_cast<std::size_t>(x) * 4;

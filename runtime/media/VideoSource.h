@@ -1,11 +1,14 @@
 // VideoSource: the frames of a `video` channel (a movie file, looping) or a `webcam` channel (a V4L2
-// camera, newest frame), decoded by an ffmpeg child process that writes raw RGBA frames to a pipe;
-// and the deterministic moving stand-in used when no video is available. No GL needed.
+// camera, newest frame), decoded by an ffmpeg child process that writes raw RGBA frames to a pipe,
+// read synchronously (media/VideoStream.h runs one on its own thread, decoding ahead); and the
+// deterministic moving stand-in used when no video is available. No GL needed.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -73,8 +76,19 @@ public:
     // frame and the error names the file and ffmpeg's reason. The pointer is never null on success
     // and stays valid until the next call.
     Result<const Image8*> frameAt(double seconds);
+    // The same by frame index (0 .. frameCount() - 1; files only).
+    Result<const Image8*> frameByIndex(std::int64_t index);
+    // For a camera: waits (up to 30 s) for the next frame it sends and returns it.
+    Result<const Image8*> nextCameraFrame();
     // The frame the last frameAt() returned (frame 0 right after openFile).
     const Image8& frame() const { return frame_; }
+    // Swaps the pixels of frame() with `rgba` (which must hold width() * height() * 4 bytes), so a
+    // reader on another thread takes the frame without a copy; frame() then holds no frame.
+    void exchangeFrame(std::vector<std::uint8_t>& rgba);
+
+    // Kills the decoder from any thread, so that a read waiting for it returns at once, and starts
+    // no other: every later read is an error. For the owner of a decoding thread, before joining it.
+    void interrupt();
 
     // Decoder processes started so far (1 after open); for tests and the cost measurements.
     int decoderStarts() const { return starts_; }
@@ -83,6 +97,7 @@ private:
     VideoSource() = default;
 
     Status startDecoder(std::int64_t firstFrame);
+    void dropDecoder();  // kills and reaps the decoder (under decoderMutex_)
     Status readNextFrame();
     Result<const Image8*> newestCameraFrame();
     Error decoderFailed(const std::string& what) const;
@@ -94,13 +109,15 @@ private:
     std::unique_ptr<TemporaryFiles> log_;  // ffmpeg's stderr (declared before the decoder: outlives it)
     VideoInfo info_;
     bool live_ = false;
+    std::mutex decoderMutex_;  // guards decoder_'s replacement against interrupt() from another thread
+    bool interrupted_ = false;
     std::optional<ChildProcess> decoder_;  // ffmpeg writing raw RGBA frames to a pipe
     bool looping_ = false;         // the decoder started at frame 0 with -stream_loop
     std::int64_t current_ = -1;    // the index of frame_'s content
     std::int64_t next_ = 0;        // the index the decoder delivers next
     Image8 frame_;
     std::vector<std::uint8_t> spare_;  // the next frame is read here, then swapped into frame_
-    int starts_ = 0;
+    std::atomic<int> starts_{0};  // read by other threads (VideoStream::decoderStarts)
 };
 
 // The stand-in for a `video` or `webcam` channel whose source is not available: 640x360, looping

@@ -36,10 +36,7 @@ std::vector<std::string> channelSources(const ManifestDesc& manifest) {
     std::vector<std::string> keys;
     for (const PassDesc& pass : manifest.passes)
         for (const ChannelDesc& channel : pass.channels)
-            keys.push_back(channel.kind == ChannelKind::None || channel.kind == ChannelKind::Buffer ||
-                                   channel.kind == ChannelKind::CubeBuffer || channel.kind == ChannelKind::Keyboard
-                               ? std::string()
-                               : channelImageKey(channel));
+            keys.push_back(isMediaSource(channelSource(channel.kind)) ? channelImageKey(channel) : std::string());
     return keys;
 }
 
@@ -106,7 +103,7 @@ void Player::step(const FrameTime& time, std::span<const InputEvent> events, boo
     }
     FrameUniforms uniforms;
     uniforms.frame = sequence_.frame();
-    uniforms.time = static_cast<float>(time.time);
+    uniforms.time = time.time;
     uniforms.timeDelta = static_cast<float>(time.timeDelta);
     uniforms.frameRate = static_cast<float>(time.frameRate);
     uniforms.mouse = mouse_.uniform();

@@ -1,8 +1,10 @@
 // PlayerDesc and PlayerPlan: what a Player is made from. A PlayerDesc is plain settings whose
 // zero/absent fields mean "the default" (filled by withDefaults from core/Defaults.h, the one
 // place defaults live). A PlayerPlan is everything about a shadertoy that can be prepared without
-// GL: the validated manifest, its pass graph and the decoded pixels of every image channel. Plans
-// are made off the GL thread (a file watcher does it before a hot reload). No GL needed.
+// GL: the validated manifest, its pass graph, the decoded pixels of every image channel and the
+// opened sources of its videos, cameras, music and microphones (media/ChannelMedia.h), so that the
+// renderer only makes and updates textures. Plans are made off the GL thread (a file watcher does
+// it before a hot reload). No GL needed.
 #pragma once
 
 #include <vector>
@@ -42,7 +44,9 @@ struct PlayerPlan {
     std::vector<Diagnostic> notices;  // the manifest's notices and the stand-ins used
 };
 
-// Builds the graph and decodes every image channel; every problem is reported at once.
+// Builds the graph, decodes every image channel and opens every video and audio source (ffprobe and
+// ffmpeg, waits of seconds for live sources: call it off the GL thread); every problem is
+// reported at once.
 Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media);
 
 }  // namespace toyhost

@@ -70,51 +70,41 @@ void siteSilentAudioTexels(double time, int bins, std::array<std::uint8_t, 1024>
     }
 }
 
-Result<std::unique_ptr<TimedTexture>> TimedTexture::open(const TimedInput& input, const SamplerDesc& sampler) {
-    std::unique_ptr<TimedTexture> t(new TimedTexture());
-    t->input_ = input;
-    t->sampler_ = sampler;
-    t->texture_ = makeTexture();
-    const bool audio = input.kind == ChannelKind::Music || input.kind == ChannelKind::Mic;
-    if (audio) {
-        t->width_ = kAudioWidth;
-        t->height_ = kAudioHeight;
-        t->analyser_ = std::make_unique<AudioAnalyser>();
-        t->window_.resize(static_cast<std::size_t>(t->analyser_->settings().fftSize));
-        if (!input.device.empty()) {
-            Result<std::unique_ptr<LiveAudio>> live = LiveAudio::open(input.device);
-            if (!live) return live.error();
-            t->live_ = std::move(*live);
-        } else if (!input.standIn) {
-            Result<AudioClip> clip = decodeAudioFile(input.file);
-            if (!clip) return clip.error();
-            t->clip_ = std::move(*clip);
-        }
-        glBindTexture(GL_TEXTURE_2D, t->texture_.id());
+TimedTexture::TimedTexture(const TimedMedia& media, const SamplerDesc& sampler)
+    : media_(media), sampler_(sampler), texture_(makeTexture()) {
+    if (channelSource(media.kind) == ChannelSource::Audio) {
+        width_ = kAudioWidth;
+        height_ = kAudioHeight;
+        analyser_ = std::make_unique<AudioAnalyser>();
+        window_.resize(static_cast<std::size_t>(analyser_->settings().fftSize));
+        glBindTexture(GL_TEXTURE_2D, texture_.id());
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kAudioWidth, kAudioHeight, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
         glBindTexture(GL_TEXTURE_2D, 0);
     } else {
-        if (!input.standIn) {
-            Result<std::unique_ptr<VideoSource>> video =
-                input.device.empty() ? VideoSource::openFile(input.file) : VideoSource::openDevice(input.device);
-            if (!video) return video.error();
-            t->video_ = std::move(*video);
-            t->width_ = t->video_->width();
-            t->height_ = t->video_->height();
+        if (media.video) {
+            width_ = media.video->width();
+            height_ = media.video->height();
         } else {
-            videoStandInFrame(0.0, t->standInFrame_);
-            t->width_ = t->standInFrame_.width;
-            t->height_ = t->standInFrame_.height;
+            videoStandInFrame(0.0, standInFrame_);
+            width_ = standInFrame_.width;
+            height_ = standInFrame_.height;
         }
-        glBindTexture(GL_TEXTURE_2D, t->texture_.id());
+        glBindTexture(GL_TEXTURE_2D, texture_.id());
         const int levels =
-            sampler.filter == Filter::Mipmap ? 1 + static_cast<int>(std::floor(std::log2(std::max(t->width_, t->height_)))) : 1;
-        glTexStorage2D(GL_TEXTURE_2D, levels, GL_RGBA8, t->width_, t->height_);
+            sampler.filter == Filter::Mipmap ? 1 + static_cast<int>(std::floor(std::log2(std::max(width_, height_)))) : 1;
+        glTexStorage2D(GL_TEXTURE_2D, levels, GL_RGBA8, width_, height_);
         glBindTexture(GL_TEXTURE_2D, 0);
+        if (media.video) {
+            // The frame the stream shows now (frame 0 of a stream just opened), without asking for
+            // another: a renderer made for a hot reload shares the running stream and must not
+            // wait for it here. The first frame asks for its own.
+            uploadRgba(media.video->current());
+            uploadedVersion_ = media.video->currentVersion();
+            return;
+        }
     }
-    if (Status first = t->update(0.0); !first) return first.error();
-    return t;
+    (void)update(0.0);
 }
 
 TimedTexture::~TimedTexture() = default;
@@ -140,49 +130,50 @@ void TimedTexture::uploadAudio() {
     glBindTexture(GL_TEXTURE_2D, 0);
 }
 
-Status TimedTexture::update(double time) {
+Status TimedTexture::update(double time, const InputWait& wait) {
+    waited_ = false;
     if (lastTime_ && *lastTime_ == time) return okStatus();
     lastTime_ = time;
-    switch (input_.kind) {
-        case ChannelKind::Video:
-        case ChannelKind::Webcam: {
-            if (!video_) {
+    switch (channelSource(media_.kind)) {
+        case ChannelSource::Video: {
+            VideoStream* video = media_.video.get();
+            if (!video) {
                 videoStandInFrame(time, standInFrame_);
                 uploadRgba(standInFrame_);
-                channelTime_ = input_.kind == ChannelKind::Video ? static_cast<float>(videoStandInPlaybackTime(time)) : 0.0f;
+                channelTime_ = media_.kind == ChannelKind::Video ? static_cast<float>(videoStandInPlaybackTime(time)) : 0.0f;
                 return okStatus();
             }
-            const std::int64_t index = video_->live() ? -2 : video_->frameIndexAt(time);
-            if (index != lastFrameIndex_ || video_->live()) {
-                Result<const Image8*> frame = video_->frameAt(time);
-                if (!frame) return frame.error();
-                uploadRgba(**frame);
-                lastFrameIndex_ = index;
-            }
             // The site: a video's iChannelTime is its playback time; a webcam's stays 0.
-            channelTime_ = input_.kind == ChannelKind::Video ? static_cast<float>(video_->playbackTime(time)) : 0.0f;
+            channelTime_ = media_.kind == ChannelKind::Video ? static_cast<float>(video->playbackTime(time)) : 0.0f;
+            const std::uint64_t waitsBefore = video->waits();
+            Result<const Image8*> frame = video->frame(video->frameIndexAt(time), wait);
+            waited_ = video->waits() != waitsBefore;
+            if (!frame) return frame.error();
+            if (video->currentVersion() != uploadedVersion_) {
+                uploadRgba(**frame);
+                uploadedVersion_ = video->currentVersion();
+            }
             return okStatus();
         }
-        case ChannelKind::Music:
-        case ChannelKind::Mic: {
-            if (live_) {
+        case ChannelSource::Audio: {
+            if (media_.live) {
                 // A live microphone: the newest samples, whatever the frame's time; the site
                 // leaves a mic's iChannelTime at 0.
-                live_->latest(window_);
+                media_.live->latest(window_);
                 analyser_->analyse(window_);
                 audioTexels_ = analyser_->texels();
                 channelTime_ = 0.0f;
-            } else if (!clip_) {
+            } else if (!media_.clip) {
                 // The site's arrays: music's hold frequencyBinCount (1024) values, the mic's 512.
-                siteSilentAudioTexels(time, input_.kind == ChannelKind::Mic ? 512 : analyser_->settings().fftSize / 2,
+                siteSilentAudioTexels(time, media_.kind == ChannelKind::Mic ? 512 : analyser_->settings().fftSize / 2,
                                       audioTexels_);
                 channelTime_ = static_cast<float>(10.0 + time);
             } else {
                 // Music loops; the site's iChannelTime is the audio's currentTime.
-                samplesEndingAt(*clip_, time, true, window_);
+                samplesEndingAt(*media_.clip, time, true, window_);
                 analyser_->analyse(window_);
                 audioTexels_ = analyser_->texels();
-                const double length = clip_->seconds();
+                const double length = media_.clip->seconds();
                 channelTime_ = static_cast<float>(length > 0 ? std::fmod(time, length) : 0.0);
             }
             uploadAudio();

@@ -18,7 +18,7 @@
 #include "media/AudioClip.h"
 #include "media/ChannelMedia.h"
 #include "media/LiveAudio.h"
-#include "media/VideoSource.h"
+#include "media/VideoStream.h"
 #include "render/ChannelTextures.h"
 
 namespace toyhost {
@@ -35,36 +35,38 @@ InputTexture uploadVolume(const Volume8& volume, const SamplerDesc& sampler);
 // spectrum, row 1 512 bytes of waveform.
 void siteSilentAudioTexels(double time, int bins, std::array<std::uint8_t, 1024>& texels);
 
-// A video, webcam, music or mic channel: its texture, updated for each frame's time.
+// A video, webcam, music or mic channel: its texture, updated for each frame's time from a source
+// the plan opened (media/ChannelMedia.h): no file or process is opened here, and the only wait is
+// for a video decoder that has not decoded the frame yet (published as WaitingForInput).
 class TimedTexture {
 public:
-    static Result<std::unique_ptr<TimedTexture>> open(const TimedInput& input, const SamplerDesc& sampler);
+    TimedTexture(const TimedMedia& media, const SamplerDesc& sampler);
     ~TimedTexture();
 
-    // Brings the texture to iTime `time` (a no-op when the frame shown has not changed).
-    Status update(double time);
+    // Brings the texture to iTime `time` (a no-op when the frame shown has not changed); `wait` is
+    // published while a video decoder is behind. On an error (a decoder that failed) the last
+    // frame stays.
+    Status update(double time, const InputWait& wait = {});
     GLuint texture() const { return texture_.id(); }
     std::array<float, 3> resolution() const { return {float(width_), float(height_), 1.0f}; }
     float channelTime() const { return channelTime_; }
+    // Whether the last update() had to wait for a video decoder.
+    bool waited() const { return waited_; }
 
 private:
-    TimedTexture() = default;
     void uploadRgba(const Image8& frame);
     void uploadAudio();
 
-    TimedInput input_;
+    TimedMedia media_;
     SamplerDesc sampler_;
     GlTexture texture_;
     int width_ = 0;
     int height_ = 0;
     float channelTime_ = 0;
     std::optional<double> lastTime_;
-    std::unique_ptr<VideoSource> video_;
-    const Image8* lastFrame_ = nullptr;
-    std::int64_t lastFrameIndex_ = -1;
+    std::uint64_t uploadedVersion_ = 0;
+    bool waited_ = false;  // the video frame (VideoStream::currentVersion) on the texture
     Image8 standInFrame_;
-    std::optional<AudioClip> clip_;
-    std::unique_ptr<LiveAudio> live_;
     std::unique_ptr<AudioAnalyser> analyser_;
     std::vector<float> window_;
     std::array<std::uint8_t, 1024> audioTexels_{};

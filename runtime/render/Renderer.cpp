@@ -13,29 +13,18 @@
 #include "gl/GlContext.h"
 #include "gl/GlObjects.h"
 #include "image/PixelConversion.h"
-#include "render/ChannelTextures.h"
+#include "render/ChannelBindings.h"
 #include "render/CubeTarget.h"
-#include "render/MediaTextures.h"
 #include "render/PassProgram.h"
 
 namespace toyhost {
 
 namespace {
 
-// What a channel binds, fixed after creation except for buffers, whose slot depends on the step.
-struct ChannelBinding {
-    GLenum target = GL_TEXTURE_2D; // as the header declares the channel (sampler2D/Cube/3D)
-    GLuint texture = 0;            // non-buffer inputs
-    GLuint sampler = 0;
-    std::array<float, 3> resolution{0, 0, 0};
-};
-
 struct PassRuntime {
     PassPlan plan;
     PassProgram program;
-    std::array<ChannelBinding, kChannelCount> channels;
-    std::array<TimedTexture*, kChannelCount> timed{};  // video/audio channels: iChannelTime each frame
-    bool hasTimed = false;
+    PassBindings bindings;
 };
 
 }  // namespace
@@ -81,6 +70,9 @@ public:
         activity.begin(RunActivity::Phase::Drawing, items_[0].pass, items_[0].frame);
     }
 
+    // Something else was published meanwhile (a wait for a video): publish() says it again.
+    void forgetPublished() { published_ = nullptr; }
+
 private:
     struct Item {
         GLsync fence = nullptr;
@@ -106,17 +98,12 @@ private:
 
 struct Renderer::Impl {
     TextureAllocator allocate;
-    SamplerSet samplers;
     GlVertexArray vertexArray = makeVertexArray();
-    std::optional<KeyboardTexture> keyboard;
+    InputTextures inputs;  // every texture a channel binds but buffers, and the samplers
     std::array<std::optional<PingPongTarget>, kBufferCount> buffers;
     std::optional<CubeTarget> cube;  // Cube A
     RenderTexture imageTarget;
     bool floatImage = false;
-    // Image textures by (picture, vflip, mipmapped): channels showing the same upload share it.
-    std::map<std::tuple<std::string, bool, bool>, InputTexture> inputs;
-    // Video, webcam, music and mic textures by the same key, brought to each frame's time.
-    std::map<std::tuple<std::string, bool, bool>, std::unique_ptr<TimedTexture>> timed;
     std::vector<PassRuntime> passes;
     std::uint64_t lastStep = 0;
     RunActivity* activity = nullptr;
@@ -146,24 +133,8 @@ struct Renderer::Impl {
 
     // The uniforms that change only when the program, the bindings or the canvas change.
     void setStaticUniforms(PassRuntime& pass) const {
-        const UniformLocations& u = pass.program.uniforms;
         glUseProgram(pass.program.program.id());
-        for (int i = 0; i < kChannelCount; ++i) {
-            // Texture unit i carries iChannel i (and iCh i.sampler in the Image pass).
-            glUniform1i(u.channel[i], i);
-            glUniform1i(u.chSampler[i], i);
-            glUniform1i(u.chLoaded[i], pass.plan.channels[i].kind != ChannelKind::None);
-            glUniform1f(u.chTime[i], 0.0f);
-        }
-        glUniform1f(u.sampleRate, static_cast<float>(defaults::kSampleRate));
-        const float zeros[4] = {0, 0, 0, 0};
-        glUniform1fv(u.channelTime, 4, zeros);  // no video or audio inputs
-        std::array<float, 3 * kChannelCount> resolutions{};
-        for (int i = 0; i < kChannelCount; ++i) {
-            for (int k = 0; k < 3; ++k) resolutions[3 * i + k] = pass.channels[i].resolution[k];
-            glUniform3fv(u.chSize[i], 1, pass.channels[i].resolution.data());
-        }
-        glUniform3fv(u.channelResolution, kChannelCount, resolutions.data());
+        setChannelUniforms(pass.program.uniforms, pass.bindings);
         glUseProgram(0);
     }
 };
@@ -211,97 +182,15 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
     if (!image) return inPass("Image", image.error());
     impl->imageTarget = std::move(*image);
 
+    BindOptions bind;
+    bind.canvas = canvas;
     for (size_t p = 0; p < graph.passes.size(); ++p) {
         const PassPlan& plan = graph.passes[p];
-        const PassDesc& passDesc = manifest.passes[p];
-        PassRuntime pass{plan, std::move(programs[p]), {}};
-        for (int c = 0; c < kChannelCount; ++c) {
-            const ChannelPlan& channel = plan.channels[c];
-            ChannelBinding& binding = pass.channels[c];
-            binding.sampler = impl->samplers.get(channel.sampler);
-            binding.target = textureTarget(passDesc.channels[c].samplerType);
-            switch (channel.kind) {
-                case ChannelKind::None: binding.sampler = 0; break;
-                case ChannelKind::Buffer: binding.resolution = canvas; break;
-                case ChannelKind::CubeBuffer:
-                    binding.resolution = {float(defaults::kCubeBufferSize), float(defaults::kCubeBufferSize), 1};
-                    break;
-                case ChannelKind::Keyboard:
-                    if (!impl->keyboard) impl->keyboard.emplace();
-                    binding.texture = impl->keyboard->id();
-                    binding.resolution = {float(KeyboardTexture::kWidth), float(KeyboardTexture::kHeight), 1};
-                    break;
-                case ChannelKind::ImageFile:
-                case ChannelKind::StockMedia: {
-                    const Image8* pixels = images.find(passDesc.channels[c]);
-                    if (!pixels)
-                        return inPass(passName(plan.id),
-                                      Error("the channel's image was not loaded before rendering", Code::Internal), c);
-                    // GL would refuse it with a bare GL_INVALID_VALUE; say which image and the limit.
-                    if (const int limit = maxTextureSize(); pixels->width > limit || pixels->height > limit)
-                        return inPass(passName(plan.id),
-                                      Error("the image is " + std::to_string(pixels->width) + "x" +
-                                                std::to_string(pixels->height) + ", larger than this GL allows "
-                                                "(GL_MAX_TEXTURE_SIZE " + std::to_string(limit) + ")",
-                                            Code::GlTextureSize),
-                                      c);
-                    const auto key = std::make_tuple(channelImageKey(passDesc.channels[c]), channel.sampler.vflip,
-                                                     channel.sampler.filter == Filter::Mipmap);
-                    auto it = impl->inputs.find(key);
-                    if (it == impl->inputs.end())
-                        it = impl->inputs.emplace(key, uploadImage(*pixels, channel.sampler)).first;
-                    binding.texture = it->second.texture.id();
-                    binding.resolution = {float(pixels->width), float(pixels->height), 1};
-                    break;
-                }
-                case ChannelKind::Cubemap:
-                case ChannelKind::Volume: {
-                    const ChannelDesc& desc = passDesc.channels[c];
-                    const auto key = std::make_tuple(channelImageKey(desc), channel.sampler.vflip,
-                                                     channel.sampler.filter == Filter::Mipmap);
-                    auto it = impl->inputs.find(key);
-                    if (channel.kind == ChannelKind::Cubemap) {
-                        const CubeFaces8* faces = images.findCubemap(desc);
-                        if (!faces)
-                            return inPass(passName(plan.id), Error("the cubemap was not loaded before rendering", Code::Internal), c);
-                        if (it == impl->inputs.end()) it = impl->inputs.emplace(key, uploadCubemap(*faces, channel.sampler)).first;
-                        // The site leaves iChannelResolution at 0 for a cubemap input (only Cube
-                        // A gets a size): effect.js Paint_Image sets no resolution for it.
-                        binding.resolution = {0, 0, 0};
-                    } else {
-                        const Volume8* volume = images.findVolume(desc);
-                        if (!volume)
-                            return inPass(passName(plan.id), Error("the volume was not loaded before rendering", Code::Internal), c);
-                        if (it == impl->inputs.end()) it = impl->inputs.emplace(key, uploadVolume(*volume, channel.sampler)).first;
-                        binding.resolution = {float(volume->width), float(volume->height), float(volume->depth)};
-                    }
-                    binding.texture = it->second.texture.id();
-                    break;
-                }
-                case ChannelKind::Video:
-                case ChannelKind::Webcam:
-                case ChannelKind::Music:
-                case ChannelKind::Mic: {
-                    const ChannelDesc& desc = passDesc.channels[c];
-                    const TimedInput* input = images.findTimed(desc);
-                    if (!input)
-                        return inPass(passName(plan.id), Error("the channel's media was not found before rendering", Code::Internal), c);
-                    const auto key = std::make_tuple(channelImageKey(desc), channel.sampler.vflip,
-                                                     channel.sampler.filter == Filter::Mipmap);
-                    auto it = impl->timed.find(key);
-                    if (it == impl->timed.end()) {
-                        Result<std::unique_ptr<TimedTexture>> opened = TimedTexture::open(*input, channel.sampler);
-                        if (!opened) return inPass(passName(plan.id), opened.error(), c);
-                        it = impl->timed.emplace(key, std::move(*opened)).first;
-                    }
-                    binding.texture = it->second->texture();
-                    binding.resolution = it->second->resolution();
-                    pass.timed[c] = it->second.get();
-                    pass.hasTimed = true;
-                    break;
-                }
-            }
-        }
+        std::array<SamplerDesc, kChannelCount> samplers;
+        for (int c = 0; c < kChannelCount; ++c) samplers[c] = plan.channels[c].sampler;
+        Result<PassBindings> bindings = bindChannels(manifest.passes[p], samplers, images, impl->inputs, bind);
+        if (!bindings) return bindings.error();
+        PassRuntime pass{plan, std::move(programs[p]), std::move(*bindings)};
         impl->setStaticUniforms(pass);
         impl->passes.push_back(std::move(pass));
     }
@@ -318,7 +207,7 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
     Impl& s = *impl_;
     // Videos and audio to this frame's time, before any pass reads them. A decoder that fails
     // mid-run (a file truncated on disk) keeps its last frame; the failure was the file's.
-    for (auto& [key, timed] : s.timed) (void)timed->update(u.time);
+    if (s.inputs.updateTimed(u.time, u.frame, s.activity) && s.watchDraws) s.pending.forgetPublished();
     glBindVertexArray(s.vertexArray.id());
     glViewport(0, 0, width_, height_);
     glDisable(GL_BLEND);
@@ -338,32 +227,22 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
         const UniformLocations& loc = pass.program.uniforms;
         if (isCube) glUniform3f(loc.resolution, float(s.cube->size()), float(s.cube->size()), 1.0f);
         else glUniform3f(loc.resolution, float(width_), float(height_), 1.0f);
-        glUniform1f(loc.time, u.time);
+        glUniform1f(loc.time, static_cast<float>(u.time));  // narrowed here only (FrameUniforms::time)
         glUniform1f(loc.timeDelta, u.timeDelta);
         glUniform1f(loc.frameRate, u.frameRate);
         glUniform1i(loc.frame, u.frame);
         glUniform4f(loc.mouse, u.mouse.x, u.mouse.y, u.mouse.z, u.mouse.w);
         glUniform4f(loc.date, u.date.x, u.date.y, u.date.z, u.date.w);
-        if (pass.hasTimed) {
-            float times[kChannelCount] = {0, 0, 0, 0};
-            for (int c = 0; c < kChannelCount; ++c)
-                if (pass.timed[c]) {
-                    times[c] = pass.timed[c]->channelTime();
-                    glUniform1f(loc.chTime[c], times[c]);
-                }
-            glUniform1fv(loc.channelTime, kChannelCount, times);
-        }
+        setTimedUniforms(loc, pass.bindings);
+        std::array<GLuint, kChannelCount> dynamic{};
         for (int c = 0; c < kChannelCount; ++c) {
             const ChannelPlan& plan = pass.plan.channels[c];
-            GLuint texture = pass.channels[c].texture;
             if (plan.kind == ChannelKind::Buffer)
-                texture = s.buffers[plan.buffer]->slot(slotRead(plan.age, step)).texture.id();
+                dynamic[c] = s.buffers[plan.buffer]->slot(slotRead(plan.age, step)).texture.id();
             else if (plan.kind == ChannelKind::CubeBuffer)
-                texture = s.cube->texture(slotRead(plan.age, step));
-            glActiveTexture(GL_TEXTURE0 + c);
-            glBindTexture(pass.channels[c].target, texture);
-            glBindSampler(c, pass.channels[c].sampler);
+                dynamic[c] = s.cube->texture(slotRead(plan.age, step));
         }
+        bindTextures(pass.bindings, dynamic);
         if (isCube) {
             // The six faces, each with its viewport and corner directions (site: Paint_Cubemap).
             const int size = s.cube->size();
@@ -415,9 +294,7 @@ void Renderer::publishPendingDraws() {
     if (impl_->watchDraws) impl_->pending.publish(*impl_->activity);
 }
 
-void Renderer::updateKeyboard(std::span<const std::uint8_t> texels) {
-    if (impl_->keyboard) impl_->keyboard->update(texels);
-}
+void Renderer::updateKeyboard(std::span<const std::uint8_t> texels) { impl_->inputs.updateKeyboard(texels); }
 
 Status Renderer::resize(int width, int height) {
     Impl& s = *impl_;
@@ -441,9 +318,8 @@ Status Renderer::resize(int width, int height) {
     width_ = width;
     height_ = height;
     for (PassRuntime& pass : s.passes) {
-        for (int c = 0; c < kChannelCount; ++c)
-            if (pass.plan.channels[c].kind == ChannelKind::Buffer)
-                pass.channels[c].resolution = {float(width), float(height), 1};
+        for (ChannelBinding& channel : pass.bindings.channels)
+            if (channel.source == ChannelSource::Buffer) channel.resolution = {float(width), float(height), 1};
         s.setStaticUniforms(pass);
     }
     return okStatus();

@@ -42,7 +42,9 @@ struct RendererDesc {
 // Per-frame uniform values; the caller owns the clock and the inputs.
 struct FrameUniforms {
     int frame = 0;
-    float time = 0;
+    // iTime. Double: the frame of a video channel is floor(time * fps) (a 30 fps clip at --fps 30
+    // shows frame N at frame N only with the exact time); narrowed to float only for glUniform.
+    double time = 0;
     float timeDelta = 0;
     float frameRate = 60;
     glm::vec4 mouse{0};

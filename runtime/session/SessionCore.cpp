@@ -15,7 +15,8 @@
 #include "session/FiniteCheck.h"
 #include "session/FrameRecorder.h"
 #include "session/ShadertoyWatcher.h"
-#include "session/SoundRender.h"
+#include "capture/SoundFile.h"
+#include "render/SoundRenderer.h"
 
 namespace toyhost {
 
@@ -178,8 +179,11 @@ Status SessionCore::prepareSoundTrack() {
 Result<std::vector<float>> SessionCore::renderSound(double seconds) {
     SoundRenderDesc desc;
     desc.seconds = seconds;
+    desc.activity = activity();
+    desc.stopRequested = [this] { return stopRequested(); };
     // Once the Player runs, the shadertoy's plan is its.
-    return toyhost::renderSound(*context_, player_ ? player_->plan() : plan_.shadertoy, desc);
+    const PlayerPlan& shadertoy = player_ ? player_->plan() : plan_.shadertoy;
+    return toyhost::renderSound(*context_, shadertoy.manifest, shadertoy.images, desc);
 }
 
 Result<SessionReport> SessionCore::writeSound() {
@@ -202,7 +206,8 @@ Result<SessionReport> SessionCore::writeSound() {
     if (RunActivity* a = activity()) a->idle();
     for (Result<fs::path>& written : writer_->takeFinished()) {
         if (!written) return written.error();
-        report_.files.push_back(*written);
+        if (*written == "-") report_.toStdout = true;
+        else report_.files.push_back(*written);
     }
     report_.name = name_;
     report_.firstFrameSeconds = secondsBetween(roundStartedAt_, firstFrameEndedAt_);

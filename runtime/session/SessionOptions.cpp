@@ -5,6 +5,7 @@
 #include "core/AtomicFile.h"
 #include "core/ChildProcess.h"
 #include "core/Defaults.h"
+#include "capture/SoundFile.h"
 #include "export/LoadShadertoy.h"
 #include "timing/FrameClock.h"
 
@@ -73,23 +74,16 @@ Result<SessionOptions> withCheckpointSettings(SessionOptions o, const Checkpoint
 }
 
 namespace {
-// `toyhost sound --out`: an audio file by its extension, or "-" for WAV on stdout.
+// `toyhost sound --out`: an audio file by its extension, "-" for WAV on stdout, or a device.
 Status checkSoundRequest(const SoundRequest& sound) {
     if (!(sound.seconds >= 0) || sound.seconds > defaults::kMaxSoundSeconds)
         return usage("--seconds must be more than 0 and at most " + std::to_string(int(defaults::kMaxSoundSeconds)));
-    if (sound.out == "-") return okStatus();
+    if (Status out = checkSoundOutput(sound.out); !out) return out;
+    std::error_code ec;
+    if (fs::is_directory(sound.out, ec)) return usage("--out " + sound.out.string() + ": is a folder; give a file name");
     std::string extension = sound.out.extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    static const char* const known[] = {".wav", ".flac", ".ogg", ".opus", ".mp3", ".m4a"};
-    std::error_code ec;
-    // A device or a pipe (/dev/full, a FIFO) has no extension: it gets WAV.
-    const bool device = extension.empty() && fs::exists(sound.out, ec) && !fs::is_regular_file(sound.out, ec) &&
-                        !fs::is_directory(sound.out, ec);
-    if (!device && std::find(std::begin(known), std::end(known), extension) == std::end(known))
-        return usage("--out " + sound.out.string() + ": the audio format comes from the extension: .wav, .flac, "
-                     ".ogg, .opus, .mp3 or .m4a (or - for WAV on stdout)");
-    if (fs::is_directory(sound.out, ec)) return usage("--out " + sound.out.string() + ": is a folder; give a file name");
-    if (!device && extension != ".wav" && !findExecutable("ffmpeg"))
+    if (!extension.empty() && extension != ".wav" && !findExecutable("ffmpeg"))
         return Error("--out " + sound.out.string() + ": " + extension.substr(1) +
                          " audio needs ffmpeg, which is not in PATH (Debian: apt-get install ffmpeg), or write a .wav",
                      Code::SoundFfmpegMissing);

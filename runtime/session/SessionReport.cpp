@@ -49,6 +49,8 @@ std::vector<std::string> summaryLines(const SessionReport& r) {
     else if (!r.files.empty())
         lines.push_back("wrote " + std::to_string(r.files.size()) + " files (" + bytes() + "): " + r.files.front().string() +
                         " .. " + r.files.back().string());
+    else if (r.toStdout && r.soundSeconds > 0)
+        lines.push_back("wrote WAV to stdout");
     else if (r.toStdout)
         lines.push_back("wrote " + bytes() + " of raw RGBA8 frames to stdout");
     if (r.checkpoint) lines.push_back("checkpoint written: " + r.checkpoint->string());

@@ -119,6 +119,13 @@ void Watchdog::loop() {
                                    "limit off)",
                                now.pass),
                        kExitWatchdog);
+        else if (frameLimit > 0 && now.phase == RunActivity::Phase::WaitingForInput && now.seconds > frameLimit)
+            expireWith(problem(Code::WatchdogInput,
+                               "frame " + std::to_string(now.frame) + " has waited " + seconds(now.seconds) +
+                                   " s for a video decoder, longer than --frame-timeout " + seconds(frameLimit) +
+                                   ": the run is ended (a stalled ffmpeg or camera?)",
+                               now.pass),
+                       kExitWatchdog);
         else if (frameLimit > 0 && now.phase == RunActivity::Phase::WaitingForOutput && now.seconds > frameLimit)
             expireWith(problem(Code::WatchdogOutput,
                                "the encoders have taken no frame for " + seconds(now.seconds) +

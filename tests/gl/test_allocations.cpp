@@ -1,7 +1,11 @@
 // "Nothing per frame that need not be": once running, the Player's frame (input events, uniforms,
-// every pass, the keyboard upload) makes no heap allocation. Counted by replacing the global
-// operator new in this test executable (Mesa's own allocations use malloc and are not counted).
+// every pass, the keyboard upload, a video channel's frames from its decoding thread, a music
+// channel's analysis) makes no heap allocation. Counted by replacing the global operator new in
+// this test executable, on every thread (Mesa's own allocations use malloc and are not counted).
 #include "GlTestSupport.h"
+
+#include "capture/WavFile.h"
+#include "core/ChildProcess.h"
 
 #include <atomic>
 #include <cstdlib>
@@ -43,6 +47,30 @@ TEST_F(Allocations, APlayerFrameAllocatesNothing) {
         if (i % 5 == 3) events.push_back(InputEvent::keyUp(32));
         stepAt(*toy, events);
     }
+    counting = false;
+    toy->player().finish();
+    EXPECT_EQ(allocations.load(), 0) << "heap allocations in 20 frames";
+}
+
+TEST_F(Allocations, AFrameWithVideoAndMusicChannelsAllocatesNothing) {
+    if (!findExecutable("ffmpeg")) GTEST_SKIP() << "needs ffmpeg";
+    const std::filesystem::path dir = freshOutputDir("allocations/media");
+    writeFile(dir / "image.glsl",
+              "void mainImage(out vec4 c, in vec2 f) { c = texture(iChannel0, f / iResolution.xy) + "
+              "texture(iChannel1, f / iResolution.xy) + iChannelTime[0] + iChannelTime[1]; }\n");
+    writeFile(dir / "manifest.json", R"({"passes": {"Image": {"source": "image.glsl",
+        "channels": {"iChannel0": {"video": "clip.mkv"}, "iChannel1": {"music": "tone.wav"}}}}})");
+    const std::string encode = "ffmpeg -v error -nostdin -y -f lavfi -i testsrc2=s=64x36:r=30:d=4 -c:v ffv1 '" +
+                               (dir / "clip.mkv").string() + "'";
+    ASSERT_EQ(std::system(encode.c_str()), 0);
+    std::vector<float> stereo(2 * 44100, 0.25f);
+    ASSERT_TRUE(writeWav16(dir / "tone.wav", stereo, 44100));
+    auto toy = loadSession(context_, dir, 32, 18);
+    ASSERT_TRUE(toy);
+    for (int i = 0; i < 3; ++i) stepAt(*toy);  // warm-up
+    allocations = 0;
+    counting = true;
+    for (int i = 0; i < 20; ++i) stepAt(*toy, {}, 24.0);  // a new video frame on most frames
     counting = false;
     toy->player().finish();
     EXPECT_EQ(allocations.load(), 0) << "heap allocations in 20 frames";

@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -22,6 +24,7 @@
 #include "TestFolder.h"
 #include "core/ChildProcess.h"
 #include "media/VideoSource.h"
+#include "media/VideoStream.h"
 
 using namespace toyhost;
 using toyhost::testing::TestFolder;
@@ -43,6 +46,10 @@ const Encoding kEncodings[] = {
     {"Ffv1Matroska", "indexed.mkv", "-c:v ffv1"},
     {"H264Mp4", "indexed.mp4", "-c:v libx264rgb -qp 0 -preset ultrafast -bf 2"},
 };
+
+// The parameter as gtest prints it (in test lists and `ctest -N`): the encoding's name, not the
+// struct's bytes (which hold pointers, different in every build).
+void PrintTo(const Encoding& encoding, std::ostream* out) { *out << encoding.name; }
 
 // Frame k: red 10 * (k % 25), blue 50 * (k / 25); green 200 on the top half, 50 below.
 fs::path makeIndexedVideo(const TestFolder& folder, const Encoding& encoding) {
@@ -235,6 +242,111 @@ TEST_P(VideoSourceTest, ADecoderThatDiesIsAnErrorNamingTheFileThenARestart) {
     EXPECT_EQ(video->decoderStarts(), 2);
 }
 
+// ---- VideoStream: the same file decoded ahead on its own thread ------------------------------
+
+class VideoStreamTest : public VideoSourceTest {
+protected:
+    void SetUp() override {
+        VideoSourceTest::SetUp();
+        if (IsSkipped() || HasFatalFailure()) return;
+        video.reset();  // one decoder at a time, so the children() checks see the stream's own
+        Result<std::shared_ptr<VideoStream>> opened = VideoStream::openFile(path);
+        ASSERT_TRUE(opened) << opened.error().text();
+        stream = std::move(*opened);
+    }
+    int shown(std::int64_t index, const InputWait& wait = {}) {
+        Result<const Image8*> frame = stream->frame(index, wait);
+        if (!frame) {
+            ADD_FAILURE() << frame.error().text();
+            return -1;
+        }
+        return frameIndexIn(**frame);
+    }
+    std::shared_ptr<VideoStream> stream;
+};
+
+INSTANTIATE_TEST_SUITE_P(Encodings, VideoStreamTest, ::testing::ValuesIn(kEncodings),
+                         [](const ::testing::TestParamInfo<Encoding>& info) { return std::string(info.param.name); });
+
+TEST_P(VideoStreamTest, FramesAheadAreDecodedBeforeTheyAreAskedFor) {
+    EXPECT_EQ(frameIndexIn(stream->current()), 0);  // frame 0 is decoded at open
+    EXPECT_EQ(stream->queueCapacity(), 3);           // defaults::kVideoAheadFrames for a small frame
+    stream->waitUntilQueued();
+    for (int k = 1; k <= 3; ++k) EXPECT_EQ(shown(k), k);
+    EXPECT_EQ(stream->waits(), 0u) << "the render thread waited for frames the decoder had ready";
+}
+
+TEST_P(VideoStreamTest, FrameIIsTheFilesFrameIWhateverTheOrderAndPace) {
+    // A fixed pseudo-random walk: steps forward of 0..4 frames (rendering faster or slower than the
+    // video), jumps back, far jumps and the loop, with waits for the queue between some of them.
+    std::mt19937 random(1234);
+    std::int64_t index = 0;
+    for (int i = 0; i < 400; ++i) {
+        const int choice = static_cast<int>(random() % 20);
+        if (choice == 0) index = static_cast<std::int64_t>(random() % kFrames);             // anywhere
+        else if (choice == 1) index = (index + kFrames - 1 - random() % 5) % kFrames;       // a little back
+        else index = (index + random() % 5) % kFrames;                                      // forward
+        if (random() % 7 == 0) stream->waitUntilQueued();
+        ASSERT_EQ(shown(index), index) << "step " << i;
+    }
+    EXPECT_GT(stream->decoderStarts(), 1);  // the jumps restarted ffmpeg
+}
+
+TEST_P(VideoStreamTest, PlaybackThroughTheLoopKeepsOneDecoder) {
+    for (int frame = 0; frame < 1300; ++frame)
+        ASSERT_EQ(shown(stream->frameIndexAt(frame / 60.0)), (frame / 6) % kFrames) << "frame " << frame;
+    EXPECT_EQ(stream->decoderStarts(), 1);  // the loop continues inside ffmpeg (-stream_loop)
+}
+
+TEST_P(VideoStreamTest, AWaitIsPublishedAndEndsIdle) {
+    // Far ahead: the decoder starts over there, and the render thread waits for it.
+    RunActivity activity;
+    const std::uint64_t before = stream->waits();
+    EXPECT_EQ(shown(70, InputWait{&activity, "Image", 12}), 70);
+    EXPECT_EQ(stream->waits(), before + 1);
+    EXPECT_EQ(activity.snapshot().phase, RunActivity::Phase::Idle);  // published while it lasted, then idle
+}
+
+TEST_P(VideoStreamTest, DestroyingTheStreamStopsItsThreadAndReapsFfmpeg) {
+    stream->waitUntilQueued();  // the thread now waits for room in the queue, ffmpeg for its pipe
+    ASSERT_EQ(children().size(), 1u);
+    stream.reset();
+    EXPECT_TRUE(children().empty());
+}
+
+TEST_P(VideoStreamTest, ADecoderThatDiesIsAnErrorThenTheNextFrameStartsAnother) {
+    stream->waitUntilQueued();  // frames 1..3 are queued
+    const std::vector<ChildInfo> decoder = children();
+    ASSERT_EQ(decoder.size(), 1u);
+    ASSERT_EQ(::kill(decoder[0].pid, SIGKILL), 0);
+    // What was queued or in the pipe still arrives; then the end of the stream is an error naming
+    // the file.
+    Result<const Image8*> frame = stream->frame(1);
+    int reached = 1;
+    for (; reached < 2000 && frame; ++reached) frame = stream->frame(reached % kFrames);
+    ASSERT_FALSE(frame) << "no error after " << reached << " frames";
+    EXPECT_EQ(frame.error().first().file, path.string());
+    const int lastGood = (reached - 2) % kFrames;
+    EXPECT_GE(reached - 2, 3);
+    EXPECT_EQ(frameIndexIn(stream->current()), lastGood);  // the last good frame stays
+    EXPECT_TRUE(children().empty());                      // the dead decoder was reaped
+    const int next = (lastGood + 50) % kFrames;
+    EXPECT_EQ(shown(next), next);
+    EXPECT_EQ(stream->decoderStarts(), 2);
+}
+
+TEST(VideoStream, AFrameTooLargeForTheByteBudgetQueuesFewerFrames) {
+    if (!haveFfmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
+    TestFolder folder;
+    // 4096x2304 RGBA is 37.7 MB a frame: two fit in defaults::kVideoAheadBytes (96 MiB), not three.
+    const fs::path big = folder.path / "big.mkv";
+    ASSERT_EQ(toyhost::testing::shell("ffmpeg -v error -nostdin -f lavfi -i color=c=red:s=4096x2304:r=1:d=3 -c:v ffv1 '" +
+                                      big.string() + "'").first, 0);
+    Result<std::shared_ptr<VideoStream>> opened = VideoStream::openFile(big);
+    ASSERT_TRUE(opened) << opened.error().text();
+    EXPECT_EQ((*opened)->queueCapacity(), 2);
+}
+
 TEST(VideoSource, AMissingFileIsOneErrorNamingIt) {
     TestFolder folder;
     const fs::path missing = folder.path / "nowhere.mp4";
@@ -303,6 +415,20 @@ TEST(VideoStandIn, IsDeterministicMovesWithTimeAndLoops) {
     const std::uint8_t* top = a.rgba.data() + (a.rgba.size() - static_cast<std::size_t>(a.width) * 4);
     for (int x = 0; x < a.width; ++x) colour |= top[x * 4] != top[x * 4 + 1] || top[x * 4 + 1] != top[x * 4 + 2];
     EXPECT_TRUE(colour);
+}
+
+TEST(VideoStandIn, TheDiscIsClippedAtTheRightAndTopEdges) {
+    // At 2.5 s the disc is at the right end of its path (centre x 604, radius 36) and at y 180: its
+    // rightmost column, x = 640, is outside the frame; written anyway, it would land on the first
+    // pixel of the next row (and at the top end of its path, past the last row).
+    Image8 frame;
+    videoStandInFrame(2.5, frame);
+    const std::size_t row = static_cast<std::size_t>(kVideoStandInWidth) * 4;
+    const std::uint8_t* next = frame.rgba.data() + 181 * row;  // x = 0 of the row above the centre
+    // The colour bars there (shifted by 160 px at 2.5 s: bar 2, cyan), not the disc's white rim.
+    EXPECT_EQ(int(next[0]), 0);
+    EXPECT_EQ(int(next[1]), 191);
+    EXPECT_EQ(int(next[2]), 191);
 }
 
 TEST(VideoStandIn, ReusesTheFrameBuffer) {

@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
     soundOptions.seconds = defaults::kSoundSeconds;
     CLI::App* sound = app.add_subcommand("sound", "Render a shadertoy's Sound pass (mainSound) to an audio file");
     sound->add_option("shadertoy", soundOptions.target, "Manifest folder or file, or a Shadertoy JSON export")->required();
-    sound->add_option("--out", soundOptions.out, "Audio file: .wav (16-bit PCM), or .flac, .ogg, .opus, .mp3, .m4a through ffmpeg")
+    sound->add_option("--out", soundOptions.out, "Audio file: .wav (16-bit PCM), or .flac, .ogg, .opus, .mp3, .m4a through ffmpeg; - for WAV on stdout")
         ->required();
     sound->add_option("--seconds", soundOptions.seconds, "Length, as the site's 180 s by default")
         ->default_val(defaults::kSoundSeconds);
