@@ -24,6 +24,10 @@ struct Diagnostic {
     std::string field;    // JSON path inside `file` (passes."Image".channels.iChannel0); "" when none
     int line = 0;         // 1-based line within `file`; 0 when none
     int column = 0;       // 1-based column; 0 when none
+    // The user's source around `line` with a caret under `column`, as lines ready to print after the
+    // one-line form ("    4 |     vec3 c = mix(previus, a, 0.5);" then "      |                  ^~~~~~~");
+    // "" when there is none (most problems are not about a source line).
+    std::string excerpt;
 };
 
 const char* severityName(Severity severity);  // "error", "warning", "notice"
@@ -32,8 +36,13 @@ const char* severityName(Severity severity);  // "error", "warning", "notice"
 // when empty (the pass/channel part also when the JSON field already names the pass).
 std::string formatDiagnostic(const Diagnostic& diagnostic);
 
-// Every diagnostic formatted, one per line, each line starting with `prefix`; at most
-// `limit` lines, then "... and N more".
+// formatDiagnostic's line, then the diagnostic's excerpt (if any) on the lines below it, without
+// a prefix (so that the caret stays under its column).
+std::string formatDiagnosticWithExcerpt(const Diagnostic& diagnostic, const std::string& prefix = "");
+
+// Every diagnostic formatted, one per line, each line starting with `prefix` and followed by the
+// diagnostic's excerpt (formatDiagnosticWithExcerpt); at most `limit` diagnostics, then
+// "... and N more".
 std::string formatDiagnostics(const std::vector<Diagnostic>& diagnostics, const std::string& prefix = "",
                               std::size_t limit = 100);
 

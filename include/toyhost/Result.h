@@ -25,7 +25,7 @@ struct Error {
     Error(Diagnostic diagnostic) { diagnostics.push_back(std::move(diagnostic)); }
     explicit Error(std::vector<Diagnostic> all) : diagnostics(std::move(all)) {}
 
-    // Every diagnostic, one formatted line each (no prefix).
+    // Every diagnostic, one formatted line each (no prefix), source excerpts below their line.
     std::string text() const { return formatDiagnostics(diagnostics); }
     const Diagnostic& first() const { return diagnostics.front(); }
     // The category of the first diagnostic, which decides what happens next (exit codes).

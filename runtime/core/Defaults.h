@@ -45,6 +45,10 @@ inline constexpr int kSoundBlockSide = 512;
 // (--compile-timeout). 0 turns either off.
 inline constexpr double kFrameTimeoutSeconds = 60.0;
 inline constexpr double kCompileTimeoutSeconds = 120.0;
+// A limit other than 0 (off) is at least 0.1 s: shorter limits measure the watchdog's own polling
+// and thread start-up rather than the shader (and were reported as "0.0 s, longer than 0.0").
+inline constexpr double kMinTimeoutSeconds = 0.1;
+inline constexpr double kMaxTimeoutSeconds = 1e6;
 // After Ctrl-C or SIGTERM the run stops before its next frame; when the render thread is stuck
 // in GL (a long draw, a stalled encoder) for longer than this, toyhost removes its unfinished
 // files, stops its child processes and exits anyway.

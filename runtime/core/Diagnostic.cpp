@@ -39,13 +39,23 @@ std::string formatDiagnostic(const Diagnostic& d) {
     return out;
 }
 
+std::string formatDiagnosticWithExcerpt(const Diagnostic& d, const std::string& prefix) {
+    std::string out = prefix + formatDiagnostic(d);
+    if (!d.excerpt.empty()) {
+        out += '\n';
+        out += d.excerpt;
+        if (out.back() == '\n') out.pop_back();
+    }
+    return out;
+}
+
 std::string formatDiagnostics(const std::vector<Diagnostic>& diagnostics, const std::string& prefix,
                               std::size_t limit) {
     std::string out;
     const std::size_t shown = diagnostics.size() > limit ? limit : diagnostics.size();
     for (std::size_t i = 0; i < shown; ++i) {
         if (i) out += '\n';
-        out += prefix + formatDiagnostic(diagnostics[i]);
+        out += formatDiagnosticWithExcerpt(diagnostics[i], prefix);
     }
     if (shown < diagnostics.size())
         out += '\n' + prefix + "... and " + std::to_string(diagnostics.size() - shown) + " more";

@@ -81,4 +81,33 @@ Result<json> parseJsonStrictly(std::string_view text, const std::string& file, C
     return document;
 }
 
+std::string describeJsonValue(const nlohmann::json& value) {
+    switch (value.type()) {
+        case json::value_t::string: {
+            const std::string& text = value.get_ref<const std::string&>();
+            if (text.empty()) return "an empty string";
+            // Long or multi-line strings are named by their start only: the message is one line.
+            std::string shown;
+            for (char c : text) {
+                if (shown.size() >= 40) {
+                    shown += "...";
+                    break;
+                }
+                shown += (c == '\n' || c == '\r' || c == '\t') ? ' ' : c;
+            }
+            return "the string \"" + shown + "\"";
+        }
+        case json::value_t::number_integer:
+        case json::value_t::number_unsigned:
+        case json::value_t::number_float: return "the number " + value.dump();
+        case json::value_t::boolean: return value.get<bool>() ? "true" : "false";
+        case json::value_t::null: return "null";
+        case json::value_t::array:
+            if (value.empty()) return "an empty array";
+            return value.size() == 1 ? "an array of 1 value" : "an array of " + std::to_string(value.size()) + " values";
+        case json::value_t::object: return value.empty() ? "an empty object" : "an object";
+        default: return value.type_name();
+    }
+}
+
 }  // namespace toyhost

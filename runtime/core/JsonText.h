@@ -15,4 +15,10 @@ namespace toyhost {
 // Code::ExportJson, ...). Duplicate keys are reported with code Code::JsonDuplicateKey, all at once.
 Result<nlohmann::json> parseJsonStrictly(std::string_view text, const std::string& file, Code code);
 
+// What a JSON value is, in words for a message that says what was expected instead: "an empty
+// string", "the string \"abc\"", "the number 5", "true", "null", "an empty array", "an array of
+// 2 values", "an object". (nlohmann's type_name() says "string" for "" too, which reads as a
+// contradiction after "must be a non-empty string, not ...".)
+std::string describeJsonValue(const nlohmann::json& value);
+
 }  // namespace toyhost

@@ -27,25 +27,60 @@ const json* shaderObject(const json& document) {
     return d;
 }
 
-// Why `document` is not an export, in the export's own terms.
+// An object with a key only exports have: the API form's "Shader", or a shader object's own
+// "renderpass", "info" or "ver" (a manifest has none of them; its passes are "passes").
+bool hasExportKey(const json& value) {
+    if (!value.is_object() || value.contains("passes")) return false;
+    for (const char* key : {"Shader", "renderpass", "info", "ver"})
+        if (value.contains(key)) return true;
+    return false;
+}
+
+// "Seascape" (id 4dfGzs), from the shader's info, for naming one shader of several.
+std::string shaderLabel(const json& value) {
+    const json* d = &value;
+    if (auto it = d->find("Shader"); it != d->end() && it->is_object()) d = &*it;
+    auto info = d->find("info");
+    if (info == d->end() || !info->is_object()) return "a shader without \"info\"";
+    auto field = [&](const char* key) {
+        auto it = info->find(key);
+        return it != info->end() && it->is_string() ? it->get<std::string>() : std::string();
+    };
+    const std::string name = field("name"), id = field("id");
+    if (name.empty()) return id.empty() ? "a shader without a name or id" : "id " + id;
+    return "\"" + name + "\"" + (id.empty() ? "" : " (id " + id + ")");
+}
+
+// Why `document` is not an export toyhost can run, in the export's own terms.
 std::string shapeProblem(const json& document) {
     const json* d = &document;
     std::string where;
     if (d->is_array()) {
-        if (d->size() != 1)
-            return "the site's form is an array of one shader object, this one has " + std::to_string(d->size());
+        if (d->size() > 1) {
+            // The site's array form holds one shader; a list of several (an account's export,
+            // or files pasted together) is not one shadertoy.
+            std::string names;
+            const std::size_t shown = std::min<std::size_t>(d->size(), 3);
+            for (std::size_t i = 0; i < shown; ++i)
+                names += (i ? ", " : "") + std::string("[") + std::to_string(i) + "] " + shaderLabel((*d)[i]);
+            if (shown < d->size()) names += ", ...";
+            return "the file holds " + std::to_string(d->size()) + " shaders (" + names +
+                   "); toyhost runs one shader per file: export or save each shader on its own";
+        }
+        if (d->empty()) return "an empty array; the site's form is an array of one shader object";
         d = &(*d)[0];
         where = "[0].";
     }
     if (!d->is_object()) return "expected {\"Shader\": {\"renderpass\": [...]}}";
     if (auto it = d->find("Shader"); it != d->end()) {
-        if (!it->is_object()) return where + "Shader: must be an object, not " + std::string(it->type_name());
+        if (!it->is_object()) return where + "Shader: must be an object, not " + describeJsonValue(*it);
         d = &*it;
         where += "Shader.";
     }
     auto passes = d->find("renderpass");
-    if (passes == d->end()) return where + "renderpass: is missing (the list of passes)";
-    return where + "renderpass: must be an array of passes, not " + std::string(passes->type_name());
+    if (passes == d->end())
+        return where + "renderpass: is missing (the list of passes; an export has it beside \"info\")";
+    return where + "renderpass: must be an array of passes, not " + describeJsonValue(*passes);
 }
 
 std::string text(const json& object, const char* key) {
@@ -168,10 +203,10 @@ private:
             for (size_t k = 0; k < inputs->size(); ++k)
                 readInput(out, (*inputs)[k], place + ".inputs[" + std::to_string(k) + "]");
         else if (inputs != pass.end() && !inputs->is_null())
-            problem(place + ".inputs", std::string("must be an array of inputs, not ") + inputs->type_name(),
+            problem(place + ".inputs", "must be an array of inputs, not " + describeJsonValue(*inputs),
                     Code::ExportValue, *id);
         if (auto outputs = pass.find("outputs"); outputs != pass.end() && !outputs->is_array() && !outputs->is_null())
-            problem(place + ".outputs", std::string("must be an array of outputs, not ") + outputs->type_name(),
+            problem(place + ".outputs", "must be an array of outputs, not " + describeJsonValue(*outputs),
                     Code::ExportValue, *id);
         if (sound) desc_.sound = std::move(out);
         else desc_.passes.push_back(std::move(out));
@@ -289,12 +324,13 @@ int bufferIndexFromExportId(const json& id) {
     return -1;
 }
 
-// An export by its shape, even a broken one: {"Shader": ...}, {"renderpass": ...}, or one such
-// object in an array (the site's form). Its problems are then reported as an export's.
+// An export by its shape, even a broken one: an object with "Shader", "renderpass", "info" or
+// "ver" and no "passes", or an array of such objects (the site's form holds one; more than one is
+// reported as such). Its problems are then reported as an export's, not a manifest's.
 bool isShadertoyExport(const json& document) {
-    const json* d = &document;
-    if (d->is_array() && d->size() == 1) d = &(*d)[0];
-    return d->is_object() && (d->contains("Shader") || d->contains("renderpass"));
+    if (document.is_array())
+        return !document.empty() && std::all_of(document.begin(), document.end(), hasExportKey);
+    return hasExportKey(document);
 }
 
 Result<ManifestDesc> parseShadertoyExport(std::string_view jsonText, const fs::path& exportPath) {
@@ -303,7 +339,13 @@ Result<ManifestDesc> parseShadertoyExport(std::string_view jsonText, const fs::p
     if (!parsed) return parsed.error();
     const json document = std::move(*parsed);
     const json* shader = shaderObject(document);
-    if (!shader) return fileError(path.string(), "not a Shadertoy export: " + shapeProblem(document), Code::ExportShape);
+    if (!shader) {
+        const bool several = document.is_array() && document.size() > 1 && isShadertoyExport(document);
+        const char* what = several                       ? ""
+                           : isShadertoyExport(document) ? "a broken Shadertoy export: "
+                                                         : "not a Shadertoy export: ";
+        return fileError(path.string(), what + shapeProblem(document), Code::ExportShape);
+    }
     return ExportReader(path).read(*shader);
 }
 

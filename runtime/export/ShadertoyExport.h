@@ -12,8 +12,10 @@
 
 namespace toyhost {
 
-// True for a document shaped like an export: {"Shader": {...}}, {"renderpass": [...]}, or a
-// one-element array of those (as the site's own export button writes).
+// True for a document shaped like an export, even a broken one: an object with "Shader",
+// "renderpass", "info" or "ver" and no "passes" (which a manifest has), or an array of such objects
+// (the site's own export button writes an array of one; an array of several is an export that
+// parseShadertoyExport refuses, naming the shaders).
 bool isShadertoyExport(const nlohmann::json& document);
 
 // Converts an export: every pass type (Image, Buffer A-D, Common, Cube A; Sound into

@@ -44,8 +44,6 @@ private:
 
 std::string quote(const std::string& s) { return "\"" + s + "\""; }
 
-std::string typeName(const json& value) { return value.type_name(); }
-
 void rejectUnknownFields(const json& object, const std::set<std::string>& known,
                          const std::string& where, Problems& problems) {
     const std::vector<std::string> candidates(known.begin(), known.end());
@@ -117,7 +115,7 @@ private:
         auto it = object.find(key);
         if (it == object.end()) return std::nullopt;
         if (!it->is_string() || it->get<std::string>().empty()) {
-            problems_.add(where, quote(key) + " must be a non-empty string, not " + typeName(*it), Code::ManifestType);
+            problems_.add(where, quote(key) + " must be a non-empty string, not " + describeJsonValue(*it), Code::ManifestType);
             return std::nullopt;
         }
         return it->get<std::string>();
@@ -214,7 +212,7 @@ private:
         for (const auto& [id, file] : it->items()) {
             const std::string where = "media." + quote(id);
             if (!file.is_string()) {
-                problems_.add(where, "must be a file path string, not " + typeName(file), Code::ManifestType);
+                problems_.add(where, "must be a file path string, not " + describeJsonValue(file), Code::ManifestType);
                 continue;
             }
             fs::path resolved = resolve(file.get<std::string>());

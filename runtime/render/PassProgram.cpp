@@ -4,6 +4,7 @@
 
 #include "gl/ShaderProgram.h"
 #include "shader/BrowserPreprocess.h"
+#include "shader/CompileMessages.h"
 #include "shader/CompilerLog.h"
 #include "shader/ShaderAssembly.h"
 
@@ -65,7 +66,9 @@ Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassD
     if (!build.ok) {
         const char* name = passName(pass.id);
         const CompilerLogNames names{name, pass.sourceName, manifest.commonName};
-        std::vector<Diagnostic> diagnostics = parseCompilerLog(build.log, names);
+        std::vector<CompileSource> sources{{pass.sourceName, pass.code}};
+        if (manifest.commonSource) sources.push_back({manifest.commonName, manifest.commonCode});
+        std::vector<Diagnostic> diagnostics = explainCompileProblems(parseCompilerLog(build.log, names), sources);
         const char* what = build.failedStage == ProgramBuild::Stage::Link     ? "shader link failed"
                            : build.failedStage == ProgramBuild::Stage::Vertex ? "internal vertex shader failed"
                                                                                : "shader compile failed";

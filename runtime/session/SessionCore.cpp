@@ -103,6 +103,7 @@ Result<std::unique_ptr<SessionCore>> SessionCore::start(SessionPlan plan, std::s
         // A window or --watch waits for the fix of a shadertoy that does not compile yet.
         if (!s->watcher_ || created.error().category() != Category::Shader) return created.error();
         s->problems_ = created.error().diagnostics;
+        if (o.interactive) observer.problems(s->problems_);  // --watch reports them as its first round
         return s;
     }
     if (s->plan_.resume)
@@ -407,7 +408,7 @@ ReloadOutcome SessionCore::applyChange(std::vector<fs::path> changed, Result<Pla
                                         : "recompiled " + passes;
     }
     observer_.notice(notice((files.empty() ? std::string("the shadertoy") : files) + " changed: " + what, Code::WatchChanged));
-    for (const Diagnostic& problem : outcome.problems) observer_.notice(problem);
+    if (!outcome.problems.empty()) observer_.problems(outcome.problems);
     return outcome;
 }
 

@@ -49,6 +49,18 @@ public:
     virtual ~SessionObserver() = default;
     // Notices, warnings and problems that do not end the run (a reload that failed, a stand-in).
     virtual void notice(const Diagnostic& notice) = 0;
+    // Problems that do not end the run, as one list (a reload whose passes do not compile): by
+    // default each as a notice, at most 100, then one saying how many more.
+    virtual void problems(const std::vector<Diagnostic>& list) {
+        const std::size_t shown = list.size() > 100 ? 100 : list.size();
+        for (std::size_t i = 0; i < shown; ++i) notice(list[i]);
+        if (shown < list.size()) {
+            Diagnostic more;
+            more.severity = Severity::Notice;
+            more.message = "... and " + std::to_string(list.size() - shown) + " more";
+            notice(more);
+        }
+    }
     // After every frame, on the render thread; keep it cheap.
     virtual void progress(const RunProgress& progress) { (void)progress; }
     // A round of a --watch run ended (its report) or failed (its error); the run now waits for the

@@ -151,8 +151,9 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
         return usage("--mouse: coordinates must be within +-1000000 pixels");
     if (*o.captureEvery < 1) return usage("--capture-every must be at least 1");
     for (const auto& [name, value] : {std::pair{"--frame-timeout", *o.frameTimeout}, {"--compile-timeout", *o.compileTimeout}})
-        if (!std::isfinite(value) || value < 0 || value > 1e6)
-            return usage(std::string(name) + " must be a number of seconds from 0 (off) to 1000000");
+        if (!std::isfinite(value) || value < 0 || (value > 0 && value < defaults::kMinTimeoutSeconds) ||
+            value > defaults::kMaxTimeoutSeconds)
+            return usage(std::string(name) + " must be 0 (off) or a number of seconds from 0.1 to 1000000");
     if (*o.captureMemoryBytes == 0) return usage("--capture-memory must be at least 1 (MiB)");
     if (o.mouse && o.mouseScript) return usage("--mouse and --mouse-script cannot be combined");
     if (*o.pngLevel < 0 || *o.pngLevel > 9) return usage("--png-level must be 0..9");

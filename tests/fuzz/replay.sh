@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# replay.sh FUZZER [OPTION...] -- CORPUS_DIR [REGRESSIONS_DIR]
-# The ctest fuzz.<target>.replay test: runs every seed of CORPUS_DIR once (one process), then every
+# replay.sh FUZZER [OPTION...] -- CORPUS_DIR... [--regressions REGRESSIONS_DIR]
+# The ctest fuzz.<target>.replay test: runs every input of the CORPUS_DIRs (seeds/<target>/ and
+# corpus/<target>/) once (one process), then every
 # kept finding of REGRESSIONS_DIR in its own process, naming each one that still fails. Exits 1 when
 # any input crashes, leaks, hits UB, times out or runs out of memory. A finding that depends on the
 # contents of uninitialised memory has a sidecar INPUT.asan_options (e.g. malloc_fill_byte=13 with
@@ -11,12 +12,16 @@ shift
 options=()
 while (($#)) && [ "$1" != "--" ]; do options+=("$1"); shift; done
 shift || true
-corpus=${1:?corpus folder}
-regressions=${2:-}
+corpus=()
+regressions=
+while (($#)); do
+    if [ "$1" = --regressions ]; then regressions=${2:-}; shift 2 || shift; else corpus+=("$1"); shift; fi
+done
+((${#corpus[@]})) || { echo "replay: no corpus folder" >&2; exit 2; }
 
 failed=0
-if ! "$fuzzer" "${options[@]}" -runs=0 "$corpus"; then
-    echo "replay: an input of $corpus fails (see above)" >&2
+if ! "$fuzzer" "${options[@]}" -runs=0 "${corpus[@]}"; then
+    echo "replay: an input of ${corpus[*]} fails (see above)" >&2
     failed=1
 fi
 if [ -n "$regressions" ] && [ -d "$regressions" ]; then

@@ -7,8 +7,10 @@
 //   - the place in that message (file, JSON field, pass, FILE:LINE:COL, option) and the short code,
 //   - no file left behind: nothing new anywhere in the case's folder (the output folder included,
 //     hidden .partial files included, ffmpeg's log in $TMPDIR included), except empty folders.
-// A case marked with a defect is a known bug in toyhost: when its checks fail the case is skipped
-// with the defect's description (so the suite stays green), and it passes once the bug is fixed.
+// No case skips on failure: a case that meets a known defect fails. Should one be kept in the
+// catalogue before its fix, it gets its own CTest entry with WILL_FAIL (an add_test running this
+// executable with --gtest_filter for it, and the case left out of gtest_discover_tests with
+// TEST_FILTER), so that it fails until fixed and its fix shows as a failure to remove the mark.
 #include "GlTestSupport.h"
 
 #include <sys/resource.h>
@@ -44,7 +46,6 @@ struct Case {
     std::vector<std::string> mentions;  // the message holds each ("~text": case-insensitively)
     std::string code;                   // the short code in brackets; empty: not checked
     int errors = 1;                     // lines with "error:"
-    std::string defect;                 // a known defect: failing checks skip the case
     Mount mount = Mount::None;
     std::string env;        // extra VAR=value settings for toyhost
     std::string prepare;    // a toyhost run before the case (must succeed), e.g. making a checkpoint
@@ -146,8 +147,8 @@ std::vector<Case> catalogue() {
     std::vector<Case> cases;
     auto add = [&](Case c) { cases.push_back(std::move(c)); };
     auto usage = [&](const std::string& name, const std::string& options, std::vector<std::string> mentions,
-                     const std::string& code = "usage", const std::string& defect = "") {
-        add({name, toy(), runToyBare(options), 2, std::move(mentions), code, 1, defect});
+                     const std::string& code = "usage") {
+        add({name, toy(), runToyBare(options), 2, std::move(mentions), code});
     };
     const std::string small = "--size 16x8 --frames 2 --out '@D/out/f_%04d.png'";
 
@@ -156,14 +157,20 @@ std::vector<Case> catalogue() {
     usage("FramesNegative", "--size 16x8 --frames -1 --out '@D/out/f_%04d.png'", {"--frames"});
     usage("FramesNotANumber", "--size 16x8 --frames abc --out '@D/out/f_%04d.png'", {"--frames", "abc"});
     usage("FramesBeyondInt", "--size 16x8 --frames 99999999999 --out '@D/out/f_%04d.png'", {"--frames", "99999999999"});
+    // Numbers are decimal digits (CLI11 alone reads 0x10 as 16, 010 as octal 8, '' as "not given").
+    usage("FramesEmpty", "--size 16x8 --frames '' --out '@D/out/f_%04d.png'", {"--frames", "empty"});
+    usage("FramesHex", "--size 16x8 --frames 0x10 --out '@D/out/f_%04d.png'", {"--frames", "\"0x10\"", "decimal"});
+    usage("PngLevelLeadingZero", small + " --png-level 010", {"--png-level", "0..9"});
+    usage("FpsHexFloat", small + " --fps 0x1p4", {"--fps", "\"0x1p4\""});
+    usage("CompileTimeoutTiny", small + " --compile-timeout 1e-9", {"--compile-timeout", "0 (off) or from 0.1"});
+    usage("FrameTimeoutTiny", small + " --frame-timeout 0.01", {"--frame-timeout", "0 (off) or from 0.1"});
     usage("FpsZero", small + " --fps 0", {"--fps"});
     usage("FpsNan", small + " --fps nan", {"--fps"});
     usage("FpsInfinite", small + " --fps inf", {"--fps"});
     usage("FpsTiny", small + " --fps 1e-300", {"--fps"});
-    usage("SizeZero", "--frames 2 --size 0x0 --out '@D/out/f_%04d.png'", {"--size", "0x0"}, "usage.size",
-          "the message (\"canvas size 0x0 is not between 1x1 and 16384x16384\") does not name the option --size");
-    usage("SizeHuge", "--frames 2 --size 99999x99999 --out '@D/out/f_%04d.png'", {"--size", "99999x99999"}, "usage.size",
-          "the message (\"canvas size 99999x99999 is not between ...\") does not name the option --size");
+    // Once a defect: the range message did not name the option --size.
+    usage("SizeZero", "--frames 2 --size 0x0 --out '@D/out/f_%04d.png'", {"--size", "0x0"}, "usage.size");
+    usage("SizeHuge", "--frames 2 --size 99999x99999 --out '@D/out/f_%04d.png'", {"--size", "99999x99999"}, "usage.size");
     usage("SizeNotWxH", "--frames 2 --size abc --out '@D/out/f_%04d.png'", {"--size abc", "WxH"});
     usage("SizeTrailingJunk", "--frames 2 --size 16x8x --out '@D/out/f_%04d.png'", {"--size 16x8x"});
     usage("PngLevelTen", small + " --png-level 10", {"--png-level"});
@@ -201,9 +208,9 @@ std::vector<Case> catalogue() {
     usage("MediaFileWithoutEquals", small + " --media-file abc", {"--media-file abc", "ID=FILE"});
     usage("DateGarbage", small + " --date garbage", {"--date", "garbage"});
     usage("DateImpossible", small + " --date 2024-02-30T10:00:00", {"--date", "2024-02-30"});
-    add({"EglPlatformUnknown", toy(), runToy(), 2, {"TOYHOST_EGL_PLATFORM=bogus"}, "usage", 1, "", Mount::None,
+    add({"EglPlatformUnknown", toy(), runToy(), 2, {"TOYHOST_EGL_PLATFORM=bogus"}, "usage", 1, Mount::None,
          "TOYHOST_EGL_PLATFORM=bogus"});
-    add({"InspectRegionEmpty", toy(), "inspect '@D/img.png' --region 0,0,0,0", 2, {"--region 0,0,0,0"}, "usage", 1, "",
+    add({"InspectRegionEmpty", toy(), "inspect '@D/img.png' --region 0,0,0,0", 2, {"--region 0,0,0,0"}, "usage", 1,
          Mount::None, "", "run '@D/toy' --size 4x4 --frames 1 --quiet --out '@D/img.png'"});
     add({"NewUnknownPass", {}, "new '@D/out/n' --passes a,e", 2, {"--passes", "\"e\""}, "usage"});
 
@@ -217,7 +224,7 @@ std::vector<Case> catalogue() {
     add({"InspectNotAnImage", {{"junk.png", "\x89PNG but not really\x01\x02\x03"s}}, "inspect '@D/junk.png'", 1,
          {"@D/junk.png"}, "image.decode"});
     add({"InspectRegionOutsideImage", toy(), "inspect '@D/img.png' --region 0,0,8,8", 1, {"@D/img.png", "4x4"},
-         "inspect.region", 1, "", Mount::None, "", "run '@D/toy' --size 4x4 --frames 1 --quiet --out '@D/img.png'"});
+         "inspect.region", 1, Mount::None, "", "run '@D/toy' --size 4x4 --frames 1 --quiet --out '@D/img.png'"});
     add({"ImportMissingExport", {}, "import '@D/none.json' '@D/out/port'", 1, {"@D/none.json"}, "io.not-found"});
     add({"ImportBrokenExport", exportFile(apiExport(R"({"a": 1})")), "import '@D/export.json' '@D/out/port'", 1,
          {"@D/export.json", "Shader.renderpass"}, "export.shape"});
@@ -227,18 +234,17 @@ std::vector<Case> catalogue() {
     add({"ResumeGarbageCheckpoint", toy(kManifest, {{"junk.ckpt", "garbage\n"}}), runToy("--resume '@D/junk.ckpt'"),
          1, {"@D/junk.ckpt", "TOYHOST-CHECKPOINT"}, "checkpoint.format"});
     add({"ResumeWithOtherSize", toy(), runToyBare("--size 32x8 --frames 4 --out '@D/out/f_%04d.png' --resume '@D/a.ckpt'"),
-         2, {"@D/a.ckpt", "--size 16x8"}, "usage.resume", 1, "", Mount::None, "",
+         2, {"@D/a.ckpt", "--size 16x8"}, "usage.resume", 1, Mount::None, "",
          "run '@D/toy' --size 16x8 --frames 2 --quiet --checkpoint '@D/a.ckpt'"});
     add({"ResumeWithOtherCode", toy(kManifest, {{"toy/other.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.5); }\n"},
                                                {"toy/other.json", R"({"passes": {"Image": {"source": "other.glsl"}}})"}}),
          "run '@D/toy/other.json' --quiet --frames 4 --out '@D/out/f_%04d.png' --resume '@D/a.ckpt'", 1,
-         {"@D/a.ckpt", "other code"}, "checkpoint.mismatch", 1, "", Mount::None, "",
+         {"@D/a.ckpt", "other code"}, "checkpoint.mismatch", 1, Mount::None, "",
          "run '@D/toy' --size 16x8 --frames 2 --quiet --checkpoint '@D/a.ckpt'"});
     add({"MediaFileMissing", toy(), runToy("--media-file 'Abstract 3=@D/none.jpg'"), 1, {"@D/none.jpg", "--media-file"},
          "io.not-found"});
-    add({"MediaFolderMissing", toy(), runToy("--media '@D/nofolder'"), 1, {"@D/nofolder", "--media"}, "", 1,
-         "a --media folder that does not exist is silently ignored: the run succeeds (exit 0) with no message, while a "
-         "missing --media-file is an error"});
+    // Once a defect: a --media folder that does not exist was silently ignored.
+    add({"MediaFolderMissing", toy(), runToy("--media '@D/nofolder'"), 1, {"@D/nofolder", "--media"}});
 
     // ---- the manifest: exit 1, the manifest and the JSON field named ----------------------------
     add({"ManifestInvalidJson", toy("{\n  \"passes\": {\n    \"Image\": { \"source\": \"image.glsl\" },\n  }\n}\n"), runToy(),
@@ -258,10 +264,9 @@ std::vector<Case> catalogue() {
          {kManifestPath, "passes.Image", "more than once"}, "json.duplicate-key"});
     add({"ManifestWithoutImage", toy(R"({"passes": {"Buffer A": {"source": "image.glsl"}}})"), runToy(), 1,
          {kManifestPath, "passes", "\"Image\" pass is missing"}, "manifest.missing"});
+    // Once a defect: one typo gave a second line, 'passes: the "Image" pass is missing'.
     add({"PassNameWithTrailingSpace", toy(R"({"passes": {"Image ": {"source": "image.glsl"}}})"), runToy(), 1,
-         {kManifestPath, "passes.\"Image \"", "did you mean \"Image\""}, "manifest.unknown-pass", 1,
-         "two errors for one typo: after 'passes.\"Image \": unknown pass (did you mean \"Image\"?)' comes a second "
-         "line 'passes: the \"Image\" pass is missing [manifest.missing]'"});
+         {kManifestPath, "passes.\"Image \"", "did you mean \"Image\""}, "manifest.unknown-pass"});
     add({"PassNotAnObject", toy(R"({"passes": {"Image": "image.glsl"}})"), runToy(), 1, {kManifestPath, "passes.\"Image\""},
          "manifest.type"});
     add({"PassWithoutSource", toy(R"({"passes": {"Image": {}}})"), runToy(), 1,
@@ -274,12 +279,13 @@ std::vector<Case> catalogue() {
          1, {kManifestPath, "passes.\"Image\".source", "@D/toy/fifo.glsl", "FIFO"}, "io.not-a-file"});
     add({"CommonFileMissing", toy(R"({"common": "nocommon.glsl", "passes": {"Image": {"source": "image.glsl"}}})"), runToy(),
          1, {kManifestPath, "common", "@D/toy/nocommon.glsl"}, "io.not-found"});
+    add({"NameEmpty", toy(R"({"name": "", "passes": {"Image": {"source": "image.glsl"}}})"), runToy(), 1,
+         {kManifestPath, "\"name\" must be a non-empty string, not an empty string"}, "manifest.type"});
     add({"CommonNotAString", toy(R"({"common": 5, "passes": {"Image": {"source": "image.glsl"}}})"), runToy(), 1,
          {kManifestPath, "\"common\""}, "manifest.type"});
+    // Once a defect: one typo gave a second line, 'needs exactly one of "buffer", "texture", ...'.
     add({"ChannelUnknownKey", toy(manifestWithChannel(R"({"bufer": "A"})")), runToy(), 1,
-         {kManifestPath, "passes.\"Image\".channels.iChannel0", "did you mean \"buffer\""}, "manifest.unknown-field", 1,
-         "two errors for one typo: after 'unknown field \"bufer\" (did you mean \"buffer\"?)' comes a second line "
-         "'needs exactly one of \"buffer\", \"texture\", \"media\", \"keyboard\" [manifest.value]'"});
+         {kManifestPath, "passes.\"Image\".channels.iChannel0", "did you mean \"buffer\""}, "manifest.unknown-field"});
     add({"ChannelNameTypo", toy(R"({"passes": {"Image": {"source": "image.glsl", "channels": {"iChanel0": {"buffer": "A"}}}}})"),
          runToy(), 1, {kManifestPath, "passes.\"Image\".channels", "did you mean \"iChannel0\""}, "manifest.unknown-field"});
     add({"ChannelWithTwoSources", toy(manifestWithChannel(R"({"buffer": "A", "keyboard": true})")), runToy(), 1,
@@ -325,10 +331,9 @@ std::vector<Case> catalogue() {
     add({"DefaultsBadFrames", toy(R"({"defaults": {"frames": 0}, "passes": {"Image": {"source": "image.glsl"}}})"),
          "run '@D/toy' --quiet --size 16x8 --out '@D/out/f_%04d.png'", 1, {kManifestPath, "defaults.frames"},
          "manifest.value"});
+    // Once a defect: 1e400 was nlohmann's exception text, without the JSON field or a position.
     add({"NumberBeyondDouble", toy(R"({"defaults": {"frames": 1e400}, "passes": {"Image": {"source": "image.glsl"}}})"),
-         runToy(), 1, {kManifestPath, "1e400", "defaults.frames"}, "", 1,
-         "a number beyond double (1e400) is reported as 'invalid JSON: [json.exception.out_of_range.406] number "
-         "overflow parsing '1e400'' with neither the JSON field (defaults.frames) nor a line and column"});
+         runToy(), 1, {kManifestPath, "1e400", "defaults.frames"}});
     add({"SeveralProblemsAtOnce",
          toy(R"({"nmae": "x", "passes": {"Image": {"source": "image.glsl", "channels": {"iChannel0": {"buffer": "E"}, "iChannel1": {"texture": "gone.png", "wrap": "mirror"}}}}})"),
          runToy(), 1, {"did you mean \"name\"", "buffer \"E\"", "@D/toy/gone.png", "wrap \"mirror\""}, "", 4});
@@ -340,27 +345,33 @@ std::vector<Case> catalogue() {
          toy(kManifest, {{"toy/image.glsl", "void mainImage(out vec4 c, in vec2 p) {\n    float \xc3\xa9 = 1.0;\n    c = vec4(1.0);\n}\n"}}),
          runToy(), 1, {"@D/toy/image.glsl:2:11:", "Image", "U+00E9"}, "shader.non-ascii"});
     add({"ShaderCompileError", toy(kManifest, {{"toy/image.glsl", "void mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0) +;\n}\n"}}),
-         runToy(), 1, {"@D/toy/image.glsl:2:17:", "Image"}, "shader.compile"});
+         runToy(), 1, {"@D/toy/image.glsl:2:20:", "Image"}, "shader.compile"});
     add({"ShaderCompileErrorInBuffer",
          toy(R"({"passes": {"Buffer A": {"source": "buffer_a.glsl"}, "Image": {"source": "image.glsl"}}})",
              {{"toy/buffer_a.glsl", "void mainImage(out vec4 c, in vec2 p) {\n    float x = 1.0;\n    c = vec4(x)\n}\n"}}),
-         runToy(), 1, {"@D/toy/buffer_a.glsl:4:1:", "Buffer A"}, "shader.compile"});
+         runToy(), 1, {"@D/toy/buffer_a.glsl:3:16:", "Buffer A", "';' missing at the end of this line"}, "shader.compile"});
     add({"ShaderWithoutMainImage", toy(kManifest, {{"toy/image.glsl", "void notMain(out vec4 c, in vec2 p) {\n    c = vec4(1.0);\n}\n"}}),
          runToy(), 1, {"@D/toy/image.glsl", "Image", "mainImage"}, "shader.link"});
     add({"CommonCompileError",
          toy(R"({"common": "common.glsl", "passes": {"Image": {"source": "image.glsl"}}})",
              {{"toy/common.glsl", "float helper() {\n    return 1.0\n}\n"}}),
-         runToy(), 1, {"@D/toy/common.glsl:3:1:"}, "shader.compile"});
+         runToy(), 1, {"@D/toy/common.glsl:2:15:"}, "shader.compile"});
+    // Once a defect: one mistake in Common was reported once per pass that includes it.
     add({"CommonCompileErrorWithThreePasses",
          toy(R"({"common": "common.glsl", "passes": {"Buffer A": {"source": "image.glsl"}, "Buffer B": {"source": "image.glsl"}, "Image": {"source": "image.glsl"}}})",
              {{"toy/common.glsl", "float helper() {\n    return 1.0\n}\n"}}),
-         runToy(), 1, {"@D/toy/common.glsl:3:1:"}, "shader.compile", 1,
-         "one mistake in Common is reported once per pass that includes it: three identical lines "
-         "'common.glsl:3:1: error: Buffer A / Buffer B / Image: syntax error ...'"});
+         runToy(), 1, {"@D/toy/common.glsl:2:15:"}, "shader.compile"});
 
     // ---- Shadertoy exports: exit 1, the export and the JSON path or [pass]:LINE ------------------
     add({"ExportShaderNotAnObject", exportFile(R"({"Shader": 5})"), runExport(), 1, {"@D/export.json", "Shader"},
          "export.shape"});
+    // Export shapes that are not one runnable shader are named in export terms, not as a bad manifest.
+    add({"ExportInfoWithoutRenderpass", exportFile(R"({"info": {"id": "tSt123", "name": "Synthetic"}})"), runExport(), 1,
+         {"@D/export.json", "renderpass: is missing"}, "export.shape"});
+    add({"ExportArrayOfTwoShaders",
+         exportFile(R"([{"ver": "0.1", "info": {"id": "aaa", "name": "A"}, "renderpass": []},
+                        {"ver": "0.1", "info": {"id": "bbb", "name": "B"}, "renderpass": []}])"),
+         runExport(), 1, {"@D/export.json", "holds 2 shaders", "\"A\" (id aaa)", "one shader per file"}, "export.shape"});
     add({"ExportRenderpassNotAnArray", exportFile(apiExport(R"({"a": 1})")), runExport(), 1,
          {"@D/export.json", "Shader.renderpass", "array"}, "export.shape"});
     add({"ExportWithoutImagePass", exportFile(apiExport("[]")), runExport(), 1, {"@D/export.json", "no image pass"},
@@ -386,7 +397,7 @@ std::vector<Case> catalogue() {
     add({"ExportCompileErrorInCommon",
          exportFile(apiExport("[" + apiPass("common", "Common", "[]", R"("float helper() {\n    return 1.0\n}\n")") + "," +
                               imagePass() + "]")),
-         runExport(), 1, {"@D/export.json [Common]:3:1:"}, "shader.compile"});
+         runExport(), 1, {"@D/export.json [Common]:2:15:"}, "shader.compile"});
 
     // ---- input scripts: exit 1, the script and the event -----------------------------------------
     auto script = [&](const std::string& name, const std::string& option, const std::string& text,
@@ -417,22 +428,22 @@ std::vector<Case> catalogue() {
          runToyBare("--size 16x8 --frames 2 --out '@D/out/file/f_%04d.png'"), 1, {"@D/out/file"}, "io.write"});
     add({"OutVideoFolderIsAFile", toy(kManifest, {{"out/file", "a file where a folder should be"}}),
          runToyBare("--size 16x8 --frames 2 --out '@D/out/file/v.mp4'"), 1, {"@D/out/file"}, "io.write"});
-    add({"OutReadOnlyPng", toy(), runToy(), 1, {"@D/out/f_0000.png"}, "io.write", 1, "", Mount::ReadOnly});
+    add({"OutReadOnlyPng", toy(), runToy(), 1, {"@D/out/f_0000.png"}, "io.write", 1, Mount::ReadOnly});
     add({"OutReadOnlyExr", toy(), runToyBare("--size 16x8 --frames 2 --out '@D/out/f_%04d.exr'"), 1, {"@D/out/f_0000.exr"},
-         "io.write", 1, "", Mount::ReadOnly});
-    add({"OutReadOnlyVideo", toy(), runToyBare("--size 16x8 --frames 2 --out '@D/out/v.mp4'"), 1, {"@D/out/v.mp4"}, "", 1, "",
+         "io.write", 1, Mount::ReadOnly});
+    add({"OutReadOnlyVideo", toy(), runToyBare("--size 16x8 --frames 2 --out '@D/out/v.mp4'"), 1, {"@D/out/v.mp4"}, "", 1,
          Mount::ReadOnly, "", "", true});
     add({"DiskFullPng", toy(kManifest, {{"toy/image.glsl", kNoise}}),
          runToyBare("--size 320x180 --frames 3 --png-level 0 --out '@D/out/f_%04d.png'"), 1,
-         {"@D/out/f_0000.png", "~no space"}, "io.no-space", 1, "", Mount::Full});
+         {"@D/out/f_0000.png", "~no space"}, "io.no-space", 1, Mount::Full});
     add({"DiskFullExr", toy(kManifest, {{"toy/image.glsl", kNoise}}),
          runToyBare("--size 128x128 --frames 3 --out '@D/out/f_%04d.exr'"), 1, {"@D/out/f_0000.exr", "~no space"},
-         "io.no-space", 1, "", Mount::Full});
+         "io.no-space", 1, Mount::Full});
     add({"DiskFullMp4", toy(kManifest, {{"toy/image.glsl", kNoise}}),
          runToyBare("--size 320x180 --frames 30 --out '@D/out/v.mp4'"), 1, {"@D/out/v.mp4", "~no space"}, "io.no-space", 1,
-         "", Mount::Full, "", "", true});
+         Mount::Full, "", "", true});
     add({"VideoCodecUnknown", toy(), runToyBare("--size 16x8 --frames 2 --out '@D/out/v.mp4' --codec nosuchcodec"), 1,
-         {"@D/out/v.mp4", "nosuchcodec"}, "capture.ffmpeg", 1, "", Mount::None, "", "", true});
+         {"@D/out/v.mp4", "nosuchcodec"}, "capture.ffmpeg", 1, Mount::None, "", "", true});
     add({"CheckpointIsAFolder", toy(kManifest, {{"ck", "<folder>"}}), runToy("--checkpoint '@D/ck'"), 2,
          {"--checkpoint", "@D/ck", "is a folder"}, "usage"});
 
@@ -607,7 +618,6 @@ TEST_P(BadInput, FailsCleanly) {
     for (const std::string& problem : problems) report += "  - " + problem + "\n";
     report += "command: toyhost " + arguments + "\nexit code: " + std::to_string(result.exitCode) + "\noutput:\n" +
               result.output;
-    if (!c.defect.empty()) GTEST_SKIP() << "defect: " << c.defect << "\n" << report;
     ADD_FAILURE() << c.name << ":\n" << report;
 }
 
@@ -635,14 +645,11 @@ TEST(CatalogueCrash, HugeShaderDoesNotCrashToyhost) {
                                   "--compile-timeout 20 --out '" + dir.string() + "/out/f_%04d.png'";
     const CommandResult result = runCase(arguments, dir / "tmp", "");
     const std::size_t errors = errorLines(result.output).size();
+    // A crash (killed by a signal: Mesa's compiler recursion overflowing a small stack) is a failure
+    // like any other; toyhost compiles on a thread with a 1 GiB stack for this.
     const bool clean = (result.exitCode == 0 && errors == 0) || ((result.exitCode == 1 || result.exitCode == 124) && errors == 1);
-    const bool crashed = result.exitCode < 0 || result.exitCode >= 128;  // killed by a signal
-    if (!clean && crashed)
-        GTEST_SKIP() << "defect: a valid shader of 10000 statements overflows the stack of Mesa's GLSL compiler, "
-                        "which runs on toyhost's main thread (8 MiB): toyhost dies of SIGSEGV with no message\n"
-                     << "command: toyhost " << arguments << "\nexit code: " << result.exitCode << "\noutput:\n"
-                     << result.output;
-    EXPECT_TRUE(clean) << "exit code " << result.exitCode << ", " << errors << " error lines\n" << result.output;
+    EXPECT_TRUE(clean) << "command: toyhost " << arguments << "\nexit code " << result.exitCode << ", " << errors
+                       << " error lines\n" << result.output;
     if (result.exitCode != 0) EXPECT_TRUE(holdsNoFile(dir / "out") || !fs::exists(dir / "out"));
 }
 

@@ -43,6 +43,29 @@ TEST(Diagnostic, EveryLineOfAReportHasThePrefixAndTheListIsCapped) {
     EXPECT_EQ(formatDiagnostics({}, "toyhost: "), "");
 }
 
+// A source excerpt is data on the diagnostic; the one-line form stays one line (window titles,
+// scripts), the report prints the excerpt under its line without the prefix (the caret keeps its
+// column) and the cap still counts diagnostics.
+TEST(Diagnostic, AnExcerptFollowsItsLineInReportsOnly) {
+    Diagnostic d;
+    d.code = Code::ShaderCompile;
+    d.file = "/toy/image.glsl";
+    d.pass = "Image";
+    d.line = 4;
+    d.column = 9;
+    d.message = "`zz' undeclared";
+    d.excerpt = "    4 |     c = zz;\n      |         ^~\n";
+    EXPECT_EQ(formatDiagnostic(d), "/toy/image.glsl:4:9: error: Image: `zz' undeclared [shader.compile]");
+    EXPECT_EQ(formatDiagnosticWithExcerpt(d, "toyhost: "),
+              "toyhost: /toy/image.glsl:4:9: error: Image: `zz' undeclared [shader.compile]\n"
+              "    4 |     c = zz;\n      |         ^~");
+    const std::vector<Diagnostic> two{d, d};
+    EXPECT_EQ(formatDiagnostics(two, "toyhost: ", 1),
+              "toyhost: /toy/image.glsl:4:9: error: Image: `zz' undeclared [shader.compile]\n"
+              "    4 |     c = zz;\n      |         ^~\ntoyhost: ... and 1 more");
+    EXPECT_EQ(Error(two).text(), formatDiagnostics(two));
+}
+
 TEST(FrameSequence, RestartResetsIFrameButNeverTheStep) {
     FrameSequence sequence;
     EXPECT_TRUE(sequence.startOfRun());

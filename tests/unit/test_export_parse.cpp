@@ -417,11 +417,54 @@ TEST(ExportParse, InvalidJsonNamesThePath) {
 }
 
 TEST(ExportParse, NotAnExport) {
-    for (const char* text : {R"({"foo": 1})", "[]", R"([{"renderpass": []}, {"renderpass": []}])", "42",
-                             R"({"passes": {"Image": {"source": "image.glsl"}}})"}) {
+    for (const char* text : {R"({"foo": 1})", "[]", "42", R"({"passes": {"Image": {"source": "image.glsl"}}})"}) {
         const std::string message = parseError(text);
         expectMentions(message, {kLabel + ": not a Shadertoy export"});
     }
+}
+
+// The site's array form holds one shader; an array of several is named as such, shader by shader,
+// not reported as "not a Shadertoy export" (or, through loadShadertoy, as a bad manifest).
+TEST(ExportParse, SeveralShadersInOneFileAreNamed) {
+    const std::string two = R"([{"ver": "0.1", "info": {"id": "aaaaaa", "name": "First"}, "renderpass": []},
+                                {"ver": "0.1", "info": {"id": "bbbbbb", "name": "Second"}, "renderpass": []}])";
+    const std::string message = parseError(two);
+    expectMentions(message, {kLabel + ": the file holds 2 shaders ([0] \"First\" (id aaaaaa), [1] \"Second\" (id bbbbbb))",
+                             "toyhost runs one shader per file"});
+    EXPECT_EQ(message.find("not a Shadertoy export"), std::string::npos) << message;
+    expectMentions(parseError(R"([{"Shader": {"info": {"name": "A"}, "renderpass": []}}, {"Shader": {"renderpass": []}},
+                                  {"Shader": {"info": {"id": "ccc"}}}, {"Shader": {}}])"),
+                   {"holds 4 shaders ([0] \"A\", [1] a shader without \"info\", [2] id ccc, ...)"});
+}
+
+// {"info": {}} is an export without its passes: said in export terms ("renderpass"), once.
+TEST(ExportParse, AnExportWithoutRenderpassSaysSo) {
+    for (const char* text : {R"({"info": {}})", R"({"ver": "0.1", "info": {"name": "x"}})", R"([{"info": {}}])"}) {
+        const std::string message = parseError(text);
+        expectMentions(message, {kLabel + ": a broken Shadertoy export: ", "renderpass: is missing"});
+    }
+    expectMentions(parseError(R"({"Shader": {"renderpass": ""}})"),
+                   {"Shader.renderpass: must be an array of passes, not an empty string"});
+}
+
+// What `toyhost run FILE` does with each shape: exports are parsed as exports (one export.shape
+// line), anything else as a manifest.
+TEST(LoadShadertoy, ExportShapesAreReportedAsExportsNotManifests) {
+    toyhost::testing::TestFolder folder;
+    for (const char* text : {R"({"info": {}})", R"([{"info": {"name": "A"}, "renderpass": []}, {"info": {"name": "B"}, "renderpass": []}])",
+                             R"({"Shader": {"info": {}}})"}) {
+        const fs::path file = folder.write("export.json", text);
+        Result<ManifestDesc> loaded = loadShadertoy(file);
+        ASSERT_FALSE(loaded.ok()) << text;
+        ASSERT_EQ(loaded.error().diagnostics.size(), 1u) << text << "\n" << loaded.error().text();
+        EXPECT_EQ(loaded.error().first().code, Code::ExportShape) << text << "\n" << loaded.error().text();
+    }
+    // A manifest that happens to have an "info" field is still a manifest (its unknown field named).
+    const fs::path manifest = folder.write("m.json", R"({"info": {}, "passes": {"Image": {"source": "image.glsl"}}})");
+    folder.write("image.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }\n");
+    Result<ManifestDesc> loaded = loadShadertoy(manifest);
+    ASSERT_FALSE(loaded.ok());
+    EXPECT_EQ(loaded.error().first().code, Code::ManifestUnknownField) << loaded.error().text();
 }
 
 TEST(ExportParse, NoImagePass) {
@@ -534,12 +577,14 @@ TEST(ExportIds, IsShadertoyExport) {
                             // Broken exports are still exports: their problems are reported in
                             // export terms (renderpass: must be an array), not as a bad manifest.
                             R"({"Shader": {}})", R"({"Shader": {"renderpass": {}}})", R"({"Shader": []})",
-                            R"({"renderpass": "image"})"})
+                            R"({"renderpass": "image"})", R"({"info": {}})", R"({"ver": "0.1"})",
+                            // Several shaders: an export toyhost refuses, naming them.
+                            R"([{"renderpass": []}, {"renderpass": []}])", R"([{"info": {}}, {"Shader": {}}])"})
         EXPECT_TRUE(isShadertoyExport(json::parse(yes))) << yes;
-    for (const char* no : {R"({"foo": 1})", "[]",
-                           R"([{"renderpass": []}, {"renderpass": []}])", R"([[{"renderpass": []}]])", "42",
+    for (const char* no : {R"({"foo": 1})", "[]", R"([{"renderpass": []}, 5])", R"([[{"renderpass": []}]])", "42",
                            "null", R"("renderpass")",
-                           R"({"name": "m", "passes": {"Image": {"source": "image.glsl"}}})"})
+                           R"({"name": "m", "passes": {"Image": {"source": "image.glsl"}}})",
+                           R"({"info": {}, "passes": {"Image": {"source": "image.glsl"}}})"})
         EXPECT_FALSE(isShadertoyExport(json::parse(no))) << no;
 }
 

@@ -51,7 +51,10 @@ TEST(ManifestErrors, UnknownTopLevelField) {
 TEST(ManifestErrors, NameMustBeANonEmptyString) {
     ManifestFolder f;
     EXPECT_EQ(errorOf(f.parse(R"({"name": 3, "passes": {"Image": {"source": "image.glsl"}}})")),
-              f.line("", R"("name" must be a non-empty string, not number)"));
+              f.line("", R"("name" must be a non-empty string, not the number 3)"));
+    // Not "..., not string": the value is a string, an empty one.
+    EXPECT_EQ(errorOf(f.parse(R"({"name": "", "passes": {"Image": {"source": "image.glsl"}}})")),
+              f.line("", R"("name" must be a non-empty string, not an empty string)"));
 }
 
 TEST(ManifestErrors, MissingEmptyOrNonObjectPasses) {
@@ -95,9 +98,9 @@ TEST(ManifestErrors, MissingSource) {
     EXPECT_EQ(errorOf(f.parse(R"({"passes": {"Image": {"channels": []}}})")),
               f.line(R"(passes."Image")", R"("source" is missing)"));
     EXPECT_EQ(errorOf(f.parse(R"({"passes": {"Image": {"source": ""}}})")),
-              f.line(R"(passes."Image")", R"("source" must be a non-empty string, not string)"));
+              f.line(R"(passes."Image")", R"("source" must be a non-empty string, not an empty string)"));
     EXPECT_EQ(errorOf(f.parse(R"({"passes": {"Image": {"source": ["image.glsl"]}}})")),
-              f.line(R"(passes."Image")", R"("source" must be a non-empty string, not array)"));
+              f.line(R"(passes."Image")", R"("source" must be a non-empty string, not an array of 1 value)"));
 }
 
 TEST(ManifestErrors, SourceFileNotFoundNamesTheResolvedPath) {
@@ -168,7 +171,7 @@ TEST(ManifestErrors, BufferThatDoesNotExist) {
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": "a"}})"))),
               f.line(kImageCh0, R"(buffer "a" does not exist (known: A, B, C, D, Cube A))"));
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": 0}})"))),
-              f.line(kImageCh0, R"("buffer" must be a non-empty string, not number)"));
+              f.line(kImageCh0, R"("buffer" must be a non-empty string, not the number 0)"));
 }
 
 TEST(ManifestErrors, ReadingABufferWhosePassIsNotDefined) {
@@ -218,7 +221,7 @@ TEST(ManifestErrors, BadFilterWrapAndVflipValues) {
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": "A", "wrap": "mirror"}})"))),
               f.line(kImageCh0, R"(wrap "mirror" is not one of clamp, repeat)"));
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"buffer": "A", "wrap": 1}})"))),
-              f.line(kImageCh0, R"("wrap" must be a non-empty string, not number)"));
+              f.line(kImageCh0, R"("wrap" must be a non-empty string, not the number 1)"));
     // Exports write vflip as the string "true"; the manifest wants a JSON boolean.
     EXPECT_EQ(errorOf(f.parse(imageWithChannels(R"({"iChannel0": {"texture": "tex.png", "vflip": "true"}})"))),
               f.line(kImageCh0, R"("vflip" must be true or false)"));
@@ -256,7 +259,7 @@ TEST(ManifestErrors, MediaMustBeAnObject) {
 TEST(ManifestErrors, MediaOverrideFileMustBeAStringNamingAFile) {
     ManifestFolder f;
     EXPECT_EQ(errorOf(f.parse(R"({"media": {"Abstract 3": 7}, "passes": {"Image": {"source": "image.glsl"}}})")),
-              f.line(R"(media."Abstract 3")", "must be a file path string, not number"));
+              f.line(R"(media."Abstract 3")", "must be a file path string, not the number 7"));
     EXPECT_EQ(errorOf(f.parse(R"({"media": {"Abstract 3": "photos/abstract3.jpg"}, "passes": {"Image": {"source": "image.glsl"}}})")),
               f.line(R"(media."Abstract 3")", (f.dir / "photos" / "abstract3.jpg").string() + ": file not found"));
 }

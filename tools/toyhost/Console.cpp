@@ -10,7 +10,9 @@
 
 namespace toyhost::cli {
 
-void printDiagnostic(const Diagnostic& diagnostic) { std::cerr << "toyhost: " << formatDiagnostic(diagnostic) << "\n"; }
+void printDiagnostic(const Diagnostic& diagnostic) {
+    std::cerr << formatDiagnosticWithExcerpt(diagnostic, "toyhost: ") << "\n";
+}
 
 void printError(const Error& error) { std::cerr << formatDiagnostics(error.diagnostics, "toyhost: ") << "\n"; }
 
@@ -57,6 +59,12 @@ void ConsoleObserver::notice(const Diagnostic& notice) {
     std::lock_guard lock(mutex_);
     clearProgress();
     printDiagnostic(notice);
+}
+
+void ConsoleObserver::problems(const std::vector<Diagnostic>& list) {
+    std::lock_guard lock(mutex_);
+    clearProgress();
+    std::cerr << formatDiagnostics(list, "toyhost: ") << "\n";
 }
 
 void ConsoleObserver::progress(const RunProgress& p) {

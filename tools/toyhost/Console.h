@@ -35,6 +35,7 @@ public:
     // `quiet`: no progress line and no notices (warnings and errors still print).
     explicit ConsoleObserver(bool quiet);
     void notice(const Diagnostic& notice) override;
+    void problems(const std::vector<Diagnostic>& list) override;
     void progress(const RunProgress& p) override;
     void roundFinished(const Result<SessionReport>& round) override;
     // Prints the summary of a finished run.

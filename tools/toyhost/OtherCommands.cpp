@@ -5,6 +5,7 @@
 
 #include "Commands.h"
 #include "Console.h"
+#include "NextCommand.h"
 #include "core/AtomicFile.h"
 #include "export/ShadertoyExport.h"
 #include "image/ImageStats.h"
@@ -31,7 +32,8 @@ int importCommand(const std::string& source, const std::string& dir, bool force)
     if (Status written = writeManifestFolder(*shadertoy, dir, force); !written) return fail(written.error());
     std::cerr << "toyhost: imported " << shadertoy->name << " into " << dir << " (" << shadertoy->passes.size()
               << (shadertoy->passes.size() == 1 ? " pass" : " passes") << (shadertoy->commonSource ? " + Common)" : ")")
-              << "\n";
+              << "\n"
+              << "toyhost: run it with: " << nextRunCommand(dir, shadertoy->runDefaults.frames.value_or(1)) << "\n";
     return kExitOk;
 }
 
@@ -90,8 +92,9 @@ int newCommand(const std::string& dir, const std::string& passes, bool force) {
     const ManifestDesc desc = starterManifest(dir, *layout);
     std::string files = desc.commonSource ? "common.glsl, " : "";
     for (const PassDesc& pass : desc.passes) files += passFileName(pass.id) + ", ";
-    std::cerr << "toyhost: wrote " << dir << "/ (manifest.json, " << files << "README.md)\n"
-              << "toyhost: run it with: toyhost run " << dir << "\n";
+    const char* slash = !dir.empty() && dir.back() == '/' ? "" : "/";
+    std::cerr << "toyhost: wrote " << dir << slash << " (manifest.json, " << files << "README.md)\n"
+              << "toyhost: run it with: " << nextRunCommand(dir, desc.runDefaults.frames.value_or(1)) << "\n";
     return kExitOk;
 }
 

@@ -1,10 +1,12 @@
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <unistd.h>
 
 #include "Commands.h"
 #include "Console.h"
 #include "core/Defaults.h"
+#include "core/NumberText.h"
 #include "drivers/headless/HeadlessDriver.h"
 #include "drivers/window/WindowContext.h"
 #include "drivers/window/WindowDriver.h"
@@ -30,6 +32,27 @@ std::string number(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", value);
     return text;
+}
+
+// Every numeric option of `run` is checked as text before CLI11 converts it (core/NumberText.h):
+// CLI11 alone reads --frames 0x10 as 16, --png-level 010 as 8 (octal) and --frames '' as "not
+// given". A whole number is handed on without leading zeros. Ranges beyond what the type holds are
+// checked by prepareSession, which also serves library callers.
+void requireDecimalNumbers(CLI::App& run) {
+    const CLI::Validator wholeNumber(
+        [](std::string& text) {
+            std::string problem = wholeNumberProblem(text, INT32_MIN, INT32_MAX);
+            if (problem.empty()) text = std::to_string(*parseDecimalInteger(text));
+            return problem;
+        },
+        "");
+    const CLI::Validator decimalNumber([](std::string& text) { return decimalNumberProblem(text); }, "");
+    const CLI::Validator timeoutSeconds([](std::string& text) { return timeoutSecondsProblem(text); }, "");
+    for (const char* name : {"--frames", "--png-level", "--video-quality", "--encoder-threads", "--capture-memory",
+                             "--capture-every", "--checkpoint-every"})
+        run.get_option(name)->transform(wholeNumber);  // transform: it may rewrite the text
+    for (const char* name : {"--fps", "--start-time"}) run.get_option(name)->check(decimalNumber);
+    for (const char* name : {"--frame-timeout", "--compile-timeout"}) run.get_option(name)->check(timeoutSeconds);
 }
 
 }  // namespace
@@ -89,10 +112,12 @@ void RunCommand::define(CLI::App& run) {
     run.add_option("--frame-timeout", options_.frameTimeout,
                    "Watchdog: end the run (exit 124) when one pass of a frame draws for longer than this many "
                    "seconds, or the encoders take no frame for that long (default " +
-                       number(defaults::kFrameTimeoutSeconds) + " headless, off in a window; 0: off)");
+                       number(defaults::kFrameTimeoutSeconds) + " headless, off in a window; 0: off; else at least " +
+                       number(defaults::kMinTimeoutSeconds) + ")");
     run.add_option("--compile-timeout", options_.compileTimeout,
                    "Watchdog: end the run (exit 124) when compiling one pass takes longer than this many seconds "
-                   "(default " + number(defaults::kCompileTimeoutSeconds) + "; 0: off)");
+                   "(default " + number(defaults::kCompileTimeoutSeconds) + "; 0: off; else at least " +
+                       number(defaults::kMinTimeoutSeconds) + ")");
     run.add_option("--checkpoint", options_.checkpoint,
                    "Write the run's full state (every buffer, iFrame, time, mouse, keys) to FILE, atomically: "
                    "every --checkpoint-every frames, when interrupted and at the end");
@@ -109,6 +134,7 @@ void RunCommand::define(CLI::App& run) {
                  "Read every buffer back after every frame and warn at the first NaN/Inf, naming the pass and the "
                  "frame (without it: buffers are checked after the last frame and in captured EXR frames)");
     run.add_flag("--quiet", quiet_, "No progress line and no notices (warnings and errors still print)");
+    requireDecimalNumbers(run);
 }
 
 int RunCommand::execute(const GlProcess& process) {

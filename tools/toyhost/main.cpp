@@ -13,6 +13,7 @@
 #include "Commands.h"
 #include "Console.h"
 #include "core/Defaults.h"
+#include "core/NumberText.h"
 #include "gl/GlThread.h"
 #include "session/StopSignals.h"
 
@@ -71,7 +72,8 @@ int main(int argc, char** argv) {
     sound->add_option("--out", soundOptions.out, "Audio file: .wav (16-bit PCM), or .flac, .ogg, .opus, .mp3, .m4a through ffmpeg; - for WAV on stdout")
         ->required();
     sound->add_option("--seconds", soundOptions.seconds, "Length, as the site's 180 s by default")
-        ->default_val(defaults::kSoundSeconds);
+        ->default_val(defaults::kSoundSeconds)
+        ->check(CLI::Validator([](std::string& text) { return decimalNumberProblem(text); }, ""));
     sound->add_option("--media", soundOptions.mediaFolders, "Folder with real stock media files (repeatable)");
     sound->add_flag("--quiet", soundOptions.quiet, "Hide notices (stand-ins)");
 
