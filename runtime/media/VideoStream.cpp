@@ -91,6 +91,7 @@ void VideoStream::reposition(std::int64_t index) {
     decodeNext_ = index;
     ++generation_;
     error_.reset();
+    errorReported_ = false;
     changed_.notify_all();
 }
 
@@ -184,6 +185,14 @@ Result<const Image8*> VideoStream::frame(std::int64_t index, const InputWait& wa
             head_ = (head_ + 1) % ring_.size();
             --count_;
             changed_.notify_all();
+        }
+        if (error_ && !repositioned && !errorReported_ && count_ == 0 && forward(decodeNext_, index) <= maxSkip_) {
+            // The decoder died on its way to this frame (and everything it queued was shown): say
+            // so once, whenever the reader thread noticed; the next request starts another.
+            errorReported_ = true;
+            Error failed = *error_;
+            done();
+            return failed;
         }
         if (error_ && repositioned) {
             // The decoder failed on the way to this frame.

@@ -100,6 +100,7 @@ private:
     std::int64_t decodeNext_ = 0;      // the index the decoder queues next
     std::uint64_t generation_ = 0;     // changes at every reposition: frames of an older one are dropped
     std::optional<Error> error_;       // the decoder failed; it waits for a reposition
+    bool errorReported_ = false;       // frame() returned error_ once; the next request repositions
     bool stop_ = false;
     std::uint64_t waits_ = 0;
     std::vector<std::uint8_t> newest_;  // camera: the newest frame, and its number

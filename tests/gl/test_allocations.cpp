@@ -53,7 +53,7 @@ TEST_F(Allocations, APlayerFrameAllocatesNothing) {
 }
 
 TEST_F(Allocations, AFrameWithVideoAndMusicChannelsAllocatesNothing) {
-    if (!findExecutable("ffmpeg")) GTEST_SKIP() << "needs ffmpeg";
+    if (!findExecutable("ffmpeg")) GTEST_FAIL() << "needs ffmpeg (scripts/install-deps.sh installs it)";
     const std::filesystem::path dir = freshOutputDir("allocations/media");
     writeFile(dir / "image.glsl",
               "void mainImage(out vec4 c, in vec2 f) { c = texture(iChannel0, f / iResolution.xy) + "

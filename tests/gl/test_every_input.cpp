@@ -234,7 +234,7 @@ TEST_F(EveryInput, AFloatVolumeKeepsItsValuesOutsideZeroToOne) {
 }
 
 TEST_F(EveryInput, AVideoShowsItsFrameAtITimeAndICannelTimeIsItsLoopingPlaybackTime) {
-    if (!findExecutable("ffmpeg")) GTEST_SKIP() << "needs ffmpeg";
+    if (!findExecutable("ffmpeg")) GTEST_FAIL() << "needs ffmpeg (scripts/install-deps.sh installs it)";
     const fs::path dir = shadertoyFolder(
         "video",
         {{"image.glsl", "void mainImage(out vec4 c, in vec2 f) { c = vec4(texture(iChannel0, vec2(0.5)).rg, "

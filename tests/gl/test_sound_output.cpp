@@ -92,7 +92,7 @@ TEST(SoundOutput, AFullDeviceSaysNoSpaceLeftOnDevice) {
 }
 
 TEST(SoundOutput, AFailingEncoderLeavesNoFile) {
-    if (!findExecutable("ffmpeg")) GTEST_SKIP() << "needs ffmpeg";
+    if (!findExecutable("ffmpeg")) GTEST_FAIL() << "needs ffmpeg (scripts/install-deps.sh installs it)";
     const fs::path dir = soundShadertoy("failing_encoder", kSine);
     // An ffmpeg that writes half a file where it is told to, then fails.
     writeFile(dir / "bin" / "ffmpeg", "#!/bin/sh\nfor a; do out=$a; done\necho half > \"${out#file:}\"\n"

@@ -101,7 +101,7 @@ void expectFrames(const std::string& raw, int frames, Expected expected) {
 class VideoFrames : public GlTest {};
 
 TEST_F(VideoFrames, AThirtyFpsClipAtFps30ShowsFrameNAtFrameNUpTo10000) {
-    if (!findExecutable("ffmpeg")) GTEST_SKIP() << "needs ffmpeg";
+    if (!findExecutable("ffmpeg")) GTEST_FAIL() << "needs ffmpeg (scripts/install-deps.sh installs it)";
     constexpr int kFrames = 10001;
     const fs::path dir = indexShadertoy("fps30", kFrames, 30);
     ASSERT_FALSE(dir.empty()) << "ffmpeg could not make the clip";
@@ -114,7 +114,7 @@ TEST_F(VideoFrames, AThirtyFpsClipAtFps30ShowsFrameNAtFrameNUpTo10000) {
 }
 
 TEST_F(VideoFrames, AShardStartingMidClipAndASlowerRunShowTheFilesFrames) {
-    if (!findExecutable("ffmpeg")) GTEST_SKIP() << "needs ffmpeg";
+    if (!findExecutable("ffmpeg")) GTEST_FAIL() << "needs ffmpeg (scripts/install-deps.sh installs it)";
     constexpr int kClip = 9000;  // 300 s at 30 fps
     const fs::path dir = indexShadertoy("shards", kClip, 30);
     ASSERT_FALSE(dir.empty()) << "ffmpeg could not make the clip";
@@ -140,7 +140,7 @@ TEST_F(VideoFrames, AShardStartingMidClipAndASlowerRunShowTheFilesFrames) {
 // thread sees the render thread waiting for the video (pass, iFrame) rather than idle. The decoder
 // is a stand-in for ffmpeg that sends frame 0 and then nothing until it is killed.
 TEST_F(VideoFrames, AFrameTheDecoderHasNotReachedIsWaitedForWhereAWatchdogSeesIt) {
-    if (!findExecutable("ffmpeg") || !findExecutable("ffprobe")) GTEST_SKIP() << "needs ffmpeg and ffprobe";
+    if (!findExecutable("ffmpeg") || !findExecutable("ffprobe")) GTEST_FAIL() << "needs ffmpeg and ffprobe (scripts/install-deps.sh installs them)";
     const fs::path dir = indexShadertoy("stalled", 60, 30);
     ASSERT_FALSE(dir.empty()) << "ffmpeg could not make the clip";
     const fs::path bin = dir / "bin";

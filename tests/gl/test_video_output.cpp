@@ -15,7 +15,7 @@ std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 #define REQUIRE_FFMPEG()                                                                          \
     do {                                                                                          \
         if (!findExecutable("ffmpeg") || !findExecutable("ffprobe"))                              \
-            GTEST_SKIP() << "ffmpeg/ffprobe not installed (apt-get install ffmpeg)";              \
+            GTEST_FAIL() << "ffmpeg/ffprobe not installed (apt-get install ffmpeg)";              \
     } while (0)
 
 // "frames,width,height" of the first video stream, counted by decoding.
@@ -97,7 +97,7 @@ namespace {
 // Ctrl-C (SIGINT) stops the run before its next frame: exit 130, the video being encoded is
 // discarded with its temporary files, and nothing is left in the folder.
 TEST(VideoInterrupt, SigintDiscardsThePartialVideo) {
-    if (!findExecutable("ffmpeg") || !findExecutable("timeout")) GTEST_SKIP() << "needs ffmpeg and timeout";
+    if (!findExecutable("ffmpeg") || !findExecutable("timeout")) GTEST_FAIL() << "needs ffmpeg and timeout";
     const fs::path dir = freshOutputDir("video/interrupt");
     // --foreground: the signal goes to toyhost only (ffmpeg must not see it first).
     auto run = runCommand("timeout", "--foreground --preserve-status -s INT 2 '" + toyhostBinary().string() + "' run '" +

@@ -569,7 +569,7 @@ protected:
 
 TEST_P(BadInput, FailsCleanly) {
     const Case& c = GetParam();
-    if (c.needsFfmpeg && !shell("command -v ffmpeg >/dev/null 2>&1")) GTEST_SKIP() << "needs ffmpeg";
+    if (c.needsFfmpeg && !shell("command -v ffmpeg >/dev/null 2>&1")) GTEST_FAIL() << "needs ffmpeg (scripts/install-deps.sh installs it)";
     const fs::path caseDir = testOutputDir() / "catalogue" / c.name;
     if (c.mount != Mount::None) shell("umount '" + (caseDir / "out").string() + "' 2>/dev/null");  // a crashed run's
     dir_ = freshOutputDir("catalogue/" + c.name);

@@ -158,7 +158,7 @@ TEST_F(Checkpoints, ResumeRefusesAnotherShadertoyOrAnotherClock) {
 
 // Four shards run by GNU parallel (as docs/farm.md shows), compared file by file with one run.
 TEST(Shards, FourParallelShardsEqualTheSingleRunByteForByte) {
-    if (shell("command -v parallel").first != 0) GTEST_SKIP() << "GNU parallel is not installed";
+    if (shell("command -v parallel").first != 0) GTEST_FAIL() << "GNU parallel is not installed (scripts/install-deps.sh installs it)";
     const fs::path dir = freshOutputDir("reliability/shards");
     const fs::path pool = sourceDir() / "shadertoys/ripple-pool";
     const fs::path ocean = sourceDir() / "shadertoys/exp-sine-ocean";
