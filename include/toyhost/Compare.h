@@ -58,6 +58,8 @@ Result<FrameDifference> compareImages(std::span<const std::uint8_t> a, std::span
 // frames and the difference image (empty when within tolerance), rows top first.
 struct ComparedFrame {
     const FrameDifference& difference;
+    int width;   // each image: width * height * 4 bytes, RGBA8
+    int height;
     std::span<const std::uint8_t> a;
     std::span<const std::uint8_t> b;
     std::span<const std::uint8_t> diffImage;
@@ -83,8 +85,10 @@ struct CompareSettings {
 };
 
 struct CompareReport {
-    int width = 0;
+    int width = 0;       // the canvas both rendered at
     int height = 0;
+    double fps = 0;      // the time step both used: frame n at iTime = startTime + n / fps
+    double startTime = 0;
     std::string pass;
     std::vector<FrameDifference> frames;     // every frame compared, in order
     std::optional<int> firstDifferingFrame;  // the first frame beyond the tolerance (its iFrame)

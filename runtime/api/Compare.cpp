@@ -97,6 +97,8 @@ Result<CompareReport> compareShadertoys(const Shadertoy& a, const Shadertoy& b, 
     report.width = first.width();
     report.height = first.height();
     report.pass = pass;
+    report.fps = common.fps;
+    report.startTime = common.startTime;
     report.minPsnr = std::numeric_limits<double>::infinity();
     const std::size_t values = static_cast<std::size_t>(report.width) * report.height * 4;
     std::vector<std::uint8_t> pixelsA(values), pixelsB(values), diff;
@@ -126,7 +128,7 @@ Result<CompareReport> compareShadertoys(const Shadertoy& a, const Shadertoy& b, 
         if (showDiff && settings.keepDiffImages) d->diffImage = diff;
         report.frames.push_back(std::move(*d));
         if (settings.onFrame) {
-            const ComparedFrame compared{report.frames.back(), pixelsA, pixelsB,
+            const ComparedFrame compared{report.frames.back(), report.width, report.height, pixelsA, pixelsB,
                                          showDiff ? std::span<const std::uint8_t>(diff) : std::span<const std::uint8_t>()};
             if (!settings.onFrame(compared)) break;
         }

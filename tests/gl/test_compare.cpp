@@ -7,6 +7,8 @@
 #include <cmath>
 #include <toyhost/Compare.h>
 
+#include "core/AtomicFile.h"
+
 namespace toyhost::testing {
 namespace {
 
@@ -192,6 +194,20 @@ TEST(Compare, AnExportEqualsItsImportedFolder) {
     ASSERT_TRUE(report.ok()) << report.error().text();
     EXPECT_TRUE(report->equal());
     EXPECT_TRUE(std::isinf(report->minPsnr));
+
+    // One constant of the port changed (the waves' drag): a finite PSNR from frame 0.
+    Result<std::string> code = readTextFile(dir / "image.glsl");
+    ASSERT_TRUE(code.ok());
+    const std::string before = "#define DRAG_MULT 0.38", after = "#define DRAG_MULT 0.39";
+    const std::size_t at = code->find(before);
+    ASSERT_NE(at, std::string::npos) << "the ocean's DRAG_MULT line";
+    writeFile(dir / "image.glsl", code->replace(at, before.size(), after));
+    Result<CompareReport> changed = compareOnGlThread(sharedDir() / "shadertoys/MdXyzX/MdXyzX.json", dir, settings);
+    ASSERT_TRUE(changed.ok()) << changed.error().text();
+    ASSERT_TRUE(changed->firstDifferingFrame);
+    EXPECT_EQ(*changed->firstDifferingFrame, 0);
+    EXPECT_TRUE(std::isfinite(changed->frames[0].psnr));
+    EXPECT_GT(changed->frames[0].psnr, 15.0) << "the same scene, slightly different waves";
 }
 
 }  // namespace
