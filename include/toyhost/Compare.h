@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include <toyhost/Export.h>
 #include <toyhost/Input.h>
 #include <toyhost/Result.h>
 #include <toyhost/Session.h>
@@ -50,9 +51,9 @@ struct FrameDifference {
 // Compares two RGBA8 images of width * height * 4 bytes (any row order, the same for both; firstY
 // counts rows in that order). `channels` is 3 (R, G, B) or 4. Writes the difference image into
 // `diffImage` (resized) when given. Errors: sizes that do not match, channels other than 3 or 4.
-Result<FrameDifference> compareImages(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b, int width,
-                                      int height, int channels, const CompareTolerance& tolerance = {},
-                                      std::vector<std::uint8_t>* diffImage = nullptr, int diffGain = 0);
+TOYHOST_API Result<FrameDifference> compareImages(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b,
+                                                  int width, int height, int channels, const CompareTolerance& tolerance = {},
+                                                  std::vector<std::uint8_t>* diffImage = nullptr, int diffGain = 0);
 
 // One compared frame as it is rendered, for callers that write files or stop early: the two
 // frames and the difference image (empty when within tolerance), rows top first.
@@ -100,6 +101,7 @@ struct CompareReport {
 // Renders `a` and `b` headless, frame by frame with the same settings and inputs, and compares
 // `settings.pass`. Errors: either shadertoy failing to start (named "A: ..." / "B: ..." through
 // the diagnostics' file), a pass that one of them lacks, scripts that do not parse, a GL error.
-Result<CompareReport> compareShadertoys(const Shadertoy& a, const Shadertoy& b, const CompareSettings& settings = {});
+TOYHOST_API Result<CompareReport> compareShadertoys(const Shadertoy& a, const Shadertoy& b,
+                                                   const CompareSettings& settings = {});
 
 }  // namespace toyhost
