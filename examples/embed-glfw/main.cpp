@@ -3,13 +3,15 @@
 // which it draws on its own quad inside a frame of its own colour. The GLFW context is OpenGL ES 3
 // on EGL (toyhost adopts the current EGL context).
 //
-//   embed-glfw SHADERTOY [--size WxH] [--frames N] [--fps F] [--check]
+//   embed-glfw SHADERTOY [--size WxH] [--frames N] [--fps F] [--wait-events] [--check]
 //
-// Without --fps it runs in real time (iTime from glfwGetTime); --frames 0 runs until the window is
-// closed. --check (tests/CMakeLists.txt runs it under Xvfb): every step must leave the app's GL
-// state as it was (GlStateSnapshot before and after), and the last frame on the quad, read back
-// from the app's framebuffer, must equal a headless render of the same frame with the same mouse
-// events (PSNR inf). Exit 0 when all holds, 1 otherwise.
+// Without --fps it runs in real time (iTime from glfwGetTime); without --frames until the window
+// is closed (or Esc). --wait-events renders a frame only when input arrives (as an editor would).
+// Drag with the left button in the quad: the shadertoy gets iMouse in its canvas pixels.
+// --check (tests/CMakeLists.txt runs it under Xvfb): every step must leave the app's GL state as it
+// was (GlStateSnapshot before and after), and the last frame on the quad, read back from the app's
+// framebuffer, must equal a headless render of the same frames with the same mouse events
+// (PSNR inf). Exit 0 when all holds, 1 otherwise.
 #include <GLES3/gl3.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -78,6 +80,10 @@ void onCursor(GLFWwindow* window, double x, double y) {
     static_cast<Mouse*>(glfwGetWindowUserPointer(window))->at(x, y, toyhost::InputEvent::Type::MouseMove);
 }
 
+void onKey(GLFWwindow* window, int key, int, int action, int) {
+    if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(window, GLFW_TRUE);
+}
+
 int fail(const std::string& what) {
     std::fprintf(stderr, "embed-glfw: %s\n", what.c_str());
     return 1;
@@ -89,17 +95,18 @@ int main(int argc, char** argv) {
     std::string path;
     int width = 320, height = 180, frames = 0;
     double fps = 0;
-    bool check = false;
+    bool check = false, waitEvents = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--size" && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
         else if (arg == "--frames" && i + 1 < argc) frames = std::atoi(argv[++i]);
         else if (arg == "--fps" && i + 1 < argc) fps = std::atof(argv[++i]);
         else if (arg == "--check") check = true;
+        else if (arg == "--wait-events") waitEvents = true;
         else path = arg;
     }
     if (path.empty() || width <= 0 || height <= 0) return fail("usage: embed-glfw SHADERTOY [--size WxH] [--frames N] [--fps F] [--check]");
-    if (check && (fps <= 0 || frames <= 0)) return fail("--check needs --fps and --frames (a repeatable run)");
+    if (check && fps <= 0) return fail("--check needs --fps (a repeatable run)");
 
     // The application's window and context: OpenGL ES 3.0 on EGL.
     if (!glfwInit()) return fail("glfwInit failed");
@@ -116,6 +123,7 @@ int main(int argc, char** argv) {
     glfwSetWindowUserPointer(window, &mouse);
     glfwSetMouseButtonCallback(window, onButton);
     glfwSetCursorPosCallback(window, onCursor);
+    glfwSetKeyCallback(window, onKey);
 
     // The application's own GL objects: a program, a quad, a sampler.
     GLuint program = glCreateProgram();
@@ -165,7 +173,7 @@ int main(int argc, char** argv) {
     std::string stateChanges;
     double last = glfwGetTime();
     for (int frame = 0; (frames == 0 || frame < frames) && !glfwWindowShouldClose(window); ++frame) {
-        glfwPollEvents();
+        waitEvents && frame > 0 ? glfwWaitEvents() : glfwPollEvents();
         std::vector<toyhost::InputEvent> events = std::move(mouse.pending);
         mouse.pending.clear();
         const GlStateSnapshot before = check ? GlStateSnapshot::capture() : GlStateSnapshot{};
@@ -192,7 +200,7 @@ int main(int argc, char** argv) {
         glViewport(kMargin, kMargin, width, height);
         glBindTexture(GL_TEXTURE_2D, (*session)->imageTexture());
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-        if (check && frame + 1 == frames)
+        if (check)
             glReadPixels(kMargin, kMargin, width, height, GL_RGBA, GL_UNSIGNED_BYTE, shown.data());  // bottom row first
         glfwSwapBuffers(window);
     }
@@ -204,23 +212,37 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "embed-glfw: %s", stateChanges.c_str());
             code = 1;
         }
-        // The same frames headless, with the same events on the same frames.
-        auto headless = toyhost::Session::createHeadless(*shadertoy, settings);
-        if (!headless) return fail(headless.error().text());
-        for (const auto& events : eventsOfFrame)
-            if (toyhost::Status s = (*headless)->step(events); !s) return fail(s.error().text());
-        std::vector<std::uint8_t> expected(shown.size());
-        if (toyhost::Status s = (*headless)->read("Image", expected, toyhost::RowOrder::BottomFirst); !s)
-            return fail(s.error().text());
+        // The same frames headless, with the same events on the same frames, and without events.
+        std::size_t mouseEvents = 0;
+        for (const auto& events : eventsOfFrame) mouseEvents += events.size();
+        auto render = [&](bool withEvents, std::vector<std::uint8_t>& pixels) -> toyhost::Status {
+            auto headless = toyhost::Session::createHeadless(*shadertoy, settings);
+            if (!headless) return headless.error();
+            for (const auto& events : eventsOfFrame)
+                if (toyhost::Status s = (*headless)->step(withEvents ? std::span<const toyhost::InputEvent>(events)
+                                                                         : std::span<const toyhost::InputEvent>()); !s) return s;
+            pixels.resize(shown.size());
+            return (*headless)->read("Image", pixels, toyhost::RowOrder::BottomFirst);
+        };
+        std::vector<std::uint8_t> expected, untouched;
+        if (toyhost::Status s = render(true, expected); !s) return fail(s.error().text());
         // A frame of one colour would prove little about where the quad's pixels come from.
         bool varied = false;
         for (std::size_t i = 4; i < expected.size() && !varied; i += 4) varied = std::memcmp(&expected[i], &expected[0], 3) != 0;
         if (!varied) return fail("the headless frame is one colour: choose a shadertoy with a picture for --check");
         auto d = toyhost::compareImages(shown, expected, width, height, 3);
         if (!d) return fail(d.error().text());
-        std::printf("embed-glfw: %d frames; the quad against a headless render of frame %d: PSNR %s dB, max diff %d\n",
-                    frames, frames - 1, std::isinf(d->psnr) ? "inf" : std::to_string(d->psnr).c_str(), d->maxDiff);
+        const int rendered = static_cast<int>(eventsOfFrame.size());
+        std::printf("embed-glfw: %d frames, %zu mouse events; the quad against a headless render of frame %d: PSNR %s dB, "
+                    "max diff %d\n",
+                    rendered, mouseEvents, rendered - 1, std::isinf(d->psnr) ? "inf" : std::to_string(d->psnr).c_str(),
+                    d->maxDiff);
         if (d->maxDiff != 0) code = 1;
+        if (mouseEvents > 0) {
+            if (toyhost::Status s = render(false, untouched); !s) return fail(s.error().text());
+            const bool changed = untouched != expected;
+            std::printf("embed-glfw: the mouse %s the picture\n", changed ? "changed" : "did not change");
+        }
         if (code == 0) std::printf("embed-glfw: the app's GL state was unchanged by every step\n");
     }
     glfwDestroyWindow(window);
