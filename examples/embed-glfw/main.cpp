@@ -119,7 +119,9 @@ int main(int argc, char** argv) {
     if (!window) return fail("cannot open an OpenGL ES 3 window on EGL");
     glfwMakeContextCurrent(window);
     glfwSwapInterval(check ? 0 : 1);
-    Mouse mouse{width, height};
+    Mouse mouse;
+    mouse.canvasWidth = width;
+    mouse.canvasHeight = height;
     glfwSetWindowUserPointer(window, &mouse);
     glfwSetMouseButtonCallback(window, onButton);
     glfwSetCursorPosCallback(window, onCursor);
