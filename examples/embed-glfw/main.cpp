@@ -167,12 +167,17 @@ int main(int argc, char** argv) {
     settings.height = height;
     settings.fps = fps;
     if (check) settings.date = "2026-01-01T00:00:00";
+    const GlStateSnapshot beforeCreation = check ? GlStateSnapshot::capture() : GlStateSnapshot{};
     auto session = toyhost::Session::createOnCurrentContext(*shadertoy, settings);
     if (!session) return fail(session.error().text());
+    std::string stateChanges;
+    if (check) {
+        const std::string changed = beforeCreation.differencesTo(GlStateSnapshot::capture());
+        if (!changed.empty()) stateChanges = "creating the session changed the app's GL state:\n" + changed;
+    }
 
     std::vector<std::vector<toyhost::InputEvent>> eventsOfFrame;  // kept for --check's replay
     std::vector<std::uint8_t> shown(static_cast<std::size_t>(width) * height * 4);
-    std::string stateChanges;
     double last = glfwGetTime();
     for (int frame = 0; (frames == 0 || frame < frames) && !glfwWindowShouldClose(window); ++frame) {
         waitEvents && frame > 0 ? glfwWaitEvents() : glfwPollEvents();
@@ -206,7 +211,13 @@ int main(int argc, char** argv) {
             glReadPixels(kMargin, kMargin, width, height, GL_RGBA, GL_UNSIGNED_BYTE, shown.data());  // bottom row first
         glfwSwapBuffers(window);
     }
+    glBindTexture(GL_TEXTURE_2D, 0);  // toyhost's texture goes with the session
+    const GlStateSnapshot beforeDestruction = check ? GlStateSnapshot::capture() : GlStateSnapshot{};
     session->reset();  // toyhost's GL objects go while the app's context is current
+    if (check && stateChanges.empty()) {
+        const std::string changed = beforeDestruction.differencesTo(GlStateSnapshot::capture());
+        if (!changed.empty()) stateChanges = "destroying the session changed the app's GL state:\n" + changed;
+    }
 
     int code = 0;
     if (check) {
@@ -245,7 +256,7 @@ int main(int argc, char** argv) {
             const bool changed = untouched != expected;
             std::printf("embed-glfw: the mouse %s the picture\n", changed ? "changed" : "did not change");
         }
-        if (code == 0) std::printf("embed-glfw: the app's GL state was unchanged by every step\n");
+        if (code == 0) std::printf("embed-glfw: the app's GL state was unchanged by creating the session, every step and destroying it\n");
     }
     glfwDestroyWindow(window);
     glfwTerminate();
