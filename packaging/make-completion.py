@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 # Writes the bash completion script for toyhost from the built CLI's help: the subcommands, each
-# command's options, which options take a value and which values are paths (TEXT: files, as most
-# are; INT/FLOAT: nothing to complete). Run by the build (packaging/CMakeLists.txt).
+# command's options, which options take a value and which values are paths (TEXT options whose help
+# speaks of files or folders; others and INT/FLOAT: nothing). Run by the build (packaging/CMakeLists.txt).
 # Usage: make-completion.py TOYHOST OUT
+import re
 import sys
 
 from cli_help import read_all
@@ -37,10 +38,17 @@ complete -o filenames -F _toyhost toyhost
 '''
 
 
+def names_a_path(option):
+    # TEXT options whose name or help speaks of a file, folder, script or output take paths; others
+    # (sizes, dates, codecs, coordinates) have nothing to complete.
+    words = " ".join(option.names) + " " + option.text
+    return re.search(r"\b(file|files|folder|script|dir|directory|out|checkpoint|resume)\b", words, re.I) is not None
+
+
 def case(label, command):
     names = [n for o in command.options for n in o.names]
     valued = [n for o in command.options if o.value for n in o.names]
-    paths = [n for o in command.options if o.value.startswith("TEXT") for n in o.names]
+    paths = [n for o in command.options if o.value.startswith("TEXT") and names_a_path(o) for n in o.names]
     return (f'        {label})\n'
             f'            options="{" ".join(names)}"\n'
             f'            takes_value="{" ".join(valued)}"\n'

@@ -58,7 +58,7 @@ def options(title, entries):
     for o in entries:
         label = ", ".join(o.names) + (f" {o.value}" if o.value else "")
         out.append(f".TP\n.B {roff(label)}\n{roff(o.text)}")
-    return f".PP\n{title}:\n" + "\n".join(out)
+    return (f".PP\n{title}:\n" if title else "") + "\n".join(out)
 
 
 def main():
@@ -71,7 +71,7 @@ def main():
         ".SH SYNOPSIS",
         "\n.br\n".join(f".B toyhost {roff(c.usage.split(' ', 1)[1])}" for c in [top, *subcommands]),
         ".SH DESCRIPTION", paragraphs(sections.get("", "")),
-        ".SH OPTIONS", options("Options", top.options),
+        ".SH OPTIONS", options("", top.options),
         ".SH COMMANDS",
     ]
     for c in subcommands:
