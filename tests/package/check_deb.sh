@@ -2,7 +2,7 @@
 # `cpack -G DEB` makes toyhost_VERSION_ARCH.deb: its control says the project version and a Depends
 # computed by dpkg-shlibdeps (the EGL, GLES, PNG, OpenEXR, FFTW and C++ runtime packages, none
 # typed by hand), it holds the programs, library, headers, CMake and pkg-config files, man page and
-# completion under /usr, and the toyhost it unpacks runs.
+# completion under /usr, apt would install it (simulated) and the toyhost it unpacks runs.
 # Usage: check_deb.sh SOURCE_DIR BUILD_DIR VERSION
 set -euo pipefail
 src="$1" build="$2" version="$3"
@@ -28,6 +28,10 @@ for file in ./usr/bin/toyhost ./usr/bin/toyhost-compat ./usr/lib/libtoyhost.so .
             ./usr/share/man/man1/toyhost.1 ./usr/share/bash-completion/completions/toyhost; do
   grep -qE " $file( ->|\$)" "$work/contents.txt" || { echo "the .deb lacks $file"; status=1; }
 done
+
+# apt would install it here: its Depends are satisfiable (a simulation, nothing installed).
+apt-get install -s "$deb" >"$work/apt.txt" 2>&1 || true
+grep -q "^Inst toyhost " "$work/apt.txt" || { echo "apt-get install -s $deb:"; cat "$work/apt.txt"; status=1; }
 
 # What it unpacks runs (its libraries come from the system, as Depends says).
 dpkg-deb -x "$deb" "$work/root"

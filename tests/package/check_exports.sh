@@ -12,7 +12,8 @@ while IFS= read -r symbol; do
   name="$(sed -E 's/^(typeinfo (name )?for |vtable for )//; s/\(.*//' <<<"$symbol")"
   if [[ "$name" != toyhost::* ]]; then echo "exported, not toyhost's API: $symbol"; status=1; continue; fi
   first="$(sed -E 's/^toyhost::([A-Za-z_0-9]+).*/\1/' <<<"$name")"
-  grep -qwE "(class|struct|enum class) TOYHOST_API $first|(class|struct) $first|TOYHOST_API .*[ *]$first\(" "$src"/include/toyhost/*.h "$src"/include/toyhost/Version.h.in \
+  grep -qE "(class|struct|enum class) (TOYHOST_API )?$first\b|TOYHOST_API [^(]*[ *&]$first\(" \
+    "$src"/include/toyhost/*.h "$src"/include/toyhost/Version.h.in \
     || { echo "exported, not declared in include/toyhost: $symbol"; status=1; }
 done <<<"$symbols"
 for api in 'toyhost::Session::createHeadless' 'toyhost::Shadertoy::load' 'toyhost::versionString()' 'toyhost::formatDiagnostics'; do
