@@ -2,7 +2,9 @@
 # A program outside the tree finds an installed toyhost and renders with it: installs into a staging
 # prefix, builds tests/package/consumer with find_package(toyhost) (MODE cmake) or with
 # `pkg-config toyhost` alone (MODE pkgconfig), runs it on shadertoys, and compares its frames with
-# the installed CLI's raw frames (`toyhost run --out -`) byte for byte. Nothing is downloaded.
+# the installed CLI's raw frames (`toyhost run --out -`) byte for byte: ripple-pool (a buffer with
+# feedback), uniform-probe (three buffers, a texture file, the uniforms) and the ocean. Nothing is
+# downloaded.
 # Usage: check_consumer.sh SOURCE_DIR BUILD_DIR cmake|pkgconfig
 set -euo pipefail
 src="$1" build="$2" mode="$3"
@@ -36,14 +38,16 @@ compare() {  # compare NAME SHADERTOY SIZE FRAMES
   local name="$1" shadertoy="$2" size="$3" frames="$4"
   "$exe" "$shadertoy" "$size" "$frames" "$work/$name.library.raw"
   "$stage/bin/toyhost" run "$shadertoy" --headless --size "$size" --frames "$frames" --fps 30 \
-    --date 2026-01-01T00:00:00 --quiet --out - >"$work/$name.cli.raw"
+    --date 2026-01-01T00:00:00 --quiet --out - >"$work/$name.cli.raw" 2>"$work/$name.cli.log" \
+    || { cat "$work/$name.cli.log"; exit 1; }
   cmp "$work/$name.library.raw" "$work/$name.cli.raw" \
     || { echo "$name: the consumer's frames differ from the CLI's"; exit 1; }
   echo "$name: $frames frames at $size equal to the CLI's ($(stat -c %s "$work/$name.cli.raw") bytes)"
 }
-compare pingpong-probe "$src/shadertoys/pingpong-probe" 64x36 4
+compare ripple-pool "$src/shadertoys/ripple-pool" 64x36 4
+compare uniform-probe "$src/shadertoys/uniform-probe" 64x36 3
 if [[ -e "$src/../shared/shadertoys/MdXyzX/image.glsl" ]]; then
   compare ocean "$src/shadertoys/ocean" 96x54 2
 else
-  echo "ocean: ../shared/shadertoys is not beside the repository; compared pingpong-probe only"
+  echo "ocean: ../shared/shadertoys is not beside the repository; compared ripple-pool and uniform-probe only"
 fi

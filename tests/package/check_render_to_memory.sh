@@ -4,7 +4,7 @@
 # Usage: check_render_to_memory.sh SOURCE_DIR EXAMPLE TOYHOST
 set -euo pipefail
 src="$1" example="$2" toyhost="$3"
-shadertoy="$src/shadertoys/pingpong-probe"
+shadertoy="$src/shadertoys/caustics-pool"
 library="$("$example" "$shadertoy" 3)"
 echo "$library"
 expected="$("$toyhost" run "$shadertoy" --headless --size 320x180 --frames 3 --fps 60 --date 2026-01-01T00:00:00 \
