@@ -82,7 +82,8 @@ def main():
         page.append(options("Options", c.options))
     examples = code_blocks(sections.get("Running shaders", ""))
     if examples:
-        page += [".SH EXAMPLES", ".nf", roff(examples[0].rstrip("\n")), ".fi"]
+        text = re.sub(r"\S*build\S*/tools/toyhost", "toyhost", examples[0].rstrip("\n"))
+        page += [".SH EXAMPLES", "In toyhost's source tree (its \\fBshadertoys/\\fR folder):", ".PP", ".nf", roff(text), ".fi"]
     if top.footer:
         page += [".SH EXIT STATUS", roff(top.footer)]
     page += [".SH SEE ALSO",
