@@ -13,6 +13,8 @@ packages=(
   xvfb xauth xdotool                                     # window-mode tests: a virtual X server and real X input
   parallel                                               # the render-farm shard test (GNU parallel)
   cpp                                                    # preprocessing as browsers do, where Mesa's preprocessor refuses a shader
+  python3 python3-numpy groff-base                       # man page and completion generators, package tests
+  dpkg-dev file                                          # cpack -G DEB: dpkg-shlibdeps computes Depends
 )
 
 # `install-deps.sh fuzz` adds what the libFuzzer targets need (tests/fuzz): clang and its

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <toyhost/Export.h>
 #include <toyhost/DiagnosticCode.h>
 
 namespace toyhost {
@@ -30,20 +31,20 @@ struct Diagnostic {
     std::string excerpt;
 };
 
-const char* severityName(Severity severity);  // "error", "warning", "notice"
+TOYHOST_API const char* severityName(Severity severity);  // "error", "warning", "notice"
 
 // One line: "FILE:LINE:COL: SEVERITY: PASS / iChannelN: FIELD: MESSAGE [CODE]", each part left out
 // when empty (the pass/channel part also when the JSON field already names the pass).
-std::string formatDiagnostic(const Diagnostic& diagnostic);
+TOYHOST_API std::string formatDiagnostic(const Diagnostic& diagnostic);
 
 // formatDiagnostic's line, then the diagnostic's excerpt (if any) on the lines below it, without
 // a prefix (so that the caret stays under its column).
-std::string formatDiagnosticWithExcerpt(const Diagnostic& diagnostic, const std::string& prefix = "");
+TOYHOST_API std::string formatDiagnosticWithExcerpt(const Diagnostic& diagnostic, const std::string& prefix = "");
 
 // Every diagnostic formatted, one per line, each line starting with `prefix` and followed by the
 // diagnostic's excerpt (formatDiagnosticWithExcerpt); at most `limit` diagnostics, then
 // "... and N more".
-std::string formatDiagnostics(const std::vector<Diagnostic>& diagnostics, const std::string& prefix = "",
+TOYHOST_API std::string formatDiagnostics(const std::vector<Diagnostic>& diagnostics, const std::string& prefix = "",
                               std::size_t limit = 100);
 
 }  // namespace toyhost

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include <toyhost/Export.h>
+
 namespace toyhost {
 
 // What kind of problem a code is; decides exit codes and what a run does next.
@@ -146,9 +148,9 @@ enum class Code : std::uint16_t {
 };
 
 // The code's stable text ("manifest.value").
-std::string_view codeName(Code code);
-Category categoryOf(Code code);
+TOYHOST_API std::string_view codeName(Code code);
+TOYHOST_API Category categoryOf(Code code);
 // "usage", "input", "shader", ...
-std::string_view categoryName(Category category);
+TOYHOST_API std::string_view categoryName(Category category);
 
 }  // namespace toyhost

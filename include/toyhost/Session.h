@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 
+#include <toyhost/Export.h>
 #include <toyhost/Input.h>
 #include <toyhost/Result.h>
 #include <toyhost/Shadertoy.h>
@@ -61,7 +62,7 @@ struct Reloaded {
     std::vector<Diagnostic> problems;  // empty: everything the shadertoy says runs now
 };
 
-class Session {
+class TOYHOST_API Session {
 public:
     // With toyhost's own headless EGL context (no display needed).
     static Result<std::unique_ptr<Session>> createHeadless(const Shadertoy& shadertoy, const SessionSettings& settings = {});
@@ -125,6 +126,6 @@ private:
 
 // Runs `job` on a thread with a stack large enough for Mesa's GLSL compiler and waits for it (a
 // session created there must also be used and destroyed there).
-void runOnGlThread(const std::function<void()>& job);
+TOYHOST_API void runOnGlThread(const std::function<void()>& job);
 
 }  // namespace toyhost

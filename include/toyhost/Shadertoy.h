@@ -10,13 +10,14 @@
 #include <string_view>
 #include <vector>
 
+#include <toyhost/Export.h>
 #include <toyhost/Result.h>
 
 namespace toyhost {
 
 struct ManifestDesc;  // toyhost's internal description (runtime/manifest)
 
-class Shadertoy {
+class TOYHOST_API Shadertoy {
 public:
     // A folder with manifest.json, a manifest file, or an export file. Every problem is reported
     // at once, each naming its file and place.

@@ -12,6 +12,8 @@
 #include <functional>
 #include <pthread.h>
 
+#include <toyhost/Export.h>
+
 #include "core/Result.h"
 #include "gl/HeadlessContext.h"
 
@@ -52,7 +54,8 @@ private:
     bool joined_ = false;
 };
 
-// Runs `job` on a GlThread and waits for it.
-void runOnGlThread(const std::function<void()>& job);
+// Runs `job` on a GlThread and waits for it. Part of the public API too (toyhost/Session.h), so
+// libtoyhost.so exports it.
+TOYHOST_API void runOnGlThread(const std::function<void()>& job);
 
 }  // namespace toyhost

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The bash completion completes every subcommand `toyhost --help` lists and every option each
+# command's --help lists (read here from the help text itself, not from the generator), completes
+# paths after an option taking TEXT, and nothing after one taking a number.
+# Usage: check_completion.sh COMPLETION_FILE TOYHOST
+set -uo pipefail
+completion="$1" toyhost="$2"
+# shellcheck disable=SC1090
+source "$completion"
+status=0
+
+complete_line() {  # complete_line WORD...: the candidates for the last word
+  COMP_WORDS=("$@")
+  COMP_CWORD=$((${#COMP_WORDS[@]} - 1))
+  COMPREPLY=()
+  _toyhost
+  printf '%s\n' "${COMPREPLY[@]}"
+}
+has() { grep -qxF -- "$1"; }
+
+commands=$("$toyhost" --help | sed -n '/^Subcommands:/,/^$/p' | awk 'NR > 1 && NF {print $1}')
+for command in $commands; do
+  complete_line toyhost "${command:0:2}" | has "$command" || { echo "completion: toyhost ${command:0:2}<TAB> does not offer $command"; status=1; }
+done
+for command in "" $commands; do
+  # shellcheck disable=SC2086
+  help="$("$toyhost" $command --help)"
+  for option in $(grep -oE '^  -[-a-zA-Z0-9,]+' <<<"$help" | tr ',' ' '); do
+    words=(toyhost)
+    [[ -n "$command" ]] && words+=("$command")
+    complete_line "${words[@]}" "${option:0:3}" | has "$option" \
+      || { echo "completion: toyhost $command ${option:0:3}<TAB> does not offer $option"; status=1; }
+  done
+done
+
+# Values: paths after a TEXT option, nothing after a number.
+tmp="$(mktemp -d)"
+touch "$tmp/frames.json"
+complete_line toyhost run --mouse-script "$tmp/fr" | has "$tmp/frames.json" || { echo "completion: no path after run --mouse-script"; status=1; }
+[[ -z "$(complete_line toyhost run --frames "")" ]] || { echo "completion: offers words after run --frames (a number)"; status=1; }
+rm -rf "$tmp"
+exit $status

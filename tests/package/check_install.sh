@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# `cmake --install` into a staging prefix puts every installed file in place: the programs, the
+# library with its SONAME link, the public headers (no internal ones), the CMake package, the
+# pkg-config file, the man page (one section per subcommand of `toyhost --help`) and the bash
+# completion; and the installed CLI runs from there.
+# Usage: check_install.sh SOURCE_DIR BUILD_DIR
+set -euo pipefail
+src="$1" build="$2"
+work="$build/test-output/package/install"
+source "$src/tests/package/stage.sh"
+
+status=0
+expect() { for f in "$@"; do [[ -e "$stage/$f" ]] || { echo "missing after cmake --install: $f"; status=1; }; done; }
+expect bin/toyhost bin/toyhost-compat \
+  lib/libtoyhost.so lib/cmake/toyhost/toyhostConfig.cmake lib/cmake/toyhost/toyhostConfigVersion.cmake \
+  lib/cmake/toyhost/toyhostTargets.cmake lib/pkgconfig/toyhost.pc \
+  share/man/man1/toyhost.1 share/bash-completion/completions/toyhost share/doc/toyhost/README.md
+for header in "$src"/include/toyhost/*.h; do expect "include/toyhost/$(basename "$header")"; done
+expect include/toyhost/Version.h
+soname="$(objdump -p "$stage/lib/libtoyhost.so" | awk '/SONAME/ {print $2}')"
+[[ -n "$soname" ]] && expect "lib/$soname" || { echo "libtoyhost.so has no SONAME"; status=1; }
+
+# Only the public headers, and they include nothing but each other and the standard library.
+extra="$(find "$stage/include" -type f ! -path "$stage/include/toyhost/*.h")"
+[[ -z "$extra" ]] || { echo "installed beside the public headers: $extra"; status=1; }
+if grep -hE '^\s*#include' "$stage"/include/toyhost/*.h | grep -vE '#include <(toyhost/[A-Za-z]+\.h|[a-z_]+)>'; then
+  echo "a public header includes something that is neither public nor standard (above)"; status=1
+fi
+
+"$stage/bin/toyhost" --version | grep -q "$(sed -n 's/.*VERSION_STRING "\(.*\)"/\1/p' "$stage/include/toyhost/Version.h")" \
+  || { echo "the installed toyhost --version differs from Version.h"; status=1; }
+
+# The man page: every subcommand has its section, every option of `toyhost run` is there.
+man="$stage/share/man/man1/toyhost.1"
+for command in $("$stage/bin/toyhost" --help | sed -n '/^Subcommands:/,/^$/p' | awk 'NR > 1 && NF {print $1}'); do
+  grep -q "^\.SS toyhost $command\$" "$man" || { echo "toyhost.1 has no section for $command"; status=1; }
+done
+for option in $("$stage/bin/toyhost" run --help | grep -oE '^  -[-a-z,]+' | tr ',' ' '); do
+  grep -qF -- "$(sed 's/-/\\-/g' <<<"$option")" "$man" || { echo "toyhost.1 does not document run $option"; status=1; }
+done
+warnings="$(groff -man -Tutf8 -ww "$man" 2>&1 >/dev/null)"
+[[ -z "$warnings" ]] || { echo "groff warns about toyhost.1: $warnings"; status=1; }
+
+"$src/tests/package/check_completion.sh" "$stage/share/bash-completion/completions/toyhost" "$stage/bin/toyhost" || status=1
+exit $status
