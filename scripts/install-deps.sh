@@ -13,6 +13,7 @@ packages=(
   xvfb xauth xdotool                                     # window-mode tests: a virtual X server and real X input
   parallel                                               # the render-farm shard test (GNU parallel)
   cpp                                                    # preprocessing as browsers do, where Mesa's preprocessor refuses a shader
+  python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
 )
 
 # `install-deps.sh fuzz` adds what the libFuzzer targets need (tests/fuzz): clang and its

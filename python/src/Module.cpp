@@ -1,0 +1,108 @@
+// The native module `toyhost._toyhost`: toyhost's public C++ API (include/toyhost/) as Python
+// sees it: diagnostics, input events, loading a shadertoy, the version, and the session
+// (SessionBinding). The Pythonic layer on top is toyhost/__init__.py. No GL here.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <string>
+
+#include <toyhost/Diagnostic.h>
+#include <toyhost/Input.h>
+#include <toyhost/Shadertoy.h>
+#include <toyhost/Version.h>
+
+#include "Errors.h"
+#include "SessionBinding.h"
+#include "core/Defaults.h"
+
+namespace py = pybind11;
+using namespace toyhost;
+using toyhost::python::valueOrThrow;
+
+namespace {
+
+void bindDiagnostic(py::module_& m) {
+    py::class_<Diagnostic>(m, "Diagnostic", "One problem or notice: what, where, and a stable code.")
+        .def_property_readonly("severity", [](const Diagnostic& d) { return std::string(severityName(d.severity)); })
+        .def_property_readonly("code", [](const Diagnostic& d) { return std::string(codeName(d.code)); })
+        .def_property_readonly("category",
+                               [](const Diagnostic& d) { return std::string(categoryName(categoryOf(d.code))); })
+        .def_readonly("message", &Diagnostic::message)
+        .def_readonly("file", &Diagnostic::file)
+        .def_readonly("pass_", &Diagnostic::pass)
+        .def_property_readonly("channel",
+                               [](const Diagnostic& d) { return d.channel < 0 ? py::none() : py::cast(d.channel); })
+        .def_readonly("field", &Diagnostic::field)
+        .def_readonly("line", &Diagnostic::line)
+        .def_readonly("column", &Diagnostic::column)
+        .def_readonly("excerpt", &Diagnostic::excerpt)
+        .def("__str__", [](const Diagnostic& d) { return formatDiagnostic(d); })
+        .def("__repr__", [](const Diagnostic& d) { return "<toyhost.Diagnostic " + formatDiagnostic(d) + ">"; });
+}
+
+void bindInputEvent(py::module_& m) {
+    py::class_<InputEvent> event(m, "InputEvent",
+                                 "One thing the user did: mouse in canvas pixels (origin bottom-left) or a key "
+                                 "as a JavaScript keyCode.");
+    py::enum_<InputEvent::Type>(event, "Type")
+        .value("MOUSE_DOWN", InputEvent::Type::MouseDown)
+        .value("MOUSE_MOVE", InputEvent::Type::MouseMove)
+        .value("MOUSE_UP", InputEvent::Type::MouseUp)
+        .value("KEY_DOWN", InputEvent::Type::KeyDown)
+        .value("KEY_UP", InputEvent::Type::KeyUp);
+    event.def_readonly("type", &InputEvent::type)
+        .def_readonly("x", &InputEvent::x)
+        .def_readonly("y", &InputEvent::y)
+        .def_readonly("key", &InputEvent::key)
+        .def_static("mouse_down", &InputEvent::mouseDown, py::arg("x"), py::arg("y"))
+        .def_static("mouse_move", &InputEvent::mouseMove, py::arg("x"), py::arg("y"))
+        .def_static("mouse_up", &InputEvent::mouseUp)
+        .def_static("key_down", &InputEvent::keyDown, py::arg("key"))
+        .def_static("key_up", &InputEvent::keyUp, py::arg("key"))
+        .def("__repr__", [](const InputEvent& e) {
+            return "<toyhost.InputEvent " + std::to_string(static_cast<int>(e.type)) + " x=" + std::to_string(e.x) +
+                   " y=" + std::to_string(e.y) + " key=" + std::to_string(e.key) + ">";
+        });
+}
+
+void bindShadertoy(py::module_& m) {
+    py::class_<Shadertoy>(m, "Shadertoy", "A shadertoy, loaded and validated (toyhost.load).")
+        .def_property_readonly("name", &Shadertoy::name)
+        .def_property_readonly("path", &Shadertoy::path)
+        .def_property_readonly("passes", &Shadertoy::passes)
+        .def_property_readonly("has_sound", &Shadertoy::hasSound)
+        .def_property_readonly("notices", &Shadertoy::notices)
+        .def("__repr__", [](const Shadertoy& s) { return "<toyhost.Shadertoy '" + s.name() + "'>"; });
+    // Loading reads files and checks text, no GL: done on the calling thread without the GIL.
+    m.def(
+        "load_path",
+        [](const std::filesystem::path& path) {
+            py::gil_scoped_release released;
+            return valueOrThrow(Shadertoy::load(path));
+        },
+        py::arg("path"));
+    m.def(
+        "load_export_json",
+        [](const std::string& json, const std::string& name, const std::filesystem::path& folder) {
+            py::gil_scoped_release released;
+            return valueOrThrow(Shadertoy::fromExportJson(json, name, folder));
+        },
+        py::arg("json"), py::arg("name"), py::arg("folder"));
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_toyhost, m) {
+    m.doc() = "toyhost's native API (use the `toyhost` package)";
+    toyhost::python::registerErrorTranslator();
+    bindDiagnostic(m);
+    bindInputEvent(m);
+    bindShadertoy(m);
+    toyhost::python::bindSession(m);
+    m.def("version_string", [] { return std::string(versionString()); });
+    // The defaults a session uses for what the caller leaves out (core/Defaults.h, their one place).
+    m.attr("DEFAULT_WIDTH") = defaults::kCanvasWidth;
+    m.attr("DEFAULT_HEIGHT") = defaults::kCanvasHeight;
+    m.attr("DEFAULT_FPS") = defaults::kFps;
+}

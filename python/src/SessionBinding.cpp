@@ -1,0 +1,170 @@
+// The native session: toyhost::Session created, used and destroyed on a GlWorker. Python arguments
+// are converted while the GIL is held; the GL work runs with it released.
+#include "SessionBinding.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <toyhost/Session.h>
+
+#include "Errors.h"
+#include "GlWorker.h"
+
+namespace py = pybind11;
+
+namespace toyhost::python {
+
+namespace {
+
+class NativeSession {
+public:
+    NativeSession(const Shadertoy& shadertoy, const SessionSettings& settings) {
+        py::gil_scoped_release released;
+        session_ = valueOrThrow(worker_.call([&] { return Session::createHeadless(shadertoy, settings); }));
+        width_ = session_->width();
+        height_ = session_->height();
+    }
+    ~NativeSession() { close(); }
+    NativeSession(const NativeSession&) = delete;
+    NativeSession& operator=(const NativeSession&) = delete;
+
+    // The session's GL objects and context go now, on the worker (idempotent).
+    void close() {
+        if (!session_) return;
+        // A destructor may run without the GIL held (interpreter shutdown); release only when held.
+        std::optional<py::gil_scoped_release> released;
+        if (PyGILState_Check()) released.emplace();
+        worker_.call([&] { session_.reset(); });
+    }
+    bool closed() const { return !session_; }
+
+    void step(const std::vector<InputEvent>& events, std::optional<double> time, double timeDelta, double frameRate) {
+        Session& s = open();
+        py::gil_scoped_release released;
+        throwIfFailed(worker_.call([&] {
+            return time ? s.stepAt(*time, timeDelta, frameRate, events) : s.step(events);
+        }));
+    }
+
+    template <class T>
+    py::array_t<T> read(const std::string& pass) {
+        Session& s = open();
+        py::array_t<T> pixels({height_, width_, 4});
+        std::span<T> out(pixels.mutable_data(), static_cast<std::size_t>(pixels.size()));
+        {
+            py::gil_scoped_release released;
+            throwIfFailed(worker_.call([&] { return s.read(pass, out, RowOrder::TopFirst); }));
+        }
+        return pixels;
+    }
+
+    py::array_t<float> renderSound(double seconds) {
+        Session& s = open();
+        std::vector<float> samples;
+        {
+            py::gil_scoped_release released;
+            samples = valueOrThrow(worker_.call([&] { return s.renderSound(seconds); }));
+        }
+        const py::ssize_t frames = static_cast<py::ssize_t>(samples.size() / 2);
+        py::array_t<float> out({frames, py::ssize_t(2)});
+        std::copy(samples.begin(), samples.begin() + frames * 2, out.mutable_data());
+        return out;
+    }
+
+    void restart() {
+        Session& s = open();
+        py::gil_scoped_release released;
+        worker_.call([&] { s.restart(); });
+    }
+    void resize(int w, int h) {
+        Session& s = open();
+        py::gil_scoped_release released;
+        throwIfFailed(worker_.call([&] { return s.resize(w, h); }));
+        width_ = s.width();
+        height_ = s.height();
+    }
+
+    // Cheap reads of the session's own state (no GL): answered on the worker all the same, so that
+    // they never race a step running there.
+    int nextFrame() { return ask([](Session& s) { return s.frame(); }); }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    std::vector<Diagnostic> notices() { return ask([](Session& s) { return s.notices(); }); }
+    std::string backend() { return ask([](Session& s) { return s.backend(); }); }
+
+private:
+    Session& open() {
+        if (!session_) throw ToyhostError(Error("the session is closed", Code::Usage));
+        return *session_;
+    }
+    template <class Question>
+    auto ask(Question question) -> std::invoke_result_t<Question&, Session&> {
+        Session& s = open();
+        py::gil_scoped_release released;
+        return worker_.call([&] { return question(s); });
+    }
+
+    GlWorker worker_;
+    std::unique_ptr<Session> session_;  // created, used and destroyed on worker_
+    int width_ = 0;  // the canvas, kept here so that allocating a frame's array needs no round trip
+    int height_ = 0;
+};
+
+SessionSettings settingsFrom(int width, int height, double fps, double startTime, const std::string& date,
+                             const std::vector<std::filesystem::path>& mediaFolders,
+                             const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
+                             bool floatImage, double frameTimeout, double compileTimeout) {
+    SessionSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.fps = fps;
+    settings.startTime = startTime;
+    settings.date = date;
+    settings.mediaFolders = mediaFolders;
+    settings.mediaFiles = mediaFiles;
+    settings.floatImage = floatImage;
+    settings.frameTimeout = frameTimeout;
+    settings.compileTimeout = compileTimeout;
+    return settings;
+}
+
+}  // namespace
+
+void bindSession(py::module_& module) {
+    py::class_<NativeSession>(module, "NativeSession")
+        .def(py::init([](const Shadertoy& shadertoy, int width, int height, double fps, double startTime,
+                         const std::string& date, const std::vector<std::filesystem::path>& mediaFolders,
+                         const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
+                         bool floatImage, double frameTimeout, double compileTimeout) {
+                 return std::make_unique<NativeSession>(
+                     shadertoy, settingsFrom(width, height, fps, startTime, date, mediaFolders, mediaFiles,
+                                             floatImage, frameTimeout, compileTimeout));
+             }),
+             py::arg("shadertoy"), py::arg("width"), py::arg("height"), py::arg("fps"), py::arg("start_time"),
+             py::arg("date"), py::arg("media_folders"), py::arg("media_files"), py::arg("float_image"),
+             py::arg("frame_timeout"), py::arg("compile_timeout"))
+        .def("close", &NativeSession::close)
+        .def_property_readonly("closed", &NativeSession::closed)
+        .def("step", &NativeSession::step, py::arg("events"), py::arg("time"), py::arg("time_delta"),
+             py::arg("frame_rate"))
+        .def("read_uint8", &NativeSession::read<std::uint8_t>, py::arg("pass_"))
+        .def("read_float32", &NativeSession::read<float>, py::arg("pass_"))
+        .def("render_sound", &NativeSession::renderSound, py::arg("seconds"))
+        .def("restart", &NativeSession::restart)
+        .def("resize", &NativeSession::resize, py::arg("width"), py::arg("height"))
+        .def_property_readonly("next_frame", &NativeSession::nextFrame)
+        .def_property_readonly("width", &NativeSession::width)
+        .def_property_readonly("height", &NativeSession::height)
+        .def_property_readonly("notices", &NativeSession::notices)
+        .def_property_readonly("backend", &NativeSession::backend);
+}
+
+}  // namespace toyhost::python
