@@ -46,12 +46,34 @@ public:
     }
     bool closed() const { return !session_; }
 
-    void step(const std::vector<InputEvent>& events, std::optional<double> time, double timeDelta, double frameRate) {
+    // Renders the next frame; returns its iFrame.
+    int step(const std::vector<InputEvent>& events, std::optional<double> time, double timeDelta, double frameRate) {
         Session& s = open();
         py::gil_scoped_release released;
-        throwIfFailed(worker_.call([&] {
-            return time ? s.stepAt(*time, timeDelta, frameRate, events) : s.step(events);
-        }));
+        return worker_.call([&] {
+            const int index = s.frame();
+            throwIfFailed(time ? s.stepAt(*time, timeDelta, frameRate, events) : s.step(events));
+            return index;
+        });
+    }
+
+    // step() at the fixed time step and read(): one trip to the worker for both (render()).
+    template <class T>
+    std::pair<int, py::array_t<T>> stepAndRead(const std::vector<InputEvent>& events, const std::string& pass) {
+        Session& s = open();
+        py::array_t<T> pixels({height_, width_, 4});
+        std::span<T> out(pixels.mutable_data(), static_cast<std::size_t>(pixels.size()));
+        int index = 0;
+        {
+            py::gil_scoped_release released;
+            index = worker_.call([&] {
+                const int rendered = s.frame();
+                throwIfFailed(s.step(events));
+                throwIfFailed(s.read(pass, out, RowOrder::TopFirst));
+                return rendered;
+            });
+        }
+        return {index, std::move(pixels)};
     }
 
     template <class T>
@@ -155,6 +177,8 @@ void bindSession(py::module_& module) {
         .def_property_readonly("closed", &NativeSession::closed)
         .def("step", &NativeSession::step, py::arg("events"), py::arg("time"), py::arg("time_delta"),
              py::arg("frame_rate"))
+        .def("step_read_uint8", &NativeSession::stepAndRead<std::uint8_t>, py::arg("events"), py::arg("pass_"))
+        .def("step_read_float32", &NativeSession::stepAndRead<float>, py::arg("events"), py::arg("pass_"))
         .def("read_uint8", &NativeSession::read<std::uint8_t>, py::arg("pass_"))
         .def("read_float32", &NativeSession::read<float>, py::arg("pass_"))
         .def("render_sound", &NativeSession::renderSound, py::arg("seconds"))

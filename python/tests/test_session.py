@@ -141,6 +141,9 @@ def test_render_yields_the_frames_the_cli_captures(probe):
         assert buffers[-1][1].dtype == numpy.float32 and buffers[-1][1][0, 0, 0] == 15.0, "frames counted in Buffer A"
         with pytest.raises(toyhost.UsageError):
             list(session.render(3, every=0))
+        with pytest.raises(toyhost.UsageError):
+            list(session.render(3, pass_="Buffer B"))
+        assert session.next_frame == 15, "nothing rendered for a pass that does not exist"
 
 
 def test_time_restart_and_resize(tmp_path):

@@ -81,11 +81,9 @@ class Session:
         all): presses and releases follow from the difference. ``events``: further InputEvents,
         applied after those. ``time``: iTime of this frame instead of the fixed step, with
         iTimeDelta ``time_delta`` (default 1/fps) and iFrameRate ``frame_rate`` (default fps)."""
-        index = self._native.next_frame
-        self._native.step(self._events(mouse, keys, events), None if time is None else float(time),
-                          1.0 / self._fps if time_delta is None else float(time_delta),
-                          self._fps if frame_rate is None else float(frame_rate))
-        return index
+        return self._native.step(self._events(mouse, keys, events), None if time is None else float(time),
+                                 1.0 / self._fps if time_delta is None else float(time_delta),
+                                 self._fps if frame_rate is None else float(frame_rate))
 
     def frame(self, pass_="Image", dtype="uint8"):
         """The latest output of a pass ("Image", "Buffer A".."Buffer D") as a numpy array of shape
@@ -106,11 +104,16 @@ class Session:
             raise UsageError(f"render: frames must be 0 or more, got {frames}")
         if every < 1:
             raise UsageError(f"render: every must be 1 or more, got {every}")
-        dtype = _dtype_name(dtype)
+        readable = [p for p in self.shadertoy.passes if p == "Image" or p.startswith("Buffer ")]
+        if pass_ not in readable:  # said before any frame renders
+            raise UsageError(f'render: no pass "{pass_}" to read (this shadertoy has {", ".join(readable)})')
+        step_read = self._native.step_read_uint8 if _dtype_name(dtype) == "uint8" else self._native.step_read_float32
         for n in range(frames):
-            index = self.step(mouse=mouse, keys=keys) if n == 0 else self.step()
+            events = self._events(mouse, keys, ()) if n == 0 else []
             if n % every == 0 or n == frames - 1:
-                yield index, self.frame(pass_, dtype)
+                yield step_read(events, pass_)  # (iFrame, array), in one trip to the GL thread
+            else:
+                self._native.step(events, None, 0.0, 0.0)
 
     def render_sound(self, seconds=0.0):
         """The Sound pass (mainSound) as the site renders it: float32 samples of shape (n, 2), stereo
