@@ -204,9 +204,14 @@ def _size(size):
 
 
 def _dtype_name(dtype):
+    if dtype == "uint8" or dtype == "float32":
+        return dtype
     import numpy
 
-    name = numpy.dtype(dtype).name
+    try:
+        name = numpy.dtype(dtype).name
+    except TypeError:
+        raise UsageError(f"dtype: uint8 or float32, got {dtype!r}") from None
     if name not in ("uint8", "float32"):
         raise UsageError(f"dtype: uint8 or float32, got {name}")
     return name

@@ -38,22 +38,27 @@ def cli_seconds(toyhost, target, size, frames):
     return seconds(first) + seconds(rest)
 
 
-def python_seconds(build, target, size, frames):
-    """The same frames from Python, in a child process: seconds of the step+frame loop."""
+def python_seconds(build, target, size, frames, way="step"):
+    """The same frames from Python, in a child process: seconds of its loop (`way`: step() then
+    frame() per frame, or the render() iterator)."""
     env = dict(os.environ, PYTHONPATH=str(pathlib.Path(build) / "python"))
-    done = subprocess.run([sys.executable, __file__, "--child", str(target), str(size[0]), str(size[1]), str(frames)],
+    done = subprocess.run([sys.executable, __file__, "--child", way, str(target), str(size[0]), str(size[1]), str(frames)],
                           stdout=subprocess.PIPE, text=True, check=True, env=env)
     return float(done.stdout.strip())
 
 
-def child(target, width, height, frames):
+def child(way, target, width, height, frames):
     import toyhost
 
     with toyhost.Session(toyhost.load(target), size=(width, height)) as session:
         start = time.perf_counter()
-        for _ in range(frames):
-            session.step()
-            session.frame()
+        if way == "step":
+            for _ in range(frames):
+                session.step()
+                session.frame()
+        else:
+            for _ in session.render(frames):
+                pass
         print(time.perf_counter() - start)
 
 
@@ -65,7 +70,7 @@ def busy_ticks():
 
 def main():
     if len(sys.argv) > 1 and sys.argv[1] == "--child":
-        child(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5]))
+        child(sys.argv[2], sys.argv[3], int(sys.argv[4]), int(sys.argv[5]), int(sys.argv[6]))
         return
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("build")
@@ -85,19 +90,23 @@ def main():
     started, busy_before, own_before = time.time(), busy_ticks(), os.times()
     rows = []
     for name, target, size, frames in cases:
-        cli, py = [], []
+        times = {"cli": [], "step": [], "render": []}
         for rep in range(args.reps):
-            # Alternate which side goes first, so that a slow spell of the shared machine is shared.
-            order = [("cli", cli_seconds, toyhost), ("python", python_seconds, args.build)]
-            for side, measure, where in (order if rep % 2 == 0 else order[::-1]):
-                (cli if side == "cli" else py).append(measure(where, target, size, frames))
-            print(f"  {name} rep {rep + 1}: CLI {cli[-1] * 1000 / frames:.3f}, Python {py[-1] * 1000 / frames:.3f} "
-                  "ms/frame", file=sys.stderr)
-        c, p = statistics.median(cli) * 1000 / frames, statistics.median(py) * 1000 / frames
-        ratio = p / c
-        rows.append(f"| {name}, {frames} frames, render + read back every frame | {p:.3f} ms/frame | "
-                    f"{c:.3f} ms/frame | **{ratio:.3f}** ({(p - c) * 1000:+.0f} us/frame) | "
-                    f"<= 1.03: {'met' if ratio <= 1.03 else 'NOT met'} |")
+            # Rotate which side goes first, so that a slow spell of the shared machine is shared.
+            runs = [("cli", lambda: cli_seconds(toyhost, target, size, frames)),
+                    ("step", lambda: python_seconds(args.build, target, size, frames, "step")),
+                    ("render", lambda: python_seconds(args.build, target, size, frames, "render"))]
+            for side, measure in runs[rep % 3:] + runs[:rep % 3]:
+                times[side].append(measure())
+            print(f"  {name} rep {rep + 1}: " + ", ".join(f"{side} {t[-1] * 1000 / frames:.3f}" for side, t in times.items())
+                  + " ms/frame", file=sys.stderr)
+        c = statistics.median(times["cli"]) * 1000 / frames
+        for way, label in (("step", "step(); frame()"), ("render", "render()")):
+            p = statistics.median(times[way]) * 1000 / frames
+            ratio = p / c
+            rows.append(f"| {name}, {frames} frames, each read back: Python `{label}` / CLI `--out -` | "
+                        f"{p:.3f} ms/frame | {c:.3f} ms/frame | **{ratio:.3f}** ({(p - c) * 1000:+.0f} us/frame) | "
+                        f"<= 1.03: {'met' if ratio <= 1.03 else 'NOT met'} |")
     elapsed = time.time() - started
     own = os.times()
     own_ticks = ((own.children_user - own_before.children_user) + (own.children_system - own_before.children_system)
