@@ -174,3 +174,20 @@ def test_notices_are_diagnostics(tmp_path):
         assert notices and all(isinstance(n, toyhost.Diagnostic) for n in notices)
         assert any(n.code.startswith("media.") for n in notices), [str(n) for n in notices]
         assert all(n.severity in ("notice", "warning") for n in notices)
+        assert len({str(n) for n in notices}) == len(notices), "each said once"
+
+
+def test_notices_from_loading_are_the_sessions_too():
+    import json
+    # A channel reading a buffer the export does not define: left unbound, with a notice.
+    code = "void mainImage(out vec4 c, in vec2 p) { c = texture(iChannel0, p / iResolution.xy); }\n"
+    text = json.dumps({"Shader": {"info": {"id": "n", "name": "N"}, "renderpass": [
+        {"inputs": [{"id": 257, "channel": 0, "type": "buffer"}], "outputs": [{"id": 37, "channel": 0}],
+         "code": code, "name": "Image", "type": "image"}]}})
+    shadertoy = toyhost.load(text)
+    assert shadertoy.notices, "the unbound channel is said when loading"
+    with toyhost.Session(shadertoy, size=(8, 4)) as session:
+        session.step()
+        said = [str(n) for n in session.notices]
+        for notice in shadertoy.notices:
+            assert said.count(str(notice)) == 1, said

@@ -145,8 +145,9 @@ class Session:
 
     @property
     def notices(self):
-        """Diagnostics about the run so far (stand-ins used, passes preprocessed), oldest first."""
-        return list(self.shadertoy.notices) + list(self._native.notices)
+        """Diagnostics about the run so far (the shadertoy's own notices from loading, stand-ins used,
+        passes preprocessed), oldest first."""
+        return self._native.notices
 
     @property
     def backend(self):
