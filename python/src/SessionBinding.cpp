@@ -101,6 +101,15 @@ public:
         return out;
     }
 
+    Reloaded reload(const Shadertoy& next) {
+        Session& s = open();
+        py::gil_scoped_release released;
+        Reloaded outcome = valueOrThrow(worker_.call([&] { return s.reload(next); }));
+        width_ = s.width();
+        height_ = s.height();
+        return outcome;
+    }
+
     void restart() {
         Session& s = open();
         py::gil_scoped_release released;
@@ -161,6 +170,16 @@ SessionSettings settingsFrom(int width, int height, double fps, double startTime
 }  // namespace
 
 void bindSession(py::module_& module) {
+    py::class_<Reloaded>(module, "Reloaded", "What a reload did (Session.reload).")
+        .def_readonly("applied", &Reloaded::applied)
+        .def_readonly("structure_changed", &Reloaded::structureChanged)
+        .def_readonly("recompiled", &Reloaded::recompiled)
+        .def_readonly("problems", &Reloaded::problems)
+        .def("__repr__", [](const Reloaded& r) {
+            return "<toyhost.Reloaded applied=" + std::string(r.applied ? "True" : "False") +
+                   " structure_changed=" + (r.structureChanged ? "True" : "False") + " recompiled=" +
+                   std::to_string(r.recompiled.size()) + " problems=" + std::to_string(r.problems.size()) + ">";
+        });
     py::class_<NativeSession>(module, "NativeSession")
         .def(py::init([](const Shadertoy& shadertoy, int width, int height, double fps, double startTime,
                          const std::string& date, const std::vector<std::filesystem::path>& mediaFolders,
@@ -182,6 +201,7 @@ void bindSession(py::module_& module) {
         .def("read_uint8", &NativeSession::read<std::uint8_t>, py::arg("pass_"))
         .def("read_float32", &NativeSession::read<float>, py::arg("pass_"))
         .def("render_sound", &NativeSession::renderSound, py::arg("seconds"))
+        .def("reload", &NativeSession::reload, py::arg("shadertoy"))
         .def("restart", &NativeSession::restart)
         .def("resize", &NativeSession::resize, py::arg("width"), py::arg("height"))
         .def_property_readonly("next_frame", &NativeSession::nextFrame)

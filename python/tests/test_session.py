@@ -191,3 +191,28 @@ def test_notices_from_loading_are_the_sessions_too():
         said = [str(n) for n in session.notices]
         for notice in shadertoy.notices:
             assert said.count(str(notice)) == 1, said
+
+
+def test_reload_recompiles_without_restarting(tmp_path):
+    counter = "void mainImage(out vec4 c, in vec2 p) { c = texelFetch(iChannel0, ivec2(0), 0) + vec4(1, 0, 0, 0); }\n"
+    folder = write_shadertoy(tmp_path / "edit", {
+        "Buffer A": (counter, {"iChannel0": {"buffer": "A"}}),
+        "Image": ("void mainImage(out vec4 c, in vec2 p) {\n"
+                  "    c = vec4(texelFetch(iChannel0, ivec2(0), 0).x / 255.0, 0.2, 0, 1);\n"
+                  "}\n", {"iChannel0": {"buffer": "A"}})})
+    with toyhost.Session(folder, size=(4, 2)) as session:
+        for _ in range(3):
+            session.step()
+        assert tuple(session.frame()[0, 0, :2]) == (3, 51)
+        (folder / "image.glsl").write_text((folder / "image.glsl").read_text().replace("0.2", "0.4"))
+        outcome = session.reload()
+        assert isinstance(outcome, toyhost.Reloaded)
+        assert outcome.applied and outcome.recompiled == ["Image"] and not outcome.problems
+        session.step()
+        assert tuple(session.frame()[0, 0, :2]) == (4, 102), "the counter went on; the new code runs"
+        (folder / "image.glsl").write_text("void mainImage(out vec4 c, in vec2 p) { c = oops; }\n")
+        broken = session.reload()
+        assert broken.problems and broken.problems[0].code == "shader.compile", broken
+        assert broken.problems[0].pass_ == "Image"
+        session.step()
+        assert tuple(session.frame()[0, 0, :2]) == (5, 102), "the last good program runs"

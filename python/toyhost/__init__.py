@@ -19,12 +19,12 @@ from . import _toyhost
 from ._errors import (CompileError, Error, GlError, InputError, InternalError, ManifestError, OutputError,
                       StoppedError, UsageError, WatchdogError)
 from ._keys import key_code
-from ._toyhost import Diagnostic, InputEvent, Shadertoy
+from ._toyhost import Diagnostic, InputEvent, Reloaded, Shadertoy
 
 __version__ = _toyhost.version_string()
 
 __all__ = [
-    "load", "Session", "Shadertoy", "Diagnostic", "InputEvent", "key_code", "Error", "UsageError", "InputError",
+    "load", "Session", "Shadertoy", "Diagnostic", "InputEvent", "Reloaded", "key_code", "Error", "UsageError", "InputError",
     "ManifestError", "CompileError", "OutputError", "GlError", "StoppedError", "WatchdogError", "InternalError",
     "__version__",
 ]
@@ -119,6 +119,21 @@ class Session:
         """The Sound pass (mainSound) as the site renders it: float32 samples of shape (n, 2), stereo
         at 44100 Hz, ``seconds`` long (0: the site's 180 s)."""
         return self._native.render_sound(float(seconds))
+
+    def reload(self, shadertoy=None):
+        """Switches to the shadertoy's files as they are now (`shadertoy`: loaded anew from this
+        session's path when left out) without restarting: changed passes are recompiled, a pass
+        that fails keeps its last good program, a changed structure keeps the buffers that still
+        exist; iFrame and time go on. Returns a Reloaded (applied, structure_changed, recompiled,
+        problems: Diagnostics, empty when everything runs). Loading problems raise as load() does."""
+        if shadertoy is None:
+            shadertoy = load(self.shadertoy.path)
+        elif not isinstance(shadertoy, Shadertoy):
+            shadertoy = load(shadertoy)
+        outcome = self._native.reload(shadertoy)
+        if outcome.applied:
+            self.shadertoy = shadertoy
+        return outcome
 
     def restart(self):
         """iFrame back to 0 and every buffer cleared (the site's restart); mouse and keys stay."""
