@@ -1,17 +1,26 @@
 // GlWorker: a queue of jobs served by one thread that runs inside toyhost::runOnGlThread.
 #include "GlWorker.h"
 
+#include <unistd.h>
+
 #include <toyhost/Session.h>
 
 namespace toyhost::python {
 
-GlWorker::GlWorker() {
+GlWorker::GlWorker() : process_(static_cast<int>(::getpid())) {
     // runOnGlThread gives the large stack (the public API's one place for its size); the std::thread
     // around it only waits for it.
     thread_ = std::thread([this] { runOnGlThread([this] { serve(); }); });
 }
 
+bool GlWorker::inOwnProcess() const { return static_cast<int>(::getpid()) == process_; }
+
 GlWorker::~GlWorker() {
+    if (!inOwnProcess()) {
+        // A forked child's copy: the thread is the parent's; nothing here can stop or join it.
+        thread_.detach();
+        return;
+    }
     {
         std::lock_guard<std::mutex> lock(mutex_);
         stopping_ = true;

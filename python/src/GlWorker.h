@@ -18,12 +18,17 @@ namespace toyhost::python {
 class GlWorker {
 public:
     GlWorker();
-    ~GlWorker();  // runs the jobs already handed over, then joins
+    ~GlWorker();  // runs the jobs already handed over, then joins (in the process that made it)
     GlWorker(const GlWorker&) = delete;
     GlWorker& operator=(const GlWorker&) = delete;
 
+    // Whether this is the process that made the worker: a fork() copies the worker's memory but
+    // not its thread, so in a child the jobs would wait forever.
+    bool inOwnProcess() const;
+
     // Runs `job` on the worker thread and returns its result (or rethrows what it threw). Jobs run
-    // one at a time, in the order they were handed over. Must not be called from a job.
+    // one at a time, in the order they were handed over. Must not be called from a job, nor where
+    // inOwnProcess() is false.
     template <class Job>
     auto call(Job job) -> std::invoke_result_t<Job&> {
         using Value = std::invoke_result_t<Job&>;
@@ -41,6 +46,7 @@ private:
     std::condition_variable wake_;
     std::deque<std::function<void()>> jobs_;
     bool stopping_ = false;
+    int process_ = 0;  // getpid() at creation
     std::thread thread_;
 };
 

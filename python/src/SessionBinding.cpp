@@ -6,7 +6,9 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <atomic>
 #include <cstdint>
+#include <unistd.h>
 #include <memory>
 #include <optional>
 #include <span>
@@ -24,11 +26,31 @@ namespace toyhost::python {
 
 namespace {
 
+// Sessions open in this process, and which process that is. A fork() copies the driver's state
+// (EGL, llvmpipe) but not its threads, so a child of a process with a session open cannot start GL
+// at all (Mesa waits forever for threads that are not there); with none open, the display was
+// released and the child starts afresh. Changed with the GIL held (or at a close, atomically).
+std::atomic<int> openSessions{0};
+int openSessionsProcess = 0;
+
+void refuseAfterForkWithGlOpen() {
+    if (openSessions.load() > 0 && openSessionsProcess != static_cast<int>(::getpid()))
+        throw ToyhostError(Error("this process was forked while a session was open in its parent, and GL cannot start "
+                                 "in such a child: close every session before forking, or start workers with "
+                                 "multiprocessing's \"spawn\" or \"forkserver\" method",
+                                 Code::Usage));
+}
+
 class NativeSession {
 public:
     NativeSession(const Shadertoy& shadertoy, const SessionSettings& settings) {
-        py::gil_scoped_release released;
-        session_ = valueOrThrow(worker_.call([&] { return Session::createHeadless(shadertoy, settings); }));
+        refuseAfterForkWithGlOpen();
+        {
+            py::gil_scoped_release released;
+            session_ = valueOrThrow(worker_.call([&] { return Session::createHeadless(shadertoy, settings); }));
+        }
+        openSessionsProcess = static_cast<int>(::getpid());
+        ++openSessions;
         width_ = session_->width();
         height_ = session_->height();
     }
@@ -39,10 +61,16 @@ public:
     // The session's GL objects and context go now, on the worker (idempotent).
     void close() {
         if (!session_) return;
+        if (!worker_.inOwnProcess()) {
+            // A forked child's copy: its GL objects are the parent's to free; forget them here.
+            (void)session_.release();
+            return;
+        }
         // A destructor may run without the GIL held (interpreter shutdown); release only when held.
         std::optional<py::gil_scoped_release> released;
         if (PyGILState_Check()) released.emplace();
         worker_.call([&] { session_.reset(); });
+        --openSessions;
     }
     bool closed() const { return !session_; }
 
@@ -134,6 +162,10 @@ public:
 private:
     Session& open() {
         if (!session_) throw ToyhostError(Error("the session is closed", Code::Usage));
+        if (!worker_.inOwnProcess())
+            throw ToyhostError(Error("the session was made in another process (before a fork): make one in this "
+                                     "process (its GL thread does not exist here)",
+                                     Code::Usage));
         return *session_;
     }
     template <class Question>

@@ -118,3 +118,64 @@ def test_sessions_in_parallel_threads_give_the_frames_of_sessions_in_turn():
         assert result is not None and len(result) == len(expected)
         for got, want in zip(result, expected):
             assert numpy.array_equal(got, want)
+
+
+def in_forked_child(work):
+    """Runs work(put) in a forked child; returns what it put (each within a bound, not a hang)."""
+    import multiprocessing
+
+    context = multiprocessing.get_context("fork")
+    result = context.Queue()
+
+    def child():
+        try:
+            work(result.put)
+        finally:
+            result.put("end")
+
+    process = context.Process(target=child)
+    process.start()
+    answers = []
+    while not answers or answers[-1] != "end":
+        answers.append(result.get(timeout=120))
+    process.join()
+    assert process.exitcode == 0
+    return answers[:-1]
+
+
+def test_a_child_forked_with_a_session_open_is_told_not_left_hanging():
+    # Dataset generation forks workers (multiprocessing's default on Linux). Forked with a session
+    # open, the child cannot start GL at all (the driver's threads stay in the parent): both using
+    # the parent's session and making a new one raise, naming the way out. The parent goes on.
+    probe = toyhost.load(SOURCE_DIR / "shadertoys/pingpong-probe")
+    parent = toyhost.Session(probe, size=(8, 4))
+    parent.step()
+
+    def work(put):
+        for attempt in (parent.step, lambda: toyhost.Session(probe, size=(8, 4))):
+            try:
+                attempt()
+                put("worked")
+            except toyhost.UsageError as e:
+                put("refused: fork" if "fork" in str(e) else f"wrong error: {e}")
+        parent.close()  # forgets the parent's objects here; must not hang or raise
+        put("closed")
+
+    assert in_forked_child(work) == ["refused: fork", "refused: fork", "closed"]
+    parent.step()
+    assert parent.next_frame == 2, "the parent's session is untouched"
+    parent.close()
+
+
+def test_a_child_forked_with_no_session_open_makes_its_own():
+    probe = toyhost.load(SOURCE_DIR / "shadertoys/pingpong-probe")
+    with toyhost.Session(probe, size=(8, 4)) as before:
+        before.step()
+        expected = before.frame("Buffer A", "float32")
+
+    def work(put):
+        with toyhost.Session(probe, size=(8, 4)) as own:
+            own.step()
+            put(bool(numpy.array_equal(own.frame("Buffer A", "float32"), expected)))
+
+    assert in_forked_child(work) == [True]
