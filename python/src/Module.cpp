@@ -22,6 +22,13 @@ using toyhost::python::valueOrThrow;
 
 namespace {
 
+// A coordinate as Python would write it (12.0 -> "12", 12.5 -> "12.5").
+std::string number(float value) {
+    std::string text = py::str(py::float_(value));
+    if (text.size() > 2 && text.compare(text.size() - 2, 2, ".0") == 0) text.resize(text.size() - 2);
+    return text;
+}
+
 void bindDiagnostic(py::module_& m) {
     py::class_<Diagnostic>(m, "Diagnostic", "One problem or notice: what, where, and a stable code.")
         .def_property_readonly("severity", [](const Diagnostic& d) { return std::string(severityName(d.severity)); })
@@ -61,8 +68,14 @@ void bindInputEvent(py::module_& m) {
         .def_static("key_down", &InputEvent::keyDown, py::arg("key"))
         .def_static("key_up", &InputEvent::keyUp, py::arg("key"))
         .def("__repr__", [](const InputEvent& e) {
-            return "<toyhost.InputEvent " + std::to_string(static_cast<int>(e.type)) + " x=" + std::to_string(e.x) +
-                   " y=" + std::to_string(e.y) + " key=" + std::to_string(e.key) + ">";
+            switch (e.type) {
+            case InputEvent::Type::MouseDown: return "InputEvent.mouse_down(" + number(e.x) + ", " + number(e.y) + ")";
+            case InputEvent::Type::MouseMove: return "InputEvent.mouse_move(" + number(e.x) + ", " + number(e.y) + ")";
+            case InputEvent::Type::MouseUp: return std::string("InputEvent.mouse_up()");
+            case InputEvent::Type::KeyDown: return "InputEvent.key_down(" + std::to_string(e.key) + ")";
+            case InputEvent::Type::KeyUp: return "InputEvent.key_up(" + std::to_string(e.key) + ")";
+            }
+            return std::string("InputEvent(?)");
         });
 }
 
