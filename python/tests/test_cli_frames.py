@@ -53,3 +53,13 @@ def test_a_one_pixel_different_mouse_differs(tmp_path):
     cli = cli_frames(tmp_path, probe, (48, 32), 1, 24, "--mouse", "12,9")
     other = python_frames(probe, (48, 32), 1, 24, mouse=(13, 9))
     assert not numpy.array_equal(other[0], cli[0])
+
+
+def test_a_buffer_equals_the_clis_png_of_that_pass(tmp_path):
+    # ripple-pool's height field after a click: dozens of distinct values, changing every frame.
+    pool = SOURCE_DIR / "shadertoys/ripple-pool"
+    cli = cli_frames(tmp_path, pool, (40, 24), 6, 60, "--capture-pass", "Buffer A", "--mouse", "20,12")
+    with toyhost.Session(pool, size=(40, 24), fps=60, date=DATE) as session:
+        python = [image for _, image in session.render(6, pass_="Buffer A", mouse=(20, 12))]
+    assert len(numpy.unique(python[-1].reshape(-1, 4), axis=0)) > 10, "a frame worth comparing"
+    assert_same(cli, python)
