@@ -116,6 +116,26 @@ public:
         return pixels;
     }
 
+    // read() into the caller's array (reused from frame to frame): C-contiguous, writeable,
+    // (height, width, 4) of T.
+    template <class T>
+    py::array readInto(const std::string& pass, py::array out) {
+        Session& s = open();
+        const bool fits = out.ndim() == 3 && out.shape(0) == height_ && out.shape(1) == width_ && out.shape(2) == 4 &&
+                          out.dtype().is(py::dtype::of<T>()) && (out.flags() & py::array::c_style) && out.writeable();
+        if (!fits)
+            throw ToyhostError(Error("out: expected a writeable C-contiguous " + std::string(py::str(py::dtype::of<T>())) +
+                                         " array of shape (" + std::to_string(height_) + ", " + std::to_string(width_) +
+                                         ", 4)",
+                                     Code::Usage));
+        std::span<T> values(static_cast<T*>(out.mutable_data()), static_cast<std::size_t>(out.size()));
+        {
+            py::gil_scoped_release released;
+            throwIfFailed(worker_.call([&] { return s.read(pass, values, RowOrder::TopFirst); }));
+        }
+        return out;
+    }
+
     py::array_t<float> renderSound(double seconds) {
         Session& s = open();
         std::vector<float> samples;
@@ -232,6 +252,8 @@ void bindSession(py::module_& module) {
         .def("step_read_float32", &NativeSession::stepAndRead<float>, py::arg("events"), py::arg("pass_"))
         .def("read_uint8", &NativeSession::read<std::uint8_t>, py::arg("pass_"))
         .def("read_float32", &NativeSession::read<float>, py::arg("pass_"))
+        .def("read_into_uint8", &NativeSession::readInto<std::uint8_t>, py::arg("pass_"), py::arg("out"))
+        .def("read_into_float32", &NativeSession::readInto<float>, py::arg("pass_"), py::arg("out"))
         .def("render_sound", &NativeSession::renderSound, py::arg("seconds"))
         .def("reload", &NativeSession::reload, py::arg("shadertoy"))
         .def("restart", &NativeSession::restart)

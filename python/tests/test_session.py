@@ -38,6 +38,14 @@ def test_frames_are_height_width_rgba_with_the_top_row_first(rows):
         assert levels.shape == (8, 16, 4) and levels.dtype == numpy.float32
         assert numpy.array_equal(levels, image.astype(numpy.float32) / 255), "Image's floats are its 8-bit levels"
         assert session.frame(dtype=numpy.float32).dtype == numpy.float32
+        reused = numpy.zeros((8, 16, 4), numpy.uint8)
+        assert session.frame(out=reused) is reused and numpy.array_equal(reused, image)
+        floats = numpy.zeros((8, 16, 4), numpy.float32)
+        assert numpy.array_equal(session.frame(dtype="float32", out=floats), levels)
+        for wrong in (numpy.zeros((8, 16, 3), numpy.uint8), numpy.zeros((8, 16, 4), numpy.float32),
+                      numpy.zeros((16, 8, 4), numpy.uint8), numpy.zeros((8, 32, 4), numpy.uint8)[:, ::2]):
+            with pytest.raises(toyhost.UsageError):
+                session.frame(out=wrong)
 
 
 def test_a_buffer_reads_as_its_floats_or_clamped_bytes(rows):

@@ -85,12 +85,19 @@ class Session:
                                  1.0 / self._fps if time_delta is None else float(time_delta),
                                  self._fps if frame_rate is None else float(frame_rate))
 
-    def frame(self, pass_="Image", dtype="uint8"):
+    def frame(self, pass_="Image", dtype="uint8", out=None):
         """The latest output of a pass ("Image", "Buffer A".."Buffer D") as a numpy array of shape
         (height, width, 4), RGBA, top row first. ``uint8``: what the screen shows (a buffer's floats
         clamped and rounded); ``float32``: a buffer's floats as they are (Image's are its 8-bit levels
-        / 255 unless the session has float_image)."""
+        / 255 unless the session has float_image). ``out``: an array of that shape and type to read
+        into instead of a new one (C-contiguous, writeable), returned."""
         dtype = _dtype_name(dtype)
+        if out is not None:
+            import numpy
+
+            if not isinstance(out, numpy.ndarray):
+                raise UsageError(f"out: expected a numpy array, got {type(out).__name__}")
+            return (self._native.read_into_uint8 if dtype == "uint8" else self._native.read_into_float32)(pass_, out)
         if dtype == "uint8":
             return self._native.read_uint8(pass_)
         return self._native.read_float32(pass_)
