@@ -13,6 +13,7 @@
 #include <toyhost/Version.h>
 
 #include "Errors.h"
+#include "Gil.h"
 #include "SessionBinding.h"
 #include "core/Defaults.h"
 
@@ -91,15 +92,14 @@ void bindShadertoy(py::module_& m) {
     m.def(
         "load_path",
         [](const std::filesystem::path& path) {
-            py::gil_scoped_release released;
-            return valueOrThrow(Shadertoy::load(path));
+            return valueOrThrow(toyhost::python::withoutGil([&] { return Shadertoy::load(path); }));
         },
         py::arg("path"));
     m.def(
         "load_export_json",
         [](const std::string& json, const std::string& name, const std::filesystem::path& folder) {
-            py::gil_scoped_release released;
-            return valueOrThrow(Shadertoy::fromExportJson(json, name, folder));
+            return valueOrThrow(
+                toyhost::python::withoutGil([&] { return Shadertoy::fromExportJson(json, name, folder); }));
         },
         py::arg("json"), py::arg("name"), py::arg("folder"));
 }

@@ -18,6 +18,7 @@
 #include <toyhost/Session.h>
 
 #include "Errors.h"
+#include "Gil.h"
 #include "GlWorker.h"
 
 namespace py = pybind11;
@@ -45,10 +46,7 @@ class NativeSession {
 public:
     NativeSession(const Shadertoy& shadertoy, const SessionSettings& settings) {
         refuseAfterForkWithGlOpen();
-        {
-            py::gil_scoped_release released;
-            session_ = valueOrThrow(worker_.call([&] { return Session::createHeadless(shadertoy, settings); }));
-        }
+        session_ = valueOrThrow(onGlThread([&] { return Session::createHeadless(shadertoy, settings); }));
         openSessionsProcess = static_cast<int>(::getpid());
         ++openSessions;
         width_ = session_->width();
@@ -67,9 +65,8 @@ public:
             return;
         }
         // A destructor may run without the GIL held (interpreter shutdown); release only when held.
-        std::optional<py::gil_scoped_release> released;
-        if (PyGILState_Check()) released.emplace();
-        worker_.call([&] { session_.reset(); });
+        if (PyGILState_Check()) onGlThread([&] { session_.reset(); });
+        else worker_.call([&] { session_.reset(); });
         --openSessions;
     }
     bool closed() const { return !session_; }
@@ -77,8 +74,7 @@ public:
     // Renders the next frame; returns its iFrame.
     int step(const std::vector<InputEvent>& events, std::optional<double> time, double timeDelta, double frameRate) {
         Session& s = open();
-        py::gil_scoped_release released;
-        return worker_.call([&] {
+        return onGlThread([&] {
             const int index = s.frame();
             throwIfFailed(time ? s.stepAt(*time, timeDelta, frameRate, events) : s.step(events));
             return index;
@@ -91,16 +87,12 @@ public:
         Session& s = open();
         py::array_t<T> pixels({height_, width_, 4});
         std::span<T> out(pixels.mutable_data(), static_cast<std::size_t>(pixels.size()));
-        int index = 0;
-        {
-            py::gil_scoped_release released;
-            index = worker_.call([&] {
-                const int rendered = s.frame();
-                throwIfFailed(s.step(events));
-                throwIfFailed(s.read(pass, out, RowOrder::TopFirst));
-                return rendered;
-            });
-        }
+        const int index = onGlThread([&] {
+            const int rendered = s.frame();
+            throwIfFailed(s.step(events));
+            throwIfFailed(s.read(pass, out, RowOrder::TopFirst));
+            return rendered;
+        });
         return {index, std::move(pixels)};
     }
 
@@ -109,10 +101,7 @@ public:
         Session& s = open();
         py::array_t<T> pixels({height_, width_, 4});
         std::span<T> out(pixels.mutable_data(), static_cast<std::size_t>(pixels.size()));
-        {
-            py::gil_scoped_release released;
-            throwIfFailed(worker_.call([&] { return s.read(pass, out, RowOrder::TopFirst); }));
-        }
+        throwIfFailed(onGlThread([&] { return s.read(pass, out, RowOrder::TopFirst); }));
         return pixels;
     }
 
@@ -129,20 +118,13 @@ public:
                                          ", 4)",
                                      Code::Usage));
         std::span<T> values(static_cast<T*>(out.mutable_data()), static_cast<std::size_t>(out.size()));
-        {
-            py::gil_scoped_release released;
-            throwIfFailed(worker_.call([&] { return s.read(pass, values, RowOrder::TopFirst); }));
-        }
+        throwIfFailed(onGlThread([&] { return s.read(pass, values, RowOrder::TopFirst); }));
         return out;
     }
 
     py::array_t<float> renderSound(double seconds) {
         Session& s = open();
-        std::vector<float> samples;
-        {
-            py::gil_scoped_release released;
-            samples = valueOrThrow(worker_.call([&] { return s.renderSound(seconds); }));
-        }
+        const std::vector<float> samples = valueOrThrow(onGlThread([&] { return s.renderSound(seconds); }));
         const py::ssize_t frames = static_cast<py::ssize_t>(samples.size() / 2);
         py::array_t<float> out({frames, py::ssize_t(2)});
         std::copy(samples.begin(), samples.begin() + frames * 2, out.mutable_data());
@@ -151,8 +133,7 @@ public:
 
     Reloaded reload(const Shadertoy& next) {
         Session& s = open();
-        py::gil_scoped_release released;
-        Reloaded outcome = valueOrThrow(worker_.call([&] { return s.reload(next); }));
+        Reloaded outcome = valueOrThrow(onGlThread([&] { return s.reload(next); }));
         width_ = s.width();
         height_ = s.height();
         return outcome;
@@ -160,13 +141,11 @@ public:
 
     void restart() {
         Session& s = open();
-        py::gil_scoped_release released;
-        worker_.call([&] { s.restart(); });
+        onGlThread([&] { s.restart(); });
     }
     void resize(int w, int h) {
         Session& s = open();
-        py::gil_scoped_release released;
-        throwIfFailed(worker_.call([&] { return s.resize(w, h); }));
+        throwIfFailed(onGlThread([&] { return s.resize(w, h); }));
         width_ = s.width();
         height_ = s.height();
     }
@@ -191,8 +170,12 @@ private:
     template <class Question>
     auto ask(Question question) -> std::invoke_result_t<Question&, Session&> {
         Session& s = open();
-        py::gil_scoped_release released;
-        return worker_.call([&] { return question(s); });
+        return onGlThread([&] { return question(s); });
+    }
+    // `job` on the worker, waited for with the GIL released.
+    template <class Job>
+    auto onGlThread(Job job) -> std::invoke_result_t<Job&> {
+        return withoutGil([&] { return worker_.call(job); });
     }
 
     GlWorker worker_;

@@ -179,3 +179,23 @@ def test_a_child_forked_with_no_session_open_makes_its_own():
             put(bool(numpy.array_equal(own.frame("Buffer A", "float32"), expected)))
 
     assert in_forked_child(work) == [True]
+
+
+def test_the_interpreter_exits_cleanly_while_a_daemon_thread_renders():
+    # At exit, Python ends daemon threads when they take the GIL back (pthread_exit): that must
+    # pass through toyhost's code rather than abort the process ("terminate called ...").
+    import subprocess
+
+    script = ("import threading, toyhost, sys\n"
+              "s = toyhost.Session(sys.argv[1], size=(64, 36))\n"
+              "started = threading.Event()\n"
+              "def loop():\n"
+              "    for _ in s.render(10**7):\n"
+              "        started.set()\n"
+              "threading.Thread(target=loop, daemon=True).start()\n"
+              "started.wait()\n")
+    for _ in range(3):
+        done = subprocess.run([sys.executable, "-c", script, str(SOURCE_DIR / "shadertoys/bench-trivial")],
+                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=120, check=False)
+        assert done.returncode == 0, done.stdout
+        assert "terminate" not in done.stdout
