@@ -79,6 +79,9 @@ def test_bad_reads_raise_usage_errors(rows):
         toyhost.Session(rows, size=(4, 2), date="yesterday")
     with pytest.raises(toyhost.UsageError):
         toyhost.Session(rows, size=(0, 2))
+    for fps in (0, -30, float("nan"), 1e9):
+        with pytest.raises(toyhost.UsageError):
+            toyhost.Session(rows, size=(4, 2), fps=fps)
     session.close()
     assert session.closed
     with pytest.raises(toyhost.UsageError):

@@ -59,6 +59,8 @@ class Session:
         if not isinstance(shadertoy, Shadertoy):
             shadertoy = load(shadertoy)
         width, height = (0, 0) if size is None else _size(size)
+        if fps is not None and not float(fps) > 0:  # the C++ API takes 0 for "the default"
+            raise UsageError(f"fps: must be more than 0, got {fps}")
         self._fps = float(fps) if fps is not None else _toyhost.DEFAULT_FPS
         self._native = _toyhost.NativeSession(
             shadertoy, width, height, float(fps or 0), float(start_time), date or "",
