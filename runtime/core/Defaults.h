@@ -15,6 +15,11 @@ inline constexpr int kPngLevel = 1;              // zlib level of captured PNG f
 inline constexpr std::size_t kCaptureMemoryMiB = 256;  // frames waiting for the encoders
 inline constexpr int kCaptureEvery = 1;
 inline constexpr int kMaxCanvasSide = 16384;     // --size limit, before asking GL for its own
+// `toyhost compare`'s difference images: |a - b| times this per channel (a 1-level difference is
+// dark but visible, 32 levels and more are white).
+inline constexpr int kCompareDiffGain = 8;
+// Frames `toyhost compare` renders when neither --frames nor a manifest's "defaults" say.
+inline constexpr int kCompareFrames = 10;
 // Numbers a user may give: beyond these a float uniform is no longer a usable number (iTime, iMouse
 // become Inf or lose every fraction), so they are usage errors, not silent Inf in the shader.
 inline constexpr double kMinFps = 0.001;

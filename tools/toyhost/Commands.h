@@ -1,5 +1,5 @@
-// The toyhost subcommands: `run` (options parsed into SessionOptions), `import`, `inspect`, `new` and
-// `media`.
+// The toyhost subcommands: `run` (options parsed into SessionOptions), `import`, `inspect`, `new`,
+// `media`, `sound` and `compare`.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -28,6 +28,9 @@ private:
     bool headless_ = false, window_ = false, watch_ = false, quiet_ = false;
 };
 
+// "WxH" (--size).
+bool parseSize(const std::string& text, int& w, int& h);
+
 int importCommand(const std::string& source, const std::string& dir, bool force);
 int inspectCommand(const std::vector<std::string>& files, const std::string& regionText);
 int newCommand(const std::string& dir, const std::string& passes, bool force);
@@ -40,5 +43,21 @@ struct SoundCommandOptions {
     bool quiet = false;
 };
 int soundCommand(const SoundCommandOptions& options, const GlProcess& process);
+
+// `toyhost compare A B`: declares its options on a subcommand, then runs; exit 0 equal within the
+// tolerance, 1 different, 2 anything that prevents an answer (usage, input, compile, GL, writing).
+class CompareCommand {
+public:
+    void define(CLI::App& command);
+    int execute(const GlProcess& process);
+
+private:
+    std::string a_, b_, size_, pass_ = "Image", date_, mouse_, mouseScript_, keyScript_, diffOut_, framesOut_;
+    std::optional<int> frames_, maxDiff_;
+    std::optional<double> fps_, startTime_, tolerancePsnr_;
+    std::vector<std::string> mediaFolders_, mediaFiles_;
+    double frameTimeout_ = 0, compileTimeout_ = 0;
+    bool json_ = false;
+};
 
 }  // namespace toyhost::cli

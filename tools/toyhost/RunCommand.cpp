@@ -14,12 +14,12 @@
 
 namespace toyhost::cli {
 
-namespace {
-
 bool parseSize(const std::string& text, int& w, int& h) {
     char x = 0, extra = 0;
     return std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) == 3 && (x == 'x' || x == 'X');
 }
+
+namespace {
 
 std::optional<PassId> parsePass(const std::string& text) {
     for (PassId id : {PassId::BufferA, PassId::BufferB, PassId::BufferC, PassId::BufferD, PassId::CubeA, PassId::Image})

@@ -77,6 +77,11 @@ int main(int argc, char** argv) {
     sound->add_option("--media", soundOptions.mediaFolders, "Folder with real stock media files (repeatable)");
     sound->add_flag("--quiet", soundOptions.quiet, "Hide notices (stand-ins)");
 
+    CompareCommand compareCommand;
+    CLI::App* compare = app.add_subcommand(
+        "compare", "Render two shadertoys with the same inputs and compare them frame by frame (exit 0 equal, 1 different)");
+    compareCommand.define(*compare);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -101,5 +106,6 @@ int main(int argc, char** argv) {
     if (!process) return fail(process.error());
     installStopSignals();
     if (sound->parsed()) return soundCommand(soundOptions, *process);
+    if (compare->parsed()) return compareCommand.execute(*process);
     return runCommand.execute(*process);
 }

@@ -1,0 +1,107 @@
+// toyhost/Compare.h (public API, stable): two shadertoys rendered with the same inputs (size, fps,
+// start time, date, mouse and key scripts) and compared frame by frame: PSNR, largest and mean
+// difference, differing pixels, the first differing frame and pixel, and difference images. For
+// ports ("does my port still match the original?") and for scoring generated shader code.
+// compareShadertoys needs no GL context of the caller's (it renders headless, like
+// Session::createHeadless: call it on a thread with a large stack, see runOnGlThread);
+// compareImages is plain arithmetic.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <toyhost/Export.h>
+#include <toyhost/Input.h>
+#include <toyhost/Result.h>
+#include <toyhost/Session.h>
+
+namespace toyhost {
+
+// When two frames count as equal. Neither set: only identical frames are equal. Both set: both
+// must hold.
+struct CompareTolerance {
+    std::optional<double> minPsnr;  // equal when PSNR >= minPsnr (dB)
+    std::optional<int> maxDiff;     // equal when no sample differs by more than maxDiff levels;
+                                    // a pixel counts as differing only beyond it
+};
+
+// One frame of two images compared. Samples are 8-bit levels; the Image pass is compared on R, G
+// and B (its alpha is always 1), a buffer on R, G, B and A.
+struct FrameDifference {
+    int frame = 0;      // iFrame
+    double time = 0;    // iTime
+    double psnr = 0;    // dB over the compared samples, peak 255; +infinity when identical
+    int maxDiff = 0;    // largest |a - b| of one sample, 0..255
+    double meanDiff = 0;             // mean |a - b| over the compared samples
+    std::int64_t differingPixels = 0;  // pixels with a sample differing by more than the tolerance's maxDiff (else 0)
+    int firstX = -1;    // the first differing pixel, scanning rows from the top row, left to right:
+    int firstY = -1;    // x from the left, y from the top (-1 when none)
+    bool withinTolerance = true;
+    // |a - b| * gain per R, G, B (clamped to 255), alpha 255, rows top first, width * height * 4
+    // bytes; filled only when asked for (CompareSettings::keepDiffImages) and the frame is not
+    // within tolerance.
+    std::vector<std::uint8_t> diffImage;
+};
+
+// Compares two RGBA8 images of width * height * 4 bytes (any row order, the same for both; firstY
+// counts rows in that order). `channels` is 3 (R, G, B) or 4. Writes the difference image into
+// `diffImage` (resized) when given. Errors: sizes that do not match, channels other than 3 or 4.
+TOYHOST_API Result<FrameDifference> compareImages(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b,
+                                                  int width, int height, int channels, const CompareTolerance& tolerance = {},
+                                                  std::vector<std::uint8_t>* diffImage = nullptr, int diffGain = 0);
+
+// One compared frame as it is rendered, for callers that write files or stop early: the two
+// frames and the difference image (empty when within tolerance), rows top first.
+struct ComparedFrame {
+    const FrameDifference& difference;
+    int width;   // each image: width * height * 4 bytes, RGBA8
+    int height;
+    std::span<const std::uint8_t> a;
+    std::span<const std::uint8_t> b;
+    std::span<const std::uint8_t> diffImage;
+};
+
+struct CompareSettings {
+    // Size, fps, start time, date, media and limits, the same for both (zero means the default, as
+    // for a Session; an empty date is fixed to now once, so both see the same iDate).
+    SessionSettings session;
+    int frames = 0;                // frames rendered and compared; 0: toyhost's default run length
+    std::string pass = "Image";    // "Image" or "Buffer A" .. "Buffer D"
+    CompareTolerance tolerance;
+    // Input scripts (the CLI's --mouse-script / --key-script JSON files), replayed for both.
+    std::filesystem::path mouseScript;
+    std::filesystem::path keyScript;
+    // More events for both, before frame `frame` (at iTime `time`), after the scripts' events.
+    std::function<std::vector<InputEvent>(int frame, double time)> input;
+    bool keepDiffImages = false;   // FrameDifference::diffImage for frames beyond the tolerance
+    bool diffImages = false;       // make difference images for `onFrame` (implied by keepDiffImages)
+    int diffGain = 0;              // difference image scale; 0: toyhost's default (8)
+    // Called after each frame is compared (on the calling thread); return false to stop early.
+    std::function<bool(const ComparedFrame&)> onFrame;
+};
+
+struct CompareReport {
+    int width = 0;       // the canvas both rendered at
+    int height = 0;
+    double fps = 0;      // the time step both used: frame n at iTime = startTime + n / fps
+    double startTime = 0;
+    std::string pass;
+    std::vector<FrameDifference> frames;     // every frame compared, in order
+    std::optional<int> firstDifferingFrame;  // the first frame beyond the tolerance (its iFrame)
+    double minPsnr = 0;                      // the worst frame's PSNR (+infinity when all identical)
+    int maxDiff = 0;                         // the largest difference of any frame
+    bool equal() const { return !firstDifferingFrame; }
+};
+
+// Renders `a` and `b` headless, frame by frame with the same settings and inputs, and compares
+// `settings.pass`. Errors: either shadertoy failing to start (named "A: ..." / "B: ..." through
+// the diagnostics' file), a pass that one of them lacks, scripts that do not parse, a GL error.
+TOYHOST_API Result<CompareReport> compareShadertoys(const Shadertoy& a, const Shadertoy& b,
+                                                   const CompareSettings& settings = {});
+
+}  // namespace toyhost

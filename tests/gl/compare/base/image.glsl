@@ -1,0 +1,7 @@
+// toyhost compare's reference: a gradient, a blue band right of x = edge, and a time pulse.
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec2 uv = fragCoord / iResolution.xy;
+    float edge = 0.5;
+    fragColor = vec4(uv.x, uv.y, uv.x > edge ? 1.0 : 0.0, 1.0);
+    fragColor.g *= 0.5 + 0.5 * cos(iTime);
+}

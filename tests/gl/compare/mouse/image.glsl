@@ -1,0 +1,8 @@
+// base, with blue inverted while the mouse button is held (iMouse.z > 0).
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec2 uv = fragCoord / iResolution.xy;
+    float edge = 0.5;
+    fragColor = vec4(uv.x, uv.y, uv.x > edge ? 1.0 : 0.0, 1.0);
+    fragColor.g *= 0.5 + 0.5 * cos(iTime);
+    if (iMouse.z > 0.0) fragColor.b = 1.0 - fragColor.b;
+}
