@@ -1,6 +1,7 @@
 // The native module `toyhost._toyhost`: toyhost's public C++ API (include/toyhost/) as Python
-// sees it: diagnostics, input events, loading a shadertoy, the version, and the session
-// (SessionBinding). The Pythonic layer on top is toyhost/__init__.py. No GL here.
+// sees it: diagnostics, input events, loading a shadertoy, the version, the session
+// (SessionBinding) and comparisons (CompareBinding). The Pythonic layer on top is
+// toyhost/__init__.py. No GL here.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -12,6 +13,7 @@
 #include <toyhost/Shadertoy.h>
 #include <toyhost/Version.h>
 
+#include "CompareBinding.h"
 #include "Errors.h"
 #include "Gil.h"
 #include "SessionBinding.h"
@@ -113,6 +115,7 @@ PYBIND11_MODULE(_toyhost, m) {
     bindInputEvent(m);
     bindShadertoy(m);
     toyhost::python::bindSession(m);
+    toyhost::python::bindCompare(m);
     m.def("version_string", [] { return std::string(versionString()); });
     // The defaults a session uses for what the caller leaves out (core/Defaults.h, their one place).
     m.attr("DEFAULT_WIDTH") = defaults::kCanvasWidth;

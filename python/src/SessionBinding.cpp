@@ -34,6 +34,8 @@ namespace {
 std::atomic<int> openSessions{0};
 int openSessionsProcess = 0;
 
+}  // namespace
+
 void refuseAfterForkWithGlOpen() {
     if (openSessions.load() > 0 && openSessionsProcess != static_cast<int>(::getpid()))
         throw ToyhostError(Error("this process was forked while a session was open in its parent, and GL cannot start "
@@ -41,6 +43,8 @@ void refuseAfterForkWithGlOpen() {
                                  "multiprocessing's \"spawn\" or \"forkserver\" method",
                                  Code::Usage));
 }
+
+namespace {
 
 class NativeSession {
 public:

@@ -10,4 +10,8 @@ namespace toyhost::python {
 
 void bindSession(pybind11::module_& module);
 
+// Raises (a usage error) in a child forked while a session was open in its parent: GL cannot
+// start there (the driver's threads stayed in the parent) and would wait forever.
+void refuseAfterForkWithGlOpen();
+
 }  // namespace toyhost::python

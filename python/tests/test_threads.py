@@ -152,7 +152,8 @@ def test_a_child_forked_with_a_session_open_is_told_not_left_hanging():
     parent.step()
 
     def work(put):
-        for attempt in (parent.step, lambda: toyhost.Session(probe, size=(8, 4))):
+        for attempt in (parent.step, lambda: toyhost.Session(probe, size=(8, 4)),
+                        lambda: toyhost.compare(probe, probe, frames=1, size=(8, 4))):
             try:
                 attempt()
                 put("worked")
@@ -161,7 +162,7 @@ def test_a_child_forked_with_a_session_open_is_told_not_left_hanging():
         parent.close()  # forgets the parent's objects here; must not hang or raise
         put("closed")
 
-    assert in_forked_child(work) == ["refused: fork", "refused: fork", "closed"]
+    assert in_forked_child(work) == ["refused: fork", "refused: fork", "refused: fork", "closed"]
     parent.step()
     assert parent.next_frame == 2, "the parent's session is untouched"
     parent.close()

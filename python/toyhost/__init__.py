@@ -16,6 +16,7 @@ toyhost.Error subclasses carrying toyhost's diagnostics (file, pass, line, code.
 import os
 
 from . import _toyhost
+from ._compare import CompareReport, FrameDifference, compare, compare_images
 from ._errors import (CompileError, Error, GlError, InputError, InternalError, ManifestError, OutputError,
                       StoppedError, UsageError, WatchdogError)
 from ._keys import key_code
@@ -24,7 +25,7 @@ from ._toyhost import Diagnostic, InputEvent, Reloaded, Shadertoy
 __version__ = _toyhost.version_string()
 
 __all__ = [
-    "load", "Session", "Shadertoy", "Diagnostic", "InputEvent", "Reloaded", "key_code", "Error", "UsageError", "InputError",
+    "load", "Session", "compare", "compare_images", "CompareReport", "FrameDifference", "Shadertoy", "Diagnostic", "InputEvent", "Reloaded", "key_code", "Error", "UsageError", "InputError",
     "ManifestError", "CompileError", "OutputError", "GlError", "StoppedError", "WatchdogError", "InternalError",
     "__version__",
 ]
