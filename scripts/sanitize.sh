@@ -64,6 +64,12 @@ run run "$out/pp" --size 8x8
 for id in 7dyfzW ds3BW7 fd3yW8 Dd2SWh; do  # video, music, mic, stock cubemap (wild corpus)
     if [ -f "../shared/corpus/wild/$id.json" ]; then run run "../shared/corpus/wild/$id.json" --size 48x27 --frames 3; fi
 done
+# toyhost compare: two sessions at once, difference images and frames through the writer thread
+# (exit 1: they differ from frame 3).
+code=0
+"$toyhost" compare tests/gl/compare/base tests/gl/compare/diverge --size 40x20 --fps 10 --frames 6 --json \
+    --diff-out "$out/cmp" --frames-out "$out/cmp" > /dev/null || code=$?
+if [ "$code" -ne 1 ]; then echo "toyhost compare exited $code, expected 1 (different)"; exit 1; fi
 printf '{"passes": {"Image": {"source": "nope.glsl", "bogus": 1}}, "passes": {}}' > "$out/bad.json"
 if "$toyhost" run "$out/bad.json" --headless 2>/dev/null; then echo "a bad manifest was accepted"; exit 1; fi
 unset ASAN_OPTIONS

@@ -11,7 +11,7 @@ out="$root/docs/cli.md"
     echo
     echo "This page is the output of \`toyhost --help\` and of each command's \`--help\`, regenerated"
     echo "by \`scripts/update-cli-doc.sh\`; a test fails while they differ. README shows examples."
-    for command in "" run import inspect new media sound; do
+    for command in "" run import inspect new media sound compare; do
         echo
         echo "## toyhost${command:+ $command}"
         echo

@@ -11,6 +11,13 @@ int integer(GLenum name) {
     return value;
 }
 void enable(GLenum capability, bool on) { on ? glEnable(capability) : glDisable(capability); }
+// A name saved at the start that toyhost deleted meanwhile (the caller had one of toyhost's own
+// objects bound, such as the Image texture when the session goes) is restored as 0, as GL's
+// deletion leaves it: binding the freed name again would make a new, empty object of that name.
+GLuint alive(int name, GLboolean (*exists)(GLuint)) {
+    const GLuint id = static_cast<GLuint>(name);
+    return id != 0 && exists(id) ? id : 0;
+}
 }  // namespace
 
 GlStateGuard::GlStateGuard() {
@@ -42,19 +49,19 @@ GlStateGuard::GlStateGuard() {
 GlStateGuard::~GlStateGuard() {
     for (int unit = 0; unit < kUnits; ++unit) {
         glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(textures_[unit][0]));
-        glBindTexture(GL_TEXTURE_CUBE_MAP, static_cast<GLuint>(textures_[unit][1]));
-        glBindTexture(GL_TEXTURE_3D, static_cast<GLuint>(textures_[unit][2]));
-        glBindSampler(unit, static_cast<GLuint>(samplers_[unit]));
+        glBindTexture(GL_TEXTURE_2D, alive(textures_[unit][0], glIsTexture));
+        glBindTexture(GL_TEXTURE_CUBE_MAP, alive(textures_[unit][1], glIsTexture));
+        glBindTexture(GL_TEXTURE_3D, alive(textures_[unit][2], glIsTexture));
+        glBindSampler(unit, alive(samplers_[unit], glIsSampler));
     }
     glActiveTexture(static_cast<GLenum>(activeTexture_));
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawFramebuffer_));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(readFramebuffer_));
-    glUseProgram(static_cast<GLuint>(program_));
-    glBindVertexArray(static_cast<GLuint>(vertexArray_));
-    glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(arrayBuffer_));
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, static_cast<GLuint>(packBuffer_));
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpackBuffer_));
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, alive(drawFramebuffer_, glIsFramebuffer));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, alive(readFramebuffer_, glIsFramebuffer));
+    glUseProgram(alive(program_, glIsProgram));
+    glBindVertexArray(alive(vertexArray_, glIsVertexArray));
+    glBindBuffer(GL_ARRAY_BUFFER, alive(arrayBuffer_, glIsBuffer));
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, alive(packBuffer_, glIsBuffer));
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, alive(unpackBuffer_, glIsBuffer));
     glPixelStorei(GL_PACK_ALIGNMENT, packAlignment_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment_);
     glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);

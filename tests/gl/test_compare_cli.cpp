@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <toyhost/Compare.h>
 
+#include "Processes.h"
 #include "image/ImageFile.h"
 
 namespace toyhost::testing {
@@ -145,6 +146,34 @@ TEST(CompareCli, ProblemsExitTwo) {
     writeFile(dir / "file", "x");
     CommandResult notFolder = compare("base", "constant", "--frames 1 --diff-out '" + (dir / "file").string() + "'");
     EXPECT_EQ(notFolder.exitCode, 2) << notFolder.output;
+}
+
+// SIGINT ends a long comparison after the frame being compared: exit 130, and the files written
+// are pairs of complete frames.
+TEST(CompareCli, SigintStopsAfterTheFrameWithCompleteFiles) {
+    const fs::path dir = freshOutputDir("compare-cli/sigint");
+    const std::string base = (sourceDir() / "tests/gl/compare/base").string();
+    BackgroundProcess compare(toyhostBinary(),
+                              {"compare", base, base, "--size", "40x20", "--frames", "1000000", "--frames-out",
+                               (dir / "frames").string()},
+                              dir / "compare.log");
+    // Waits for the first frame's file (a state, not a time; bounded so that a hang fails).
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!fs::exists(dir / "frames/b_0000.png") && compare.running() && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_TRUE(fs::exists(dir / "frames/b_0000.png")) << compare.log();
+    compare.signal(SIGINT);
+    EXPECT_EQ(compare.wait(60), 130) << compare.log();
+    EXPECT_NE(compare.log().find("SIGINT: stopped after"), std::string::npos) << compare.log();
+    std::size_t a = 0, b = 0;
+    for (const auto& entry : fs::directory_iterator(dir / "frames")) {
+        const std::string name = entry.path().filename().string();
+        ASSERT_EQ(entry.path().extension(), ".png") << "an unfinished file: " << name;
+        (name[0] == 'a' ? a : b) += 1;
+        EXPECT_TRUE(loadImageFile(entry.path()).ok()) << name;
+    }
+    EXPECT_EQ(a, b) << "every compared frame's two files";
+    EXPECT_GE(a, 1u);
 }
 
 }  // namespace

@@ -309,16 +309,14 @@ int CompareCommand::execute(const GlProcess&) {
     settings.diffImages = files.wantsDiff();
     int stoppedBy = 0;
     bool writeFailed = false;
+    // SIGINT / SIGTERM stop the comparison after the frame being compared (its files are written).
     settings.onFrame = [&](const ComparedFrame& f) {
-        if (stopSignal()) {
-            stoppedBy = stopSignal();
-            return false;
-        }
         if (files.any() && !files.add(f, f.width, f.height)) {
             writeFailed = true;
             return false;
         }
-        return true;
+        stoppedBy = stopSignal();
+        return stoppedBy == 0;
     };
     std::optional<Result<CompareReport>> report;
     runOnGlThread([&] { report.emplace(compareShadertoys(*a, *b, settings)); });

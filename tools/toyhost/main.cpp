@@ -81,6 +81,9 @@ int main(int argc, char** argv) {
     CLI::App* compare = app.add_subcommand(
         "compare", "Render two shadertoys with the same inputs and compare them frame by frame (exit 0 equal, 1 different)");
     compareCommand.define(*compare);
+    compare->footer("Exit codes of compare (as cmp and diff): 0 equal within the tolerance; 1 different; 2 no answer "
+                    "(bad usage, a shadertoy that does not load or compile, a pass one lacks, GL or write error); 124 "
+                    "watchdog; 130 / 143 interrupted by SIGINT / SIGTERM.");
 
     try {
         app.parse(argc, argv);
