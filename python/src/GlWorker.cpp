@@ -1,0 +1,54 @@
+// GlWorker: a queue of jobs served by one thread that runs inside toyhost::runOnGlThread.
+#include "GlWorker.h"
+
+#include <unistd.h>
+
+#include <toyhost/Session.h>
+
+namespace toyhost::python {
+
+GlWorker::GlWorker() : process_(static_cast<int>(::getpid())) {
+    // runOnGlThread gives the large stack (the public API's one place for its size); the std::thread
+    // around it only waits for it.
+    thread_ = std::thread([this] { runOnGlThread([this] { serve(); }); });
+}
+
+bool GlWorker::inOwnProcess() const { return static_cast<int>(::getpid()) == process_; }
+
+GlWorker::~GlWorker() {
+    if (!inOwnProcess()) {
+        // A forked child's copy: the thread is the parent's; nothing here can stop or join it.
+        thread_.detach();
+        return;
+    }
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_one();
+    thread_.join();
+}
+
+void GlWorker::post(std::function<void()> job) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        jobs_.push_back(std::move(job));
+    }
+    wake_.notify_one();
+}
+
+void GlWorker::serve() {
+    for (;;) {
+        std::function<void()> job;
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            wake_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });
+            if (jobs_.empty()) return;  // stopping, and nothing left to do
+            job = std::move(jobs_.front());
+            jobs_.pop_front();
+        }
+        job();
+    }
+}
+
+}  // namespace toyhost::python

@@ -1,0 +1,53 @@
+// GlWorker: the thread a Python session's GL work runs on. A GL context is current on one thread,
+// while Python may call a session from any of its threads, so every call is handed to this one
+// thread (toyhost's GL thread, with the large stack Mesa's compiler needs) and waited for. The
+// caller releases the GIL while it waits. No GL context itself: the jobs make and use one.
+#pragma once
+
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <type_traits>
+
+namespace toyhost::python {
+
+class GlWorker {
+public:
+    GlWorker();
+    ~GlWorker();  // runs the jobs already handed over, then joins (in the process that made it)
+    GlWorker(const GlWorker&) = delete;
+    GlWorker& operator=(const GlWorker&) = delete;
+
+    // Whether this is the process that made the worker: a fork() copies the worker's memory but
+    // not its thread, so in a child the jobs would wait forever.
+    bool inOwnProcess() const;
+
+    // Runs `job` on the worker thread and returns its result (or rethrows what it threw). Jobs run
+    // one at a time, in the order they were handed over. Must not be called from a job, nor where
+    // inOwnProcess() is false.
+    template <class Job>
+    auto call(Job job) -> std::invoke_result_t<Job&> {
+        using Value = std::invoke_result_t<Job&>;
+        auto task = std::make_shared<std::packaged_task<Value()>>(std::move(job));
+        std::future<Value> done = task->get_future();
+        post([task] { (*task)(); });
+        return done.get();
+    }
+
+private:
+    void post(std::function<void()> job);
+    void serve();
+
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    std::deque<std::function<void()>> jobs_;
+    bool stopping_ = false;
+    int process_ = 0;  // getpid() at creation
+    std::thread thread_;
+};
+
+}  // namespace toyhost::python

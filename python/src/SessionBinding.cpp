@@ -1,0 +1,255 @@
+// The native session: toyhost::Session created, used and destroyed on a GlWorker. Python arguments
+// are converted while the GIL is held; the GL work runs with it released.
+#include "SessionBinding.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <atomic>
+#include <cstdint>
+#include <unistd.h>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <toyhost/Session.h>
+
+#include "Errors.h"
+#include "Gil.h"
+#include "GlWorker.h"
+
+namespace py = pybind11;
+
+namespace toyhost::python {
+
+namespace {
+
+// Sessions open in this process, and which process that is. A fork() copies the driver's state
+// (EGL, llvmpipe) but not its threads, so a child of a process with a session open cannot start GL
+// at all (Mesa waits forever for threads that are not there); with none open, the display was
+// released and the child starts afresh. Changed with the GIL held (or at a close, atomically).
+std::atomic<int> openSessions{0};
+int openSessionsProcess = 0;
+
+}  // namespace
+
+void refuseAfterForkWithGlOpen() {
+    if (openSessions.load() > 0 && openSessionsProcess != static_cast<int>(::getpid()))
+        throw ToyhostError(Error("this process was forked while a session was open in its parent, and GL cannot start "
+                                 "in such a child: close every session before forking, or start workers with "
+                                 "multiprocessing's \"spawn\" or \"forkserver\" method",
+                                 Code::Usage));
+}
+
+namespace {
+
+class NativeSession {
+public:
+    NativeSession(const Shadertoy& shadertoy, const SessionSettings& settings) {
+        refuseAfterForkWithGlOpen();
+        session_ = valueOrThrow(onGlThread([&] { return Session::createHeadless(shadertoy, settings); }));
+        openSessionsProcess = static_cast<int>(::getpid());
+        ++openSessions;
+        width_ = session_->width();
+        height_ = session_->height();
+    }
+    ~NativeSession() { close(); }
+    NativeSession(const NativeSession&) = delete;
+    NativeSession& operator=(const NativeSession&) = delete;
+
+    // The session's GL objects and context go now, on the worker (idempotent).
+    void close() {
+        if (!session_) return;
+        if (!worker_.inOwnProcess()) {
+            // A forked child's copy: its GL objects are the parent's to free; forget them here.
+            (void)session_.release();
+            return;
+        }
+        // A destructor may run without the GIL held (interpreter shutdown); release only when held.
+        if (PyGILState_Check()) onGlThread([&] { session_.reset(); });
+        else worker_.call([&] { session_.reset(); });
+        --openSessions;
+    }
+    bool closed() const { return !session_; }
+
+    // Renders the next frame; returns its iFrame.
+    int step(const std::vector<InputEvent>& events, std::optional<double> time, double timeDelta, double frameRate) {
+        Session& s = open();
+        return onGlThread([&] {
+            const int index = s.frame();
+            throwIfFailed(time ? s.stepAt(*time, timeDelta, frameRate, events) : s.step(events));
+            return index;
+        });
+    }
+
+    // step() at the fixed time step and read(): one trip to the worker for both (render()).
+    template <class T>
+    std::pair<int, py::array_t<T>> stepAndRead(const std::vector<InputEvent>& events, const std::string& pass) {
+        Session& s = open();
+        py::array_t<T> pixels({height_, width_, 4});
+        std::span<T> out(pixels.mutable_data(), static_cast<std::size_t>(pixels.size()));
+        const int index = onGlThread([&] {
+            const int rendered = s.frame();
+            throwIfFailed(s.step(events));
+            throwIfFailed(s.read(pass, out, RowOrder::TopFirst));
+            return rendered;
+        });
+        return {index, std::move(pixels)};
+    }
+
+    template <class T>
+    py::array_t<T> read(const std::string& pass) {
+        Session& s = open();
+        py::array_t<T> pixels({height_, width_, 4});
+        std::span<T> out(pixels.mutable_data(), static_cast<std::size_t>(pixels.size()));
+        throwIfFailed(onGlThread([&] { return s.read(pass, out, RowOrder::TopFirst); }));
+        return pixels;
+    }
+
+    // read() into the caller's array (reused from frame to frame): C-contiguous, writeable,
+    // (height, width, 4) of T.
+    template <class T>
+    py::array readInto(const std::string& pass, py::array out) {
+        Session& s = open();
+        const bool fits = out.ndim() == 3 && out.shape(0) == height_ && out.shape(1) == width_ && out.shape(2) == 4 &&
+                          out.dtype().is(py::dtype::of<T>()) && (out.flags() & py::array::c_style) && out.writeable();
+        if (!fits)
+            throw ToyhostError(Error("out: expected a writeable C-contiguous " + std::string(py::str(py::dtype::of<T>())) +
+                                         " array of shape (" + std::to_string(height_) + ", " + std::to_string(width_) +
+                                         ", 4)",
+                                     Code::Usage));
+        std::span<T> values(static_cast<T*>(out.mutable_data()), static_cast<std::size_t>(out.size()));
+        throwIfFailed(onGlThread([&] { return s.read(pass, values, RowOrder::TopFirst); }));
+        return out;
+    }
+
+    py::array_t<float> renderSound(double seconds) {
+        Session& s = open();
+        const std::vector<float> samples = valueOrThrow(onGlThread([&] { return s.renderSound(seconds); }));
+        const py::ssize_t frames = static_cast<py::ssize_t>(samples.size() / 2);
+        py::array_t<float> out({frames, py::ssize_t(2)});
+        std::copy(samples.begin(), samples.begin() + frames * 2, out.mutable_data());
+        return out;
+    }
+
+    Reloaded reload(const Shadertoy& next) {
+        Session& s = open();
+        Reloaded outcome = valueOrThrow(onGlThread([&] { return s.reload(next); }));
+        width_ = s.width();
+        height_ = s.height();
+        return outcome;
+    }
+
+    void restart() {
+        Session& s = open();
+        onGlThread([&] { s.restart(); });
+    }
+    void resize(int w, int h) {
+        Session& s = open();
+        throwIfFailed(onGlThread([&] { return s.resize(w, h); }));
+        width_ = s.width();
+        height_ = s.height();
+    }
+
+    // Cheap reads of the session's own state (no GL): answered on the worker all the same, so that
+    // they never race a step running there.
+    int nextFrame() { return ask([](Session& s) { return s.frame(); }); }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    std::vector<Diagnostic> notices() { return ask([](Session& s) { return s.notices(); }); }
+    std::string backend() { return ask([](Session& s) { return s.backend(); }); }
+
+private:
+    Session& open() {
+        if (!session_) throw ToyhostError(Error("the session is closed", Code::Usage));
+        if (!worker_.inOwnProcess())
+            throw ToyhostError(Error("the session was made in another process (before a fork): make one in this "
+                                     "process (its GL thread does not exist here)",
+                                     Code::Usage));
+        return *session_;
+    }
+    template <class Question>
+    auto ask(Question question) -> std::invoke_result_t<Question&, Session&> {
+        Session& s = open();
+        return onGlThread([&] { return question(s); });
+    }
+    // `job` on the worker, waited for with the GIL released.
+    template <class Job>
+    auto onGlThread(Job job) -> std::invoke_result_t<Job&> {
+        return withoutGil([&] { return worker_.call(job); });
+    }
+
+    GlWorker worker_;
+    std::unique_ptr<Session> session_;  // created, used and destroyed on worker_
+    int width_ = 0;  // the canvas, kept here so that allocating a frame's array needs no round trip
+    int height_ = 0;
+};
+
+SessionSettings settingsFrom(int width, int height, double fps, double startTime, const std::string& date,
+                             const std::vector<std::filesystem::path>& mediaFolders,
+                             const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
+                             bool floatImage, double frameTimeout, double compileTimeout) {
+    SessionSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.fps = fps;
+    settings.startTime = startTime;
+    settings.date = date;
+    settings.mediaFolders = mediaFolders;
+    settings.mediaFiles = mediaFiles;
+    settings.floatImage = floatImage;
+    settings.frameTimeout = frameTimeout;
+    settings.compileTimeout = compileTimeout;
+    return settings;
+}
+
+}  // namespace
+
+void bindSession(py::module_& module) {
+    py::class_<Reloaded>(module, "Reloaded", "What a reload did (Session.reload).")
+        .def_readonly("applied", &Reloaded::applied)
+        .def_readonly("structure_changed", &Reloaded::structureChanged)
+        .def_readonly("recompiled", &Reloaded::recompiled)
+        .def_readonly("problems", &Reloaded::problems)
+        .def("__repr__", [](const Reloaded& r) {
+            return "<toyhost.Reloaded applied=" + std::string(r.applied ? "True" : "False") +
+                   " structure_changed=" + (r.structureChanged ? "True" : "False") + " recompiled=" +
+                   std::to_string(r.recompiled.size()) + " problems=" + std::to_string(r.problems.size()) + ">";
+        });
+    py::class_<NativeSession>(module, "NativeSession")
+        .def(py::init([](const Shadertoy& shadertoy, int width, int height, double fps, double startTime,
+                         const std::string& date, const std::vector<std::filesystem::path>& mediaFolders,
+                         const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
+                         bool floatImage, double frameTimeout, double compileTimeout) {
+                 return std::make_unique<NativeSession>(
+                     shadertoy, settingsFrom(width, height, fps, startTime, date, mediaFolders, mediaFiles,
+                                             floatImage, frameTimeout, compileTimeout));
+             }),
+             py::arg("shadertoy"), py::arg("width"), py::arg("height"), py::arg("fps"), py::arg("start_time"),
+             py::arg("date"), py::arg("media_folders"), py::arg("media_files"), py::arg("float_image"),
+             py::arg("frame_timeout"), py::arg("compile_timeout"))
+        .def("close", &NativeSession::close)
+        .def_property_readonly("closed", &NativeSession::closed)
+        .def("step", &NativeSession::step, py::arg("events"), py::arg("time"), py::arg("time_delta"),
+             py::arg("frame_rate"))
+        .def("step_read_uint8", &NativeSession::stepAndRead<std::uint8_t>, py::arg("events"), py::arg("pass_"))
+        .def("step_read_float32", &NativeSession::stepAndRead<float>, py::arg("events"), py::arg("pass_"))
+        .def("read_uint8", &NativeSession::read<std::uint8_t>, py::arg("pass_"))
+        .def("read_float32", &NativeSession::read<float>, py::arg("pass_"))
+        .def("read_into_uint8", &NativeSession::readInto<std::uint8_t>, py::arg("pass_"), py::arg("out"))
+        .def("read_into_float32", &NativeSession::readInto<float>, py::arg("pass_"), py::arg("out"))
+        .def("render_sound", &NativeSession::renderSound, py::arg("seconds"))
+        .def("reload", &NativeSession::reload, py::arg("shadertoy"))
+        .def("restart", &NativeSession::restart)
+        .def("resize", &NativeSession::resize, py::arg("width"), py::arg("height"))
+        .def_property_readonly("next_frame", &NativeSession::nextFrame)
+        .def_property_readonly("width", &NativeSession::width)
+        .def_property_readonly("height", &NativeSession::height)
+        .def_property_readonly("notices", &NativeSession::notices)
+        .def_property_readonly("backend", &NativeSession::backend);
+}
+
+}  // namespace toyhost::python

@@ -1,0 +1,243 @@
+"""toyhost from Python: run Shadertoy shaders headless and get their frames as numpy arrays.
+
+    import toyhost
+    ocean = toyhost.load("shadertoys/ocean")          # folder, manifest, export file or JSON text
+    with toyhost.Session(ocean, size=(320, 180), fps=30) as session:
+        session.step(mouse=(100, 50))                 # one frame, the mouse held at (100, 50)
+        rgba = session.frame()                        # (180, 320, 4) uint8, top row first
+        for index, frame in session.render(60, every=10):
+            ...
+
+Every session renders on a GL thread of its own (toyhost's public C++ Session underneath); calls
+wait for it with the GIL released, so other Python threads run meanwhile. Problems raise
+toyhost.Error subclasses carrying toyhost's diagnostics (file, pass, line, code...).
+"""
+
+import os
+
+from . import _toyhost
+from ._compare import CompareReport, FrameDifference, compare, compare_images
+from ._errors import (CompileError, Error, GlError, InputError, InternalError, ManifestError, OutputError,
+                      StoppedError, UsageError, WatchdogError)
+from ._keys import key_code
+from ._toyhost import Diagnostic, InputEvent, Reloaded, Shadertoy
+
+__version__ = _toyhost.version_string()
+
+__all__ = [
+    "load", "Session", "compare", "compare_images", "CompareReport", "FrameDifference", "Shadertoy", "Diagnostic", "InputEvent", "Reloaded", "key_code", "Error", "UsageError", "InputError",
+    "ManifestError", "CompileError", "OutputError", "GlError", "StoppedError", "WatchdogError", "InternalError",
+    "__version__",
+]
+
+
+def load(path_or_json, name="export.json", folder=None):
+    """A Shadertoy from a folder holding manifest.json, a manifest file, a Shadertoy JSON export file
+    (API or site form), or the text of such an export (a str starting with '{' or '[').
+
+    ``name`` and ``folder`` apply to JSON text: the name messages use for it, and where files it
+    names relatively would be found. Raises ManifestError (or another toyhost.Error) listing every
+    problem found."""
+    if isinstance(path_or_json, str) and path_or_json.lstrip()[:1] in ("{", "["):
+        return _toyhost.load_export_json(path_or_json, name, os.fspath(folder) if folder is not None else "")
+    return _toyhost.load_path(os.fspath(path_or_json))
+
+
+class Session:
+    """A shadertoy running headless at a fixed time step: frame n has iTime = start_time + n / fps.
+
+    ``size`` is the canvas (iResolution), ``date`` iDate at time 0 ("YYYY-MM-DDTHH:MM:SS", local;
+    default: now; fix it for repeatable frames), ``media_folders`` / ``media_files`` real files for
+    Shadertoy's stock media (else deterministic stand-ins), ``float_image`` renders Image into 32-bit
+    floats, ``frame_timeout`` / ``compile_timeout`` are limits in seconds (0: none). Left out,
+    size and fps are toyhost's defaults (800x450, 60).
+
+    Close it (``close()`` or ``with``) to free its GL context at once rather than at garbage
+    collection."""
+
+    def __init__(self, shadertoy, size=None, fps=None, start_time=0.0, date=None, media_folders=(),
+                 media_files=None, float_image=False, frame_timeout=0.0, compile_timeout=0.0):
+        if not isinstance(shadertoy, Shadertoy):
+            shadertoy = load(shadertoy)
+        width, height = (0, 0) if size is None else _size(size)
+        if fps is not None and not float(fps) > 0:  # the C++ API takes 0 for "the default"
+            raise UsageError(f"fps: must be more than 0, got {fps}")
+        self._fps = float(fps) if fps is not None else _toyhost.DEFAULT_FPS
+        self._native = _toyhost.NativeSession(
+            shadertoy, width, height, float(fps or 0), float(start_time), date or "",
+            [os.fspath(f) for f in media_folders],
+            [(str(k), os.fspath(v)) for k, v in (media_files or {}).items()],
+            bool(float_image), float(frame_timeout), float(compile_timeout))
+        self.shadertoy = shadertoy
+        self._mouse_held = False
+        self._keys_held = set()
+
+    # --- rendering -------------------------------------------------------------------------------
+
+    def step(self, mouse=None, keys=None, time=None, time_delta=None, frame_rate=None, events=()):
+        """Renders the next frame and returns its iFrame.
+
+        ``mouse``: None leaves the mouse as it is; ``(x, y)`` holds the button down at canvas pixel
+        (x, y), origin bottom-left (a press when it was up, a drag when already held); False
+        releases it. ``keys``: None leaves the keys as they are; otherwise the keys held down from
+        this frame on (keyCodes, characters or names: ``{"W", "Space"}``; an empty set releases
+        all): presses and releases follow from the difference. ``events``: further InputEvents,
+        applied after those. ``time``: iTime of this frame instead of the fixed step, with
+        iTimeDelta ``time_delta`` (default 1/fps) and iFrameRate ``frame_rate`` (default fps)."""
+        return self._native.step(self._events(mouse, keys, events), None if time is None else float(time),
+                                 1.0 / self._fps if time_delta is None else float(time_delta),
+                                 self._fps if frame_rate is None else float(frame_rate))
+
+    def frame(self, pass_="Image", dtype="uint8", out=None):
+        """The latest output of a pass ("Image", "Buffer A".."Buffer D") as a numpy array of shape
+        (height, width, 4), RGBA, top row first. ``uint8``: what the screen shows (a buffer's floats
+        clamped and rounded); ``float32``: a buffer's floats as they are (Image's are its 8-bit levels
+        / 255 unless the session has float_image). ``out``: an array of that shape and type to read
+        into instead of a new one (C-contiguous, writeable), returned."""
+        dtype = _dtype_name(dtype)
+        if out is not None:
+            import numpy
+
+            if not isinstance(out, numpy.ndarray):
+                raise UsageError(f"out: expected a numpy array, got {type(out).__name__}")
+            return (self._native.read_into_uint8 if dtype == "uint8" else self._native.read_into_float32)(pass_, out)
+        if dtype == "uint8":
+            return self._native.read_uint8(pass_)
+        return self._native.read_float32(pass_)
+
+    def render(self, frames, every=1, pass_="Image", dtype="uint8", mouse=None, keys=None):
+        """Renders ``frames`` frames and yields ``(iframe, array)`` for the 0th, every-th and last of
+        them (as the CLI's --capture-every), each array as frame() gives it. ``mouse`` and ``keys``
+        are applied before the first frame, as step() takes them, and stay."""
+        frames, every = int(frames), int(every)
+        if frames < 0:
+            raise UsageError(f"render: frames must be 0 or more, got {frames}")
+        if every < 1:
+            raise UsageError(f"render: every must be 1 or more, got {every}")
+        readable = [p for p in self.shadertoy.passes if p == "Image" or p.startswith("Buffer ")]
+        if pass_ not in readable:  # said before any frame renders
+            raise UsageError(f'render: no pass "{pass_}" to read (this shadertoy has {", ".join(readable)})')
+        step_read = self._native.step_read_uint8 if _dtype_name(dtype) == "uint8" else self._native.step_read_float32
+        for n in range(frames):
+            events = self._events(mouse, keys, ()) if n == 0 else []
+            if n % every == 0 or n == frames - 1:
+                yield step_read(events, pass_)  # (iFrame, array), in one trip to the GL thread
+            else:
+                self._native.step(events, None, 0.0, 0.0)
+
+    def render_sound(self, seconds=0.0):
+        """The Sound pass (mainSound) as the site renders it: float32 samples of shape (n, 2), stereo
+        at 44100 Hz, ``seconds`` long (0: the site's 180 s)."""
+        return self._native.render_sound(float(seconds))
+
+    def reload(self, shadertoy=None):
+        """Switches to the shadertoy's files as they are now (`shadertoy`: loaded anew from this
+        session's path when left out) without restarting: changed passes are recompiled, a pass
+        that fails keeps its last good program, a changed structure keeps the buffers that still
+        exist; iFrame and time go on. Returns a Reloaded (applied, structure_changed, recompiled,
+        problems: Diagnostics, empty when everything runs). Loading problems raise as load() does."""
+        if shadertoy is None:
+            shadertoy = load(self.shadertoy.path)
+        elif not isinstance(shadertoy, Shadertoy):
+            shadertoy = load(shadertoy)
+        outcome = self._native.reload(shadertoy)
+        if outcome.applied:
+            self.shadertoy = shadertoy
+        return outcome
+
+    def restart(self):
+        """iFrame back to 0 and every buffer cleared (the site's restart); mouse and keys stay."""
+        self._native.restart()
+
+    def resize(self, size):
+        """A new canvas size; buffers keep their content bottom-left, iFrame goes on."""
+        self._native.resize(*_size(size))
+
+    # --- state -----------------------------------------------------------------------------------
+
+    @property
+    def next_frame(self):
+        """iFrame of the next frame (the number of frames rendered since the start or a restart)."""
+        return self._native.next_frame
+
+    @property
+    def size(self):
+        return (self._native.width, self._native.height)
+
+    @property
+    def fps(self):
+        return self._fps
+
+    @property
+    def notices(self):
+        """Diagnostics about the run so far (the shadertoy's own notices from loading, stand-ins used,
+        passes preprocessed), oldest first."""
+        return self._native.notices
+
+    @property
+    def backend(self):
+        """The GL backend ("EGL surfaceless; OpenGL ES 3.2 Mesa ...")."""
+        return self._native.backend
+
+    def close(self):
+        """Frees the session's GL context and objects now; later calls raise UsageError."""
+        self._native.close()
+
+    @property
+    def closed(self):
+        return self._native.closed
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __repr__(self):
+        state = "closed" if self.closed else f"{self.size[0]}x{self.size[1]}, next frame {self.next_frame}"
+        return f"<toyhost.Session '{self.shadertoy.name}' {state}>"
+
+    # --- input -----------------------------------------------------------------------------------
+
+    def _events(self, mouse, keys, events):
+        out = []
+        if mouse is False:
+            if self._mouse_held:
+                out.append(InputEvent.mouse_up())
+            self._mouse_held = False
+        elif mouse is not None:
+            x, y = mouse
+            out.append(InputEvent.mouse_move(x, y) if self._mouse_held else InputEvent.mouse_down(x, y))
+            self._mouse_held = True
+        if keys is not None:
+            held = {key_code(k) for k in ([keys] if isinstance(keys, (str, int)) else keys)}
+            out += [InputEvent.key_up(k) for k in sorted(self._keys_held - held)]
+            out += [InputEvent.key_down(k) for k in sorted(held - self._keys_held)]
+            self._keys_held = held
+        for event in events:
+            if not isinstance(event, InputEvent):
+                raise TypeError(f"events: expected toyhost.InputEvent, got {event!r}")
+            out.append(event)
+        return out
+
+
+def _size(size):
+    try:
+        width, height = size
+        return int(width), int(height)
+    except (TypeError, ValueError):
+        raise UsageError(f"size: expected (width, height), got {size!r}") from None
+
+
+def _dtype_name(dtype):
+    if dtype == "uint8" or dtype == "float32":
+        return dtype
+    import numpy
+
+    try:
+        name = numpy.dtype(dtype).name
+    except TypeError:
+        raise UsageError(f"dtype: uint8 or float32, got {dtype!r}") from None
+    if name not in ("uint8", "float32"):
+        raise UsageError(f"dtype: uint8 or float32, got {name}")
+    return name

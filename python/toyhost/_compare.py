@@ -1,0 +1,115 @@
+"""toyhost.compare: two shadertoys rendered with the same inputs and compared frame by frame
+(PSNR, largest and mean difference, the first differing frame and pixel, difference images), and
+compare_images for two frames already in numpy. For ports ("does my port still match the
+original?") and for scoring generated shader code against a reference."""
+
+import math
+import os
+from dataclasses import dataclass, field
+from typing import List, Optional
+
+from . import _toyhost
+
+
+@dataclass
+class FrameDifference:
+    """One frame of A against B. Samples are 8-bit levels (Image: R, G, B; a buffer: R, G, B, A).
+    ``psnr`` is in dB, peak 255, ``math.inf`` when identical; ``first_x``/``first_y`` the first
+    differing pixel scanning from the top row (None when none); ``diff_image`` |a - b| * gain as
+    (height, width, 4) uint8 when kept, else None."""
+    frame: int
+    time: float
+    psnr: float
+    max_diff: int
+    mean_diff: float
+    differing_pixels: int
+    first_x: Optional[int]
+    first_y: Optional[int]
+    within_tolerance: bool
+    diff_image: object = field(default=None, repr=False)
+
+
+@dataclass
+class CompareReport:
+    """Every compared frame, and the summary: the first frame beyond the tolerance (None: all
+    equal), the worst PSNR, the largest difference. ``equal`` is what `toyhost compare`'s exit
+    code says."""
+    width: int
+    height: int
+    fps: float
+    start_time: float
+    pass_: str
+    frames: List[FrameDifference]
+    first_differing_frame: Optional[int]
+    min_psnr: float
+    max_diff: int
+
+    @property
+    def equal(self):
+        return self.first_differing_frame is None
+
+    def __str__(self):
+        psnr = "inf" if math.isinf(self.min_psnr) else f"{self.min_psnr:.2f}"
+        verdict = "equal" if self.equal else f"first differs at frame {self.first_differing_frame}"
+        return (f"{self.pass_} {self.width}x{self.height}, {len(self.frames)} frames: min PSNR {psnr} dB, "
+                f"max difference {self.max_diff}; {verdict}")
+
+
+def _frame(values):
+    return FrameDifference(**values)
+
+
+def compare(a, b, frames=None, size=None, fps=None, start_time=0.0, date=None, pass_="Image", min_psnr=None,
+            max_diff=None, mouse=None, mouse_script=None, key_script=None, keep_diff_images=False, diff_gain=0,
+            stop_at_first_difference=False, media_folders=(), media_files=None, frame_timeout=0.0,
+            compile_timeout=0.0):
+    """Renders ``a`` and ``b`` (Shadertoys, or anything toyhost.load takes) headless with the same
+    size, fps, start time, date and inputs, and compares ``pass_`` after every frame.
+
+    Left out, ``frames``, ``size`` and ``fps`` come from A's manifest defaults, then B's, then
+    toyhost's; ``date`` is fixed to now once for both. Frames count as equal when identical, or
+    within ``min_psnr`` (dB) and/or ``max_diff`` (levels) when given. ``mouse=(x, y)`` presses the
+    button there before frame 0 and holds it (the CLI's --mouse); ``mouse_script``/``key_script``
+    are the CLI's JSON input scripts. ``keep_diff_images`` keeps a difference image (scaled by
+    ``diff_gain``, 0: toyhost's default) for every frame beyond the tolerance;
+    ``stop_at_first_difference`` ends the run there. ``media_folders``, ``media_files``,
+    ``frame_timeout`` and ``compile_timeout`` are a Session's, for both. Returns a CompareReport; problems (a shadertoy
+    that does not compile, a pass one of them lacks) raise toyhost errors naming the file."""
+    from . import Shadertoy, UsageError, load
+
+    a = a if isinstance(a, Shadertoy) else load(a)
+    b = b if isinstance(b, Shadertoy) else load(b)
+    width, height = (0, 0)
+    if size is not None:
+        try:
+            width, height = (int(v) for v in size)
+        except (TypeError, ValueError):
+            raise UsageError(f"size: expected (width, height), got {size!r}") from None
+    if fps is not None and not float(fps) > 0:
+        raise UsageError(f"fps: must be more than 0, got {fps}")
+    if frames is not None and int(frames) < 1:
+        raise UsageError(f"frames: must be 1 or more, got {frames}")
+    report = _toyhost.compare(
+        a, b, width, height, float(fps or 0), float(start_time), date or "", [os.fspath(f) for f in media_folders],
+        [(str(k), os.fspath(v)) for k, v in (media_files or {}).items()], float(frame_timeout), float(compile_timeout),
+        int(frames or 0), pass_,
+        None if min_psnr is None else float(min_psnr), None if max_diff is None else int(max_diff),
+        None if mouse is None else (float(mouse[0]), float(mouse[1])),
+        os.fspath(mouse_script) if mouse_script else "", os.fspath(key_script) if key_script else "",
+        bool(keep_diff_images), int(diff_gain), bool(stop_at_first_difference))
+    report["frames"] = [_frame(f) for f in report["frames"]]
+    return CompareReport(**report)
+
+
+def compare_images(a, b, channels=3, min_psnr=None, max_diff=None, diff_image=False, diff_gain=0):
+    """Two frames as toyhost.Session.frame() gives them ((height, width, 4) uint8) compared as
+    toyhost compare does: ``channels`` 3 compares R, G, B (as for Image, whose alpha is always 1),
+    4 all four. Returns a FrameDifference (frame and time 0); ``diff_image`` asks for the
+    difference image."""
+    import numpy
+
+    first = numpy.ascontiguousarray(a)
+    second = numpy.ascontiguousarray(b)
+    return _frame(_toyhost.compare_images(first, second, int(channels), None if min_psnr is None else float(min_psnr),
+                                          None if max_diff is None else int(max_diff), bool(diff_image),
+                                          int(diff_gain)))
