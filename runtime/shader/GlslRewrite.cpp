@@ -253,14 +253,21 @@ std::string_view webglOnlyIdentifierRename(std::string_view word) {
     return {};
 }
 
-std::string rewriteLikeWebGL(std::string_view text) {
+std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions promote) {
     const std::vector<GlslToken> tokens = tokenizeGlsl(text);
     std::vector<Edit> edits;
-    for (const GlslToken& t : tokens)
-        if (t.kind == Kind::Identifier)
-            if (std::string_view to = webglOnlyIdentifierRename(t.text); !to.empty())
-                edits.push_back({t.offset, t.text.size(), std::string(to)});
-    ZeroInitialiser(tokens).run(edits);
+    std::size_t directiveAt = 0;  // the index of the `#` of the current directive line
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+        const GlslToken& t = tokens[i];
+        if (t.directiveStart) directiveAt = i;
+        if (t.kind != Kind::Identifier) continue;
+        if (std::string_view to = webglOnlyIdentifierRename(t.text); promote.rename && !to.empty())
+            edits.push_back({t.offset, t.text.size(), std::string(to)});
+        const bool promoted = (t.text == "lowp" && promote.lowp) || (t.text == "mediump" && promote.mediump);
+        if (promoted && (!t.directive || (directiveAt + 1 < i && tokens[directiveAt + 1].text == "define" && i > directiveAt + 2)))
+            edits.push_back({t.offset, t.text.size(), "highp"});
+    }
+    if (promote.zeroInit) ZeroInitialiser(tokens).run(edits);
     std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) {
         return a.offset != b.offset ? a.offset < b.offset : a.erase < b.erase;  // insertions first
     });

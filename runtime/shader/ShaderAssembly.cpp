@@ -44,21 +44,24 @@ bool definesMacro(std::string_view code, std::string_view name) {
 // The precision lines every pass starts with. Desktop GPUs, where shadertoys are written and
 // checked, compute lowp and mediump in 32 bits; Mesa (llvmpipe included) lowers them to 16 bits,
 // which breaks simulations that read float buffers through the default lowp sampler2D. The
-// qualifiers are promoted with macros, except where the user's code defines the same macro
-// itself (its `#define lowp` would be a redefinition; the sampler precisions still hold).
-void writePrecision(std::ostringstream& h, const ShaderInputs& in) {
+// qualifiers are written highp by the source rewrite (not by macros: in WebGL `#ifdef lowp` is
+// false), except where the user's code defines the same macro itself. Two empty lines keep the
+// header's line numbers where the former macros were.
+GlslRewriteOptions promotion(const ShaderInputs& in) {
+    GlslRewriteOptions p;
+    p.lowp = !(definesMacro(in.code, "lowp") || (in.common && definesMacro(*in.common, "lowp")));
+    p.mediump = !(definesMacro(in.code, "mediump") || (in.common && definesMacro(*in.common, "mediump")));
+    return p;
+}
+
+void writePrecision(std::ostringstream& h) {
     h << "#version 300 es\n"
          "#line " << kHeaderLineBase + 2 << "\n"
          "precision highp float;\n"
          "precision highp int;\n"
          "precision mediump sampler3D;\n"
-         "precision highp sampler2D; precision highp samplerCube; precision highp sampler3D;\n";
-    for (const char* qualifier : {"lowp", "mediump"}) {
-        const bool userDefines = definesMacro(in.code, qualifier) || (in.common && definesMacro(*in.common, qualifier));
-        // A line either way keeps the header's line numbers fixed.
-        if (userDefines) h << "\n";
-        else h << "#define " << qualifier << " highp\n";
-    }
+         "precision highp sampler2D; precision highp samplerCube; precision highp sampler3D;\n"
+         "\n\n";
 }
 
 void writeChannels(std::ostringstream& h, const ShaderInputs& in, bool structs) {
@@ -75,7 +78,7 @@ void writeChannels(std::ostringstream& h, const ShaderInputs& in, bool structs) 
 // written as two 16-bit values in the four bytes of an RGBA8 pixel.
 std::string makeSoundHeader(const ShaderInputs& in) {
     std::ostringstream h;
-    writePrecision(h, in);
+    writePrecision(h);
     h << "#define HW_PERFORMANCE 1\n"
          "uniform float     iChannelTime[4];\n"
          "uniform float     iTimeOffset;\n"
@@ -103,7 +106,7 @@ std::string makeHeader(const ShaderInputs& in) {
     const bool image = in.pass == PassId::Image;
     const bool cube = in.pass == PassId::CubeA;
     std::ostringstream h;
-    writePrecision(h, in);
+    writePrecision(h);
     h << "#define HW_PERFORMANCE 1\n"
          "uniform vec3      iResolution;\n"
          "uniform float     iTime;\n"
@@ -166,21 +169,25 @@ std::string makeHeader(const ShaderInputs& in) {
 
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     AssembledShader out;
-    out.text = makeHeader(inputs);
+    const std::string header = makeHeader(inputs);
+    std::string user;
     if (inputs.common) {
         // Common is pasted followed by a newline.
         out.hasCommon = true;
-        out.text += "#line " + std::to_string(kCommonLineBase + 1) + "\n";
-        out.text += *inputs.common;
-        out.text += '\n';
+        user += "#line " + std::to_string(kCommonLineBase + 1) + "\n";
+        user += *inputs.common;
+        user += '\n';
     }
-    out.text += "#line 1\n";
-    out.text += inputs.code;
+    user += "#line 1\n";
+    user += inputs.code;
     // WebGL zero-initialises locals at every declaration and `out` parameters at every call;
-    // the rewrite keeps every line where it was. The plain text is kept for a driver that
-    // refuses the rewritten one (a declaration the rewrite misread).
-    out.plainText = out.text;
-    out.text = rewriteLikeWebGL(out.text);
+    // the rewrite (of the user's text, Common and pass together) keeps every line where it was.
+    // The text without it is kept for a driver that refuses the rewritten one (a declaration the
+    // rewrite misread).
+    GlslRewriteOptions options = promotion(inputs);
+    out.text = header + rewriteLikeWebGL(user, options);
+    options.zeroInit = options.rename = false;
+    out.plainText = header + rewriteLikeWebGL(user, options);
     return out;
 }
 
