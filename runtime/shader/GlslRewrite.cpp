@@ -49,6 +49,7 @@ public:
     // The edits, or none when the braces do not balance.
     bool run(std::vector<Edit>& edits) {
         int nesting = 0;  // ( and [
+        declaration(0);
         for (std::size_t k = 0; k < code_.size(); ++k) {
             const std::string_view t = code_[k].text;
             if (t == "(" || t == "[") ++nesting;
@@ -71,8 +72,10 @@ public:
                 const Frame closed = stack_.back();
                 stack_.pop_back();
                 if (closed.scope == Scope::Struct && !closed.name.empty() && stack_.empty()) zeroFunction(closed, k);
-                if (inCode() && nesting == 0) declaration(k + 1);
+                if ((inCode() || (stack_.empty() && closed.scope == Scope::Function)) && nesting == 0) declaration(k + 1);
             } else if ((t == ";" || t == ":") && nesting == 0 && inCode()) {
+                declaration(k + 1);
+            } else if (t == ";" && nesting == 0 && stack_.empty()) {
                 declaration(k + 1);
             }
         }
@@ -161,6 +164,9 @@ private:
         if (k >= n || code_[k].kind != Kind::Identifier) return;
         const std::string zero = zeroOf(code_[k].text);
         if (zero.empty()) return;
+        const bool global = stack_.empty();
+        const bool builtin = zero.compare(0, 9, "toyhost_z") != 0;
+        std::string pending;  // for globals_, once the statement reads as a declaration
         ++k;
         bool typeArray = false;
         if (k < n && code_[k].text == "[") typeArray = true, k = skipBrackets(k);
@@ -183,7 +189,10 @@ private:
                 }
                 if (k >= n) return;
             } else if (code_[k].text == "," || code_[k].text == ";") {
-                if (array) arrays.push_back(name);
+                // A global's initialiser must be constant: arrays and structs are zeroed when the
+                // entry function starts (once per invocation, as WebGL initialises globals).
+                if (global && (array || !builtin)) pending += array ? zeroLoop(name, zero) : std::string(name) + "=" + zero + ";";
+                else if (array) arrays.push_back(name);
                 else found.push_back({end(k - 1), 0, "=" + zero});
             } else {
                 return;  // not a declaration
@@ -195,6 +204,7 @@ private:
         for (std::string_view a : arrays) loops += zeroLoop(a, zero);
         if (!loops.empty()) found.push_back({end(k), 0, loops});
         edits_.insert(edits_.end(), found.begin(), found.end());
+        globals_ += pending;
     }
 
     // A function definition whose `{` is at `brace`: each `out` parameter is set to zero first.
@@ -236,6 +246,8 @@ private:
             }
             k = stop + 1;
         }
+        const std::string_view function = open > 0 ? code_[open - 1].text : std::string_view{};
+        if (function == "mainImage" || function == "mainCubemap" || function == "mainSound") zeroing += globals_;
         if (!zeroing.empty()) add(end(brace), zeroing);
     }
 
@@ -244,6 +256,7 @@ private:
     std::set<std::string_view> structs_;
     std::vector<Frame> stack_;
     std::vector<Edit> edits_;
+    std::string globals_;  // zeroing of the global arrays and structs declared so far
 };
 
 }  // namespace

@@ -66,6 +66,14 @@ TEST(WebglSemantics, LocalArraysAreZeroAtEveryCall) {
               64);
 }
 
+// Browser: globals without an initialiser are zero (llvmpipe leaves vectors, arrays and structs
+// undefined even with glsl_zero_init): 0.25 -> 64.
+TEST(WebglSemantics, GlobalsWithoutInitialiserAreZero) {
+    EXPECT_EQ(redOf("zi_globals", "struct L { vec3 e; float k; };\nfloat g; vec3 v; L l; float a[3];\n"
+                                  "void mainImage(out vec4 o, in vec2 fc) { o = vec4(g + v.x + l.k + l.e.y + a[1] + 0.25, 0.0, 0.0, 1.0); }"),
+              64);
+}
+
 TEST(WebglSemantics, PackedIsAnIdentifier) {
     EXPECT_EQ(redOf("kw_packed", "void mainImage(out vec4 o, in vec2 fc) { float packed = 0.25; o = vec4(packed, 0.0, 0.0, 1.0); }"),
               64);

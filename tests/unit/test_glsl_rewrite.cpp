@@ -64,9 +64,20 @@ TEST(GlslRewrite, OutParametersAreZeroedAtEveryCall) {
     EXPECT_EQ(rewriteLikeWebGL(inout), inout);
 }
 
+TEST(GlslRewrite, GlobalsAreZeroInlineOrWhenTheEntryFunctionStarts) {
+    // A global's initialiser must be constant: scalars, vectors and matrices inline; arrays and
+    // structs in mainImage (mainCubemap, mainSound), as WebGL initialises globals once per pixel.
+    EXPECT_EQ(rewriteLikeWebGL("struct S { float a; };\nvec3 g, h = vec3(1); S s; float a[2];\n"
+                               "void mainImage(out vec4 o, vec2 f) {}"),
+              "struct S { float a; }; S toyhost_zS(){S z;z.a=float(0);return z;}\nvec3 g=vec3(0), h = vec3(1); S s; float a[2];\n"
+              "void mainImage(out vec4 o, vec2 f) {o=vec4(0);s=toyhost_zS();"
+              "for(int toyhost_i=0;toyhost_i<a.length();++toyhost_i)a[toyhost_i]=float(0);}");
+    EXPECT_EQ(rewriteLikeWebGL("float f(){ return 1.; }\nfloat g;"), "float f(){ return 1.; }\nfloat g=float(0);");
+}
+
 TEST(GlslRewrite, LeavesAloneWhatIsNotALocalWithoutInitialiser) {
     for (const std::string code : {
-             "const float k = 1.;\nuniform float u;\nfloat g;\nin vec2 p;\nout vec4 o;\n",
+             "const float k = 1.;\nuniform float u;\nin vec2 p;\nout vec4 o;\nfloat f(float x);\nlayout(location = 0) out vec4 c;\n",
              "void f(){ const float k = 2.; for (int i; i < 3; i++) {} x = 1.; return; }",
              "void f(){ precision highp float; vec3(1.); a.b = c; y++; }",
              "void f(){ float x = 1.; if (x > 0.) { x = 2.; } else { x = c ? a : b; } }",
