@@ -261,9 +261,18 @@ private:
 
 }  // namespace
 
+// Every GLSL ES 3.00 reserved and extension word compiled as a local's name on both sides
+// (webref, headless Chromium with ANGLE, against Mesa 22.3): these are the ones browsers accept
+// and Mesa refuses. The rest are refused by both (dvec2, union, ...) or accepted by both.
 std::string_view webglOnlyIdentifierRename(std::string_view word) {
-    if (word == "packed") return "toyhost_packed";
-    return {};
+    static const std::map<std::string_view, std::string_view> renames = {
+        {"packed", "toyhost_packed"},   {"dmat2", "toyhost_dmat2"},     {"dmat3", "toyhost_dmat3"},
+        {"dmat4", "toyhost_dmat4"},     {"dmat2x2", "toyhost_dmat2x2"}, {"dmat2x3", "toyhost_dmat2x3"},
+        {"dmat2x4", "toyhost_dmat2x4"}, {"dmat3x2", "toyhost_dmat3x2"}, {"dmat3x3", "toyhost_dmat3x3"},
+        {"dmat3x4", "toyhost_dmat3x4"}, {"dmat4x2", "toyhost_dmat4x2"}, {"dmat4x3", "toyhost_dmat4x3"},
+        {"dmat4x4", "toyhost_dmat4x4"}};
+    const auto found = renames.find(word);
+    return found == renames.end() ? std::string_view{} : found->second;
 }
 
 std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions promote) {

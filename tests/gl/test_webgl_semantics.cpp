@@ -74,8 +74,12 @@ TEST(WebglSemantics, GlobalsWithoutInitialiserAreZero) {
               64);
 }
 
-TEST(WebglSemantics, PackedIsAnIdentifier) {
+// Words Mesa reserves and browsers accept (found by compiling every reserved word on both sides).
+TEST(WebglSemantics, PackedAndDmatAreIdentifiers) {
     EXPECT_EQ(redOf("kw_packed", "void mainImage(out vec4 o, in vec2 fc) { float packed = 0.25; o = vec4(packed, 0.0, 0.0, 1.0); }"),
+              64);
+    EXPECT_EQ(redOf("kw_dmat", "#define M dmat3\nfloat dmat2x4(float x) { return x; }\n"
+                               "void mainImage(out vec4 o, in vec2 fc) { float M = 0.25; o = vec4(dmat2x4(dmat3), 0.0, 0.0, 1.0); }"),
               64);
 }
 

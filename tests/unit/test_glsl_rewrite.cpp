@@ -114,4 +114,6 @@ TEST(GlslRewrite, WordsMesaReservesAreRenamedEverywhere) {
     EXPECT_EQ(rewriteLikeWebGL("#define P packed\nfloat f(){ float packed = 1.; return packed * P; }"),
               "#define P toyhost_packed\nfloat f(){ float toyhost_packed = 1.; return toyhost_packed * P; }");
     EXPECT_EQ(webglOnlyIdentifierRename("packedx"), "");
+    EXPECT_EQ(webglOnlyIdentifierRename("dmat3x2"), "toyhost_dmat3x2");
+    EXPECT_EQ(webglOnlyIdentifierRename("dvec2"), "");  // refused by browsers too
 }
