@@ -190,6 +190,32 @@ TEST(EveryPassGraph, ABuffersWrapIsTheLastReadingChannelsForTheWholeShader) {
     EXPECT_EQ(planOf(g, PassId::Image).channels[1].sampler.filter, Filter::Linear);
 }
 
+// The site creates an export's passes as listed and each pass's inputs as listed; the last
+// created channel reading a buffer sets its wrap. Render order would say clamp here (Image's
+// channel 0, created last in render order); the export lists Image first and Buffer A's repeat
+// input last, so the site shows repeat.
+TEST(EveryPassGraph, InAnExportTheWrapFollowsTheListedOrderOfPassesAndInputs) {
+    ManifestDesc m;
+    PassDesc a = passOf(PassId::BufferA), image = passOf(PassId::Image);
+    a.channels[0] = channelOf(ChannelKind::Buffer, 0, Filter::Linear, Wrap::Repeat);
+    a.channels[2] = channelOf(ChannelKind::Buffer, 0, Filter::Linear, Wrap::Clamp);
+    image.channels[0] = channelOf(ChannelKind::Buffer, 0, Filter::Linear, Wrap::Clamp);
+    image.listedAt = 0;
+    a.listedAt = 1;
+    a.channels[2].listedAt = 0;  // iChannel2 listed before iChannel0
+    a.channels[0].listedAt = 1;
+    m.passes = {a, image};
+    const PassGraph g = buildPassGraph(m);
+    EXPECT_EQ(planOf(g, PassId::Image).channels[0].sampler.wrap, Wrap::Repeat);
+    EXPECT_EQ(planOf(g, PassId::BufferA).channels[2].sampler.wrap, Wrap::Repeat);
+    // Without export places (a manifest): render order, channel order.
+    for (PassDesc& p : m.passes) {
+        p.listedAt = -1;
+        for (ChannelDesc& ch : p.channels) ch.listedAt = -1;
+    }
+    EXPECT_EQ(planOf(buildPassGraph(m), PassId::Image).channels[0].sampler.wrap, Wrap::Clamp);
+}
+
 // ---- Manifests ---------------------------------------------------------------------------------
 
 TEST(EveryPassManifest, CubeAAndSoundPassesWithEveryChannelSource) {
