@@ -65,7 +65,9 @@ void judgeOutput(const Player& player, ProbeResult& result, std::optional<std::a
 
 }  // namespace
 
-ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) {
+namespace {
+
+ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& settings) {
     ProbeResult result;
     result.file = exportFile.filename().string();
     // An export is known by its file name (<id>.json); a manifest folder by the folder's name.
@@ -155,6 +157,27 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
     return result;
 }
 
+}  // namespace
+
+ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) {
+    ProbeResult first = probeAtOneSize(exportFile, settings);
+    if (!first.degenerate() || !first.compiled || !first.glError.empty()) return first;
+    // One colour at the small size: shaders drawing at fixed pixel positions (a layout for
+    // 800x450, a 100 px ring) can miss a 160x90 canvas. Render the second size before calling
+    // the frame empty.
+    ProbeSettings larger = settings;
+    larger.width = std::max(settings.width * 2, kSecondWidth);
+    larger.height = std::max(settings.height * 2, kSecondHeight);
+    ProbeResult second = probeAtOneSize(exportFile, larger);
+    second.secondSize = std::to_string(larger.width) + "x" + std::to_string(larger.height);
+    if (second.passed()) {
+        second.msPerFrame = first.msPerFrame;  // the table's timings stay at one size
+        return second;
+    }
+    first.secondSize = second.secondSize;
+    return first;
+}
+
 nlohmann::json toJson(const ProbeResult& r) {
     return {{"file", r.file},
             {"id", r.id},
@@ -172,6 +195,7 @@ nlohmann::json toJson(const ProbeResult& r) {
             {"stand_ins", r.standIns},
             {"notices", r.notices},
             {"error", r.error},
+            {"second_size", r.secondSize},
             {"passed", r.passed()}};
 }
 
@@ -193,6 +217,7 @@ ProbeResult fromJson(const nlohmann::json& j) {
     r.standIns = j.value("stand_ins", std::vector<std::string>{});
     r.notices = j.value("notices", std::vector<std::string>{});
     r.error = j.value("error", "");
+    r.secondSize = j.value("second_size", "");
     return r;
 }
 

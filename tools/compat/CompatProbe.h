@@ -13,6 +13,10 @@
 
 namespace toyhost::compat {
 
+// The size a frame that stays one colour is rendered at a second time, at least.
+inline constexpr int kSecondWidth = 320;
+inline constexpr int kSecondHeight = 180;
+
 struct ProbeSettings {
     int width = 160;
     int height = 90;
@@ -42,6 +46,7 @@ struct ProbeResult {
     std::vector<std::string> standIns;     // stock media names replaced by stand-ins
     std::vector<std::string> notices;
     std::string error;                     // why it did not load, compile or render
+    std::string secondSize;                // "320x180" when the first size gave one colour and this one was tried
 
     // The picture is judged; NaN/Inf in a buffer is a note (packed data, masked pixels and a
     // normalize(0) outside the drawn area are NaN with a right picture).

@@ -121,6 +121,7 @@ std::string outputVerdict(const ProbeResult& r) {
     } else {
         verdict = problems.empty() ? "ok" : joined(problems);
     }
+    if (!r.secondSize.empty()) verdict += r.passed() ? " (at " + r.secondSize + ")" : " (also at " + r.secondSize + ")";
     // NaN/Inf in a buffer: a note with its pass and count, not a verdict.
     if (!r.nonFiniteBuffers.empty()) verdict += "; note: " + joined(r.nonFiniteBuffers);
     return verdict;
@@ -146,7 +147,8 @@ std::string markdown(const std::vector<ProbeResult>& results, const ProbeSetting
        << "shader passes when it compiles, renders without a GL error, and its last frame is not degenerate (Image "
        << "one unchanging colour; a full-screen colour that changes over time is a valid flash). NaN/Inf in a buffer "
        << "is a note with its pass and count, not a failure. ms/frame is CPU time. An Image still one colour after those frames gets more "
-       << "frames, up to iTime " << s.patienceSeconds << " s, for fade-ins.\n\n"
+       << "frames, up to iTime " << s.patienceSeconds << " s, for fade-ins, and then a second run at 320x180 (shaders "
+       << "drawing at fixed pixel positions).\n\n"
        << "**" << passed << " of " << results.size() << " pass ("
        << (results.empty() ? 0 : (100 * passed) / static_cast<long>(results.size())) << "%).**\n\n"
        << "| id | name | passes | compiled | ms/frame | output | stand-ins | notes |\n"
