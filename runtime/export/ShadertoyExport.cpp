@@ -199,9 +199,15 @@ private:
         out.source = path_;
         out.sourceName = label_ + " [" + passName(*id) + "]";
         out.code = code;
+        out.listedAt = static_cast<int>(index);
         if (auto inputs = pass.find("inputs"); inputs != pass.end() && inputs->is_array())
-            for (size_t k = 0; k < inputs->size(); ++k)
+            for (size_t k = 0; k < inputs->size(); ++k) {
                 readInput(out, (*inputs)[k], place + ".inputs[" + std::to_string(k) + "]");
+                if (const json& in = (*inputs)[k]; in.is_object() && in.contains("channel") && in["channel"].is_number_integer()) {
+                    const int c = in["channel"].get<int>();
+                    if (c >= 0 && c < kChannelCount && out.channels[c].listedAt < 0) out.channels[c].listedAt = static_cast<int>(k);
+                }
+            }
         else if (inputs != pass.end() && !inputs->is_null())
             problem(place + ".inputs", "must be an array of inputs, not " + describeJsonValue(*inputs),
                     Code::ExportValue, *id);

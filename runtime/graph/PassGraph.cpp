@@ -1,6 +1,8 @@
 #include "graph/PassGraph.h"
 
+#include <algorithm>
 #include <optional>
+#include <vector>
 
 namespace toyhost {
 
@@ -53,14 +55,32 @@ PassGraph buildPassGraph(const ManifestDesc& manifest) {
     // (or Cube A's) filter is set on its texture object by each channel reading it, channel 0 to 3,
     // just before the draw, so in one pass the highest channel reading a texture decides the
     // filter for all of them. Wrap is set on both textures of a buffer when a channel reading it is
-    // created, so the last such channel of the whole shader (render order here) decides it.
+    // created, so the last such channel of the whole shader decides it: in an export, passes as
+    // listed and each pass's inputs as listed (the order the site creates them in); in a manifest,
+    // render order and channel order.
     std::array<std::optional<Wrap>, kBufferCount + 1> lastWrap;  // [4]: Cube A
     auto slotOf = [](const ChannelPlan& plan) { return plan.kind == ChannelKind::CubeBuffer ? kBufferCount : plan.buffer; };
+    struct Created {
+        int pass, passOrder, channel, channelOrder;
+    };
+    std::vector<Created> created;
+    for (size_t i = 0; i < graph.passes.size(); ++i)
+        for (int c = 0; c < kChannelCount; ++c) {
+            const PassDesc& pass = manifest.passes[i];
+            const int passOrder = pass.listedAt >= 0 ? pass.listedAt : static_cast<int>(i);
+            created.push_back({static_cast<int>(i), passOrder, c, pass.channels[c].listedAt >= 0 ? pass.channels[c].listedAt : c});
+        }
+    std::stable_sort(created.begin(), created.end(), [](const Created& a, const Created& b) {
+        return a.passOrder != b.passOrder ? a.passOrder < b.passOrder : a.channelOrder < b.channelOrder;
+    });
+    for (const Created& at : created) {
+        const ChannelPlan& plan = graph.passes[at.pass].channels[at.channel];
+        if (plan.kind == ChannelKind::Buffer || plan.kind == ChannelKind::CubeBuffer) lastWrap[slotOf(plan)] = plan.sampler.wrap;
+    }
     for (PassPlan& pass : graph.passes)
         for (int c = 0; c < kChannelCount; ++c) {
             ChannelPlan& low = pass.channels[c];
             if (low.kind != ChannelKind::Buffer && low.kind != ChannelKind::CubeBuffer) continue;
-            lastWrap[slotOf(low)] = low.sampler.wrap;
             for (int d = kChannelCount - 1; d > c; --d) {
                 const ChannelPlan& high = pass.channels[d];
                 if (high.kind == low.kind && high.buffer == low.buffer && high.age == low.age) {

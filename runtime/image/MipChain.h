@@ -22,4 +22,16 @@ struct MipLevel {
 // column is left out, as a 2x2 box does).
 std::vector<MipLevel> boxMipChain(std::span<const std::uint8_t> rgba, int width, int height);
 
+struct VolumeMipLevel {
+    int width = 0;
+    int height = 0;
+    int depth = 0;
+    std::vector<std::uint8_t> voxels;  // `channels` bytes per voxel, x fastest, then y, then z
+};
+
+// Levels 1..n of a volume of `channels` (1..4) bytes per voxel, down to 1x1x1, with the same
+// exact box filter in three dimensions (2x2x2, fewer along a side that is already 1).
+std::vector<VolumeMipLevel> boxMipChain3D(std::span<const std::uint8_t> voxels, int width, int height, int depth,
+                                          int channels);
+
 }  // namespace toyhost

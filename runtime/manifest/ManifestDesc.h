@@ -41,6 +41,9 @@ struct ChannelDesc {
     std::filesystem::path file;      // ChannelKind::ImageFile: absolute path
     std::string media;               // StockMedia and media kinds: the id as written ("/media/a/<hash>.<ext>")
     SamplerDesc sampler;
+    // Its place in its pass's list of inputs in an export (the site creates inputs in that order,
+    // which decides the buffer wrap quirk, graph/PassGraph); -1 outside exports.
+    int listedAt = -1;
     // The sampler type the header declares. Follows `kind`, except for an unbound channel whose
     // export named a kind toyhost cannot bind (declared as that kind implies, so the shader compiles).
     SamplerType samplerType = SamplerType::Sampler2D;
@@ -52,6 +55,7 @@ struct PassDesc {
     std::string sourceName;          // how messages name it: the path, or "export.json [Buffer A]"
     std::string code;                // its text, read during loading
     std::array<ChannelDesc, kChannelCount> channels;
+    int listedAt = -1;               // its place in an export's list of passes; -1 outside exports
 };
 
 // A manifest's own "defaults": the run settings its author chose (a shader written for 1080p

@@ -50,7 +50,18 @@ InputTexture uploadVolume(const Volume8& volume, const SamplerDesc& sampler) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage3D(GL_TEXTURE_3D, 0, volume.floats ? internalFloat[c] : internal[c], volume.width, volume.height,
                  volume.depth, 0, format[c], volume.floats ? GL_FLOAT : GL_UNSIGNED_BYTE, volume.voxels.data());
-    if (sampler.filter == Filter::Mipmap) glGenerateMipmap(GL_TEXTURE_3D);
+    if (sampler.filter == Filter::Mipmap) {
+        if (volume.floats) {
+            glGenerateMipmap(GL_TEXTURE_3D);
+        } else {
+            // The exact box filter, as for 2D pictures (llvmpipe's glGenerateMipmap comes out
+            // brighter: +0.8 at level 1, +1.4 at level 2 on the stock volumes).
+            int level = 1;
+            for (const VolumeMipLevel& m : boxMipChain3D(volume.voxels, volume.width, volume.height, volume.depth, c + 1))
+                glTexImage3D(GL_TEXTURE_3D, level++, internal[c], m.width, m.height, m.depth, 0, format[c], GL_UNSIGNED_BYTE,
+                             m.voxels.data());
+        }
+    }
     setLevels(GL_TEXTURE_3D, sampler);
     glBindTexture(GL_TEXTURE_3D, 0);
     return out;

@@ -50,18 +50,25 @@ Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassD
     inputs.common = manifest.commonSource ? &manifest.commonCode : nullptr;
     inputs.code = pass.code;
     const AssembledShader fragment = assembleFragmentShader(inputs);
-    ProgramBuild build = buildProgram(fullscreenVertexShader(), fragment.text);
+    ProgramBuild build;
     bool preprocessed = false;
-    if (!build.ok && build.failedStage == ProgramBuild::Stage::Fragment) {
-        // Browsers preprocess the text themselves; where Mesa's preprocessor is the one that
-        // refuses it, their expansion compiles. The driver's own messages stand otherwise.
-        if (Result<std::string> expanded = preprocessLikeBrowsers(fragment.text); expanded) {
-            ProgramBuild retry = buildProgram(fullscreenVertexShader(), *expanded);
-            if (retry.ok) {
-                build = std::move(retry);
-                preprocessed = true;
+    // The rewritten text first (WebGL's semantics); the plain text when the driver refuses it, so
+    // a declaration the rewrite misread never stops a shader. The last try's messages stand: the
+    // user's own text.
+    for (const std::string* text : {&fragment.text, &fragment.plainText}) {
+        build = buildProgram(fullscreenVertexShader(), *text);
+        if (!build.ok && build.failedStage == ProgramBuild::Stage::Fragment) {
+            // Browsers preprocess the text themselves; where Mesa's preprocessor is the one that
+            // refuses it, their expansion compiles. The driver's own messages stand otherwise.
+            if (Result<std::string> expanded = preprocessLikeBrowsers(*text); expanded) {
+                ProgramBuild retry = buildProgram(fullscreenVertexShader(), *expanded);
+                if (retry.ok) {
+                    build = std::move(retry);
+                    preprocessed = true;
+                }
             }
         }
+        if (build.ok || fragment.text == fragment.plainText) break;
     }
     if (!build.ok) {
         const char* name = passName(pass.id);

@@ -1,5 +1,7 @@
 #include "shader/ShaderAssembly.h"
 
+#include "shader/GlslRewrite.h"
+
 #include <algorithm>
 #include <cctype>
 #include <vector>
@@ -42,21 +44,24 @@ bool definesMacro(std::string_view code, std::string_view name) {
 // The precision lines every pass starts with. Desktop GPUs, where shadertoys are written and
 // checked, compute lowp and mediump in 32 bits; Mesa (llvmpipe included) lowers them to 16 bits,
 // which breaks simulations that read float buffers through the default lowp sampler2D. The
-// qualifiers are promoted with macros, except where the user's code defines the same macro
-// itself (its `#define lowp` would be a redefinition; the sampler precisions still hold).
-void writePrecision(std::ostringstream& h, const ShaderInputs& in) {
+// qualifiers are written highp by the source rewrite (not by macros: in WebGL `#ifdef lowp` is
+// false), except where the user's code defines the same macro itself. Two empty lines keep the
+// header's line numbers where the former macros were.
+GlslRewriteOptions promotion(const ShaderInputs& in) {
+    GlslRewriteOptions p;
+    p.lowp = !(definesMacro(in.code, "lowp") || (in.common && definesMacro(*in.common, "lowp")));
+    p.mediump = !(definesMacro(in.code, "mediump") || (in.common && definesMacro(*in.common, "mediump")));
+    return p;
+}
+
+void writePrecision(std::ostringstream& h) {
     h << "#version 300 es\n"
          "#line " << kHeaderLineBase + 2 << "\n"
          "precision highp float;\n"
          "precision highp int;\n"
          "precision mediump sampler3D;\n"
-         "precision highp sampler2D; precision highp samplerCube; precision highp sampler3D;\n";
-    for (const char* qualifier : {"lowp", "mediump"}) {
-        const bool userDefines = definesMacro(in.code, qualifier) || (in.common && definesMacro(*in.common, qualifier));
-        // A line either way keeps the header's line numbers fixed.
-        if (userDefines) h << "\n";
-        else h << "#define " << qualifier << " highp\n";
-    }
+         "precision highp sampler2D; precision highp samplerCube; precision highp sampler3D;\n"
+         "\n\n";
 }
 
 void writeChannels(std::ostringstream& h, const ShaderInputs& in, bool structs) {
@@ -73,7 +78,7 @@ void writeChannels(std::ostringstream& h, const ShaderInputs& in, bool structs) 
 // written as two 16-bit values in the four bytes of an RGBA8 pixel.
 std::string makeSoundHeader(const ShaderInputs& in) {
     std::ostringstream h;
-    writePrecision(h, in);
+    writePrecision(h);
     h << "#define HW_PERFORMANCE 1\n"
          "uniform float     iChannelTime[4];\n"
          "uniform float     iTimeOffset;\n"
@@ -101,7 +106,7 @@ std::string makeHeader(const ShaderInputs& in) {
     const bool image = in.pass == PassId::Image;
     const bool cube = in.pass == PassId::CubeA;
     std::ostringstream h;
-    writePrecision(h, in);
+    writePrecision(h);
     h << "#define HW_PERFORMANCE 1\n"
          "uniform vec3      iResolution;\n"
          "uniform float     iTime;\n"
@@ -160,72 +165,29 @@ std::string makeHeader(const ShaderInputs& in) {
     return h.str();
 }
 
-bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-// Skips spaces and comments from `at`.
-std::size_t skipBlank(std::string_view code, std::size_t at) {
-    while (at < code.size()) {
-        if (std::isspace(static_cast<unsigned char>(code[at]))) ++at;
-        else if (code.compare(at, 2, "//") == 0) at = std::min(code.size(), code.find('\n', at));
-        else if (code.compare(at, 2, "/*") == 0) at = std::min(code.size(), code.find("*/", at + 2) + 2);
-        else break;
-    }
-    return at;
-}
-
 }  // namespace
-
-std::string zeroInitialiseEntryOutput(std::string_view code, std::string_view function) {
-    std::size_t at = 0;
-    while ((at = code.find(function, at)) != std::string_view::npos) {
-        const std::size_t start = at;
-        at += function.size();
-        if ((start > 0 && identifierChar(code[start - 1])) || (at < code.size() && identifierChar(code[at]))) continue;
-        // Inside a comment? Only a line comment on the same line is checked (enough for a
-        // definition; a false match only adds a harmless assignment).
-        const std::size_t lineStart = code.rfind('\n', start) == std::string_view::npos ? 0 : code.rfind('\n', start) + 1;
-        if (code.substr(lineStart, start - lineStart).find("//") != std::string_view::npos) continue;
-        std::size_t open = skipBlank(code, at);
-        if (open >= code.size() || code[open] != '(') continue;
-        const std::size_t close = code.find(')', open);
-        if (close == std::string_view::npos) break;
-        const std::size_t brace = skipBlank(code, close + 1);
-        if (brace >= code.size() || code[brace] != '{') continue;  // a declaration or a call
-        std::string_view first = code.substr(open + 1, close - open - 1);
-        first = first.substr(0, first.find(','));
-        // Words of the first parameter: its qualifier must be `out` (inout is initialised by the
-        // caller), its last word is the name.
-        std::vector<std::string_view> words;
-        for (std::size_t i = 0; i < first.size();) {
-            while (i < first.size() && !identifierChar(first[i])) ++i;
-            std::size_t j = i;
-            while (j < first.size() && identifierChar(first[j])) ++j;
-            if (j > i) words.push_back(first.substr(i, j - i));
-            i = j;
-        }
-        if (words.size() < 3 || std::find(words.begin(), words.end(), "out") == words.end()) return std::string(code);
-        std::string out(code);
-        out.insert(brace + 1, std::string(words.back()) + "=vec4(0.0);");
-        return out;
-    }
-    return std::string(code);
-}
 
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     AssembledShader out;
-    out.text = makeHeader(inputs);
+    const std::string header = makeHeader(inputs);
+    std::string user;
     if (inputs.common) {
         // Common is pasted followed by a newline.
         out.hasCommon = true;
-        out.text += "#line " + std::to_string(kCommonLineBase + 1) + "\n";
-        out.text += *inputs.common;
-        out.text += '\n';
+        user += "#line " + std::to_string(kCommonLineBase + 1) + "\n";
+        user += *inputs.common;
+        user += '\n';
     }
-    out.text += "#line 1\n";
-    // WebGL zero-initialises an `out` parameter the function never writes; Mesa leaves it
-    // undefined (glsl_zero_init does not cover parameters). Same line, so line numbers hold.
-    const char* entry = inputs.sound ? nullptr : inputs.pass == PassId::CubeA ? "mainCubemap" : "mainImage";
-    out.text += entry ? zeroInitialiseEntryOutput(inputs.code, entry) : std::string(inputs.code);
+    user += "#line 1\n";
+    user += inputs.code;
+    // WebGL zero-initialises locals at every declaration and `out` parameters at every call;
+    // the rewrite (of the user's text, Common and pass together) keeps every line where it was.
+    // The text without it is kept for a driver that refuses the rewritten one (a declaration the
+    // rewrite misread).
+    GlslRewriteOptions options = promotion(inputs);
+    out.text = header + rewriteLikeWebGL(user, options);
+    options.zeroInit = options.rename = false;
+    out.plainText = header + rewriteLikeWebGL(user, options);
     return out;
 }
 

@@ -28,16 +28,12 @@ inline constexpr int kHeaderLineBase = 2000000;
 inline constexpr int kCommonLineBase = 1000000;
 
 struct AssembledShader {
-    std::string text;
+    std::string text;        // rewritten to WebGL's semantics (shader/GlslRewrite.h)
+    std::string plainText;   // the same without the rewrite
     bool hasCommon = false;
 };
 
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs);
-
-// `code` with `NAME=vec4(0.0);` inserted right after the `{` of the definition of `function`
-// (mainImage, mainCubemap) when its first parameter is an `out` (as WebGL's translator
-// initialises it); unchanged when there is no such definition.
-std::string zeroInitialiseEntryOutput(std::string_view code, std::string_view function);
 
 // The vertex shader every pass shares: one triangle that covers the viewport.
 const char* fullscreenVertexShader();

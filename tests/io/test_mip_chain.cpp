@@ -42,3 +42,26 @@ TEST(MipChain, EachTexelIsTheRoundedAverageOfTheBlockBelowIt) {
     const std::vector<std::uint8_t> row{10, 10, 10, 10, 20, 20, 20, 20};
     EXPECT_EQ(boxMipChain(row, 2, 1)[0].rgba, (std::vector<std::uint8_t>{15, 15, 15, 15}));
 }
+
+// Volumes: each level averages the 2x2x2 block under each voxel (rounded to nearest), per channel,
+// down to 1x1x1; a side already 1 is not halved again.
+TEST(MipChain, VolumeLevelsAverageTwoByTwoByTwoBlocks) {
+    // 4x2x2, 2 channels: channel 0 is the voxel's index, channel 1 is 200 - 10 * z.
+    std::vector<std::uint8_t> voxels;
+    for (int z = 0; z < 2; ++z)
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 4; ++x) {
+                voxels.push_back(static_cast<std::uint8_t>((z * 2 + y) * 4 + x));
+                voxels.push_back(static_cast<std::uint8_t>(200 - 10 * z));
+            }
+    const std::vector<VolumeMipLevel> levels = boxMipChain3D(voxels, 4, 2, 2, 2);
+    ASSERT_EQ(levels.size(), 2u);
+    ASSERT_EQ(levels[0].width, 2);
+    ASSERT_EQ(levels[0].height, 1);
+    ASSERT_EQ(levels[0].depth, 1);
+    // Block x 0-1: indices 0,1,4,5,8,9,12,13 -> 52/8 = 6.5 -> 7; x 2-3: 68/8 = 8.5 -> 9.
+    EXPECT_EQ(levels[0].voxels, (std::vector<std::uint8_t>{7, 195, 9, 195}));
+    ASSERT_EQ(levels[1].width, 1);
+    EXPECT_EQ(levels[1].voxels, (std::vector<std::uint8_t>{8, 195}));
+    EXPECT_TRUE(boxMipChain3D(std::vector<std::uint8_t>(1, 9), 1, 1, 1, 1).empty());
+}

@@ -54,7 +54,7 @@ TEST(EveryPassAssembly, CubeAWrapperPassesFacePixelApexAndRayThroughTheFaceCorne
     EXPECT_FALSE(has(text, "st_assert"));
     EXPECT_FALSE(has(text, "mainImage"));
     // mainCubemap's own `out` is zero-initialised like mainImage's.
-    EXPECT_TRUE(has(text, "in vec3 d) {c=vec4(0.0);}"));
+    EXPECT_TRUE(has(text, "in vec3 d) {c=vec4(0);}"));
 }
 
 TEST(EveryPassAssembly, SoundWrapperEncodesTwoSixteenBitSamplesPerPixel) {
@@ -85,44 +85,21 @@ TEST(EveryPassAssembly, ChannelsAreDeclaredWithTheirSamplerTypeInEveryPassKind) 
         }
 }
 
-TEST(EveryPassAssembly, AUsersOwnLowpOrMediumpMacroReplacesToyhostsWithoutMovingLines) {
-    const std::string plain = assembled(PassId::Image, "void mainImage(out vec4 c, in vec2 f) {}\n");
-    EXPECT_TRUE(has(plain, "#define lowp highp\n#define mediump highp\n"));
-    const std::string lowp = assembled(PassId::Image, "#define lowp\nvoid mainImage(out vec4 c, in vec2 f) {}\n");
-    EXPECT_FALSE(has(lowp, "#define lowp highp"));
-    EXPECT_TRUE(has(lowp, "#define mediump highp"));
-    const std::string both = assembled(PassId::Image, "  #  define mediump  \n#define lowp mediump\n");
-    EXPECT_FALSE(has(both, "#define lowp highp"));
-    EXPECT_FALSE(has(both, "#define mediump highp"));
-    // From Common too; the header keeps its line count either way.
+TEST(EveryPassAssembly, LowpAndMediumpAreWrittenHighpWithoutAMacro) {
+    // No macro: `#ifdef lowp` is false as in WebGL; the qualifiers in code and in #define bodies
+    // compute in 32 bits; the directives that test the name are left alone.
+    const std::string code = "#ifdef lowp\n#endif\n#define P mediump\nvoid mainImage(out vec4 c, in vec2 f) { lowp float x = 1.; }\n";
+    const std::string plain = assembled(PassId::Image, code);
+    EXPECT_FALSE(has(plain, "#define lowp"));
+    EXPECT_FALSE(has(plain, "#define mediump"));
+    EXPECT_TRUE(has(plain, "#ifdef lowp\n#endif\n#define P highp\nvoid mainImage(out vec4 c, in vec2 f) {c=vec4(0); highp float x = 1.; }"));
+    // A user's own macro of that name is left to work as the user wrote it.
+    const std::string own = assembled(PassId::Image, "#define lowp\nvoid mainImage(out vec4 c, in vec2 f) { lowp float x; mediump float y; }\n");
+    EXPECT_TRUE(has(own, "lowp float x=float(0); highp float y=float(0);"));
     const std::string common = "#define mediump\n";
-    const std::string fromCommon = assembled(PassId::BufferA, "\n", false, {}, &common);
-    EXPECT_FALSE(has(fromCommon, "#define mediump highp"));
+    EXPECT_TRUE(has(assembled(PassId::BufferA, "void f(){ mediump float y; }\n", false, {}, &common), "mediump float y"));
+    // The header keeps its line count either way.
     EXPECT_EQ(lineCount(assembled(PassId::Image, "\n")), lineCount(assembled(PassId::Image, "#define lowp\n")));
-    // Names that merely start like the qualifier are not it.
-    EXPECT_TRUE(has(assembled(PassId::Image, "#define lowpass 1\n"), "#define lowp highp"));
-    // The sampler precisions stay whatever the user defines.
-    EXPECT_TRUE(has(both, "precision highp sampler2D;"));
-}
-
-TEST(EveryPassAssembly, MainImagesOutParameterIsZeroedOnTheLineOfItsBrace) {
-    EXPECT_EQ(zeroInitialiseEntryOutput("void mainImage( out vec4 O, in vec2 U )\n{\n  O.x = 1.;\n}", "mainImage"),
-              "void mainImage( out vec4 O, in vec2 U )\n{O=vec4(0.0);\n  O.x = 1.;\n}");
-    EXPECT_EQ(zeroInitialiseEntryOutput("void mainImage(out highp vec4 c,vec2 f){}", "mainImage"),
-              "void mainImage(out highp vec4 c,vec2 f){c=vec4(0.0);}");
-    // A forward declaration first; comments between the parameters and the body.
-    EXPECT_EQ(zeroInitialiseEntryOutput("void mainImage(out vec4 c, vec2 f);\n"
-                                        "void mainImage(out vec4 c, vec2 f) /* body */ {}",
-                                        "mainImage"),
-              "void mainImage(out vec4 c, vec2 f);\nvoid mainImage(out vec4 c, vec2 f) /* body */ {c=vec4(0.0);}");
-    // inout is initialised by the caller; a call or a longer name is not the definition.
-    const std::string inout = "void mainImage(inout vec4 c, vec2 f) {}";
-    EXPECT_EQ(zeroInitialiseEntryOutput(inout, "mainImage"), inout);
-    const std::string other = "void mainImage2(out vec4 c, vec2 f) {}\n// mainImage(c, f) {\n";
-    EXPECT_EQ(zeroInitialiseEntryOutput(other, "mainImage"), other);
-    // Made by a macro: left alone.
-    const std::string macro = "#define MAIN void mainImage(out vec4 c, vec2 f)\nMAIN {}";
-    EXPECT_EQ(zeroInitialiseEntryOutput(macro, "mainImage"), macro);
 }
 
 // ---- Pass graph: Cube A and the sampler quirks -------------------------------------------------
@@ -211,6 +188,32 @@ TEST(EveryPassGraph, ABuffersWrapIsTheLastReadingChannelsForTheWholeShader) {
     EXPECT_EQ(planOf(g, PassId::Image).channels[0].sampler.wrap, Wrap::Clamp);
     // Textures other than buffers keep their own settings.
     EXPECT_EQ(planOf(g, PassId::Image).channels[1].sampler.filter, Filter::Linear);
+}
+
+// The site creates an export's passes as listed and each pass's inputs as listed; the last
+// created channel reading a buffer sets its wrap. Render order would say clamp here (Image's
+// channel 0, created last in render order); the export lists Image first and Buffer A's repeat
+// input last, so the site shows repeat.
+TEST(EveryPassGraph, InAnExportTheWrapFollowsTheListedOrderOfPassesAndInputs) {
+    ManifestDesc m;
+    PassDesc a = passOf(PassId::BufferA), image = passOf(PassId::Image);
+    a.channels[0] = channelOf(ChannelKind::Buffer, 0, Filter::Linear, Wrap::Repeat);
+    a.channels[2] = channelOf(ChannelKind::Buffer, 0, Filter::Linear, Wrap::Clamp);
+    image.channels[0] = channelOf(ChannelKind::Buffer, 0, Filter::Linear, Wrap::Clamp);
+    image.listedAt = 0;
+    a.listedAt = 1;
+    a.channels[2].listedAt = 0;  // iChannel2 listed before iChannel0
+    a.channels[0].listedAt = 1;
+    m.passes = {a, image};
+    const PassGraph g = buildPassGraph(m);
+    EXPECT_EQ(planOf(g, PassId::Image).channels[0].sampler.wrap, Wrap::Repeat);
+    EXPECT_EQ(planOf(g, PassId::BufferA).channels[2].sampler.wrap, Wrap::Repeat);
+    // Without export places (a manifest): render order, channel order.
+    for (PassDesc& p : m.passes) {
+        p.listedAt = -1;
+        for (ChannelDesc& ch : p.channels) ch.listedAt = -1;
+    }
+    EXPECT_EQ(planOf(buildPassGraph(m), PassId::Image).channels[0].sampler.wrap, Wrap::Clamp);
 }
 
 // ---- Manifests ---------------------------------------------------------------------------------

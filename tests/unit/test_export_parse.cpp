@@ -128,6 +128,10 @@ TEST(ExportParse, ApiPassesInAnyOrderComeOutSortedWithBuffersKnownByOutputId) {
     EXPECT_EQ(pass(desc, PassId::BufferC).code, "// output 259\n");
     EXPECT_EQ(pass(desc, PassId::BufferD).code, "// output 260\n");
     EXPECT_EQ(pass(desc, PassId::Image).code, "// image\n");
+    // Each pass keeps its place in the export's list (the buffer wrap quirk follows it).
+    EXPECT_EQ(pass(desc, PassId::Image).listedAt, 0);
+    EXPECT_EQ(pass(desc, PassId::BufferA).listedAt, 5);
+    EXPECT_EQ(pass(desc, PassId::BufferC).listedAt, 3);
 
     ASSERT_TRUE(desc.commonSource.has_value());
     EXPECT_EQ(*desc.commonSource, kExportPath);

@@ -228,7 +228,7 @@ TEST(ShaderAssembly, TextIsHeaderThenCommonAndNewlineThenPassCode) {
     const std::string common = "#define TAU 6.2831853\nfloat sq(float x) { return x * x; }";
     // mainImage's `out` is zero-initialised on the line of its brace, as WebGL's translator does.
     std::string passCode = kPassCode;
-    passCode.replace(passCode.find("fragCoord) {") + 12, 0, "fragColor=vec4(0.0);");
+    passCode.replace(passCode.find("fragCoord) {") + 12, 0, "fragColor=vec4(0);");
     const std::string commonLine = "#line " + std::to_string(kCommonLineBase + 1) + "\n";
     for (PassId pass : {PassId::Image, PassId::BufferA}) {
         const AssembledShader without = assemble(pass);

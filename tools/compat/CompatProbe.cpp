@@ -1,8 +1,10 @@
 #include "CompatProbe.h"
 
+#include "ProbeScript.h"
+
 #include <GLES3/gl3.h>
 
-#include <chrono>
+#include <ctime>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -30,11 +32,6 @@ private:
     std::vector<std::string>& lines_;
 };
 
-std::string firstLines(const std::string& text, int lines) {
-    size_t end = 0;
-    for (int i = 0; i < lines && end != std::string::npos; ++i) end = text.find('\n', end ? end + 1 : 0);
-    return end == std::string::npos ? text : text.substr(0, end);
-}
 
 // `firstUniform` keeps the colour of the first uniform frame judged, to tell a flash from a
 // frozen screen.
@@ -68,7 +65,9 @@ void judgeOutput(const Player& player, ProbeResult& result, std::optional<std::a
 
 }  // namespace
 
-ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) {
+namespace {
+
+ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& settings) {
     ProbeResult result;
     result.file = exportFile.filename().string();
     // An export is known by its file name (<id>.json); a manifest folder by the folder's name.
@@ -76,7 +75,7 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
     result.id = fs::is_directory(exportFile, ec) ? exportFile.filename().string() : exportFile.stem().string();
     Result<ManifestDesc> manifest = loadShadertoy(exportFile);
     if (!manifest) {
-        result.error = firstLines(manifest.error().text(), 3);
+        result.error = firstErrorLine(manifest.error().text());
         return result;
     }
     result.loaded = true;
@@ -94,7 +93,7 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
     options.eglPlatform = settings.eglPlatform;
     Result<SessionPlan> plan = prepareSession(options);
     if (!plan) {
-        result.error = firstLines(plan.error().text(), 3);
+        result.error = firstErrorLine(plan.error().text());
         return result;
     }
     for (const StandInUse& standIn : plan->shadertoy.images.standIns())
@@ -110,33 +109,30 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
     NoticeCollector notices(result.notices);
     auto session = SessionCore::start(std::move(*plan), *context, notices);
     if (!session) {
-        result.error = firstLines(session.error().text(), 4);
+        result.error = firstErrorLine(session.error().text());
         return result;
     }
     result.compiled = true;
     Player* player = &(*session)->player();
 
-    // Like a visitor, the probe drags the mouse across the canvas from frame 1 on, so shaders
-    // that show nothing until clicked get their click. Time and date come from the same fixed-step
+    // Like a visitor, the probe drags the mouse across the canvas from frame 1 and lets go before
+    // the last frames (ProbeScript.h), so shaders that show nothing until clicked get their click. Time and date come from the same fixed-step
     // clock a headless run uses.
     const FrameClock clock(60.0, 0.0, localWallClockNow());
     std::vector<InputEvent> events;
     auto frameAt = [&](int frame) {
-        events.clear();
-        if (frame == 1) events.push_back(InputEvent::mouseDown(settings.width * 0.3f, settings.height * 0.4f));
-        if (frame > 1) {
-            const float t = std::min(1.0f, frame / static_cast<float>(std::max(2, settings.frames)));
-            events.push_back(InputEvent::mouseMove(settings.width * (0.3f + 0.4f * t), settings.height * (0.4f + 0.2f * t)));
-        }
+        events = probeMouseAt(frame, settings.frames, settings.width, settings.height);
         (void)(*session)->renderFrame(clock.frameTime(frame), events);
         // Finish each frame so ms/frame is the real shading cost: llvmpipe drops queued work for
         // tiles that a later draw overwrites before anything reads them.
         player->finish();
         result.framesRendered = frame + 1;
     };
-    const auto start = std::chrono::steady_clock::now();
+    // CPU time of the process (llvmpipe's threads included), not wall time, which grows with the
+    // machine's load.
+    const std::clock_t start = std::clock();
     for (int frame = 0; frame < settings.frames; ++frame) frameAt(frame);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     result.msPerFrame = 1000.0 * seconds / settings.frames;
     std::optional<std::array<std::uint8_t, 3>> firstUniform;
     auto checkGl = [&] {
@@ -147,19 +143,39 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
     };
     checkGl();
     judgeOutput(*player, result, firstUniform);
-    // Patience for fade-ins and shaders that need time: check every quarter second of iTime.
+    // Patience for fade-ins and shaders that need time: check every quarter second of iTime, up to
+    // a bound in iTime (frames), never in wall time, so the verdict does not depend on load.
     for (int frame = settings.frames;
          result.uniformImage && !result.uniformColourChanged && frame / 60.0 < settings.patienceSeconds; ++frame) {
         frameAt(frame);
         if (frame % 15 != 0) continue;
-        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > settings.wallBudgetSeconds)
-            break;
         result.nonFiniteBuffers.clear();
         judgeOutput(*player, result, firstUniform);
         if (!result.uniformImage || result.uniformColourChanged) result.firstNonUniformTime = frame / 60.0;
     }
     checkGl();
     return result;
+}
+
+}  // namespace
+
+ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) {
+    ProbeResult first = probeAtOneSize(exportFile, settings);
+    if (!first.degenerate() || !first.compiled || !first.glError.empty()) return first;
+    // One colour at the small size: shaders drawing at fixed pixel positions (a layout for
+    // 800x450, a 100 px ring) can miss a 160x90 canvas. Render the second size before calling
+    // the frame empty.
+    ProbeSettings larger = settings;
+    larger.width = std::max(settings.width * 2, kSecondWidth);
+    larger.height = std::max(settings.height * 2, kSecondHeight);
+    ProbeResult second = probeAtOneSize(exportFile, larger);
+    second.secondSize = std::to_string(larger.width) + "x" + std::to_string(larger.height);
+    if (second.passed()) {
+        second.msPerFrame = first.msPerFrame;  // the table's timings stay at one size
+        return second;
+    }
+    first.secondSize = second.secondSize;
+    return first;
 }
 
 nlohmann::json toJson(const ProbeResult& r) {
@@ -179,6 +195,7 @@ nlohmann::json toJson(const ProbeResult& r) {
             {"stand_ins", r.standIns},
             {"notices", r.notices},
             {"error", r.error},
+            {"second_size", r.secondSize},
             {"passed", r.passed()}};
 }
 
@@ -200,6 +217,7 @@ ProbeResult fromJson(const nlohmann::json& j) {
     r.standIns = j.value("stand_ins", std::vector<std::string>{});
     r.notices = j.value("notices", std::vector<std::string>{});
     r.error = j.value("error", "");
+    r.secondSize = j.value("second_size", "");
     return r;
 }
 

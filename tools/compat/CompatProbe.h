@@ -13,14 +13,17 @@
 
 namespace toyhost::compat {
 
+// The size a frame that stays one colour is rendered at a second time, at least.
+inline constexpr int kSecondWidth = 320;
+inline constexpr int kSecondHeight = 180;
+
 struct ProbeSettings {
     int width = 160;
     int height = 90;
     int frames = 10;
     // A frame that is still one colour after `frames` frames may be a fade-in or a shader waiting
-    // for input: keep rendering (and dragging) until iTime reaches this or the budget runs out.
+    // for input: keep rendering until iTime reaches this (a bound in frames, not wall time).
     double patienceSeconds = 5.0;
-    double wallBudgetSeconds = 20.0;
     std::vector<std::filesystem::path> mediaFolders;
     toyhost::EglPlatform eglPlatform = toyhost::EglPlatform::Automatic;
 };
@@ -32,7 +35,7 @@ struct ProbeResult {
     bool loaded = false;                   // the export parsed
     bool compiled = false;                 // every pass compiled and linked
     int framesRendered = 0;
-    double msPerFrame = 0;
+    double msPerFrame = 0;                 // CPU time per frame of the first `frames` frames
     double firstNonUniformTime = -1;       // iTime when a uniform Image first changed, if it did later
     bool uniformImage = false;             // every Image pixel has the same colour
     // The uniform colour changed between the frames judged: a full-screen flash or fade, which is
@@ -43,8 +46,11 @@ struct ProbeResult {
     std::vector<std::string> standIns;     // stock media names replaced by stand-ins
     std::vector<std::string> notices;
     std::string error;                     // why it did not load, compile or render
+    std::string secondSize;                // "320x180" when the first size gave one colour and this one was tried
 
-    bool degenerate() const { return (uniformImage && !uniformColourChanged) || !nonFiniteBuffers.empty(); }
+    // The picture is judged; NaN/Inf in a buffer is a note (packed data, masked pixels and a
+    // normalize(0) outside the drawn area are NaN with a right picture).
+    bool degenerate() const { return uniformImage && !uniformColourChanged; }
     bool passed() const { return compiled && framesRendered > 0 && glError.empty() && !degenerate(); }
 };
 

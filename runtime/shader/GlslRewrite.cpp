@@ -1,0 +1,309 @@
+#include "shader/GlslRewrite.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <vector>
+
+#include "shader/GlslTokens.h"
+
+namespace toyhost {
+
+namespace {
+
+using Kind = GlslToken::Kind;
+
+const std::set<std::string_view>& builtinTypes() {
+    static const std::set<std::string_view> types = {
+        "float", "int", "uint", "bool", "vec2", "vec3", "vec4", "ivec2", "ivec3", "ivec4", "uvec2", "uvec3", "uvec4",
+        "bvec2", "bvec3", "bvec4", "mat2", "mat3", "mat4", "mat2x2", "mat2x3", "mat2x4", "mat3x2", "mat3x3",
+        "mat3x4", "mat4x2", "mat4x3", "mat4x4"};
+    return types;
+}
+
+bool isPrecision(std::string_view w) { return w == "highp" || w == "mediump" || w == "lowp"; }
+
+struct Edit {
+    std::size_t offset = 0;
+    std::size_t erase = 0;
+    std::string text;
+};
+
+// What a brace opens.
+enum class Scope { Function, Block, Struct, Other };
+
+class ZeroInitialiser {
+public:
+    ZeroInitialiser(const std::vector<GlslToken>& all) {
+        for (std::size_t i = 0; i < all.size(); ++i) {
+            if (!all[i].directive) code_.push_back(all[i]);
+            // `#define NAME TYPE` on a line of its own: NAME is TYPE (a type alias).
+            if (all[i].directiveStart && i + 3 < all.size() && all[i + 1].text == "define" && all[i + 2].directive &&
+                all[i + 3].directive && !all[i + 3].directiveStart &&
+                (i + 4 == all.size() || !all[i + 4].directive || all[i + 4].directiveStart) &&
+                all[i + 2].offset + all[i + 2].text.size() < all[i + 3].offset)  // not `NAME(`
+                aliases_[all[i + 2].text] = all[i + 3].text;
+        }
+    }
+
+    // The edits, or none when the braces do not balance.
+    bool run(std::vector<Edit>& edits) {
+        int nesting = 0;  // ( and [
+        declaration(0);
+        for (std::size_t k = 0; k < code_.size(); ++k) {
+            const std::string_view t = code_[k].text;
+            if (t == "(" || t == "[") ++nesting;
+            else if (t == ")" || t == "]") {
+                if (--nesting < 0) return false;
+            } else if (t == "{") {
+                const std::string_view prev = k > 0 ? code_[k - 1].text : std::string_view{};
+                Scope scope = Scope::Other;
+                std::string_view structName;
+                if (k > 0 && prev == "struct") scope = Scope::Struct;
+                else if (k > 1 && code_[k - 1].kind == Kind::Identifier && code_[k - 2].text == "struct")
+                    scope = Scope::Struct, structName = prev;
+                else if (stack_.empty() && prev == ")") scope = Scope::Function;
+                else if (!stack_.empty() && inCode()) scope = Scope::Block;
+                stack_.push_back({scope, structName, k});
+                if (scope == Scope::Function) zeroOutParameters(k);
+                if (scope == Scope::Function || scope == Scope::Block) declaration(k + 1);
+            } else if (t == "}") {
+                if (stack_.empty()) return false;
+                const Frame closed = stack_.back();
+                stack_.pop_back();
+                if (closed.scope == Scope::Struct && !closed.name.empty() && stack_.empty()) zeroFunction(closed, k);
+                if ((inCode() || (stack_.empty() && closed.scope == Scope::Function)) && nesting == 0) declaration(k + 1);
+            } else if ((t == ";" || t == ":") && nesting == 0 && inCode()) {
+                declaration(k + 1);
+            } else if (t == ";" && nesting == 0 && stack_.empty()) {
+                declaration(k + 1);
+            }
+        }
+        if (!stack_.empty() || nesting != 0) return false;
+        edits.insert(edits.end(), edits_.begin(), edits_.end());
+        return true;
+    }
+
+private:
+    struct Frame {
+        Scope scope;
+        std::string_view name;
+        std::size_t open = 0;  // the index of its `{`
+    };
+
+    bool inCode() const {
+        return !stack_.empty() && (stack_.back().scope == Scope::Function || stack_.back().scope == Scope::Block);
+    }
+
+    static std::string zeroName(std::string_view structName) { return "toyhost_z" + std::string(structName); }
+
+    // A global struct whose `}` is at `close`: when every member's type is known, a function
+    // returning its zero value is defined right after the declaration's `;`, and the struct
+    // becomes a known type. (The driver's zero-initialisation of a global struct cannot be
+    // relied on: llvmpipe leaves one undefined.)
+    void zeroFunction(const Frame& frame, std::size_t close) {
+        std::string body;
+        for (std::size_t k = frame.open + 1; k < close;) {
+            while (k < close && isPrecision(code_[k].text)) ++k;
+            if (k >= close) break;
+            const std::string zero = zeroOf(code_[k].text);
+            if (zero.empty()) return;
+            ++k;
+            bool typeArray = false;
+            if (k < close && code_[k].text == "[") typeArray = true, k = skipBrackets(k);
+            while (k < close) {
+                if (code_[k].kind != Kind::Identifier) return;
+                const std::string member = "z." + std::string(code_[k++].text);
+                bool array = typeArray;
+                if (k < close && code_[k].text == "[") array = true, k = skipBrackets(k);
+                if (k >= close) return;
+                body += array ? zeroLoop(member, zero) : member + "=" + zero + ";";
+                if (code_[k++].text == ";") break;
+            }
+        }
+        std::size_t semicolon = close + 1;
+        while (semicolon < code_.size() && code_[semicolon].text != ";") ++semicolon;
+        if (semicolon >= code_.size()) return;
+        const std::string name(frame.name);
+        add(end(semicolon), " " + name + " " + zeroName(name) + "(){" + name + " z;" + body + "return z;}");
+        structs_.insert(frame.name);
+    }
+
+    // The zero value of a type, or empty when the type is not known.
+    std::string zeroOf(std::string_view type) const {
+        if (auto alias = aliases_.find(type); alias != aliases_.end()) type = alias->second;
+        if (builtinTypes().count(type)) return std::string(type) + "(0)";
+        if (structs_.count(type)) return zeroName(type) + "()";
+        return {};
+    }
+
+    static std::string zeroLoop(std::string_view name, const std::string& zero) {
+        const std::string n(name);
+        return "for(int toyhost_i=0;toyhost_i<" + n + ".length();++toyhost_i)" + n + "[toyhost_i]=" + zero + ";";
+    }
+
+    void add(std::size_t offset, std::string text) { edits_.push_back({offset, 0, std::move(text)}); }
+
+    std::size_t end(std::size_t k) const { return code_[k].offset + code_[k].text.size(); }
+
+    // The index after the `]` that matches the `[` at `k` (code_.size() when unmatched).
+    std::size_t skipBrackets(std::size_t k) const {
+        int depth = 0;
+        for (; k < code_.size(); ++k) {
+            if (code_[k].text == "[" || code_[k].text == "(") ++depth;
+            else if ((code_[k].text == "]" || code_[k].text == ")") && --depth == 0) return k + 1;
+        }
+        return code_.size();
+    }
+
+    // A declaration statement starting at `k` (`[precision] TYPE[[n]] name[[n]] [= init], ...;`):
+    // each declarator without an initialiser gets one. Anything else is left alone.
+    void declaration(std::size_t k) {
+        const std::size_t n = code_.size();
+        while (k < n && (isPrecision(code_[k].text) || code_[k].text == "precise")) ++k;
+        if (k >= n || code_[k].kind != Kind::Identifier) return;
+        const std::string zero = zeroOf(code_[k].text);
+        if (zero.empty()) return;
+        const bool global = stack_.empty();
+        const bool builtin = zero.compare(0, 9, "toyhost_z") != 0;
+        std::string pending;  // for globals_, once the statement reads as a declaration
+        ++k;
+        bool typeArray = false;
+        if (k < n && code_[k].text == "[") typeArray = true, k = skipBrackets(k);
+        std::vector<Edit> found;
+        std::vector<std::string_view> arrays;
+        while (true) {
+            if (k >= n || code_[k].kind != Kind::Identifier) return;
+            const std::string_view name = code_[k++].text;
+            bool array = typeArray;
+            if (k < n && code_[k].text == "[") array = true, k = skipBrackets(k);
+            if (k >= n) return;
+            if (code_[k].text == "=") {
+                int depth = 0;
+                for (++k; k < n; ++k) {
+                    const std::string_view t = code_[k].text;
+                    if (t == "(" || t == "[") ++depth;
+                    else if (t == ")" || t == "]") --depth;
+                    else if (depth == 0 && (t == "," || t == ";")) break;
+                    else if (t == "{" || t == "}") return;
+                }
+                if (k >= n) return;
+            } else if (code_[k].text == "," || code_[k].text == ";") {
+                // A global's initialiser must be constant: arrays and structs are zeroed when the
+                // entry function starts (once per invocation, as WebGL initialises globals).
+                if (global && (array || !builtin)) pending += array ? zeroLoop(name, zero) : std::string(name) + "=" + zero + ";";
+                else if (array) arrays.push_back(name);
+                else found.push_back({end(k - 1), 0, "=" + zero});
+            } else {
+                return;  // not a declaration
+            }
+            if (code_[k].text == ";") break;
+            ++k;
+        }
+        std::string loops;
+        for (std::string_view a : arrays) loops += zeroLoop(a, zero);
+        if (!loops.empty()) found.push_back({end(k), 0, loops});
+        edits_.insert(edits_.end(), found.begin(), found.end());
+        globals_ += pending;
+    }
+
+    // A function definition whose `{` is at `brace`: each `out` parameter is set to zero first.
+    void zeroOutParameters(std::size_t brace) {
+        std::size_t open = brace - 1;
+        for (int depth = 0;; --open) {
+            if (code_[open].text == ")") ++depth;
+            else if (code_[open].text == "(" && --depth == 0) break;
+            if (open == 0) return;
+        }
+        std::string zeroing;
+        std::size_t k = open + 1;
+        while (k < brace - 1) {
+            std::size_t stop = k;
+            for (int depth = 0; stop < brace - 1; ++stop) {
+                const std::string_view t = code_[stop].text;
+                if (t == "(" || t == "[") ++depth;
+                else if (t == ")" || t == "]") --depth;
+                else if (t == "," && depth == 0) break;
+            }
+            bool out = false;
+            std::size_t i = k;
+            for (; i < stop; ++i) {
+                const std::string_view t = code_[i].text;
+                if (t == "out") out = true;
+                else if (!(t == "in" || t == "inout" || t == "const" || isPrecision(t))) break;
+            }
+            if (out && i + 1 < stop) {
+                const std::string zero = zeroOf(code_[i].text);
+                bool array = false;
+                std::string_view name;
+                for (std::size_t j = i + 1; j < stop; ++j) {
+                    if (code_[j].text == "[") array = true;
+                    else if (code_[j].kind == Kind::Identifier && name.empty() && !array) name = code_[j].text;
+                    else if (code_[j].kind == Kind::Identifier && name.empty() && code_[j - 1].text == "]") name = code_[j].text;
+                }
+                if (!zero.empty() && !name.empty())
+                    zeroing += array ? zeroLoop(name, zero) : std::string(name) + "=" + zero + ";";
+            }
+            k = stop + 1;
+        }
+        const std::string_view function = open > 0 ? code_[open - 1].text : std::string_view{};
+        if (function == "mainImage" || function == "mainCubemap" || function == "mainSound") zeroing += globals_;
+        if (!zeroing.empty()) add(end(brace), zeroing);
+    }
+
+    std::vector<GlslToken> code_;
+    std::map<std::string_view, std::string_view> aliases_;
+    std::set<std::string_view> structs_;
+    std::vector<Frame> stack_;
+    std::vector<Edit> edits_;
+    std::string globals_;  // zeroing of the global arrays and structs declared so far
+};
+
+}  // namespace
+
+// Every GLSL ES 3.00 reserved and extension word compiled as a local's name on both sides
+// (webref, headless Chromium with ANGLE, against Mesa 22.3): these are the ones browsers accept
+// and Mesa refuses. The rest are refused by both (dvec2, union, ...) or accepted by both.
+std::string_view webglOnlyIdentifierRename(std::string_view word) {
+    static const std::map<std::string_view, std::string_view> renames = {
+        {"packed", "toyhost_packed"},   {"dmat2", "toyhost_dmat2"},     {"dmat3", "toyhost_dmat3"},
+        {"dmat4", "toyhost_dmat4"},     {"dmat2x2", "toyhost_dmat2x2"}, {"dmat2x3", "toyhost_dmat2x3"},
+        {"dmat2x4", "toyhost_dmat2x4"}, {"dmat3x2", "toyhost_dmat3x2"}, {"dmat3x3", "toyhost_dmat3x3"},
+        {"dmat3x4", "toyhost_dmat3x4"}, {"dmat4x2", "toyhost_dmat4x2"}, {"dmat4x3", "toyhost_dmat4x3"},
+        {"dmat4x4", "toyhost_dmat4x4"}};
+    const auto found = renames.find(word);
+    return found == renames.end() ? std::string_view{} : found->second;
+}
+
+std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions promote) {
+    const std::vector<GlslToken> tokens = tokenizeGlsl(text);
+    std::vector<Edit> edits;
+    std::size_t directiveAt = 0;  // the index of the `#` of the current directive line
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+        const GlslToken& t = tokens[i];
+        if (t.directiveStart) directiveAt = i;
+        if (t.kind != Kind::Identifier) continue;
+        if (std::string_view to = webglOnlyIdentifierRename(t.text); promote.rename && !to.empty())
+            edits.push_back({t.offset, t.text.size(), std::string(to)});
+        const bool promoted = (t.text == "lowp" && promote.lowp) || (t.text == "mediump" && promote.mediump);
+        if (promoted && (!t.directive || (directiveAt + 1 < i && tokens[directiveAt + 1].text == "define" && i > directiveAt + 2)))
+            edits.push_back({t.offset, t.text.size(), "highp"});
+    }
+    if (promote.zeroInit) ZeroInitialiser(tokens).run(edits);
+    std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) {
+        return a.offset != b.offset ? a.offset < b.offset : a.erase < b.erase;  // insertions first
+    });
+    std::string out;
+    out.reserve(text.size() + edits.size() * 16);
+    std::size_t at = 0;
+    for (const Edit& e : edits) {
+        if (e.offset < at) continue;  // never overlaps; kept safe
+        out.append(text.substr(at, e.offset - at));
+        out += e.text;
+        at = e.offset + e.erase;
+    }
+    out.append(text.substr(at));
+    return out;
+}
+
+}  // namespace toyhost

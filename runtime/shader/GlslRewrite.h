@@ -1,0 +1,33 @@
+// GlslRewrite: the source rewrite that gives a GLSL ES 3.00 shader WebGL's semantics on a desktop
+// driver: locals declared without an initialiser become zero at every execution of the
+// declaration and `out` parameters zero at every call (ANGLE does both; Mesa's glsl_zero_init only
+// once per invocation), and identifiers Mesa reserves but browsers accept are renamed. Every
+// insertion stays on its line, so compiler messages keep the user's line numbers. Pure text work.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace toyhost {
+
+// `text` (a whole fragment shader, or any run of GLSL) rewritten as above. Declarations it cannot
+// read (a type it does not know, a macro-made declaration) are left as they are; when the braces
+// do not balance outside preprocessor lines it only renames.
+// With `promote`, the precision qualifiers named there (`lowp`, `mediump`) are written `highp` in
+// the code and in `#define` bodies (never in `#ifdef`, `#if defined`, `#undef` or a macro's name),
+// so they compute in 32 bits as on desktop GPUs while `#ifdef lowp` stays false as in WebGL.
+// Without `zeroInit` and `rename` only the promotion is done (the text a driver gets when it
+// refuses the full rewrite).
+struct GlslRewriteOptions {
+    bool lowp = false;
+    bool mediump = false;
+    bool zeroInit = true;
+    bool rename = true;
+};
+std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions options = {});
+
+// The name an identifier gets when Mesa reserves it and browsers accept it (`packed` ->
+// `toyhost_packed`); empty for every other word.
+std::string_view webglOnlyIdentifierRename(std::string_view word);
+
+}  // namespace toyhost
