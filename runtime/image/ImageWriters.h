@@ -10,6 +10,7 @@
 
 #include "core/Result.h"
 #include "image/Image.h"
+#include "image/PngEncoder.h"
 
 namespace toyhost {
 
@@ -17,12 +18,14 @@ namespace toyhost {
 // pixel-sized buffer once the first one is written (the codec libraries keep their own state).
 struct ImageScratch {
     std::vector<const std::uint8_t*> rows;  // PNG row table
+    PngEncoder png;                         // its compressor and filtered rows
     std::vector<float> floats;              // EXR rows in file order
 };
 
 // `rgba` holds width * height * 4 bytes, rows bottom first; the file gets the top row first.
-// `compressionLevel` is zlib's 0 (none) .. 9 (smallest); the default 1 favours speed when
-// capturing frames. Levels 0-2 write rows unfiltered, 3-9 use libpng's adaptive filters.
+// `compressionLevel` is `--png-level`: 0 (stored) .. 9 (smallest), mapped to a row filter and a
+// libdeflate level by pngSettingsForLevel (image/PngEncoder.h); the default 1 favours speed when
+// capturing frames.
 Status writePng(const std::filesystem::path& path, int width, int height, std::span<const std::uint8_t> rgba,
                 int compressionLevel = 1, ImageScratch* scratch = nullptr);
 

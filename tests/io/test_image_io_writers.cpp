@@ -129,10 +129,10 @@ TEST(ImageIo, RejectsBuffersThatDoNotMatchTheSize) {
     EXPECT_EQ(folder.files(), std::vector<std::string>{});
 }
 
-TEST(ImageIo, LibpngErrorLeavesNoFileAndNoPartial) {
+TEST(ImageIo, PngWiderThanLibpngReadsIsRefusedAndLeavesNothing) {
     TempFolder folder;
-    // libpng refuses widths over its 1,000,000 default user limit from inside png_set_IHDR, so
-    // this exercises the longjmp error path after the temporary file was opened.
+    // libpng's readers refuse widths over their 1,000,000 default user limit: such a file is
+    // refused before anything is written.
     const int width = 1'000'001;
     const std::vector<std::uint8_t> row(static_cast<std::size_t>(width) * 4, 128);
     const Status written = writePng(folder.path / "wide.png", width, 1, row);

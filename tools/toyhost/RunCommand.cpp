@@ -80,8 +80,9 @@ void RunCommand::define(CLI::App& run) {
                    "numbered by iFrame; a video movie.mp4|.webm|.mov|.mkv (through ffmpeg); or - for raw "
                    "frames on stdout: per frame width*height*4 bytes RGBA8, rows top first, no header");
     run.add_option("--png-level", pngLevel_,
-                   "PNG compression 0 (none) .. 9 (smallest) (default " + std::to_string(defaults::kPngLevel) +
-                       ", fast)");
+                   "PNG compression 0 (stored) .. 9 (smallest) (default " + std::to_string(defaults::kPngLevel) +
+                       ", fastest compression); 1: libdeflate, rows unfiltered; 2-5: Up/Paeth filters; 6-9: "
+                       "adaptive filters, slower deflate (docs/performance.md)");
     run.add_option("--codec", codec_, "Video encoder (ffmpeg name); default libx264 (.mp4/.mov/.mkv), libvpx-vp9 (.webm)");
     run.add_option("--video-quality", videoQuality_,
                    "Video constant rate factor, lower is better (default 18 for H.264, 31 for VP9)");
