@@ -133,9 +133,13 @@ Error VideoSink::ffmpegFailed(const std::string& what) const {
 }
 
 Status VideoSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
+    Clock::time_point at = Clock::now();
     const std::span<const std::uint8_t> topFirst =
         rowsTopFirst(rgba8BottomUp(frame, scratch.bytes), frame.width, frame.height, scratch.rows);
+    at = addEncodeTime(at);
+    // Writing into ffmpeg's pipe waits while ffmpeg encodes: this is where a video's encoding shows.
     Status written = ffmpeg_->write(std::as_bytes(topFirst));
+    addWriteTime(at);
     if (!written) {
         // ffmpeg stopped reading: it failed; wait for it so its log is complete.
         (void)ffmpeg_->closeAndWait();

@@ -1,6 +1,7 @@
 #include "image/ImageWriters.h"
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -70,11 +71,21 @@ Status writePng(const fs::path& path, int width, int height, std::span<const std
                          "PNG encoding failed: " + std::to_string(width) + "x" + std::to_string(height) +
                              " is larger than the 1000000 pixels a side that libpng reads",
                          Code::ImageSize);
+    const auto started = std::chrono::steady_clock::now();
     PngEncoder localEncoder;
     PngEncoder& encoder = scratch ? scratch->png : localEncoder;
     const std::span<const std::uint8_t> png =
         encoder.encode(rows.data(), width, height, pngSettingsForLevel(compressionLevel));
     if (png.empty()) return fileError(path.string(), "PNG encoding failed: out of memory", Code::IoWrite);
+    const auto encoded = std::chrono::steady_clock::now();
+    if (scratch) scratch->encodeSeconds = std::chrono::duration<double>(encoded - started).count();
+    struct WriteTimer {  // the file's write, however it ends
+        ImageScratch* scratch;
+        std::chrono::steady_clock::time_point from;
+        ~WriteTimer() {
+            if (scratch) scratch->writeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count();
+        }
+    } writeTimer{scratch, encoded};
 
     return writeFileAtomically(path, [&](const fs::path& temp) -> Status {
         std::unique_ptr<std::FILE, FileCloser> file(std::fopen(temp.c_str(), "wb"));
@@ -91,6 +102,16 @@ Result<Image8> readPng(const fs::path& path) { return loadImageFile(path); }
 // ---- EXR ----
 Status writeExr(const fs::path& path, int width, int height, std::span<const float> rgba, ImageScratch* scratch) {
     if (Status size = checkSize(path, width, height, rgba.size()); !size) return size;
+    const auto started = std::chrono::steady_clock::now();
+    struct EncodeTimer {
+        ImageScratch* scratch;
+        std::chrono::steady_clock::time_point from;
+        ~EncodeTimer() {
+            if (!scratch) return;
+            scratch->encodeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count();
+            scratch->writeSeconds = 0;
+        }
+    } encodeTimer{scratch, started};
     ImageScratch local;
     std::vector<float>& topFirst = (scratch ? scratch : &local)->floats;
     copyFlipped(rgba, width, height, topFirst);

@@ -19,6 +19,10 @@ namespace toyhost {
 struct ImageScratch {
     std::vector<const std::uint8_t*> rows;  // PNG row table
     PngEncoder png;                         // its compressor and filtered rows
+    // Of the last file written: seconds spent building its bytes and writing them out (an EXR is
+    // encoded while it is written by OpenEXR: all of it counts as encoding).
+    double encodeSeconds = 0;
+    double writeSeconds = 0;
     std::vector<float> floats;              // EXR rows in file order
 };
 

@@ -75,6 +75,12 @@ public:
     const std::optional<std::pair<int, NonFiniteFind>>& firstNonFinite() const { return firstNonFinite_; }
     int width() const { return width_; }
     int height() const { return height_; }
+    // Where capture time went, in seconds: on the render thread, reading frames back and waiting
+    // for the encoders (back-pressure); on the encoder threads (summed), encoding and writing.
+    double readbackSeconds() const { return readbackSeconds_; }
+    double waitSeconds() const { return waitSeconds_; }
+    double encodeSeconds() const { return sink_->encodeSeconds(); }
+    double writeSeconds() const { return sink_->writeSeconds(); }
 
     ~FrameRecorder();
 
@@ -93,6 +99,8 @@ private:
     std::vector<int> droppedFrames_;
     Status dropped(int frame);
     int captured_ = 0;  // capture() calls that took a frame
+    double readbackSeconds_ = 0;
+    double waitSeconds_ = 0;
     std::optional<std::pair<int, NonFiniteFind>> firstNonFinite_;
     // A pixel buffer for a frame: waits for one, or (dropWhenBusy) gives nothing when none is free.
     Result<std::optional<std::vector<std::byte>>> takeBuffer(std::size_t bytes);

@@ -220,6 +220,7 @@ Result<SessionReport> SessionCore::writeSound() {
 Status SessionCore::beginRound() {
     frameNumber_ = plan_.resume && plan_.resume->state.frame > 0 ? plan_.resume->state.frame : 0;
     framesRendered_ = 0;
+    renderSeconds_ = 0;
     captured_.clear();
     roundStartedAt_ = Clock::now();
     SessionReport fresh;
@@ -256,7 +257,9 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
         roundStartedAt_ = Clock::now();
         report_.startupSeconds = secondsBetween(startedAt_, roundStartedAt_);
     }
+    const Clock::time_point stepStarted = Clock::now();
     player_->step(time, events, renderImage);
+    renderSeconds_ += secondsBetween(stepStarted, Clock::now());
 
     // Readbacks may wait for the GPU: the watchdog is told which pass it is still drawing.
     player_->publishPendingDraws();
@@ -269,7 +272,11 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     player_->publishPendingDraws();
     if (o.checkFinite) checkBuffers(frame);
     // The first frame waits for the GPU once, so that its time is real.
-    if (o.finishEachFrame || framesRendered_ == 0) player_->finish();
+    if (o.finishEachFrame || framesRendered_ == 0) {
+        const Clock::time_point finishStarted = Clock::now();
+        player_->finish();
+        renderSeconds_ += secondsBetween(finishStarted, Clock::now());
+    }
     if (framesRendered_ == 0) firstFrameEndedAt_ = Clock::now();
     ++framesRendered_;
     ++frameNumber_;
@@ -458,6 +465,8 @@ Result<SessionReport> SessionCore::finishRound() {
         if (!finished) return finished.error();
         report_.bytesWritten = recorder_->bytesWritten();
         report_.encoderThreads = recorder_->encoderThreads();
+        report_.captureTimes = CaptureTimes{renderSeconds_, recorder_->readbackSeconds(), recorder_->waitSeconds(),
+                                            recorder_->encodeSeconds(), recorder_->writeSeconds()};
         if (const auto& nonFinite = recorder_->firstNonFinite())
             if (auto warning = finite_->check(o.capturePass, nonFinite->first, nonFinite->second,
                                               FiniteCheck::Coverage::CapturedFrames))

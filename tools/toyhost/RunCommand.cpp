@@ -86,7 +86,8 @@ void RunCommand::define(CLI::App& run) {
     run.add_option("--codec", codec_, "Video encoder (ffmpeg name); default libx264 (.mp4/.mov/.mkv), libvpx-vp9 (.webm)");
     run.add_option("--video-quality", videoQuality_,
                    "Video constant rate factor, lower is better (default 18 for H.264, 31 for VP9)");
-    run.add_option("--encoder-threads", encoderThreads_, "Threads encoding captured frames (default: cores - 1, at least 1)");
+    run.add_option("--encoder-threads", encoderThreads_, "Threads encoding captured frames (default: cores - 1, at least 1, growing to one per core while "
+                   "rendering outruns the encoders)");
     run.add_option("--capture-memory", captureMemoryMiB_,
                    "MiB of frames allowed to wait for the encoders; rendering waits beyond it (default " +
                        std::to_string(defaults::kCaptureMemoryMiB) + ")");
