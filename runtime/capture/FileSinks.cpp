@@ -13,7 +13,7 @@ Status ImageSequenceSink::write(const CapturedFrame& frame, EncodeScratch& scrat
     if (pattern_.format() == OutputFormat::Exr) {
         if (frame.format != PixelFormat::Rgba32f)
             return fileError(path.string(), "EXR capture needs a float readback", Code::CaptureFormat);
-        written = writeExr(path, frame.width, frame.height, frame.rgba32f(), &scratch.image);
+        written = writeExr(path, frame.width, frame.height, frame.rgba32f(), &scratch.image, exr_);
     } else {
         written = writePng(path, frame.width, frame.height, rgba8BottomUp(frame, scratch.bytes), pngLevel_,
                            &scratch.image);

@@ -16,6 +16,7 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
+#include <Imath/half.h>
 
 #include "core/AtomicFile.h"
 #include "image/ImageFile.h"
@@ -100,7 +101,41 @@ Status writePng(const fs::path& path, int width, int height, std::span<const std
 Result<Image8> readPng(const fs::path& path) { return loadImageFile(path); }
 
 // ---- EXR ----
-Status writeExr(const fs::path& path, int width, int height, std::span<const float> rgba, ImageScratch* scratch) {
+namespace {
+struct ExrCompressionInfo {
+    ExrCompression value;
+    const char* name;
+    Imf::Compression imf;
+};
+constexpr ExrCompressionInfo kExrCompressions[] = {
+    {ExrCompression::None, "none", Imf::NO_COMPRESSION},    {ExrCompression::Rle, "rle", Imf::RLE_COMPRESSION},
+    {ExrCompression::Zips, "zips", Imf::ZIPS_COMPRESSION},  {ExrCompression::Zip, "zip", Imf::ZIP_COMPRESSION},
+    {ExrCompression::Piz, "piz", Imf::PIZ_COMPRESSION},     {ExrCompression::Pxr24, "pxr24", Imf::PXR24_COMPRESSION},
+    {ExrCompression::B44, "b44", Imf::B44_COMPRESSION},     {ExrCompression::B44a, "b44a", Imf::B44A_COMPRESSION},
+    {ExrCompression::Dwaa, "dwaa", Imf::DWAA_COMPRESSION},  {ExrCompression::Dwab, "dwab", Imf::DWAB_COMPRESSION},
+};
+}  // namespace
+
+std::string_view exrCompressionName(ExrCompression compression) {
+    for (const ExrCompressionInfo& c : kExrCompressions)
+        if (c.value == compression) return c.name;
+    return "none";
+}
+
+std::optional<ExrCompression> exrCompressionNamed(std::string_view name) {
+    for (const ExrCompressionInfo& c : kExrCompressions)
+        if (name == c.name) return c.value;
+    return std::nullopt;
+}
+
+std::string exrCompressionNames() {
+    std::string names;
+    for (const ExrCompressionInfo& c : kExrCompressions) names += (names.empty() ? "" : ", ") + std::string(c.name);
+    return names;
+}
+
+Status writeExr(const fs::path& path, int width, int height, std::span<const float> rgba, ImageScratch* scratch,
+                ExrSettings settings) {
     if (Status size = checkSize(path, width, height, rgba.size()); !size) return size;
     const auto started = std::chrono::steady_clock::now();
     struct EncodeTimer {
@@ -115,21 +150,31 @@ Status writeExr(const fs::path& path, int width, int height, std::span<const flo
     ImageScratch local;
     std::vector<float>& topFirst = (scratch ? scratch : &local)->floats;
     copyFlipped(rgba, width, height, topFirst);
+    std::vector<std::uint16_t>& halves = (scratch ? scratch : &local)->halves;
+    if (settings.half) {  // OpenEXR does not convert slices on output: rounded to nearest here
+        halves.resize(topFirst.size());
+        for (std::size_t i = 0; i < topFirst.size(); ++i) halves[i] = Imath::half(topFirst[i]).bits();
+    }
 
     return writeFileAtomically(path, [&](const fs::path& temp) -> Status {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
         if (!out) return ioError(path, "cannot open for writing", errno);
         try {
             Imf::Header header(width, height);
-            header.compression() = Imf::NO_COMPRESSION;
+            Imf::Compression compression = Imf::NO_COMPRESSION;
+            for (const ExrCompressionInfo& c : kExrCompressions)
+                if (c.value == settings.compression) compression = c.imf;
+            header.compression() = compression;
             header.lineOrder() = Imf::INCREASING_Y;
             Imf::FrameBuffer frame;
-            const std::size_t pixelBytes = 4 * sizeof(float);
+            const Imf::PixelType type = settings.half ? Imf::HALF : Imf::FLOAT;
+            const std::size_t pixelBytes = 4 * (settings.half ? sizeof(std::uint16_t) : sizeof(float));
             for (int c = 0; c < 4; ++c) {
-                header.channels().insert(kExrChannels[c], Imf::Channel(Imf::FLOAT));
+                header.channels().insert(kExrChannels[c], Imf::Channel(type));
+                char* base = settings.half ? reinterpret_cast<char*>(halves.data() + c)
+                                           : reinterpret_cast<char*>(topFirst.data() + c);
                 frame.insert(kExrChannels[c],
-                             Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(topFirst.data() + c),
-                                        pixelBytes, pixelBytes * static_cast<std::size_t>(width)));
+                             Imf::Slice(type, base, pixelBytes, pixelBytes * static_cast<std::size_t>(width)));
             }
             Imf::StdOFStream stream(out, temp.c_str());
             Imf::OutputFile file(stream, header);

@@ -27,7 +27,7 @@ Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSetti
     switch (settings.output.format()) {
         case OutputFormat::Png:
         case OutputFormat::Exr:
-            recorder->sink_ = std::make_unique<ImageSequenceSink>(settings.output, settings.pngLevel);
+            recorder->sink_ = std::make_unique<ImageSequenceSink>(settings.output, settings.pngLevel, settings.exr);
             break;
         case OutputFormat::RawStream:
             recorder->sink_ = std::make_unique<RawStreamSink>(settings.rawStreamFd, "stdout");
@@ -70,6 +70,7 @@ RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity)
     settings.pass = o.capturePass;
     settings.synchronous = o.syncCapture;
     settings.pngLevel = *o.pngLevel;
+    settings.exr = o.exr;
     settings.encoderThreads = o.encoderThreads;
     settings.memoryCapBytes = *o.captureMemoryBytes;
     settings.video = o.video;

@@ -28,6 +28,7 @@ struct RecorderSettings {
     PassId pass = PassId::Image;
     bool synchronous = false;      // glReadPixels and encoding on the render thread
     int pngLevel = 1;
+    ExrSettings exr;
     int encoderThreads = 0;        // 0: defaultEncoderThreads()
     std::size_t memoryCapBytes = std::size_t(256) << 20;
     VideoSettings video;

@@ -83,6 +83,11 @@ void RunCommand::define(CLI::App& run) {
                    "PNG compression 0 (stored) .. 9 (smallest) (default " + std::to_string(defaults::kPngLevel) +
                        ", fastest compression); 1: libdeflate, rows unfiltered; 2-5: Up/Paeth filters; 6-9: "
                        "adaptive filters, slower deflate (docs/performance.md)");
+    run.add_option("--exr-compression", exrCompression_,
+                   "EXR compression: " + exrCompressionNames() +
+                       " (default none: the site's export; none..piz are lossless, pxr24 keeps 24 bits of a float, "
+                       "b44/b44a/dwaa/dwab are lossy)");
+    run.add_flag("--exr-half", options_.exr.half, "EXR channels as 16-bit half floats instead of exact 32-bit floats");
     run.add_option("--codec", codec_, "Video encoder (ffmpeg name); default libx264 (.mp4/.mov/.mkv), libvpx-vp9 (.webm)");
     run.add_option("--video-quality", videoQuality_,
                    "Video constant rate factor, lower is better (default 18 for H.264, 31 for VP9)");
@@ -204,6 +209,12 @@ int RunCommand::execute(const GlProcess& process) {
         if (!o.shard) return usage("--shard " + shard_ + ": expected i/n (part i of n, from 0)");
     }
     if (!codec_.empty()) o.video.codec = codec_;
+    if (!exrCompression_.empty()) {
+        const std::optional<ExrCompression> compression = exrCompressionNamed(exrCompression_);
+        if (!compression)
+            return usage("--exr-compression " + exrCompression_ + ": expected one of " + exrCompressionNames());
+        o.exr.compression = *compression;
+    }
     if (videoQuality_) o.video.quality = *videoQuality_;
     if (o.outPattern && *o.outPattern == "-" && process.closedAtStart[STDOUT_FILENO])
         return usage("--out -: stdout is closed; give it a file or a pipe (or --out frame_%04d.png)");
