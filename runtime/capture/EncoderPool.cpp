@@ -40,10 +40,10 @@ void EncoderPool::startWorker() {
 }
 
 void EncoderPool::growIfBehind() {
-    // Called when the producer found no free buffer under the cap: the encoders are behind
-    // rendering. One more thread, unless one is idle waiting for frames.
+    // Called when the producer found no free buffer under the cap while frames still wait to be
+    // taken: the encoders are behind rendering. One more thread.
     if (threads() >= growTo_ || threads() == 0) return;
-    if (queue_.blockedConsumers() == 0) startWorker();
+    if (queue_.queuedFrames() > 0) startWorker();
 }
 
 EncoderPool::~EncoderPool() {

@@ -36,6 +36,8 @@ Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSetti
             Result<std::unique_ptr<VideoSink>> video = VideoSink::start(
                 settings.output.pathFor(0), recorder->width_, recorder->height_, settings.fps, settings.video);
             if (!video) return video.error();
+            recorder->videoEncoder_ = (*video)->encoder();
+            recorder->videoEncoderChoice_ = (*video)->autoExplanation();
             recorder->sink_ = std::move(*video);
             break;
         }

@@ -81,6 +81,9 @@ public:
     double readbackSeconds() const { return readbackSeconds_; }
     double waitSeconds() const { return waitSeconds_; }
     double encodeSeconds() const { return sink_->encodeSeconds(); }
+    // A video's ffmpeg encoder ("" for image files and raw frames), and with --codec auto why.
+    const std::string& videoEncoder() const { return videoEncoder_; }
+    const std::string& videoEncoderChoice() const { return videoEncoderChoice_; }
     double writeSeconds() const { return sink_->writeSeconds(); }
 
     ~FrameRecorder();
@@ -100,6 +103,7 @@ private:
     std::vector<int> droppedFrames_;
     Status dropped(int frame);
     int captured_ = 0;  // capture() calls that took a frame
+    std::string videoEncoder_, videoEncoderChoice_;
     double readbackSeconds_ = 0;
     double waitSeconds_ = 0;
     std::optional<std::pair<int, NonFiniteFind>> firstNonFinite_;

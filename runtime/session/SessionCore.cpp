@@ -136,6 +136,8 @@ Status SessionCore::createRecorder() {
     Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(recorderSettings(plan_, activity()), *player_);
     if (!created) return created.error();
     recorder_ = std::move(*created);
+    if (!recorder_->videoEncoderChoice().empty())
+        observer_.notice(notice(recorder_->videoEncoderChoice(), Code::CaptureFfmpeg));
     return okStatus();
 }
 
@@ -465,6 +467,7 @@ Result<SessionReport> SessionCore::finishRound() {
         if (!finished) return finished.error();
         report_.bytesWritten = recorder_->bytesWritten();
         report_.encoderThreads = recorder_->encoderThreads();
+        report_.videoEncoder = recorder_->videoEncoder();
         report_.captureTimes = CaptureTimes{renderSeconds_, recorder_->readbackSeconds(), recorder_->waitSeconds(),
                                             recorder_->encodeSeconds(), recorder_->writeSeconds()};
         if (const auto& nonFinite = recorder_->firstNonFinite())

@@ -88,7 +88,13 @@ void RunCommand::define(CLI::App& run) {
                        " (default none: the site's export; none..piz are lossless, pxr24 keeps 24 bits of a float, "
                        "b44/b44a/dwaa/dwab are lossy)");
     run.add_flag("--exr-half", options_.exr.half, "EXR channels as 16-bit half floats instead of exact 32-bit floats");
-    run.add_option("--codec", codec_, "Video encoder (ffmpeg name); default libx264 (.mp4/.mov/.mkv), libvpx-vp9 (.webm)");
+    run.add_option("--codec", codec_,
+                   "Video encoder (ffmpeg name); default libx264 (.mp4/.mov/.mkv), libvpx-vp9 (.webm); auto: a "
+                   "hardware H.264 encoder that works here (h264_nvenc, h264_vaapi, h264_qsv: a test encode at "
+                   "start), else libx264 -preset veryfast");
+    run.add_option("--video-preset", videoPreset_,
+                   "ffmpeg -preset for libx264 and the hardware encoders (libx264: ultrafast .. veryslow; default "
+                   "medium, veryfast with --codec auto)");
     run.add_option("--video-quality", videoQuality_,
                    "Video constant rate factor, lower is better (default 18 for H.264, 31 for VP9)");
     run.add_option("--encoder-threads", encoderThreads_, "Threads encoding captured frames (default: cores - 1, at least 1, growing to one per core while "
@@ -209,6 +215,7 @@ int RunCommand::execute(const GlProcess& process) {
         if (!o.shard) return usage("--shard " + shard_ + ": expected i/n (part i of n, from 0)");
     }
     if (!codec_.empty()) o.video.codec = codec_;
+    if (!videoPreset_.empty()) o.video.preset = videoPreset_;
     if (!exrCompression_.empty()) {
         const std::optional<ExrCompression> compression = exrCompressionNamed(exrCompression_);
         if (!compression)
