@@ -10,6 +10,7 @@ namespace toyhost {
 Status ImageSequenceSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
     const std::filesystem::path path = pattern_.pathFor(frame.frame);
     Status written = okStatus();
+    scratch.image.encodeSeconds = scratch.image.writeSeconds = 0;  // a file refused early took none
     if (pattern_.format() == OutputFormat::Exr) {
         if (frame.format != PixelFormat::Rgba32f)
             return fileError(path.string(), "EXR capture needs a float readback", Code::CaptureFormat);
