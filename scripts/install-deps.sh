@@ -7,6 +7,7 @@ packages=(
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri   # EGL + OpenGL ES 3 (Mesa llvmpipe)
   libglfw3-dev libglm-dev nlohmann-json3-dev libcli11-dev
   libstb-dev libpng-dev libopenexr-dev                  # image I/O: PNG/JPEG in, PNG and EXR out
+  libdeflate-dev                                         # PNG capture: the fast deflate behind --png-level
   libfftw3-dev                                           # the music/mic texture (FFT, as WebAudio's analyser)
   libgtest-dev                                           # tests
   ffmpeg                                                 # video output (--out x.mp4); ffprobe for its tests

@@ -17,17 +17,33 @@ int defaultEncoderThreads() {
     return std::max(1, hardware - 1);
 }
 
-EncoderPool::EncoderPool(FrameSink& sink, int threads, std::size_t memoryCapBytes)
+int maxEncoderThreads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+
+EncoderPool::EncoderPool(FrameSink& sink, int threads, std::size_t memoryCapBytes, int growTo)
     : sink_(sink), queue_(memoryCapBytes) {
     const int count = threads <= 0 ? 0 : (sink.ordered() ? 1 : threads);
-    workers_.reserve(count);
+    growTo_ = count > 0 && !sink.ordered() ? std::max(count, growTo) : count;
+    workers_.reserve(static_cast<std::size_t>(growTo_));
+    for (int i = 0; i < count; ++i) startWorker();
+    if (static_cast<int>(workers_.size()) < count) growTo_ = static_cast<int>(workers_.size());  // refused: no growing
+}
+
+void EncoderPool::startWorker() {
     // A thread that cannot be started (too many asked for, a process limit) must not escape as an
     // exception past the ones already running (std::terminate): the pool keeps those, and with
     // none it is synchronous. threads() says how many it got.
     try {
-        for (int i = 0; i < count; ++i) workers_.emplace_back([this] { work(); });
+        workers_.emplace_back([this] { work(); });
     } catch (const std::system_error&) {
+        growTo_ = threads();
     }
+}
+
+void EncoderPool::growIfBehind() {
+    // Called when the producer found no free buffer under the cap while frames still wait to be
+    // taken: the encoders are behind rendering. One more thread.
+    if (threads() >= growTo_ || threads() == 0) return;
+    if (queue_.queuedFrames() > 0) startWorker();
 }
 
 EncoderPool::~EncoderPool() {
@@ -93,7 +109,11 @@ std::optional<Error> EncoderPool::firstError() const {
 }
 
 Result<std::vector<std::byte>> EncoderPool::acquire(std::size_t bytes) {
-    std::optional<std::vector<std::byte>> buffer = queue_.acquire(bytes);
+    std::optional<std::vector<std::byte>> buffer = queue_.acquire(bytes, /*wait=*/false);
+    if (!buffer) {
+        growIfBehind();
+        buffer = queue_.acquire(bytes);
+    }
     if (!buffer) {
         if (std::optional<Error> error = firstError()) return *error;
         return Error("capture: the encoder queue was stopped", Code::CaptureStopped);

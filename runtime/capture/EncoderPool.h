@@ -22,12 +22,17 @@ namespace toyhost {
 // max(1, hardware threads - 1): on a machine whose renderer is the CPU (llvmpipe) the encoders
 // and the rasterizer share the cores, and one core left to the render thread keeps it fed.
 int defaultEncoderThreads();
+// The most threads an automatic pool grows to: the hardware threads.
+int maxEncoderThreads();
 
 class EncoderPool {
 public:
     // `threads` 0: synchronous. An ordered sink uses one thread whatever `threads` says (> 0).
     // Threads the system refuses to start are done without (threads() counts those running).
-    EncoderPool(FrameSink& sink, int threads, std::size_t memoryCapBytes);
+    // `growTo` > `threads` (parallel sinks only): each time the producer finds the memory cap
+    // reached (the encoders are slower than rendering), one more thread is started, up to
+    // `growTo`; so the count follows the measured encode/render ratio.
+    EncoderPool(FrameSink& sink, int threads, std::size_t memoryCapBytes, int growTo = 0);
     // Stops the threads; if finish() was not called (or failed) the sink's output is discarded.
     ~EncoderPool();
     EncoderPool(const EncoderPool&) = delete;
@@ -43,6 +48,7 @@ public:
     // Writes everything queued, stops the threads and closes the sink; the first error wins.
     Status finish();
 
+    // Threads running (read on the producer's thread).
     int threads() const { return static_cast<int>(workers_.size()); }
     std::uint64_t bytesWritten() const { return sink_.bytesWritten(); }
     // Frames the sink has written completely so far.
@@ -59,6 +65,8 @@ private:
     void fail(Error error);
     std::optional<Error> firstError() const;
     void stop();
+    void startWorker();
+    void growIfBehind();
 
     FrameSink& sink_;
     FrameQueue queue_;
@@ -67,6 +75,7 @@ private:
     mutable std::mutex errorMutex_;
     std::optional<Error> error_;
     std::atomic<int> framesWritten_{0};
+    int growTo_ = 0;
     bool abandoned_ = false;
     bool finished_ = false;
 };

@@ -10,14 +10,17 @@ namespace toyhost {
 Status ImageSequenceSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
     const std::filesystem::path path = pattern_.pathFor(frame.frame);
     Status written = okStatus();
+    scratch.image.encodeSeconds = scratch.image.writeSeconds = 0;  // a file refused early took none
     if (pattern_.format() == OutputFormat::Exr) {
         if (frame.format != PixelFormat::Rgba32f)
             return fileError(path.string(), "EXR capture needs a float readback", Code::CaptureFormat);
-        written = writeExr(path, frame.width, frame.height, frame.rgba32f(), &scratch.image);
+        written = writeExr(path, frame.width, frame.height, frame.rgba32f(), &scratch.image, exr_);
     } else {
         written = writePng(path, frame.width, frame.height, rgba8BottomUp(frame, scratch.bytes), pngLevel_,
                            &scratch.image);
     }
+    encodeNanos(scratch.image.encodeSeconds);
+    writeNanos(scratch.image.writeSeconds);
     if (!written) return written;
     std::error_code ec;
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
@@ -26,9 +29,12 @@ Status ImageSequenceSink::write(const CapturedFrame& frame, EncodeScratch& scrat
 }
 
 Status RawStreamSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
+    Clock::time_point at = Clock::now();
     const std::span<const std::uint8_t> topFirst =
         rowsTopFirst(rgba8BottomUp(frame, scratch.bytes), frame.width, frame.height, scratch.rows);
+    at = addEncodeTime(at);
     Status written = writeAll(fd_, std::as_bytes(topFirst), name_, &cancel_);
+    addWriteTime(at);
     if (!written) return written;
     addBytesWritten(topFirst.size());
     return okStatus();

@@ -11,14 +11,16 @@ namespace toyhost {
 
 class ImageSequenceSink final : public FrameSink {
 public:
-    // `pngLevel`: zlib level 0..9 for PNG files.
-    ImageSequenceSink(OutputPattern pattern, int pngLevel) : pattern_(std::move(pattern)), pngLevel_(pngLevel) {}
+    // `pngLevel`: --png-level 0..9 for PNG files; `exr`: how EXR files are stored.
+    ImageSequenceSink(OutputPattern pattern, int pngLevel, ExrSettings exr = {})
+        : pattern_(std::move(pattern)), pngLevel_(pngLevel), exr_(exr) {}
     bool ordered() const override { return false; }
     Status write(const CapturedFrame& frame, EncodeScratch& scratch) override;
 
 private:
     OutputPattern pattern_;
     int pngLevel_;
+    ExrSettings exr_;
 };
 
 // The raw stream format: per frame width * height * 4 bytes, RGBA8, rows top first (like image

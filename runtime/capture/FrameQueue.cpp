@@ -96,6 +96,11 @@ std::size_t FrameQueue::blockedProducers() const {
     return blockedProducers_;
 }
 
+std::size_t FrameQueue::queuedFrames() const {
+    std::lock_guard lock(mutex_);
+    return frames_.size();
+}
+
 std::size_t FrameQueue::blockedConsumers() const {
     std::lock_guard lock(mutex_);
     return blockedConsumers_;

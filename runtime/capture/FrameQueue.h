@@ -47,6 +47,8 @@ public:
     // frame): lets tests wait for "blocked" instead of sleeping and hoping.
     std::size_t blockedProducers() const;
     std::size_t blockedConsumers() const;
+    // Frames pushed and not yet popped.
+    std::size_t queuedFrames() const;
 
 private:
     const std::size_t cap_;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -42,12 +43,30 @@ public:
 
     // Bytes written so far; read from any thread (progress display).
     std::uint64_t bytesWritten() const { return bytesWritten_.load(std::memory_order_relaxed); }
+    // Seconds spent encoding (compressing, converting) and writing (files, pipes), summed over
+    // the encoder threads: the run's summary shows where capture time went.
+    double encodeSeconds() const { return encodeNanos_.load(std::memory_order_relaxed) * 1e-9; }
+    double writeSeconds() const { return writeNanos_.load(std::memory_order_relaxed) * 1e-9; }
 
 protected:
     void addBytesWritten(std::uint64_t bytes) { bytesWritten_.fetch_add(bytes, std::memory_order_relaxed); }
+    // Adds the time since `since` to the encode or write total and returns now.
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point addEncodeTime(Clock::time_point since) { return addTime(encodeNanos_, since); }
+    Clock::time_point addWriteTime(Clock::time_point since) { return addTime(writeNanos_, since); }
+    void encodeNanos(double seconds) { encodeNanos_.fetch_add(static_cast<std::int64_t>(seconds * 1e9), std::memory_order_relaxed); }
+    void writeNanos(double seconds) { writeNanos_.fetch_add(static_cast<std::int64_t>(seconds * 1e9), std::memory_order_relaxed); }
 
 private:
+    static Clock::time_point addTime(std::atomic<std::int64_t>& total, Clock::time_point since) {
+        const Clock::time_point now = Clock::now();
+        total.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(now - since).count(),
+                        std::memory_order_relaxed);
+        return now;
+    }
     std::atomic<std::uint64_t> bytesWritten_{0};
+    std::atomic<std::int64_t> encodeNanos_{0};
+    std::atomic<std::int64_t> writeNanos_{0};
 };
 
 }  // namespace toyhost

@@ -1,4 +1,5 @@
 #include "capture/VideoSink.h"
+#include "capture/VideoEncoderChoice.h"
 
 #include <atomic>
 #include <unistd.h>
@@ -56,26 +57,33 @@ std::vector<std::string> ffmpegArguments(const VideoRequest& r) {
                                      "-video_size", std::to_string(r.width) + "x" + std::to_string(r.height),
                                      "-framerate", formatNumber(r.fps), "-i", "pipe:0"};
     const bool webm = r.container == ".webm";
+    const std::string defaultCodec = webm ? "libvpx-vp9" : "libx264";
+    const std::string codec = r.settings.codec.value_or(defaultCodec);
+    if (codec == "h264_vaapi") args.insert(args.begin() + 6, {"-vaapi_device", "/dev/dri/renderD128"});
     if (r.settings.audio) {
         args.insert(args.end(), {"-i", "file:" + r.settings.audio->string(), "-map", "0:v:0", "-map", "1:a:0", "-c:a",
                                  webm ? "libopus" : "aac", "-b:a", "192k"});
     } else {
         args.push_back("-an");
     }
-    const std::string defaultCodec = webm ? "libvpx-vp9" : "libx264";
-    const std::string codec = r.settings.codec.value_or(defaultCodec);
     args.insert(args.end(), {"-c:v", codec});
     if (codec == "libx264") {
         const bool even = r.width % 2 == 0 && r.height % 2 == 0;
-        args.insert(args.end(), {"-preset", "medium", "-crf", std::to_string(r.settings.quality.value_or(18)),
+        args.insert(args.end(), {"-preset", r.settings.preset.value_or("medium"), "-crf", std::to_string(r.settings.quality.value_or(18)),
                                  "-pix_fmt", even ? "yuv420p" : "yuv444p"});
     } else if (codec == "libvpx-vp9") {
         // VP9's "good" deadline at cpu-used 4 encodes several times faster than the default with
         // little loss; -b:v 0 makes -crf a pure quality target.
         args.insert(args.end(), {"-crf", std::to_string(r.settings.quality.value_or(31)), "-b:v", "0",
                                  "-deadline", "good", "-cpu-used", "4", "-row-mt", "1", "-pix_fmt", "yuv420p"});
-    } else if (r.settings.quality) {
-        args.insert(args.end(), {"-crf", std::to_string(*r.settings.quality)});
+    } else {
+        // Hardware encoders take 4:2:0 frames (VAAPI uploaded to the device); their quality
+        // option is not -crf, so --video-quality goes only where it was asked.
+        if (codec == "h264_vaapi") args.insert(args.end(), {"-vf", "format=nv12,hwupload"});
+        else if (codec == "h264_qsv") args.insert(args.end(), {"-pix_fmt", "nv12"});
+        else if (codec == "h264_nvenc") args.insert(args.end(), {"-pix_fmt", "yuv420p"});
+        if (r.settings.preset) args.insert(args.end(), {"-preset", *r.settings.preset});
+        if (r.settings.quality) args.insert(args.end(), {"-crf", std::to_string(*r.settings.quality)});
     }
     // The same frames give the same bytes: no random Matroska UIDs, no version strings.
     args.insert(args.end(), {"-fflags", "+bitexact", "-flags:v", "+bitexact"});
@@ -108,6 +116,15 @@ Result<std::unique_ptr<VideoSink>> VideoSink::start(const fs::path& path, int wi
         return fileError(path.string(), "not started: toyhost is stopping", Code::Interrupted);
     sink->registered_ = true;
     VideoRequest request{sink->temp_, lowerExtension(path), width, height, fps, settings};
+    if (settings.codec == "auto") {
+        // A throughput preset for the software fallback: capture is about keeping up.
+        const VideoEncoderChoice choice = chooseAutoVideoEncoder(request.container);
+        request.settings.codec = choice.codec;
+        if (!choice.hardware && choice.codec == "libx264" && !settings.preset) request.settings.preset = "veryfast";
+        sink->autoExplanation_ = choice.explanation() +
+                                 (request.settings.preset ? ", preset " + *request.settings.preset : std::string());
+    }
+    sink->encoder_ = request.settings.codec.value_or(request.container == ".webm" ? "libvpx-vp9" : "libx264");
     Result<ChildProcess> ffmpeg = ChildProcess::spawn(ffmpegArguments(request), sink->log_);
     if (!ffmpeg) {
         fs::remove(sink->log_, ec);
@@ -133,9 +150,13 @@ Error VideoSink::ffmpegFailed(const std::string& what) const {
 }
 
 Status VideoSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
+    Clock::time_point at = Clock::now();
     const std::span<const std::uint8_t> topFirst =
         rowsTopFirst(rgba8BottomUp(frame, scratch.bytes), frame.width, frame.height, scratch.rows);
+    at = addEncodeTime(at);
+    // Writing into ffmpeg's pipe waits while ffmpeg encodes: this is where a video's encoding shows.
     Status written = ffmpeg_->write(std::as_bytes(topFirst));
+    addWriteTime(at);
     if (!written) {
         // ffmpeg stopped reading: it failed; wait for it so its log is complete.
         (void)ffmpeg_->closeAndWait();

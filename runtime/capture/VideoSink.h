@@ -15,7 +15,8 @@
 namespace toyhost {
 
 struct VideoSettings {
-    std::optional<std::string> codec;  // an ffmpeg encoder name; default: by container
+    std::optional<std::string> codec;  // an ffmpeg encoder name, or "auto"; default: by container
+    std::optional<std::string> preset; // --video-preset, passed to ffmpeg's -preset
     std::optional<int> quality;        // constant rate factor (lower is better); default: by codec
     // A sound track muxed in from its first sample (the Sound pass, rendered before the frames):
     // AAC in mp4/mov/mkv, Opus in webm. Shorter than the video: silence after its end.
@@ -49,6 +50,9 @@ public:
     Status close() override;
     void discard() override;
     void cancel() override;
+    // The ffmpeg encoder in use, and with --codec auto the line saying why it was chosen.
+    const std::string& encoder() const { return encoder_; }
+    const std::string& autoExplanation() const { return autoExplanation_; }
 
 private:
     VideoSink() = default;
@@ -60,6 +64,8 @@ private:
     std::optional<ChildProcess> ffmpeg_;
     bool registered_ = false;  // temp_ and log_ are in core/InFlight.h
     bool closed_ = false;
+    std::string encoder_;
+    std::string autoExplanation_;
 };
 
 }  // namespace toyhost

@@ -11,7 +11,7 @@ inline constexpr int kCanvasWidth = 800;
 inline constexpr int kCanvasHeight = 450;
 inline constexpr int kFrames = 1;
 inline constexpr double kFps = 60.0;             // fixed time step: iTime = start + n / fps
-inline constexpr int kPngLevel = 1;              // zlib level of captured PNG files (fast)
+inline constexpr int kPngLevel = 1;              // --png-level of captured PNG files (fastest compression)
 inline constexpr std::size_t kCaptureMemoryMiB = 256;  // frames waiting for the encoders
 inline constexpr int kCaptureEvery = 1;
 inline constexpr int kMaxCanvasSide = 16384;     // --size limit, before asking GL for its own

@@ -1,7 +1,7 @@
 #include "image/ImageWriters.h"
 
 #include <cerrno>
-#include <csetjmp>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -16,7 +16,7 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
-#include <png.h>
+#include <Imath/half.h>
 
 #include "core/AtomicFile.h"
 #include "image/ImageFile.h"
@@ -26,6 +26,7 @@ namespace fs = std::filesystem;
 
 namespace {
 constexpr const char* kExrChannels[4] = {"R", "G", "B", "A"};
+constexpr int kPngReadableLimit = 1000000;
 
 Error ioError(const fs::path& path, const std::string& what, int error) {
     return fileError(path.string(), what + ": " + std::strerror(error), error == ENOSPC ? Code::IoNoSpace : Code::IoWrite);
@@ -42,49 +43,6 @@ Status checkSize(const fs::path& path, int width, int height, std::size_t values
                                    "x" + std::to_string(height) + " RGBA needs " + std::to_string(expected),
                          Code::ImageSize);
     return okStatus();
-}
-
-// ---- PNG ----
-// libpng reports errors by longjmp. The jump target lives in encodePng, whose frame holds only C
-// objects, so no C++ destructor is ever skipped; the caller owns the FILE and the row table.
-struct PngError {
-    char message[256];
-};
-
-[[noreturn]] void onPngError(png_structp png, png_const_charp message) {
-    auto* error = static_cast<PngError*>(png_get_error_ptr(png));
-    std::snprintf(error->message, sizeof error->message, "%s", message);
-    png_longjmp(png, 1);
-}
-
-void onPngWarning(png_structp, png_const_charp) {}  // library code does not print
-
-bool encodePng(std::FILE* file, const std::uint8_t* const* rows, png_uint_32 width, png_uint_32 height, int level,
-               PngError* error) {
-    png_structp png =
-        png_create_write_struct(PNG_LIBPNG_VER_STRING, error, onPngError, onPngWarning);
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    if (!info) {
-        png_destroy_write_struct(&png, nullptr);
-        std::snprintf(error->message, sizeof error->message, "out of memory");
-        return false;
-    }
-    if (setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        return false;
-    }
-    png_init_io(png, file);
-    png_set_compression_level(png, level);
-    // libpng's adaptive row filters cost about as much as zlib's fastest level itself; at the
-    // fast levels (capture) they are skipped, which on rendered frames costs little size.
-    if (level <= 2) png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
-    png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB_ALPHA, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_write_info(png, info);
-    png_write_image(png, const_cast<png_bytepp>(rows));
-    png_write_end(png, nullptr);
-    png_destroy_write_struct(&png, &info);
-    return true;
 }
 
 struct FileCloser {
@@ -107,17 +65,33 @@ Status writePng(const fs::path& path, int width, int height, std::span<const std
     rows.resize(static_cast<std::size_t>(height));
     for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = rgba.data() + (rows.size() - 1 - i) * stride;
 
+    // libpng's readers refuse images wider or taller than 1,000,000 pixels (their default user
+    // limit), so such a file would be written but unreadable by most programs.
+    if (width > kPngReadableLimit || height > kPngReadableLimit)
+        return fileError(path.string(),
+                         "PNG encoding failed: " + std::to_string(width) + "x" + std::to_string(height) +
+                             " is larger than the 1000000 pixels a side that libpng reads",
+                         Code::ImageSize);
+    const auto started = std::chrono::steady_clock::now();
+    PngEncoder localEncoder;
+    PngEncoder& encoder = scratch ? scratch->png : localEncoder;
+    const std::span<const std::uint8_t> png =
+        encoder.encode(rows.data(), width, height, pngSettingsForLevel(compressionLevel));
+    if (png.empty()) return fileError(path.string(), "PNG encoding failed: out of memory", Code::IoWrite);
+    const auto encoded = std::chrono::steady_clock::now();
+    if (scratch) scratch->encodeSeconds = std::chrono::duration<double>(encoded - started).count();
+    struct WriteTimer {  // the file's write, however it ends
+        ImageScratch* scratch;
+        std::chrono::steady_clock::time_point from;
+        ~WriteTimer() {
+            if (scratch) scratch->writeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count();
+        }
+    } writeTimer{scratch, encoded};
+
     return writeFileAtomically(path, [&](const fs::path& temp) -> Status {
         std::unique_ptr<std::FILE, FileCloser> file(std::fopen(temp.c_str(), "wb"));
         if (!file) return ioError(path, "cannot open for writing", errno);
-        PngError error{};
-        if (!encodePng(file.get(), rows.data(), static_cast<png_uint_32>(width),
-                       static_cast<png_uint_32>(height), compressionLevel, &error)) {
-            // libpng reports a failed fwrite as "Write Error"; errno still says why.
-            const int cause = errno;
-            if (cause == ENOSPC) return ioError(path, "PNG write failed", cause);
-            return fileError(path.string(), std::string("PNG encoding failed: ") + error.message, Code::IoWrite);
-        }
+        if (std::fwrite(png.data(), 1, png.size(), file.get()) != png.size()) return ioError(path, "PNG write failed", errno);
         if (std::fflush(file.get()) != 0 || std::ferror(file.get())) return ioError(path, "write failed", errno);
         if (std::fclose(file.release()) != 0) return ioError(path, "write failed", errno);
         return okStatus();
@@ -127,26 +101,80 @@ Status writePng(const fs::path& path, int width, int height, std::span<const std
 Result<Image8> readPng(const fs::path& path) { return loadImageFile(path); }
 
 // ---- EXR ----
-Status writeExr(const fs::path& path, int width, int height, std::span<const float> rgba, ImageScratch* scratch) {
+namespace {
+struct ExrCompressionInfo {
+    ExrCompression value;
+    const char* name;
+    Imf::Compression imf;
+};
+constexpr ExrCompressionInfo kExrCompressions[] = {
+    {ExrCompression::None, "none", Imf::NO_COMPRESSION},    {ExrCompression::Rle, "rle", Imf::RLE_COMPRESSION},
+    {ExrCompression::Zips, "zips", Imf::ZIPS_COMPRESSION},  {ExrCompression::Zip, "zip", Imf::ZIP_COMPRESSION},
+    {ExrCompression::Piz, "piz", Imf::PIZ_COMPRESSION},     {ExrCompression::Pxr24, "pxr24", Imf::PXR24_COMPRESSION},
+    {ExrCompression::B44, "b44", Imf::B44_COMPRESSION},     {ExrCompression::B44a, "b44a", Imf::B44A_COMPRESSION},
+    {ExrCompression::Dwaa, "dwaa", Imf::DWAA_COMPRESSION},  {ExrCompression::Dwab, "dwab", Imf::DWAB_COMPRESSION},
+};
+}  // namespace
+
+std::string_view exrCompressionName(ExrCompression compression) {
+    for (const ExrCompressionInfo& c : kExrCompressions)
+        if (c.value == compression) return c.name;
+    return "none";
+}
+
+std::optional<ExrCompression> exrCompressionNamed(std::string_view name) {
+    for (const ExrCompressionInfo& c : kExrCompressions)
+        if (name == c.name) return c.value;
+    return std::nullopt;
+}
+
+std::string exrCompressionNames() {
+    std::string names;
+    for (const ExrCompressionInfo& c : kExrCompressions) names += (names.empty() ? "" : ", ") + std::string(c.name);
+    return names;
+}
+
+Status writeExr(const fs::path& path, int width, int height, std::span<const float> rgba, ImageScratch* scratch,
+                ExrSettings settings) {
     if (Status size = checkSize(path, width, height, rgba.size()); !size) return size;
+    const auto started = std::chrono::steady_clock::now();
+    struct EncodeTimer {
+        ImageScratch* scratch;
+        std::chrono::steady_clock::time_point from;
+        ~EncodeTimer() {
+            if (!scratch) return;
+            scratch->encodeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count();
+            scratch->writeSeconds = 0;
+        }
+    } encodeTimer{scratch, started};
     ImageScratch local;
     std::vector<float>& topFirst = (scratch ? scratch : &local)->floats;
     copyFlipped(rgba, width, height, topFirst);
+    std::vector<std::uint16_t>& halves = (scratch ? scratch : &local)->halves;
+    if (settings.half) {  // OpenEXR does not convert slices on output: rounded to nearest here
+        halves.resize(topFirst.size());
+        for (std::size_t i = 0; i < topFirst.size(); ++i) halves[i] = Imath::half(topFirst[i]).bits();
+    }
 
     return writeFileAtomically(path, [&](const fs::path& temp) -> Status {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
         if (!out) return ioError(path, "cannot open for writing", errno);
         try {
             Imf::Header header(width, height);
-            header.compression() = Imf::NO_COMPRESSION;
+            Imf::Compression compression = Imf::NO_COMPRESSION;
+            for (const ExrCompressionInfo& c : kExrCompressions)
+                if (c.value == settings.compression) compression = c.imf;
+            header.compression() = compression;
             header.lineOrder() = Imf::INCREASING_Y;
             Imf::FrameBuffer frame;
-            const std::size_t pixelBytes = 4 * sizeof(float);
+            const Imf::PixelType type = settings.half ? Imf::HALF : Imf::FLOAT;
+            const std::size_t pixelBytes = 4 * (settings.half ? sizeof(std::uint16_t) : sizeof(float));
             for (int c = 0; c < 4; ++c) {
-                header.channels().insert(kExrChannels[c], Imf::Channel(Imf::FLOAT));
+                header.channels().insert(kExrChannels[c], Imf::Channel(type));
+                char* base = settings.half ? reinterpret_cast<char*>(halves.data() + c)
+                                           : reinterpret_cast<char*>(topFirst.data() + c);
                 frame.insert(kExrChannels[c],
-                             Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(topFirst.data() + c),
-                                        pixelBytes, pixelBytes * static_cast<std::size_t>(width)));
+                             Imf::Slice(type, base, pixelBytes, pixelBytes * static_cast<std::size_t>(width)));
             }
             Imf::StdOFStream stream(out, temp.c_str());
             Imf::OutputFile file(stream, header);

@@ -4,6 +4,7 @@
 #include "core/Defaults.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace toyhost {
 
@@ -26,7 +27,7 @@ Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSetti
     switch (settings.output.format()) {
         case OutputFormat::Png:
         case OutputFormat::Exr:
-            recorder->sink_ = std::make_unique<ImageSequenceSink>(settings.output, settings.pngLevel);
+            recorder->sink_ = std::make_unique<ImageSequenceSink>(settings.output, settings.pngLevel, settings.exr);
             break;
         case OutputFormat::RawStream:
             recorder->sink_ = std::make_unique<RawStreamSink>(settings.rawStreamFd, "stdout");
@@ -35,6 +36,8 @@ Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSetti
             Result<std::unique_ptr<VideoSink>> video = VideoSink::start(
                 settings.output.pathFor(0), recorder->width_, recorder->height_, settings.fps, settings.video);
             if (!video) return video.error();
+            recorder->videoEncoder_ = (*video)->encoder();
+            recorder->videoEncoderChoice_ = (*video)->autoExplanation();
             recorder->sink_ = std::move(*video);
             break;
         }
@@ -42,7 +45,10 @@ Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSetti
     const int threads = settings.synchronous ? 0
                         : settings.encoderThreads > 0 ? settings.encoderThreads
                                                       : defaultEncoderThreads();
-    recorder->pool_ = std::make_unique<EncoderPool>(*recorder->sink_, threads, settings.memoryCapBytes);
+    // An automatic count starts at defaultEncoderThreads() and grows to every core when rendering
+    // outruns the encoders (a GPU, a cheap shader); --encoder-threads N is exactly N.
+    const int growTo = settings.encoderThreads > 0 ? 0 : maxEncoderThreads();
+    recorder->pool_ = std::make_unique<EncoderPool>(*recorder->sink_, threads, settings.memoryCapBytes, growTo);
     if (!settings.synchronous && settings.pass != PassId::CubeA) {
         Result<ReadbackRing> ring = ReadbackRing::create(recorder->width_, recorder->height_, recorder->format_);
         if (!ring) return ring.error();
@@ -66,6 +72,7 @@ RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity)
     settings.pass = o.capturePass;
     settings.synchronous = o.syncCapture;
     settings.pngLevel = *o.pngLevel;
+    settings.exr = o.exr;
     settings.encoderThreads = o.encoderThreads;
     settings.memoryCapBytes = *o.captureMemoryBytes;
     settings.video = o.video;
@@ -97,6 +104,16 @@ Status FrameRecorder::captureCube(const Player& player, int frame) {
     return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(**pixels)});
 }
 
+namespace {
+using Clock = std::chrono::steady_clock;
+// Adds the seconds since construction to `total` when it goes out of scope.
+struct Stopwatch {
+    double& total;
+    Clock::time_point from = Clock::now();
+    ~Stopwatch() { total += std::chrono::duration<double>(Clock::now() - from).count(); }
+};
+}  // namespace
+
 Status FrameRecorder::capture(const Player& player, int frame) {
     if (settings_.pass == PassId::CubeA) return captureCube(player, frame);
     const PassOutput output = player.output(settings_.pass);
@@ -112,14 +129,20 @@ Status FrameRecorder::capture(const Player& player, int frame) {
             ++captured_;
             return dropped(frame);
         }
-        readFramebuffer(output.framebuffer, width_, height_, format_, **pixels);
+        {
+            Stopwatch readback{readbackSeconds_};
+            readFramebuffer(output.framebuffer, width_, height_, format_, **pixels);
+        }
         ++captured_;
         scanFloatFrame(frame, **pixels);
         return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(**pixels)});
     }
     if (ring_->full())
         if (Status collected = collectOldest(); !collected) return collected;
-    ring_->start(output.framebuffer, frame);
+    {
+        Stopwatch readback{readbackSeconds_};
+        ring_->start(output.framebuffer, frame);
+    }
     ++captured_;
     return poll();
 }
@@ -136,6 +159,7 @@ Result<std::optional<std::vector<std::byte>>> FrameRecorder::takeBuffer(std::siz
     }
     // Blocks while the encoders hold the memory cap: back-pressure reaches the render loop here.
     if (settings_.activity) settings_.activity->begin(RunActivity::Phase::WaitingForOutput);
+    Stopwatch waiting{waitSeconds_};
     Result<std::vector<std::byte>> buffer = pool_->acquire(bytes);
     if (settings_.activity) settings_.activity->idle();
     if (!buffer) return buffer.error();
@@ -151,6 +175,7 @@ Status FrameRecorder::collectOldest() {
         return dropped(frame);
     }
     const int frame = ring_->oldestFrame();
+    Stopwatch readback{readbackSeconds_};
     if (Status copied = ring_->takeOldest(**pixels); !copied) return copied;
     scanFloatFrame(frame, **pixels);
     return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(**pixels)});

@@ -28,6 +28,7 @@ struct RecorderSettings {
     PassId pass = PassId::Image;
     bool synchronous = false;      // glReadPixels and encoding on the render thread
     int pngLevel = 1;
+    ExrSettings exr;
     int encoderThreads = 0;        // 0: defaultEncoderThreads()
     std::size_t memoryCapBytes = std::size_t(256) << 20;
     VideoSettings video;
@@ -75,6 +76,15 @@ public:
     const std::optional<std::pair<int, NonFiniteFind>>& firstNonFinite() const { return firstNonFinite_; }
     int width() const { return width_; }
     int height() const { return height_; }
+    // Where capture time went, in seconds: on the render thread, reading frames back and waiting
+    // for the encoders (back-pressure); on the encoder threads (summed), encoding and writing.
+    double readbackSeconds() const { return readbackSeconds_; }
+    double waitSeconds() const { return waitSeconds_; }
+    double encodeSeconds() const { return sink_->encodeSeconds(); }
+    // A video's ffmpeg encoder ("" for image files and raw frames), and with --codec auto why.
+    const std::string& videoEncoder() const { return videoEncoder_; }
+    const std::string& videoEncoderChoice() const { return videoEncoderChoice_; }
+    double writeSeconds() const { return sink_->writeSeconds(); }
 
     ~FrameRecorder();
 
@@ -93,6 +103,9 @@ private:
     std::vector<int> droppedFrames_;
     Status dropped(int frame);
     int captured_ = 0;  // capture() calls that took a frame
+    std::string videoEncoder_, videoEncoderChoice_;
+    double readbackSeconds_ = 0;
+    double waitSeconds_ = 0;
     std::optional<std::pair<int, NonFiniteFind>> firstNonFinite_;
     // A pixel buffer for a frame: waits for one, or (dropWhenBusy) gives nothing when none is free.
     Result<std::optional<std::vector<std::byte>>> takeBuffer(std::size_t bytes);

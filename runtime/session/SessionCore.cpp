@@ -136,6 +136,8 @@ Status SessionCore::createRecorder() {
     Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(recorderSettings(plan_, activity()), *player_);
     if (!created) return created.error();
     recorder_ = std::move(*created);
+    if (!recorder_->videoEncoderChoice().empty())
+        observer_.notice(notice(recorder_->videoEncoderChoice(), Code::CaptureFfmpeg));
     return okStatus();
 }
 
@@ -220,6 +222,7 @@ Result<SessionReport> SessionCore::writeSound() {
 Status SessionCore::beginRound() {
     frameNumber_ = plan_.resume && plan_.resume->state.frame > 0 ? plan_.resume->state.frame : 0;
     framesRendered_ = 0;
+    renderSeconds_ = 0;
     captured_.clear();
     roundStartedAt_ = Clock::now();
     SessionReport fresh;
@@ -256,7 +259,9 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
         roundStartedAt_ = Clock::now();
         report_.startupSeconds = secondsBetween(startedAt_, roundStartedAt_);
     }
+    const Clock::time_point stepStarted = Clock::now();
     player_->step(time, events, renderImage);
+    renderSeconds_ += secondsBetween(stepStarted, Clock::now());
 
     // Readbacks may wait for the GPU: the watchdog is told which pass it is still drawing.
     player_->publishPendingDraws();
@@ -269,7 +274,11 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     player_->publishPendingDraws();
     if (o.checkFinite) checkBuffers(frame);
     // The first frame waits for the GPU once, so that its time is real.
-    if (o.finishEachFrame || framesRendered_ == 0) player_->finish();
+    if (o.finishEachFrame || framesRendered_ == 0) {
+        const Clock::time_point finishStarted = Clock::now();
+        player_->finish();
+        renderSeconds_ += secondsBetween(finishStarted, Clock::now());
+    }
     if (framesRendered_ == 0) firstFrameEndedAt_ = Clock::now();
     ++framesRendered_;
     ++frameNumber_;
@@ -458,6 +467,9 @@ Result<SessionReport> SessionCore::finishRound() {
         if (!finished) return finished.error();
         report_.bytesWritten = recorder_->bytesWritten();
         report_.encoderThreads = recorder_->encoderThreads();
+        report_.videoEncoder = recorder_->videoEncoder();
+        report_.captureTimes = CaptureTimes{renderSeconds_, recorder_->readbackSeconds(), recorder_->waitSeconds(),
+                                            recorder_->encodeSeconds(), recorder_->writeSeconds()};
         if (const auto& nonFinite = recorder_->firstNonFinite())
             if (auto warning = finite_->check(o.capturePass, nonFinite->first, nonFinite->second,
                                               FiniteCheck::Coverage::CapturedFrames))

@@ -167,6 +167,7 @@ private:
     bool live_ = false;          // hot reload between frames (a window)
     int frameNumber_ = 0;
     int framesRendered_ = 0;     // this round
+    double renderSeconds_ = 0;   // this round: in the player's frame calls and GPU waits
     SessionReport report_;
     std::chrono::steady_clock::time_point startedAt_, roundStartedAt_, firstFrameEndedAt_;
     std::optional<std::filesystem::path> checkpointWritten_;

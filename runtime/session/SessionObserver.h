@@ -16,6 +16,19 @@
 
 namespace toyhost {
 
+// Where a capturing run's time went, in seconds. On the render thread: the player's frame calls
+// (GPU waits included), reading frames back, and waiting for the encoders (back-pressure: the
+// encoders are the bottleneck when this is large). On the encoder threads, summed over them:
+// encoding (compression, conversion) and writing (files, or ffmpeg's pipe, which waits while
+// ffmpeg encodes).
+struct CaptureTimes {
+    double render = 0;
+    double readback = 0;
+    double waitingForEncoders = 0;
+    double encode = 0;
+    double write = 0;
+};
+
 // What a run (or one round of a --watch run) did.
 struct SessionReport {
     std::string name;        // the shadertoy's
@@ -34,6 +47,8 @@ struct SessionReport {
     std::optional<std::filesystem::path> checkpoint;
     std::uint64_t bytesWritten = 0;  // the captured frames' files (a video's size)
     int encoderThreads = 0;
+    std::optional<CaptureTimes> captureTimes;  // runs that captured frames
+    std::string videoEncoder;                  // the ffmpeg encoder a video used
     bool interactive = false;  // a window: no output is the normal case
     bool toStdout = false;     // raw frames went to stdout
     bool outputAsked = false;  // --out was given

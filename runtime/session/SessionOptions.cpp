@@ -222,8 +222,11 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
                          Code::CaptureFfmpeg);
         run.output = std::move(*pattern);
     }
-    if ((o.video.codec || o.video.quality) && (!run.output || run.output->format() != OutputFormat::Video))
-        return usage("--codec and --video-quality apply only to a video --out (.mp4, .webm, .mov, .mkv)");
+    const bool exrAsked = o.exr.half || o.exr.compression != ExrCompression::None;
+    if (exrAsked && (!run.output || run.output->format() != OutputFormat::Exr))
+        return usage("--exr-compression and --exr-half apply only to an EXR --out (frame_%04d.exr)");
+    if ((o.video.codec || o.video.quality || o.video.preset) && (!run.output || run.output->format() != OutputFormat::Video))
+        return usage("--codec, --video-quality and --video-preset apply only to a video --out (.mp4, .webm, .mov, .mkv)");
     if (o.mouse) run.mouse = mouseHeldAt(o.mouse->x, o.mouse->y);
     if (o.mouseScript) {
         Result<std::string> text = readTextFile(*o.mouseScript);

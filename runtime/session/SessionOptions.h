@@ -17,6 +17,7 @@
 
 #include "capture/OutputPattern.h"
 #include "capture/VideoSink.h"
+#include "image/ImageWriters.h"
 #include "core/Result.h"
 #include "gl/HeadlessContext.h"
 #include "input/InputScript.h"
@@ -60,7 +61,8 @@ struct SessionOptions {
     EglPlatform eglPlatform = EglPlatform::Automatic;
 
     // Capture pipeline (runtime/capture).
-    std::optional<int> pngLevel;           // zlib level of PNG files, 0..9; default defaults::kPngLevel
+    std::optional<int> pngLevel;           // --png-level 0..9; default defaults::kPngLevel
+    ExrSettings exr;                       // --exr-compression, --exr-half (default: exact 32-bit, uncompressed)
     bool syncCapture = false;              // read back and encode on the render thread (reference path)
     int encoderThreads = 0;                // 0: defaultEncoderThreads()
     std::optional<std::size_t> captureMemoryBytes;  // cap on frames waiting for encoders

@@ -53,6 +53,15 @@ std::vector<std::string> summaryLines(const SessionReport& r) {
         lines.push_back("wrote WAV to stdout");
     else if (r.toStdout)
         lines.push_back("wrote " + bytes() + " of raw RGBA8 frames to stdout");
+    if (r.captureTimes) {
+        const CaptureTimes& t = *r.captureTimes;
+        lines.push_back("capture time: render " + duration(t.render) + ", readback " + duration(t.readback) +
+                        ", waiting for the encoders " + duration(t.waitingForEncoders) + "; " +
+                        std::to_string(r.encoderThreads) + (r.encoderThreads == 1 ? " encoder thread" : " encoder threads") +
+                        (r.encoderThreads == 0 ? " (encoding on the render thread)" : "") + ": encode " +
+                        duration(t.encode) + ", write " + duration(t.write) +
+                        (r.videoEncoder.empty() ? "" : " (video encoder " + r.videoEncoder + ")"));
+    }
     if (r.checkpoint) lines.push_back("checkpoint written: " + r.checkpoint->string());
     if (r.files.empty() && !r.toStdout && !r.outputAsked && !r.interactive)
         lines.push_back(std::string(r.checkpoint ? "no frames written" : "no files written") +

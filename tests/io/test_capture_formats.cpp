@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "capture/FrameBytes.h"
+#include "capture/VideoEncoderChoice.h"
 #include "capture/VideoSink.h"
 #include "timing/ProgressLine.h"
 
@@ -90,4 +91,42 @@ TEST(ProgressLine, ShowsFramesRateEtaAndBytes) {
     EXPECT_EQ(formatBytes(812), "812 B");
     EXPECT_EQ(formatBytes(3 * 1024 + 400), "3.4 KiB");
     EXPECT_EQ(formatBytes(std::uint64_t(3) << 30), "3.00 GiB");
+}
+
+TEST(VideoArguments, PresetPassesThroughAndHardwareEncodersGetTheirPixelPath) {
+    VideoSettings fast;
+    fast.preset = "ultrafast";
+    EXPECT_TRUE(contains(ffmpegArguments({"/tmp/o", ".mp4", 64, 64, 30, fast}), {"-c:v", "libx264", "-preset", "ultrafast"}));
+    VideoSettings vaapi;
+    vaapi.codec = "h264_vaapi";
+    const auto args = ffmpegArguments({"/tmp/o", ".mp4", 64, 64, 30, vaapi});
+    EXPECT_TRUE(contains(args, {"-vaapi_device", "/dev/dri/renderD128"}));
+    EXPECT_TRUE(contains(args, {"-c:v", "h264_vaapi", "-vf", "format=nv12,hwupload"}));
+    VideoSettings nvenc;
+    nvenc.codec = "h264_nvenc";
+    nvenc.preset = "p1";
+    EXPECT_TRUE(contains(ffmpegArguments({"/tmp/o", ".mp4", 64, 64, 30, nvenc}),
+                         {"-c:v", "h264_nvenc", "-pix_fmt", "yuv420p", "-preset", "p1"}));
+}
+
+TEST(VideoEncoderChoice, AutoUsesAHardwareEncoderThatWorksElseSaysItFellBackToSoftware) {
+    const VideoEncoderChoice choice = chooseAutoVideoEncoder(".mp4");
+    const std::vector<std::string>& hardware = hardwareH264Encoders();
+    if (choice.hardware) {
+        // A machine whose ffmpeg encodes on its GPU: one of the candidates, said so.
+        EXPECT_NE(std::find(hardware.begin(), hardware.end(), choice.codec), hardware.end());
+        EXPECT_NE(choice.explanation().find("(hardware)"), std::string::npos);
+    } else {
+        // Here (no GPU, no /dev/dri): every candidate was tried and failed, libx264 is used, and
+        // the notice says so.
+        EXPECT_EQ(choice.codec, "libx264");
+        EXPECT_EQ(choice.tried, hardware);
+        EXPECT_NE(choice.explanation().find("no hardware encoder works here (tried h264_nvenc h264_vaapi h264_qsv)"),
+                  std::string::npos)
+            << choice.explanation();
+    }
+    // Cached: the second call runs no test encode and answers the same.
+    const VideoEncoderChoice again = chooseAutoVideoEncoder(".mkv");
+    EXPECT_EQ(again.codec, choice.codec);
+    EXPECT_EQ(chooseAutoVideoEncoder(".webm").codec, "libvpx-vp9");
 }

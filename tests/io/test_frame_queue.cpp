@@ -343,3 +343,76 @@ TEST(EncoderPool, TryAcquireReportsBusyAndErrorsApart) {
     ASSERT_TRUE(third.ok()) << "busy is not an error";
     EXPECT_FALSE(third->has_value());
 }
+
+namespace {
+// A sink whose writes wait at a gate until the test opens it: a stalled encoder, held for as long
+// as the test needs to look at the pool.
+class GatedSink final : public FrameSink {
+public:
+    bool ordered() const override { return false; }
+    Status write(const CapturedFrame& frame, EncodeScratch&) override {
+        std::unique_lock lock(mutex_);
+        ++inside;
+        opened_.wait(lock, [&] { return open_; });
+        --inside;
+        frames.push_back(frame.frame);
+        return okStatus();
+    }
+    void open() {
+        std::lock_guard lock(mutex_);
+        open_ = true;
+        opened_.notify_all();
+    }
+    int writersInside() {
+        std::lock_guard lock(mutex_);
+        return inside;
+    }
+    std::vector<int> frames;
+
+private:
+    std::mutex mutex_;
+    std::condition_variable opened_;
+    bool open_ = false;
+    int inside = 0;
+};
+}  // namespace
+
+TEST(EncoderPool, EncodersThatFallBehindGetOneMoreThreadAndMemoryStaysUnderTheCap) {
+    GatedSink sink;
+    const std::size_t cap = 3 * kFrameBytes;
+    EncoderPool pool(sink, /*threads=*/1, cap, /*growTo=*/2);
+    constexpr int kFrames = 30;
+    std::thread producer([&] {
+        for (int f = 0; f < kFrames; ++f) {
+            auto buffer = pool.acquire(kFrameBytes);
+            ASSERT_TRUE(buffer.ok());
+            EXPECT_LE(pool.queue().allocatedBytes(), cap);
+            ASSERT_TRUE(pool.submit(stamped(f, std::move(*buffer))).ok());
+        }
+    });
+    // The sink holds every frame: the producer fills the cap, finds no buffer, starts a second
+    // encoder (which takes the next frame and waits in the sink too), then waits itself.
+    EXPECT_TRUE(eventually([&] { return sink.writersInside() == 2 && pool.queue().blockedProducers() == 1; }));
+    EXPECT_EQ(pool.queue().allocatedBytes(), cap);
+    sink.open();
+    producer.join();
+    ASSERT_TRUE(pool.finish().ok());
+    EXPECT_EQ(pool.threads(), 2);  // never more than growTo
+    EXPECT_EQ(sink.frames.size(), static_cast<std::size_t>(kFrames));
+    EXPECT_LE(pool.queue().peakAllocatedBytes(), cap);
+}
+
+TEST(EncoderPool, AnOrderedSinkNeverGrowsPastOneThread) {
+    RecordingSink sink(/*ordered=*/true, std::chrono::milliseconds(1));
+    EncoderPool pool(sink, /*threads=*/1, 2 * kFrameBytes, /*growTo=*/4);
+    for (int f = 0; f < 20; ++f) {
+        auto buffer = pool.acquire(kFrameBytes);
+        ASSERT_TRUE(buffer.ok());
+        ASSERT_TRUE(pool.submit(stamped(f, std::move(*buffer))).ok());
+    }
+    ASSERT_TRUE(pool.finish().ok());
+    EXPECT_EQ(pool.threads(), 1);
+    std::vector<int> expected(20);
+    for (int f = 0; f < 20; ++f) expected[f] = f;
+    EXPECT_EQ(sink.frames, expected);
+}

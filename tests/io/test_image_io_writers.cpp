@@ -129,10 +129,10 @@ TEST(ImageIo, RejectsBuffersThatDoNotMatchTheSize) {
     EXPECT_EQ(folder.files(), std::vector<std::string>{});
 }
 
-TEST(ImageIo, LibpngErrorLeavesNoFileAndNoPartial) {
+TEST(ImageIo, PngWiderThanLibpngReadsIsRefusedAndLeavesNothing) {
     TempFolder folder;
-    // libpng refuses widths over its 1,000,000 default user limit from inside png_set_IHDR, so
-    // this exercises the longjmp error path after the temporary file was opened.
+    // libpng's readers refuse widths over their 1,000,000 default user limit: such a file is
+    // refused before anything is written.
     const int width = 1'000'001;
     const std::vector<std::uint8_t> row(static_cast<std::size_t>(width) * 4, 128);
     const Status written = writePng(folder.path / "wide.png", width, 1, row);
@@ -184,4 +184,41 @@ TEST(ImageIo, ReadingAFileThatIsNotExrIsAnError) {
     const Result<ImageF32> exr = readExr(folder.path / "fake.exr");
     ASSERT_FALSE(exr.ok());
     EXPECT_NE(exr.error().text().find("fake.exr"), std::string::npos);
+}
+
+TEST(ImageIo, EveryExrCompressionReadsBackLosslessOnesExactlyAndHalfWithinHalfPrecision) {
+    TempFolder folder;
+    const int width = 37, height = 21;  // odd sizes: partial blocks for b44 and dwa
+    std::vector<float> rgba;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (float v : {x * 0.0371f, y * 1.37f - 3.0f, (x * y) % 7 * 0.25f, 1.0f / (1 + x + y)}) rgba.push_back(v);
+    const std::vector<std::string> lossless = {"none", "rle", "zips", "zip", "piz"};
+    for (bool half : {false, true}) {
+        for (const std::string& name : {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"}) {
+            const std::optional<ExrCompression> compression = exrCompressionNamed(name);
+            ASSERT_TRUE(compression) << name;
+            EXPECT_EQ(exrCompressionName(*compression), name);
+            const fs::path file = folder.path / (name + (half ? "_half" : "") + ".exr");
+            const Status written = writeExr(file, width, height, rgba, nullptr, {*compression, half});
+            ASSERT_TRUE(written.ok()) << written.error().text();
+            const Result<ImageF32> read = readExr(file);
+            ASSERT_TRUE(read.ok()) << read.error().text();
+            ASSERT_EQ(read->rgba.size(), rgba.size());
+            const bool exact = std::find(lossless.begin(), lossless.end(), name) != lossless.end();
+            for (std::size_t i = 0; i < rgba.size(); ++i) {
+                if (exact && !half) {
+                    ASSERT_EQ(read->rgba[i], rgba[i]) << name << " value " << i;
+                } else if (exact && half) {
+                    // Half keeps 11 significant bits: round to nearest is within 2^-11 relative.
+                    ASSERT_NEAR(read->rgba[i], rgba[i], std::abs(rgba[i]) * (1.0f / 2048.0f) + 1e-7f)
+                        << name << " half, value " << i;
+                } else if (name == "pxr24" && !half) {
+                    ASSERT_NEAR(read->rgba[i], rgba[i], std::abs(rgba[i]) * (1.0f / 32768.0f) + 1e-7f) << name;
+                }
+                // b44/b44a/dwaa/dwab are lossy: read back, sizes right; no bound is promised here.
+            }
+        }
+    }
+    EXPECT_FALSE(exrCompressionNamed("zip9"));
 }

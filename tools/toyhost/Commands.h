@@ -21,7 +21,7 @@ public:
 
 private:
     SessionOptions options_;
-    std::string target_, size_, capturePass_, mouse_, date_, codec_, frameRange_, shard_;
+    std::string target_, size_, capturePass_, mouse_, date_, codec_, frameRange_, shard_, exrCompression_, videoPreset_;
     std::optional<int> frames_, captureEvery_, pngLevel_, videoQuality_, captureMemoryMiB_, encoderThreads_;
     std::optional<double> fps_, startTime_;
     std::vector<std::string> mediaFiles_, mediaFolders_;

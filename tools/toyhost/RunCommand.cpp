@@ -80,12 +80,25 @@ void RunCommand::define(CLI::App& run) {
                    "numbered by iFrame; a video movie.mp4|.webm|.mov|.mkv (through ffmpeg); or - for raw "
                    "frames on stdout: per frame width*height*4 bytes RGBA8, rows top first, no header");
     run.add_option("--png-level", pngLevel_,
-                   "PNG compression 0 (none) .. 9 (smallest) (default " + std::to_string(defaults::kPngLevel) +
-                       ", fast)");
-    run.add_option("--codec", codec_, "Video encoder (ffmpeg name); default libx264 (.mp4/.mov/.mkv), libvpx-vp9 (.webm)");
+                   "PNG compression 0 (stored) .. 9 (smallest) (default " + std::to_string(defaults::kPngLevel) +
+                       ", fastest compression); 1: libdeflate, rows unfiltered; 2-5: Up/Paeth filters; 6-9: "
+                       "adaptive filters, slower deflate (docs/performance.md)");
+    run.add_option("--exr-compression", exrCompression_,
+                   "EXR compression: " + exrCompressionNames() +
+                       " (default none: the site's export; none..piz are lossless, pxr24 keeps 24 bits of a float, "
+                       "b44/b44a/dwaa/dwab are lossy)");
+    run.add_flag("--exr-half", options_.exr.half, "EXR channels as 16-bit half floats instead of exact 32-bit floats");
+    run.add_option("--codec", codec_,
+                   "Video encoder (ffmpeg name); default libx264 (.mp4/.mov/.mkv), libvpx-vp9 (.webm); auto: a "
+                   "hardware H.264 encoder that works here (h264_nvenc, h264_vaapi, h264_qsv: a test encode at "
+                   "start), else libx264 -preset veryfast");
+    run.add_option("--video-preset", videoPreset_,
+                   "ffmpeg -preset for libx264 and the hardware encoders (libx264: ultrafast .. veryslow; default "
+                   "medium, veryfast with --codec auto)");
     run.add_option("--video-quality", videoQuality_,
                    "Video constant rate factor, lower is better (default 18 for H.264, 31 for VP9)");
-    run.add_option("--encoder-threads", encoderThreads_, "Threads encoding captured frames (default: cores - 1, at least 1)");
+    run.add_option("--encoder-threads", encoderThreads_, "Threads encoding captured frames (default: cores - 1, at least 1, growing to one per core while "
+                   "rendering outruns the encoders)");
     run.add_option("--capture-memory", captureMemoryMiB_,
                    "MiB of frames allowed to wait for the encoders; rendering waits beyond it (default " +
                        std::to_string(defaults::kCaptureMemoryMiB) + ")");
@@ -202,6 +215,13 @@ int RunCommand::execute(const GlProcess& process) {
         if (!o.shard) return usage("--shard " + shard_ + ": expected i/n (part i of n, from 0)");
     }
     if (!codec_.empty()) o.video.codec = codec_;
+    if (!videoPreset_.empty()) o.video.preset = videoPreset_;
+    if (!exrCompression_.empty()) {
+        const std::optional<ExrCompression> compression = exrCompressionNamed(exrCompression_);
+        if (!compression)
+            return usage("--exr-compression " + exrCompression_ + ": expected one of " + exrCompressionNames());
+        o.exr.compression = *compression;
+    }
     if (videoQuality_) o.video.quality = *videoQuality_;
     if (o.outPattern && *o.outPattern == "-" && process.closedAtStart[STDOUT_FILENO])
         return usage("--out -: stdout is closed; give it a file or a pipe (or --out frame_%04d.png)");
