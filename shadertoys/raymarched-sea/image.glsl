@@ -10,16 +10,20 @@
 // - The ray is marched against only 3 octaves (cheap, and the small ones barely move the hit
 //   point): from the crest plane it steps forward by the vertical gap until it is under the
 //   water, then refines that bracket with Illinois false position; normals come from 6 octaves
-//   by central differences whose step grows with distance (a cheap filter against shimmering
-//   at the horizon).
-// - Shading: sky gradient with a sun glow; water = deep colour with wrapped diffuse + back
-//   light through thin crests, mixed with the sky reflection by Schlick's Fresnel (F0 = 0.02),
-//   plus a sharp sun specular; exponential distance fog into the horizon colour.
+//   by central differences over the pixel's footprint (distance / grazing sine), and each octave
+//   fades out once its crests come closer than about two pixels (no horizon shimmer).
+// - Shading (linear light): sky gradient with a sun glow and an HDR disc; water = deep colour
+//   with wrapped diffuse + back light through thin crests, mixed with the sky reflection by
+//   Schlick's Fresnel (F0 = 0.02, capped at 0.7), plus the sun's glint: normalised Blinn-Phong
+//   whose lobe widens with the footprint, never brighter than the sun times Fresnel; exponential
+//   distance fog into the horizon colour; ACES tone curve, gamma 1/2.2, fixed dither.
 // - SUPERSAMPLE 1 renders a 3x3 grid per pixel (9x the cost); off by default.
 // - Camera cruises forward and turns slowly with time; dragging the mouse steers it
 //   (x = heading, y = pitch).
 
 #define SUPERSAMPLE 0
+
+const float EXPOSURE = 1.0;
 
 const int   MARCH_OCTAVES = 3;
 const int   SHADE_OCTAVES = 6;
@@ -35,10 +39,13 @@ const float WAVE_SPEED  = 0.8;
 const mat2 OCTAVE_TURN = mat2(1.662, 1.113, -1.113, 1.662);
 
 const vec3 SUN_DIR     = vec3(0.45, 0.2, 0.85);     // normalised where used
-const vec3 DEEP_WATER  = vec3(0.0, 0.07, 0.14);
-const vec3 CREST_TINT  = vec3(0.35, 0.62, 0.45);
-const vec3 ZENITH      = vec3(0.10, 0.27, 0.58);
-const vec3 HORIZON     = vec3(0.72, 0.80, 0.86);
+const vec3 DEEP_WATER  = vec3(0.0, 0.0124, 0.039);   // linear colours (gamma 2.2 at the end)
+const vec3 CREST_TINT  = vec3(0.177, 0.454, 0.268);
+const vec3 ZENITH      = vec3(0.022, 0.115, 0.407);
+const vec3 HORIZON     = vec3(0.582, 0.692, 0.780);
+const vec3 SUN_RADIANCE = vec3(1.0, 0.92, 0.8) * 10.0;  // the disc's brightness in skyColor (HDR)
+const float GLINT_POWER = 400.0;
+const float GLINT_SOLID_ANGLE = 0.25;  // the sun's lobe x this <= 1: a facet reflects at most the sun
 
 // ---------------------------------------------------------------- noise
 // Integer hash of a lattice point -> [0, 1): multiply-xor the coordinates with two odd
@@ -74,17 +81,23 @@ float crest(vec2 p, float k) {
     return pow(1.0 - pow(prof.x * prof.y, 0.65), k);
 }
 
-float waterHeight(vec2 xz, int octaves) {
+// The sea's height from `octaves` octaves. `footprint` is the width of water a pixel covers
+// (0 = exact): an octave whose crests come closer than about two pixels fades out, so the normal
+// shows only detail the pixel can hold (unfiltered, far octaves flicker: horizon shimmer).
+float waterHeight(vec2 xz, int octaves, float footprint) {
     vec2 p = xz * WAVE_FREQ;
     p.x *= 0.75;                          // slightly longer crests across the wind
     float phase = 1.0 + iTime * WAVE_SPEED;
     float amp = WAVE_HEIGHT;
     float k = WAVE_CHOP;
     float h = 0.0;
+    float freq = WAVE_FREQ;
     for (int i = 0; i < octaves; i++) {
         // two trains moving in opposite directions give a standing, tumbling chop
-        h += amp * (crest(p + phase, k) + crest(p - phase, k));
+        float keep = 1.0 - smoothstep(0.5, 1.5, freq * footprint);
+        h += amp * keep * (crest(p + phase, k) + crest(p - phase, k));
         p = OCTAVE_TURN * p;
+        freq *= 2.0;
         amp *= 0.24;
         k = mix(k, 1.0, 0.2);
     }
@@ -92,7 +105,7 @@ float waterHeight(vec2 xz, int octaves) {
 }
 
 // signed vertical distance from the surface
-float above(vec3 p, int octaves) { return p.y - waterHeight(p.xz, octaves); }
+float above(vec3 p, int octaves) { return p.y - waterHeight(p.xz, octaves, 0.0); }
 
 // Height-field intersection in two phases. (1) Walk forward from the crest plane with steps
 // proportional to the vertical gap, divided by (|rd.y| + a slope bound) so a step cannot jump
@@ -144,8 +157,8 @@ float traceSea(vec3 ro, vec3 rd, out bool hit) {
 }
 
 vec3 waterNormal(vec3 p, float eps) {
-    float hx = waterHeight(p.xz + vec2(eps, 0.0), SHADE_OCTAVES) - waterHeight(p.xz - vec2(eps, 0.0), SHADE_OCTAVES);
-    float hz = waterHeight(p.xz + vec2(0.0, eps), SHADE_OCTAVES) - waterHeight(p.xz - vec2(0.0, eps), SHADE_OCTAVES);
+    float hx = waterHeight(p.xz + vec2(eps, 0.0), SHADE_OCTAVES, eps) - waterHeight(p.xz - vec2(eps, 0.0), SHADE_OCTAVES, eps);
+    float hz = waterHeight(p.xz + vec2(0.0, eps), SHADE_OCTAVES, eps) - waterHeight(p.xz - vec2(0.0, eps), SHADE_OCTAVES, eps);
     return normalize(vec3(-hx, 2.0 * eps, -hz));
 }
 
@@ -156,11 +169,14 @@ vec3 skyColor(vec3 rd) {
     vec3 col = mix(HORIZON, ZENITH, pow(up, 0.45));
     float mu = max(dot(rd, sun), 0.0);
     col += vec3(1.0, 0.72, 0.42) * (0.25 * pow(mu, 6.0) + 0.35 * pow(mu, 90.0));
-    col += vec3(1.0, 0.9, 0.75) * 4.0 * smoothstep(0.99975, 0.99988, mu);   // the disc
+    col += SUN_RADIANCE * smoothstep(0.99975, 0.99988, mu);   // the disc
     return col;
 }
 
-vec3 shadeWater(vec3 p, vec3 n, vec3 rd, float dist) {
+// `footprint`: the width of water the pixel covers; the detail it filtered away widens the sun's
+// lobe. The lobe is normalised Blinn-Phong times the sun's radiance (SUN_RADIANCE, the disc's
+// own brightness) and Fresnel: never brighter than the sun itself, the same energy when wide.
+vec3 shadeWater(vec3 p, vec3 n, vec3 rd, float footprint) {
     vec3 sun = normalize(SUN_DIR);
     float cosV = clamp(dot(n, -rd), 0.0, 1.0);
     float F = 0.02 + 0.98 * pow(1.0 - cosV, 5.0);   // Schlick, water F0 ~ 0.02
@@ -178,10 +194,11 @@ vec3 shadeWater(vec3 p, vec3 n, vec3 rd, float dist) {
 
     vec3 col = mix(body, refl, F);
 
-    // sun glint: normalised Blinn-Phong, sharp
+    // sun glint: normalised Blinn-Phong, sharp near, wider where the footprint hides slopes
     vec3 hv = normalize(sun - rd);
-    float spec = pow(max(dot(n, hv), 0.0), 400.0) * (400.0 + 8.0) / (8.0 * 3.14159);
-    col += vec3(1.0, 0.92, 0.8) * spec * F * 1.5;
+    float s = GLINT_POWER / (1.0 + GLINT_POWER * 0.1 * smoothstep(0.0, 1.0, footprint * 2.0));
+    float spec = pow(max(dot(n, hv), 0.0), s) * (s + 8.0) / (8.0 * 3.14159) * max(dot(n, sun), 0.0);
+    col += SUN_RADIANCE * min(spec * GLINT_SOLID_ANGLE, 1.0) * F;
 
     return col;
 }
@@ -215,12 +232,31 @@ vec3 render(vec2 fragCoord) {
     if (!hit) return sky;
 
     vec3 p = ro + rd * dist;
-    float eps = max(0.002, dist * 1.5 / iResolution.y);
-    vec3 n = waterNormal(p, eps);
-    vec3 col = shadeWater(p, n, rd, dist);
+    // the water one pixel covers: pixel angle x distance, stretched by the grazing angle
+    float footprint = dist * (1.0 / iResolution.y) / max(abs(rd.y), 0.05);
+    vec3 n = waterNormal(p, max(0.002, footprint));
+    vec3 col = shadeWater(p, n, rd, footprint);
 
     float fog = 1.0 - exp(-dist * 0.0045);
     return mix(col, skyColor(normalize(vec3(rd.x, 0.0, rd.z))) , fog * fog);
+}
+
+// ACES filmic tone curve (Stephen Hill's fitted RRT + ODT, sRGB primaries in and out)
+vec3 acesFitted(vec3 c) {
+    const mat3 toAces = mat3(0.59719, 0.07600, 0.02840, 0.35458, 0.90834, 0.13383, 0.04823, 0.01566, 0.83777);
+    const mat3 fromAces = mat3(1.60475, -0.10208, -0.00327, -0.53108, 1.10813, -0.07276, -0.07367, -0.00605, 1.07602);
+    c = toAces * c;
+    vec3 a = c * (c + 0.0245786) - 0.000090537;
+    vec3 b = c * (0.983729 * c + 0.4329510) + 0.238081;
+    return clamp(fromAces * (a / b), 0.0, 1.0);
+}
+
+// Triangular dither of +-1 code value, fixed per pixel (the same every frame): no 8-bit bands.
+vec3 ditherNoise(vec2 fragCoord) {
+    vec2 q = fract(fragCoord * vec2(0.1031, 0.1030));
+    q += dot(q, q.yx + 33.33);
+    float a = fract((q.x + q.y) * q.x), b = fract((q.x + q.y) * q.y * 1.37 + 0.5);
+    return vec3(a + b - 1.0) / 255.0;
 }
 
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
@@ -233,6 +269,6 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
 #else
     vec3 col = render(fragCoord);
 #endif
-    col = pow(clamp(col, 0.0, 1.0), vec3(0.75)); // mild display curve
-    fragColor = vec4(col, 1.0);
+    col = acesFitted(col * EXPOSURE);                    // tone map: the sun rolls off, no clipping
+    fragColor = vec4(pow(col, vec3(1.0 / 2.2)) + ditherNoise(fragCoord), 1.0);
 }
