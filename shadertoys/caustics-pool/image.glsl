@@ -231,6 +231,14 @@ vec3 shadeUnderwater(vec3 H, vec3 n, vec3 alb, float t) {
     return alb * (direct + ambient);
 }
 
+// Triangular dither of +-1 code value, fixed per pixel (the same every frame): no 8-bit bands.
+vec3 ditherNoise(vec2 fragCoord) {
+    vec2 q = fract(fragCoord * vec2(0.1031, 0.1030));
+    q += dot(q, q.yx + 33.33);
+    float a = fract((q.x + q.y) * q.x), b = fract((q.x + q.y) * q.y * 1.37 + 0.5);
+    return vec3(a + b - 1.0) / 255.0;
+}
+
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     float t = iTime;
     vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
@@ -310,5 +318,5 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
 
     col = 1.0 - exp(-1.15 * col);                 // gentle tone map
     col = pow(col, vec3(1.0 / 2.2));
-    fragColor = vec4(col, 1.0);
+    fragColor = vec4(col + ditherNoise(fragCoord), 1.0);
 }
