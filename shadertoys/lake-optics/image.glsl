@@ -8,8 +8,9 @@
 //   * Bottom radiance L_b = albedo * (sun * caustics + ambient) * exp(-K (d + d_acc)):
 //     K is an RGB extinction coefficient (1/m), applied to the light going down to the bottom
 //     and to the light coming back up along the view ray.
-//   * In-scattering: water = mix(C_s, L_b, exp(-b d_acc)); the longer the path, the more the
-//     colour tends to the scatter colour C_s (b = scattering coefficient, 1/m).
+//   * In-scattering: water = mix(C_s * E, L_b, exp(-b d_acc)); the longer the path, the more the
+//     colour tends to the scatter colour C_s lit by the light that enters the water,
+//     E = sun * cos(refracted sun) + sky ambient (b = scattering coefficient, 1/m).
 //   * Sky reflection by Schlick's Fresnel, F = F0 + (1 - F0)(1 - cos)^5, F0 = 0.02 for water:
 //     colour = mix(water, sky(reflect), F).
 //   Presets (keys 1-3, kept in Buffer A texel (0,0).x = 0, 1, 2):
@@ -21,7 +22,9 @@
 //     3 tannin lake      K = (0.45, 0.80, 2.20)  b = 0.04  C_s = (0.055, 0.026, 0.007)
 //       dissolved organic matter (humic acids / tannins) absorbs blue very strongly and red
 //       weakly, but there are few particles: clear, dark amber "tea" water, black when deep.
-//   Colours are linear; gamma 2.2 at the end. iMouse x (while dragged) turns the camera.
+//   Colours are linear; gamma 1/2.2 and a fixed +-1 level dither at the end. iMouse x (while
+//   dragged) turns the camera. The preset indicator (1-3 squares, top left) shows for 2 s after
+//   a preset key, so captured frames carry no overlay unless a key was pressed.
 
 const vec3 SUN_DIR = vec3(-0.38, 0.70, -0.60);   // behind-left of the camera: no glint in view
 const vec3 SUN_COL = vec3(1.25, 1.15, 1.00);
@@ -198,6 +201,14 @@ vec3 shadeLand(vec3 p, vec3 rd) {
     return alb * (SUN_COL * dif + amb);
 }
 
+// Triangular dither of +-1 code value, fixed per pixel (the same every frame): no 8-bit bands.
+vec3 ditherNoise(vec2 fragCoord) {
+    vec2 q = fract(fragCoord * vec2(0.1031, 0.1030));
+    q += dot(q, q.yx + 33.33);
+    float a = fract((q.x + q.y) * q.x), b = fract((q.x + q.y) * q.y * 1.37 + 0.5);
+    return vec3(a + b - 1.0) / 255.0;
+}
+
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     int preset = int(clamp(texelFetch(iChannel0, ivec2(0), 0).x + 0.5, 0.0, 2.0));
     vec3 K, Cs; float b;
@@ -251,7 +262,10 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
                 vec3 light = SUN_COL * dif * ca + vec3(0.25, 0.33, 0.42) * (0.5 + 0.5 * nb.y);
                 bottom = alb * light * exp(-K * (d + dAcc));
             }
-            vec3 water = mix(Cs, bottom, exp(-b * dAcc));
+            // the scatter colour is lit by what enters the water: the refracted sun and the sky
+            vec3 Lw0 = -refract(-L, vec3(0.0, 1.0, 0.0), 1.0 / WATER_IOR);
+            vec3 incident = SUN_COL * Lw0.y + vec3(0.25, 0.33, 0.42);
+            vec3 water = mix(Cs * incident, bottom, exp(-b * dAcc));
 
             // Fresnel (Schlick) blend with the reflected sky
             float cosi = clamp(dot(-rd, n), 0.0, 1.0);
@@ -268,13 +282,16 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         }
     }
 
-    col = pow(clamp(col, 0.0, 1.0), vec3(1.0 / 2.2));
+    col = pow(clamp(col, 0.0, 1.0), vec3(1.0 / 2.2)) + ditherNoise(fragCoord);
 
-    // preset indicator: 1-3 small squares in the top-left corner
+    // preset indicator: 1-3 small squares in the top-left corner, for 2 s after a preset key
+    // (Buffer A texel (0,0).y = iTime of the last preset key, -1 before any)
+    float keyTime = texelFetch(iChannel0, ivec2(0), 0).y;
+    bool showPreset = keyTime >= 0.0 && iTime - keyTime < 2.0 && texelFetch(iChannel0, ivec2(0), 0).w > 0.5;
     vec2 px = fragCoord - vec2(8.0, iResolution.y - 14.0);
     float sz = max(4.0, iResolution.y / 90.0);
     for (int i = 0; i < 3; i++) {
-        if (i > preset) break;
+        if (i > preset || !showPreset) break;
         vec2 q = px - vec2(float(i) * sz * 1.8, 0.0);
         if (q.x >= 0.0 && q.x < sz && q.y >= -sz && q.y < 0.0) col = vec3(1.0);
     }

@@ -154,7 +154,8 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
         float hxy = 0.25 * (Hs(sc + vec2(1, 1)) + Hs(sc - vec2(1, 1))
                           - Hs(sc + vec2(1, -1)) - Hs(sc + vec2(-1, 1)));
         float det = (1.0 - k * hxx) * (1.0 - k * hyy) - k * k * hxy * hxy;
-        float caustic = 1.0 / (abs(det) + 0.12) * 1.12 / (1.0 + 0.12);
+        // normalised once: flat water (det = 1) gives exactly 1
+        float caustic = (1.0 + 0.12) / (abs(det) + 0.12);
         caustic = min(caustic, 6.0);
 
         // soft darkening where floor meets walls
