@@ -1,7 +1,9 @@
 // The gallery (shadertoys/<name>/, our own water shaders): golden frames of each at 320x180 at
-// fixed times, with scripted mouse and keys where the shader takes input (Golden.h's tolerance),
+// fixed times, with the mouse for every port that reads it, scripted keys, and every #define
+// variant (GalleryRender.h's cases, Golden.h's tolerance),
 // and the checks on numbers that say the physics is what the README claims: ripple-pool's
 // simulation (symmetry, steady ring speed, damping) and lake-optics' presets (float dumps).
+#include "GalleryRender.h"
 #include "GlTestSupport.h"
 #include "Golden.h"
 
@@ -18,55 +20,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct GalleryCase {
-    const char* name;       // golden file tests/golden/gallery/<name>.png
-    const char* shadertoy;  // folder under shadertoys/
-    const char* options;    // time, inputs
-    int frame = 0;          // the frame compared (the run renders frames 0..frame)
-    friend void PrintTo(const GalleryCase& c, std::ostream* os) { *os << c.name; }
-};
-
 class GalleryGolden : public ::testing::TestWithParam<GalleryCase> {};
-
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 TEST_P(GalleryGolden, MatchesCheckedInFrame) {
     const GalleryCase& c = GetParam();
     const fs::path dir = freshOutputDir(std::string("golden/gallery/") + c.name);
-    const fs::path folder = sourceDir() / "shadertoys" / c.shadertoy;
-    std::string options = c.options;
-    // Input scripts are named relative to the shadertoy's folder.
-    for (const char* flag : {"--mouse-script ", "--key-script "})
-        if (const auto at = options.find(flag); at != std::string::npos)
-            options.insert(at + std::string(flag).size(), folder.string() + "/");
-    auto run = runToyhost("run " + quoted(folder) + " --size 320x180 --quiet --frames " + std::to_string(c.frame + 1) +
-                          " --capture-every " + std::to_string(std::max(c.frame, 1)) + " " + options + " --out " +
-                          quoted(dir / (std::string(c.name) + "_%04d.png")));
-    ASSERT_EQ(run.exitCode, 0) << run.output;
-    char file[64];
-    std::snprintf(file, sizeof file, "%s_%04d.png", c.name, c.frame);
-    expectMatchesGolden(sourceDir(), std::string("gallery/") + c.name + ".png", dir / file);
+    const auto frame = renderGalleryCase(c, dir);
+    ASSERT_TRUE(frame);
+    expectMatchesGolden(sourceDir(), std::string("gallery/") + c.name + ".png", *frame);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Shaders, GalleryGolden,
-    ::testing::Values(GalleryCase{"raymarched_sea_t4", "raymarched-sea", "--start-time 4"},
-                      GalleryCase{"raymarched_sea_t20", "raymarched-sea", "--start-time 20"},
-                      GalleryCase{"exp_sine_ocean_t3", "exp-sine-ocean", "--start-time 3"},
-                      GalleryCase{"exp_sine_ocean_t10", "exp-sine-ocean", "--start-time 10"},
-                      GalleryCase{"exp_sine_ocean_mouse", "exp-sine-ocean", "--start-time 10 --mouse 112,72"},
-                      GalleryCase{"lake_optics_t2", "lake-optics", "--start-time 2"},
-                      GalleryCase{"lake_optics_t7_5", "lake-optics", "--start-time 7.5"},
-                      GalleryCase{"lake_optics_muddy", "lake-optics", "--start-time 2 --key-script keys-muddy.json", 3},
-                      GalleryCase{"lake_optics_tannin", "lake-optics", "--start-time 2 --key-script keys-tannin.json", 3},
-                      GalleryCase{"caustics_pool_t2", "caustics-pool", "--start-time 2"},
-                      GalleryCase{"caustics_pool_t6_5", "caustics-pool", "--start-time 6.5"},
-                      GalleryCase{"coastal_foam_t2", "coastal-foam", "--start-time 2"},
-                      GalleryCase{"coastal_foam_t5_5", "coastal-foam", "--start-time 5.5"},
-                      GalleryCase{"ripple_pool_calm", "ripple-pool", ""},
-                      GalleryCase{"ripple_pool_drag_f30", "ripple-pool", "--mouse-script drag.json", 30},
-                      GalleryCase{"ripple_pool_drag_f90", "ripple-pool", "--mouse-script drag.json", 90}),
-    [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Shaders, GalleryGolden, ::testing::ValuesIn(galleryCases()),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 // ---------------------------------------------------------------------------------------------
 // ripple-pool: Buffer A's height field (.x) after one click, as numbers
