@@ -7,18 +7,19 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}; shift || true
 ports=("$@")
 [ ${#ports[@]} -gt 0 ] || ports=(exp-sine-ocean raymarched-sea lake-optics caustics-pool ripple-pool coastal-foam exp-sine-ocean@down)
+size=${SIZE:-640x360}   # SIZE=320x180 for the size the tests use; PORTS_DIR=another copy of shadertoys/
 out=$build/gallery-measures
 mkdir -p "$out"
 for entry in "${ports[@]}"; do
   port=${entry%@*}
   extra=()
   case $entry in
-    *@down) extra=(--mouse 320,10) ;;          # exp-sine-ocean looking down (banding)
+    *@down) extra=(--mouse "$(( ${size%x*} / 2 )),10") ;;   # exp-sine-ocean looking down (banding)
     ripple-pool) extra=(--mouse-script "$root/shadertoys/ripple-pool/drag.json") ;;
   esac
   name=${entry//@/-}
   rm -f "$out/$name"_*.png
-  "$build/tools/toyhost" run "$root/shadertoys/$port" --size 640x360 --fps 30 --start-time 3 --frames 4 \
+  "$build/tools/toyhost" run "${PORTS_DIR:-$root/shadertoys}/$port" --size "$size" --fps 30 --start-time 3 --frames 4 \
     --quiet "${extra[@]}" --out "$out/${name}_%04d.png"
   printf '%-22s ' "$name"
   "$build/tests/toyhost_frame_measures" "$out/$name"_000{0,1,2,3}.png
