@@ -133,13 +133,17 @@ vec3 acesFitted(vec3 c) {
     return clamp(fromAces * (a / b), 0.0, 1.0);
 }
 
-// Triangular dither of +-1 code value, fixed per pixel (the same every frame, so it neither
-// flickers nor changes a golden frame): turns the 8-bit steps of smooth gradients into grain.
+// Triangular dither of +-1 code value per channel, fixed per pixel (the same every frame, so it
+// neither flickers nor changes a golden frame): turns the 8-bit steps of smooth gradients into
+// grain. Two uniform hashes per channel (one 3-vector hash of the pixel, another of a shifted one).
 vec3 ditherNoise(vec2 fragCoord) {
-    vec2 q = fract(fragCoord * vec2(0.1031, 0.1030));
-    q += dot(q, q.yx + 33.33);
-    float a = fract((q.x + q.y) * q.x), b = fract((q.x + q.y) * q.y * 1.37 + 0.5);
-    return vec3(a + b - 1.0) / 255.0;
+    vec3 p = fract(vec3(fragCoord.xyx) * vec3(0.1031, 0.1030, 0.0973));
+    p += dot(p, p.yxz + 33.33);
+    vec3 a = fract((p.xxy + p.yzz) * p.zyx);
+    vec3 q = fract(vec3(fragCoord.yxy + 17.0) * vec3(0.1031, 0.1030, 0.0973));
+    q += dot(q, q.yxz + 33.33);
+    vec3 b = fract((q.xxy + q.yzz) * q.zyx);
+    return (a + b - 1.0) / 255.0;
 }
 
 mat3 viewBasis(float yaw, float pitch) {
