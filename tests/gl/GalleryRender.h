@@ -98,7 +98,9 @@ inline std::vector<GalleryCase> galleryCases() {
         // looking down at the near water, where all 6 shading octaves are finer than a pixel's footprint
         {"raymarched_sea_down", "raymarched-sea", "--start-time 4 --mouse 160,5"},
         {"raymarched_sea_supersample", "raymarched-sea", "--start-time 4", 0,
-         {{"image.glsl", "#define SUPERSAMPLE 0", "#define SUPERSAMPLE 1"}}},
+         {{"image.glsl", "#define SUPERSAMPLE 2", "#define SUPERSAMPLE 1"}}},
+        {"raymarched_sea_one_sample", "raymarched-sea", "--start-time 4", 0,
+         {{"image.glsl", "#define SUPERSAMPLE 2", "#define SUPERSAMPLE 0"}}},
         {"exp_sine_ocean_t3", "exp-sine-ocean", "--start-time 3"},
         {"exp_sine_ocean_t10", "exp-sine-ocean", "--start-time 10"},
         {"exp_sine_ocean_mouse", "exp-sine-ocean", "--start-time 10 --mouse 112,72"},
