@@ -94,6 +94,19 @@ vec3 floorAlbedo(vec2 q, float tileSize)
     return mix(c, c * vec3(0.10, 0.16, 0.38), m);
 }
 
+// Triangular dither of +-1 code value per channel, fixed per pixel (the same every frame, so it
+// neither flickers nor changes a golden frame): turns the 8-bit steps of smooth gradients into
+// grain. Two uniform hashes per channel (one 3-vector hash of the pixel, another of a shifted one).
+vec3 ditherNoise(vec2 fragCoord) {
+    vec3 p = fract(vec3(fragCoord.xyx) * vec3(0.1031, 0.1030, 0.0973));
+    p += dot(p, p.yxz + 33.33);
+    vec3 a = fract((p.xxy + p.yzz) * p.zyx);
+    vec3 q = fract(vec3(fragCoord.yxy + 17.0) * vec3(0.1031, 0.1030, 0.0973));
+    q += dot(q, q.yxz + 33.33);
+    vec3 b = fract((q.xxy + q.yzz) * q.zyx);
+    return (a + b - 1.0) / 255.0;
+}
+
 void mainImage(out vec4 fragColor, in vec2 fragCoord)
 {
     vec2 res = iResolution.xy;
@@ -185,5 +198,5 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
     // tone map + gamma
     col = 1.0 - exp(-col * 1.3);
     col = pow(col, vec3(1.0 / 2.2));
-    fragColor = vec4(col, 1.0);
+    fragColor = vec4(col + ditherNoise(fragCoord), 1.0);
 }
