@@ -128,17 +128,23 @@ vec3 sky(vec3 rd) {
 }
 
 // ------------------------------------------------------------------------ water surface --
-// sum of directional waves with deep-water dispersion w = sqrt(g k); returns the normal
-vec3 waterNormal(vec2 p, float t, float fade) {
+// sum of directional waves with deep-water dispersion w = sqrt(g k); returns the normal.
+// Nine waves, turned by the golden angle and x1.37 in wavenumber (no common period in view), each
+// modulated by slow value noise of its own so the pattern comes in patches instead of a visibly
+// repeating sheet; `fade` calms the normal far away, and a wave shorter than about two pixels
+// (`footprint`: the width of water a pixel covers) fades out instead of aliasing into moire.
+vec3 waterNormal(vec2 p, float t, float fade, float footprint) {
     vec2 g = vec2(0.0);
     float ang = 0.4, k = 1.3, amp = 0.020;
-    for (int i = 0; i < 5; i++) {
+    for (int i = 0; i < 9; i++) {
         vec2 dir = vec2(cos(ang), sin(ang));
         float w = sqrt(9.81 * k);
-        g += dir * (amp * k * cos(dot(p, dir) * k - w * t + float(i) * 1.7));
-        ang += 2.1;
-        k *= 1.55;
-        amp *= 0.72;
+        float patchy = 0.35 + 1.3 * vnoise(p * 0.13 + vec2(float(i) * 7.1, 0.05 * t));
+        float keep = 1.0 - smoothstep(1.0, 3.0, k * footprint);
+        g += dir * (amp * k * patchy * keep * cos(dot(p, dir) * k - w * t + float(i) * 1.7));
+        ang += 2.39996;
+        k *= 1.37;
+        amp *= 0.78;
     }
     g *= fade;
     return normalize(vec3(-g.x, 1.0, -g.y));
@@ -247,7 +253,8 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         } else {
             vec3 P = ro + rd * tW;
             float fade = 1.0 / (1.0 + tW * 0.04);           // calm the normal far away
-            vec3 n = waterNormal(P.xz, t, fade);
+            float footprint = tW * 2.0 / (1.7 * iResolution.y) / max(-rd.y, 0.05);
+            vec3 n = waterNormal(P.xz, t, fade, footprint);
             vec3 rr = refract(rd, n, 1.0 / WATER_IOR);
 
             // march the refracted ray to the bottom (at most 45 m of water)
