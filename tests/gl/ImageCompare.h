@@ -55,9 +55,10 @@ inline int maxAbsError(const Image8& a, const Image8& b) {
     return largest;
 }
 
-// The largest mean |a - b| over any `block` x `block` square (RGB, aligned to a grid of half a
-// block, so a defect of one block's size is always covered whole by one square): a localised
-// defect (a black 10x10 block) that whole-image PSNR averages away. -1 when the sizes differ.
+// The largest mean |a - b| over any `block` x `block` square (RGB, squares start every half
+// block, so a defect of 1.5 blocks is always covered whole by one square and a 10x10 one covers
+// at least 7x7 of an 8x8 square): a localised defect (a black 10x10 block) that whole-image PSNR
+// averages away. -1 when the sizes differ.
 inline double maxBlockMeanError(const Image8& a, const Image8& b, int block = 8) {
     if (!sameSize(a, b)) return -1.0;
     double largest = 0.0;
