@@ -76,10 +76,19 @@ float hashU(uint n)   // integer hash: the same on every GPU
 }
 #endif
 
+// The simulation grid: one cell per pixel up to 180 rows; on a taller canvas the grid stays 180
+// rows high (the lower-left part of the buffer) and the Image scales it up, so drops, rings and
+// their speed are the same fraction of the picture at any canvas size.
+float gridScale() { return max(1.0, iResolution.y / 180.0); }
+
 void mainImage(out vec4 fragColor, in vec2 fragCoord)
 {
+    float scale = gridScale();
+    ivec2 grid = max(ivec2(iResolution.xy / scale), ivec2(1));
+    vec2 mouse = iMouse.xy / scale;                 // the pointer in cells
     ivec2 p   = ivec2(fragCoord);
-    ivec2 top = ivec2(iResolution.xy) - 1;
+    if (any(greaterThanEqual(p, grid))) { fragColor = vec4(0.0, 0.0, mouse); return; }
+    ivec2 top = grid - 1;
 
     vec4 s = texelFetch(iChannel0, p, 0);
     float h  = s.x;
@@ -107,11 +116,11 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
     // Mouse drops.
     float bump = 0.0;
     if (iMouse.w > 0.0) {
-        bump = DROP_AMP * dropShape(p, ivec2(floor(iMouse.xy)), DROP_R);   // click frame
+        bump = DROP_AMP * dropShape(p, ivec2(floor(mouse)), DROP_R);   // click frame
     } else if (iMouse.z > 0.0) {
-        float strength = min(1.0, length(iMouse.xy - s.zw) / DRAG_STEP);  // drag: a line
+        float strength = min(1.0, length(mouse - s.zw) / DRAG_STEP);  // drag: a line
         if (strength > 0.0)
-            bump = DROP_AMP * strength * lineShape(p, floor(s.zw) + 0.5, floor(iMouse.xy) + 0.5, DROP_R);
+            bump = DROP_AMP * strength * lineShape(p, floor(s.zw) + 0.5, floor(mouse) + 0.5, DROP_R);
     }
     hn += bump;
     hp += bump * (1.0 - DROP_KICK);
@@ -120,12 +129,12 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
     // one drop every 37 frames at a pseudo-random place (fixed by the frame number)
     if (iFrame > 0 && iFrame % 37 == 0) {
         uint k = uint(iFrame / 37);
-        ivec2 c0 = ivec2(vec2(hashU(2u * k), hashU(2u * k + 1u)) * (iResolution.xy - 40.0) + 20.0);
+        ivec2 c0 = ivec2(vec2(hashU(2u * k), hashU(2u * k + 1u)) * (vec2(grid) - 40.0) + 20.0);
         float bump = 0.7 * DROP_AMP * dropShape(p, c0, DROP_R);
         hn += bump;
         hp += bump * (1.0 - DROP_KICK);
     }
 #endif
 
-    fragColor = vec4(hn, hp, iMouse.xy);
+    fragColor = vec4(hn, hp, mouse);
 }

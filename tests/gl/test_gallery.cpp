@@ -125,6 +125,32 @@ TEST_F(RipplePool, ScriptedDragDisturbsTheWaterAlongItsPathOnly) {
         EXPECT_EQ(height(field, x, y), 0.0f) << "ripple far from the drag at (" << x << ", " << y << ")";
 }
 
+// The grid is 180 rows on any canvas at least that tall: the same click (the same place in the
+// picture) on a 320x180 and a 640x360 canvas gives the same height field, cell for cell, so drop
+// size and ring speed are fractions of the picture, not pixels.
+TEST_F(RipplePool, TheSameClickOnADoubleSizeCanvasGivesTheSameField) {
+    std::vector<float> fields[2];
+    for (int scale : {1, 2}) {
+        auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", kWidth * scale, kHeight * scale);
+        ASSERT_TRUE(toy);
+        stepAt(*toy);
+        const InputEvent click[] = {InputEvent::mouseDown((kDropX + 0.25f) * scale, (kDropY + 0.75f) * scale),
+                                    InputEvent::mouseUp()};
+        stepAt(*toy, click);
+        for (int i = 0; i < 20; ++i) stepAt(*toy);
+        std::vector<float> field;
+        toy->player().readRgba32f(PassId::BufferA, field);
+        // the grid's cells: the lower-left 320x180 of the buffer
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x)
+                fields[scale - 1].push_back(field[(static_cast<std::size_t>(y) * kWidth * scale + x) * 4]);
+    }
+    float largest = 0.0f;
+    for (float h : fields[0]) largest = std::max(largest, std::abs(h));
+    EXPECT_GT(largest, 0.05f) << "no ripple";
+    EXPECT_EQ(fields[0], fields[1]) << "the double-size canvas simulates a different field";
+}
+
 TEST_F(RipplePool, CalmPoolStaysFlatWithoutInput) {
     auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", 64, 36);
     ASSERT_TRUE(toy);
