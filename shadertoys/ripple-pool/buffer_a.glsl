@@ -3,7 +3,7 @@
 // Layout (RGBA32F, reads itself = previous frame):
 //   .x  surface height h(t)      in pixels (0 = calm)
 //   .y  surface height h(t-1)    (the leapfrog scheme keeps two time levels)
-//   .zw iMouse.xy of the previous frame (same value in every pixel), used to
+//   .zw the pointer of the previous frame in cells (iMouse.xy / grid scale, the same in every cell), used to
 //       scale drag drops by the distance the pointer moved
 //
 // Update (explicit leapfrog for h_tt = c^2 * laplacian(h), damped velocity):
