@@ -1,7 +1,7 @@
-// ripple-pool / Buffer A: height-field wave simulation (one grid cell per pixel).
+// ripple-pool / Buffer A: height-field wave simulation (one grid cell per pixel up to 180 rows).
 //
 // Layout (RGBA32F, reads itself = previous frame):
-//   .x  surface height h(t)      in pixels (0 = calm)
+//   .x  surface height h(t)      in cells (0 = calm)
 //   .y  surface height h(t-1)    (the leapfrog scheme keeps two time levels)
 //   .zw the pointer of the previous frame in cells (iMouse.xy / grid scale, the same in every cell), used to
 //       scale drag drops by the distance the pointer moved
