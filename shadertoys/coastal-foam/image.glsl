@@ -24,6 +24,7 @@
 //     than about two pixels fade out of the normal, the sun lobe widens (normalised), the
 //     foam's bubble holes average out and the foam edge widens, so far foam and glitter do not
 //     alias. Rock: a soft sun shadow (height-field march) and crevice occlusion give real blacks.
+//   * Aerial perspective with per-channel extinction (blue scatters most) into the horizon haze.
 //   * LAKE: the water becomes slow value-noise FBM (+-4 cm) with fine cat's-paw ripples in the
 //     normal, darker and greener, with only a thin contact line of foam and no breaking crests.
 //   iMouse: drag horizontally to turn the camera.
@@ -228,6 +229,13 @@ vec3 sky(vec3 rd) {
     return c;
 }
 
+// Aerial perspective with per-channel extinction: the air scatters blue most, so distant rock
+// and sea lose red last and take the horizon haze's colour channel by channel.
+vec3 aerial(vec3 col, vec3 rd, float dist) {
+    vec3 ext = exp(-vec3(0.000014, 0.00002, 0.000028) * dist * dist);
+    return col * ext + sky(vec3(rd.x, 0.02, rd.z)) * (1.0 - ext);
+}
+
 // ----------------------------------------------------------------------------- shade --
 vec3 rockAlbedo(vec2 p, float h, vec3 n) {
     vec2 q = p + vec2(h, -h) * 0.8;                              // h term: less streaking on cliffs
@@ -362,7 +370,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         vec3 nr = rockNormal(p.xz);
         float sheen = 0.04 + 0.96 * pow(1.0 - clamp(dot(-rd, nr), 0.0, 1.0), 5.0);
         col = mix(col, col * 0.55 + sky(reflect(rd, nr)) * sheen * 0.5, film);
-        col = mix(col, sky(vec3(rd.x, 0.02, rd.z)), 1.0 - exp(-0.00002 * tr * tr));
+        col = aerial(col, rd, tr);
     } else if (tw < FAR && rd.y < 0.0) {
         vec3 p = ro + rd * tw;
         // the width of water one pixel covers: pixel angle x distance / grazing sine
@@ -428,7 +436,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         vec3 foamCol = vec3(0.92, 0.95, 0.96) * (SUN_COL * (0.35 + 0.65 * max(dot(n, L), 0.0)) * 0.75 + vec3(0.30, 0.36, 0.44));
         foamCol *= 0.82 + 0.25 * ft;
         col = mix(col, foamCol, foam);
-        col = mix(col, sky(vec3(rd.x, 0.02, rd.z)), 1.0 - exp(-0.00002 * tw * tw));
+        col = aerial(col, rd, tw);
     } else {
         col = sky(rd);
     }
