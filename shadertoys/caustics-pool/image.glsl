@@ -231,6 +231,19 @@ vec3 shadeUnderwater(vec3 H, vec3 n, vec3 alb, float t) {
     return alb * (direct + ambient);
 }
 
+// Triangular dither of +-1 code value per channel, fixed per pixel (the same every frame, so it
+// neither flickers nor changes a golden frame): turns the 8-bit steps of smooth gradients into
+// grain. Two uniform hashes per channel (one 3-vector hash of the pixel, another of a shifted one).
+vec3 ditherNoise(vec2 fragCoord) {
+    vec3 p = fract(vec3(fragCoord.xyx) * vec3(0.1031, 0.1030, 0.0973));
+    p += dot(p, p.yxz + 33.33);
+    vec3 a = fract((p.xxy + p.yzz) * p.zyx);
+    vec3 q = fract(vec3(fragCoord.yxy + 17.0) * vec3(0.1031, 0.1030, 0.0973));
+    q += dot(q, q.yxz + 33.33);
+    vec3 b = fract((q.xxy + q.yzz) * q.zyx);
+    return (a + b - 1.0) / 255.0;
+}
+
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     float t = iTime;
     vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
@@ -310,5 +323,5 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
 
     col = 1.0 - exp(-1.15 * col);                 // gentle tone map
     col = pow(col, vec3(1.0 / 2.2));
-    fragColor = vec4(col, 1.0);
+    fragColor = vec4(col + ditherNoise(fragCoord), 1.0);
 }

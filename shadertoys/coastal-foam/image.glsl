@@ -20,6 +20,11 @@
 //   * Water colour: vertical water thickness over the rock gives a Beer-law mix from the
 //     rock's colour (submerged ledges) to deep sea green-blue; thin crests get a back-lit
 //     sub-surface tint; sky reflection by Schlick Fresnel (F0 = 0.02) plus a sun glitter lobe.
+//   * Filtering by pixel footprint (distance x pixel angle / grazing sine): chop octaves finer
+//     than about two pixels fade out of the normal, the sun lobe widens (normalised), the
+//     foam's bubble holes average out and the foam edge widens, so far foam and glitter do not
+//     alias. Rock: a soft sun shadow (height-field march) and crevice occlusion give real blacks.
+//   * Aerial perspective with per-channel extinction (blue scatters most) into the horizon haze.
 //   * LAKE: the water becomes slow value-noise FBM (+-4 cm) with fine cat's-paw ripples in the
 //     normal, darker and greener, with only a thin contact line of foam and no breaking crests.
 //   iMouse: drag horizontally to turn the camera.
@@ -113,11 +118,12 @@ vec3 rockNormal(vec2 p) {
 
 // ----------------------------------------------------------------------------- water --
 #ifdef LAKE
-float waterH(vec2 p, float t, int oct) {
+float waterHf(vec2 p, float t, int oct, float footprint) {
     // calm lake: slow drifting value-noise FBM, 4 cm amplitude
     float h = 0.08 * (fbm(p * 0.45 + vec2(0.05, 0.03) * t, oct) - 0.5)
             + 0.02 * (vnoise(p * 2.1 - vec2(0.2, 0.1) * t) - 0.5);
-    if (oct > 3) h += 0.006 * (fbm(p * 7.0 + vec2(0.6, -0.4) * t, 2) - 0.5);   // cat's-paw ripples (normals only)
+    float keep = 1.0 - smoothstep(0.25, 0.6, 7.0 * footprint);   // ripples finer than a pixel fade out
+    if (oct > 3) h += 0.006 * keep * (fbm(p * 7.0 + vec2(0.6, -0.4) * t, 2) - 0.5);   // cat's-paw ripples (normals only)
     return h;
 }
 float swellRidge(vec2 p, float t) { return 0.0; }
@@ -130,7 +136,9 @@ float swellTheta(vec2 p, float t) {
 float swellRidge(vec2 p, float t) {                // 1 on a crest, 0 in the trough
     return 1.0 - abs(sin(0.5 * swellTheta(p, t)));
 }
-float waterH(vec2 p, float t, int oct) {
+// `footprint`: the width of water a pixel covers (0 = exact); chop octaves whose noise cells
+// come closer than about two pixels fade out (unfiltered they glitter and shimmer far away).
+float waterHf(vec2 p, float t, int oct, float footprint) {
     float s = shoreS(p);
     float shoal = 1.0 + 1.2 * smoothstep(-22.0, -5.0, s);          // waves grow in shallows
     float die = 1.0 - 0.75 * smoothstep(-3.0, 1.5, s);             // ... and collapse at the rock
@@ -140,20 +148,24 @@ float waterH(vec2 p, float t, int oct) {
     // ridge-noise chop, advected in the wave direction
     float amp = 0.085;
     vec2 q = p * 0.6;
+    float freq = 0.6;
     for (int i = 0; i < 5; i++) {
         if (i >= oct) break;
         float n = 1.0 - abs(2.0 * vnoise(q + vec2(1.2, 0.3) * t * (1.0 + 0.5 * float(i))) - 1.0);
-        h += amp * (n * n - 0.45);
+        h += amp * (n * n - 0.45) * (1.0 - smoothstep(0.4, 1.0, freq * footprint));
         q = ROT * q + 2.1;
         amp *= 0.45;
+        freq *= 2.0;
     }
     return h;
 }
 #endif
+float waterH(vec2 p, float t, int oct) { return waterHf(p, t, oct, 0.0); }
 
+// differences over `e`, the pixel's footprint, of the octaves that footprint can show
 vec3 waterNormal(vec2 p, float t, float e) {
-    float h = waterH(p, t, 5);
-    return normalize(vec3(h - waterH(p + vec2(e, 0.0), t, 5), e, h - waterH(p + vec2(0.0, e), t, 5)));
+    float h = waterHf(p, t, 5, e);
+    return normalize(vec3(h - waterHf(p + vec2(e, 0.0), t, 5, e), e, h - waterHf(p + vec2(0.0, e), t, 5, e)));
 }
 
 // ----------------------------------------------------------------------------- march --
@@ -217,6 +229,13 @@ vec3 sky(vec3 rd) {
     return c;
 }
 
+// Aerial perspective with per-channel extinction: the air scatters blue most, so distant rock
+// and sea lose red last and take the horizon haze's colour channel by channel.
+vec3 aerial(vec3 col, vec3 rd, float dist) {
+    vec3 ext = exp(-vec3(0.000014, 0.00002, 0.000028) * dist * dist);
+    return col * ext + sky(vec3(rd.x, 0.02, rd.z)) * (1.0 - ext);
+}
+
 // ----------------------------------------------------------------------------- shade --
 vec3 rockAlbedo(vec2 p, float h, vec3 n) {
     vec2 q = p + vec2(h, -h) * 0.8;                              // h term: less streaking on cliffs
@@ -231,13 +250,30 @@ vec3 rockAlbedo(vec2 p, float h, vec3 n) {
     return c;
 }
 
+// Soft shadow of the rock toward the sun: march the height field (3 octaves) and keep the
+// closest miss over distance (penumbra), 0 = in shadow. Rock pixels only.
+float rockShadow(vec3 p, vec3 L) {
+    float res = 1.0, t = 0.08;
+    for (int i = 0; i < 24; i++) {
+        vec3 q = p + L * t;
+        if (q.y > RMAX) break;
+        float h = q.y - rockH(q.xz, 3);
+        res = min(res, 10.0 * h / t);
+        if (res < 0.002) return 0.0;
+        t += clamp(0.6 * h, 0.06, 0.8);
+    }
+    return clamp(res, 0.0, 1.0);
+}
+
 vec3 shadeRock(vec3 p, vec3 rd) {
     vec3 n = rockNormal(p.xz);
     vec3 L = normalize(SUN_DIR);
     vec3 alb = rockAlbedo(p.xz, p.y, n);
     float dif = max(dot(n, L), 0.0);
-    // cheap crevice occlusion: the fine ridged detail is low in gullies
-    float ao = 0.45 + 0.55 * ridgedFbm(p.xz * 0.88, 2);
+    if (dif > 0.0) dif *= rockShadow(p + n * 0.03, L);
+    // crevice occlusion: the fine ridged detail is low in gullies, where little sky reaches
+    float ridge = ridgedFbm(p.xz * 0.88, 2);
+    float ao = clamp(1.4 * ridge * ridge, 0.03, 1.0);
     vec3 amb = vec3(0.32, 0.40, 0.52) * (0.55 + 0.45 * n.y) * ao;
     return alb * (SUN_COL * dif * (0.6 + 0.4 * ao) + amb);
 }
@@ -258,7 +294,7 @@ vec2 cellNear(vec2 p) {
 
 // foam texture 0..1, advected with the water: a soft FBM body punched with round holes of
 // random size (the bursting bubbles that give sea foam its lace)
-float foamTex(vec2 p, float t) {
+float foamTex(vec2 p, float t, float footprint) {
     vec2 q = p * 1.4 + vec2(0.6 * t, 0.1 * t);
     float body = fbm(q, 3);
     vec2 w = q * 3.2 + 0.8 * vec2(vnoise(q * 1.3), vnoise(q * 1.3 + 9.1));
@@ -266,13 +302,30 @@ float foamTex(vec2 p, float t) {
     vec2 c2 = cellNear(w * 2.3 + 5.0);
     float holes = smoothstep(0.15 + 0.45 * c1.y, 0.3 + 0.5 * c1.y, c1.x)
                 * smoothstep(0.1 + 0.35 * c2.y, 0.25 + 0.4 * c2.y, c2.x);
+    // holes finer than a pixel or two average to their mean coverage instead of aliasing
+    holes = mix(holes, 0.55, smoothstep(0.03, 0.12, footprint));
     return body * (0.55 + 0.45 * holes) + 0.1;
 }
 
 // foam coverage for a foam density 0..1: dense foam is solid, thin foam breaks into lace
-float foamCover(float density, float tex) {
+// `footprint` widens the edge (texture units change ~8x faster than metres): anti-aliased lace.
+float foamCover(float density, float tex, float footprint) {
     float thr = 1.0 - density;
-    return smoothstep(thr - 0.12, thr + 0.12, tex) * smoothstep(0.0, 0.15, density);
+    float w = 0.12 + min(8.0 * footprint, 0.4);
+    return smoothstep(thr - w, thr + w, tex) * smoothstep(0.0, 0.15, density);
+}
+
+// Triangular dither of +-1 code value per channel, fixed per pixel (the same every frame, so it
+// neither flickers nor changes a golden frame): turns the 8-bit steps of smooth gradients into
+// grain. Two uniform hashes per channel (one 3-vector hash of the pixel, another of a shifted one).
+vec3 ditherNoise(vec2 fragCoord) {
+    vec3 p = fract(vec3(fragCoord.xyx) * vec3(0.1031, 0.1030, 0.0973));
+    p += dot(p, p.yxz + 33.33);
+    vec3 a = fract((p.xxy + p.yzz) * p.zyx);
+    vec3 q = fract(vec3(fragCoord.yxy + 17.0) * vec3(0.1031, 0.1030, 0.0973));
+    q += dot(q, q.yxz + 33.33);
+    vec3 b = fract((q.xxy + q.yzz) * q.zyx);
+    return (a + b - 1.0) / 255.0;
 }
 
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
@@ -317,10 +370,12 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         vec3 nr = rockNormal(p.xz);
         float sheen = 0.04 + 0.96 * pow(1.0 - clamp(dot(-rd, nr), 0.0, 1.0), 5.0);
         col = mix(col, col * 0.55 + sky(reflect(rd, nr)) * sheen * 0.5, film);
-        col = mix(col, sky(vec3(rd.x, 0.02, rd.z)), 1.0 - exp(-0.00002 * tr * tr));
+        col = aerial(col, rd, tr);
     } else if (tw < FAR && rd.y < 0.0) {
         vec3 p = ro + rd * tw;
-        float e = 0.02 + 0.002 * tw;
+        // the width of water one pixel covers: pixel angle x distance / grazing sine
+        float footprint = tw * 2.0 / (1.6 * iResolution.y) / max(-rd.y, 0.05);
+        float e = max(0.02, footprint);
         vec3 n = waterNormal(p.xz, t, e);
         float fade = exp(-0.012 * tw);                   // far away the sea goes flat
         n = normalize(mix(vec3(0.0, 1.0, 0.0), n, 0.35 + 0.65 * fade));
@@ -350,13 +405,15 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         vec3 rf = reflect(rd, n);
         rf.y = abs(rf.y);
         col = mix(body, sky(rf), F);
-        col += SUN_COL * 1.2 * pow(max(dot(rf, L), 0.0), 300.0);
+        // sun glitter: a normalised lobe that widens where the footprint filtered slopes away
+        float sp = 300.0 / (1.0 + 300.0 * 0.02 * smoothstep(0.0, 1.0, footprint * 4.0));
+        col += SUN_COL * 1.2 * pow(max(dot(rf, L), 0.0), sp) * (sp + 2.0) / 302.0;
 
         // ----- foam
         float s = shoreS(p.xz);
-        float ft = foamTex(p.xz, t);
+        float ft = foamTex(p.xz, t, footprint);
 #ifdef LAKE
-        float foam = foamCover(0.8 * smoothstep(0.08, 0.0, depth), ft);
+        float foam = foamCover(0.8 * smoothstep(0.08, 0.0, depth), ft, footprint);
 #else
         float r = swellRidge(p.xz, t);
         // (1) contact foam where the water thickness over the rock goes to zero; a passing
@@ -372,19 +429,19 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
                      + 0.8 * exp(-5.0 * behind) * smoothstep(-15.0, -6.0, s)     // trail
                      + 0.7 * exp(-14.0 * ahead) * smoothstep(-11.0, -4.0, s));   // spilling face
         crestF *= 0.3 + 0.7 * smoothstep(0.3, 0.8, vnoise(p.xz * vec2(0.35, 0.12) + 3.0));  // breaks in patches
-        float foam = foamCover(clamp(contact + crestF, 0.0, 0.93), ft);
+        float foam = foamCover(clamp(contact + crestF, 0.0, 0.93), ft, footprint);
 #endif
         foam *= fade;
         // thick foam is brighter; thin foam lets a little of the water through
         vec3 foamCol = vec3(0.92, 0.95, 0.96) * (SUN_COL * (0.35 + 0.65 * max(dot(n, L), 0.0)) * 0.75 + vec3(0.30, 0.36, 0.44));
         foamCol *= 0.82 + 0.25 * ft;
         col = mix(col, foamCol, foam);
-        col = mix(col, sky(vec3(rd.x, 0.02, rd.z)), 1.0 - exp(-0.00002 * tw * tw));
+        col = aerial(col, rd, tw);
     } else {
         col = sky(rd);
     }
 
     col = 1.0 - exp(-1.1 * col);            // gentle tone map
     col = pow(col, vec3(1.0 / 2.2));
-    fragColor = vec4(col, 1.0);
+    fragColor = vec4(col + ditherNoise(fragCoord), 1.0);
 }

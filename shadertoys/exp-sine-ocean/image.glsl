@@ -11,11 +11,14 @@
 //   ripples on the crests and leaves the troughs smooth.
 // - The normalised sum lies in (0, 1]; the surface is 0 .. -DEPTH below y = 0, so the ray is only
 //   marched between the planes y = 0 and y = -DEPTH, stepping by the vertical gap (stretched for
-//   shallow rays), with a final linear refinement. The march uses 12 waves, the normal 32 (extra detail only in shading),
-//   and the normal fades toward straight up with distance to keep the horizon from aliasing.
+//   shallow rays), with a final linear refinement. The march uses 12 waves, the normal 32 (extra detail only in shading).
+// - Distance-aware filtering: each wave of the normal fades to its mean once its wavelength nears
+//   the width of water one pixel covers (distance x pixel angle / grazing sine), and the sun's
+//   glitter lobe widens (normalised, so its energy stays) where detail has been filtered away.
 // - Shading: Schlick's Fresnel with F0 = 0.04 mixes a sky reflection (which carries a bright HDR
 //   sun, hence the glitter path) with a subsurface tint, stronger in the troughs than on the
-//   crests; ACES filmic curve (Stephen Hill's fitted RRT+ODT), then gamma 2.2.
+//   crests; ACES filmic curve (Stephen Hill's fitted RRT+ODT), then gamma 1/2.2 and a fixed
+//   +-1 level triangular dither (no 8-bit bands in smooth gradients, the same every frame).
 // - Camera: fixed above the water; before any click it looks at the horizon. Click or drag: look
 //   where the mouse is (x = heading, full turn across the width; y = pitch, centre = default).
 
@@ -25,6 +28,8 @@ const int   MARCH_WAVES  = 12;
 const int   NORMAL_WAVES = 32;
 const int   MARCH_STEPS  = 48;
 const float CAMERA_Y     = 1.2;    // above the top plane
+const float GLINT_POWER  = 900.0;  // the near sun glitter lobe (Phong exponent)
+const float WAVE_MEAN    = 0.4658; // mean of exp(sin x - 1) over a period (I0(1) / e)
 
 const vec3  SUN_DIR      = vec3(0.25, 0.1, 1.0);           // normalised where used
 const vec3  TROUGH_TINT  = vec3(0.015, 0.07, 0.10);        // subsurface colour in the troughs
@@ -33,8 +38,11 @@ const float CREST_TINT   = 0.35;                           // ... scaled this mu
 // 2x2 rotation by the golden angle, applied to the wave direction after every wave
 const mat2 GOLDEN_TURN = mat2(-0.737369, 0.675490, -0.675490, -0.737369);
 
-// Normalised wave sum at xz in [0, 1] (1 = highest crest), using n waves.
-float waveSum(vec2 xz, int n) {
+// Normalised wave sum at xz in [0, 1] (1 = highest crest), using n waves. `footprint` is the
+// width of the surface one pixel covers (0 = exact): a wave whose wavelength approaches it fades
+// to its mean (and stops dragging the later ones), so a far pixel never samples detail it cannot
+// show (that detail flickers from frame to frame: the horizon shimmer).
+float waveSum(vec2 xz, int n, float footprint) {
     vec2 dir = vec2(1.0, 0.0);
     float freq = 1.0;
     float speed = 2.0;
@@ -44,10 +52,11 @@ float waveSum(vec2 xz, int n) {
     float t = iTime;
     for (int i = 0; i < n; i++) {
         float x = dot(dir, xz) * freq + t * speed;
+        float keep = 1.0 - smoothstep(1.0, 3.0, freq * footprint);   // radians of phase per pixel
         float w = exp(sin(x) - 1.0);
         float slope = w * cos(x);
-        xz += dir * slope * weight * DRAG;        // drag: pull later waves toward this crest
-        sum += w * weight;
+        xz += dir * slope * weight * DRAG * keep; // drag: pull later waves toward this crest
+        sum += mix(WAVE_MEAN, w, keep) * weight;
         total += weight;
         weight *= 0.8;
         freq *= 1.18;
@@ -57,7 +66,7 @@ float waveSum(vec2 xz, int n) {
     return sum / total;
 }
 
-float surfaceY(vec2 xz, int n) { return (waveSum(xz, n) - 1.0) * DEPTH; }
+float surfaceY(vec2 xz, int n, float footprint) { return (waveSum(xz, n, footprint) - 1.0) * DEPTH; }
 
 // March between the planes y = 0 and y = -DEPTH. Steps are the vertical gap (a little
 // lengthened for shallow rays, which otherwise crawl), capped at MARCH_STEPS; the final
@@ -66,13 +75,13 @@ float marchWater(vec3 ro, vec3 rd) {
     float tTop = (ro.y) / -rd.y;
     float tBot = (ro.y + DEPTH) / -rd.y;
     float t = tTop;
-    float gapPrev = ro.y + rd.y * t - surfaceY((ro + rd * t).xz, MARCH_WAVES);
+    float gapPrev = ro.y + rd.y * t - surfaceY((ro + rd * t).xz, MARCH_WAVES, 0.0);
     float tPrev = t;
     float stretch = 1.0 / (0.6 + abs(rd.y));
     for (int i = 0; i < MARCH_STEPS; i++) {
         t = min(t + max(gapPrev * stretch, 0.001 * t), tBot);
         vec3 p = ro + rd * t;
-        float gap = p.y - surfaceY(p.xz, MARCH_WAVES);
+        float gap = p.y - surfaceY(p.xz, MARCH_WAVES, 0.0);
         if (gap < 0.001 || t >= tBot) {
             // the surface lies between tPrev and t: take the linear root
             return mix(tPrev, t, gapPrev / max(gapPrev - gap, 1e-5));
@@ -83,14 +92,21 @@ float marchWater(vec3 ro, vec3 rd) {
     return t;
 }
 
-vec3 waterNormal(vec2 xz, float dist) {
-    float e = max(0.01, dist * 0.002);              // wider stencil far away: a cheap filter
-    float h = surfaceY(xz, NORMAL_WAVES);
-    float hx = surfaceY(xz + vec2(e, 0.0), NORMAL_WAVES);
-    float hz = surfaceY(xz + vec2(0.0, e), NORMAL_WAVES);
-    vec3 n = normalize(vec3(h - hx, e, h - hz));
-    // far away a pixel covers many ripples: flatten toward the average normal (up)
-    return normalize(mix(n, vec3(0.0, 1.0, 0.0), 0.8 * smoothstep(0.0, 1.0, sqrt(dist * 0.01))));
+// The normal from the waves a pixel of `footprint` can show, by differences over a stencil as
+// wide as the footprint (a box filter of the slope).
+vec3 waterNormal(vec2 xz, float footprint) {
+    float e = max(0.01, footprint);
+    float h = surfaceY(xz, NORMAL_WAVES, footprint);
+    float hx = surfaceY(xz + vec2(e, 0.0), NORMAL_WAVES, footprint);
+    float hz = surfaceY(xz + vec2(0.0, e), NORMAL_WAVES, footprint);
+    return normalize(vec3(h - hx, e, h - hz));
+}
+
+// Width of water one pixel covers at distance `dist` along `rd`: the pixel's angle times the
+// distance, stretched by the grazing angle (geometric mean of the along- and across-view widths).
+float pixelFootprint(float dist, vec3 rd) {
+    float pixelAngle = 2.0 / (iResolution.y * 1.6);
+    return dist * pixelAngle / max(abs(rd.y), 0.02);
 }
 
 vec3 sky(vec3 rd) {
@@ -115,6 +131,19 @@ vec3 acesFitted(vec3 c) {
     vec3 a = c * (c + 0.0245786) - 0.000090537;
     vec3 b = c * (0.983729 * c + 0.4329510) + 0.238081;
     return clamp(fromAces * (a / b), 0.0, 1.0);
+}
+
+// Triangular dither of +-1 code value per channel, fixed per pixel (the same every frame, so it
+// neither flickers nor changes a golden frame): turns the 8-bit steps of smooth gradients into
+// grain. Two uniform hashes per channel (one 3-vector hash of the pixel, another of a shifted one).
+vec3 ditherNoise(vec2 fragCoord) {
+    vec3 p = fract(vec3(fragCoord.xyx) * vec3(0.1031, 0.1030, 0.0973));
+    p += dot(p, p.yxz + 33.33);
+    vec3 a = fract((p.xxy + p.yzz) * p.zyx);
+    vec3 q = fract(vec3(fragCoord.yxy + 17.0) * vec3(0.1031, 0.1030, 0.0973));
+    q += dot(q, q.yxz + 33.33);
+    vec3 b = fract((q.xxy + q.yzz) * q.zyx);
+    return (a + b - 1.0) / 255.0;
 }
 
 mat3 viewBasis(float yaw, float pitch) {
@@ -142,7 +171,8 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     } else {
         float dist = marchWater(ro, rd);
         vec3 p = ro + rd * dist;
-        vec3 n = waterNormal(p.xz, dist);
+        float footprint = pixelFootprint(dist, rd);
+        vec3 n = waterNormal(p.xz, footprint);
 
         float cosV = max(dot(n, -rd), 0.0);
         float F = 0.04 + 0.96 * pow(1.0 - cosV, 5.0);     // Schlick, water F0 = 0.04
@@ -150,8 +180,12 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         vec3 r = reflect(rd, n);
         r.y = abs(r.y);                                   // no reflections from below the horizon
         vec3 refl = sky(r);
-        // the sun's glitter: a lobe wider than the tiny disc, so wave facets catch it
-        float glint = pow(max(dot(r, normalize(SUN_DIR)), 0.0), 900.0);
+        // the sun's glitter: a lobe wider than the tiny disc, so wave facets catch it. The slopes
+        // that the filtered normal no longer shows widen the lobe with distance; the lobe is
+        // normalised ((s + 2) / 2pi, relative to the near lobe), so the glitter path keeps its
+        // energy and dims as it spreads instead of clipping or vanishing.
+        float s = GLINT_POWER / (1.0 + GLINT_POWER * 0.03 * smoothstep(0.0, 1.0, footprint * 4.0));
+        float glint = pow(max(dot(r, normalize(SUN_DIR)), 0.0), s) * (s + 2.0) / (GLINT_POWER + 2.0);
         refl += vec3(1.0, 0.75, 0.45) * 30.0 * glint;
 
         // subsurface: light scattered back out of the water, deepest in the troughs
@@ -164,5 +198,5 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     }
 
     col = acesFitted(col * 1.1);
-    fragColor = vec4(pow(col, vec3(1.0 / 2.2)), 1.0);
+    fragColor = vec4(pow(col, vec3(1.0 / 2.2)) + ditherNoise(fragCoord), 1.0);
 }

@@ -8,8 +8,9 @@
 //   * Bottom radiance L_b = albedo * (sun * caustics + ambient) * exp(-K (d + d_acc)):
 //     K is an RGB extinction coefficient (1/m), applied to the light going down to the bottom
 //     and to the light coming back up along the view ray.
-//   * In-scattering: water = mix(C_s, L_b, exp(-b d_acc)); the longer the path, the more the
-//     colour tends to the scatter colour C_s (b = scattering coefficient, 1/m).
+//   * In-scattering: water = mix(C_s * E, L_b, exp(-b d_acc)); the longer the path, the more the
+//     colour tends to the scatter colour C_s lit by the light that enters the water,
+//     E = sun * cos(refracted sun) + sky ambient (b = scattering coefficient, 1/m).
 //   * Sky reflection by Schlick's Fresnel, F = F0 + (1 - F0)(1 - cos)^5, F0 = 0.02 for water:
 //     colour = mix(water, sky(reflect), F).
 //   Presets (keys 1-3, kept in Buffer A texel (0,0).x = 0, 1, 2):
@@ -21,7 +22,9 @@
 //     3 tannin lake      K = (0.45, 0.80, 2.20)  b = 0.04  C_s = (0.055, 0.026, 0.007)
 //       dissolved organic matter (humic acids / tannins) absorbs blue very strongly and red
 //       weakly, but there are few particles: clear, dark amber "tea" water, black when deep.
-//   Colours are linear; gamma 2.2 at the end. iMouse x (while dragged) turns the camera.
+//   Colours are linear; gamma 1/2.2 and a fixed +-1 level dither at the end. iMouse x (while
+//   dragged) turns the camera. The preset indicator (1-3 squares, top left) shows for 2 s after
+//   a preset key, so captured frames carry no overlay unless a key was pressed.
 
 const vec3 SUN_DIR = vec3(-0.38, 0.70, -0.60);   // behind-left of the camera: no glint in view
 const vec3 SUN_COL = vec3(1.25, 1.15, 1.00);
@@ -125,17 +128,23 @@ vec3 sky(vec3 rd) {
 }
 
 // ------------------------------------------------------------------------ water surface --
-// sum of directional waves with deep-water dispersion w = sqrt(g k); returns the normal
-vec3 waterNormal(vec2 p, float t, float fade) {
+// sum of directional waves with deep-water dispersion w = sqrt(g k); returns the normal.
+// Nine waves, turned by the golden angle and x1.37 in wavenumber (no common period in view), each
+// modulated by slow value noise of its own so the pattern comes in patches instead of a visibly
+// repeating sheet; `fade` calms the normal far away, and a wave shorter than about two pixels
+// (`footprint`: the width of water a pixel covers) fades out instead of aliasing into moire.
+vec3 waterNormal(vec2 p, float t, float fade, float footprint) {
     vec2 g = vec2(0.0);
     float ang = 0.4, k = 1.3, amp = 0.020;
-    for (int i = 0; i < 5; i++) {
+    for (int i = 0; i < 9; i++) {
         vec2 dir = vec2(cos(ang), sin(ang));
         float w = sqrt(9.81 * k);
-        g += dir * (amp * k * cos(dot(p, dir) * k - w * t + float(i) * 1.7));
-        ang += 2.1;
-        k *= 1.55;
-        amp *= 0.72;
+        float patchy = 0.35 + 1.3 * vnoise(p * 0.13 + vec2(float(i) * 7.1, 0.05 * t));
+        float keep = 1.0 - smoothstep(1.0, 3.0, k * footprint);
+        g += dir * (amp * k * patchy * keep * cos(dot(p, dir) * k - w * t + float(i) * 1.7));
+        ang += 2.39996;
+        k *= 1.37;
+        amp *= 0.78;
     }
     g *= fade;
     return normalize(vec3(-g.x, 1.0, -g.y));
@@ -198,6 +207,19 @@ vec3 shadeLand(vec3 p, vec3 rd) {
     return alb * (SUN_COL * dif + amb);
 }
 
+// Triangular dither of +-1 code value per channel, fixed per pixel (the same every frame, so it
+// neither flickers nor changes a golden frame): turns the 8-bit steps of smooth gradients into
+// grain. Two uniform hashes per channel (one 3-vector hash of the pixel, another of a shifted one).
+vec3 ditherNoise(vec2 fragCoord) {
+    vec3 p = fract(vec3(fragCoord.xyx) * vec3(0.1031, 0.1030, 0.0973));
+    p += dot(p, p.yxz + 33.33);
+    vec3 a = fract((p.xxy + p.yzz) * p.zyx);
+    vec3 q = fract(vec3(fragCoord.yxy + 17.0) * vec3(0.1031, 0.1030, 0.0973));
+    q += dot(q, q.yxz + 33.33);
+    vec3 b = fract((q.xxy + q.yzz) * q.zyx);
+    return (a + b - 1.0) / 255.0;
+}
+
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     int preset = int(clamp(texelFetch(iChannel0, ivec2(0), 0).x + 0.5, 0.0, 2.0));
     vec3 K, Cs; float b;
@@ -231,7 +253,8 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         } else {
             vec3 P = ro + rd * tW;
             float fade = 1.0 / (1.0 + tW * 0.04);           // calm the normal far away
-            vec3 n = waterNormal(P.xz, t, fade);
+            float footprint = tW * 2.0 / (1.7 * iResolution.y) / max(-rd.y, 0.05);
+            vec3 n = waterNormal(P.xz, t, fade, footprint);
             vec3 rr = refract(rd, n, 1.0 / WATER_IOR);
 
             // march the refracted ray to the bottom (at most 45 m of water)
@@ -251,7 +274,10 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
                 vec3 light = SUN_COL * dif * ca + vec3(0.25, 0.33, 0.42) * (0.5 + 0.5 * nb.y);
                 bottom = alb * light * exp(-K * (d + dAcc));
             }
-            vec3 water = mix(Cs, bottom, exp(-b * dAcc));
+            // the scatter colour is lit by what enters the water: the refracted sun and the sky
+            vec3 Lw0 = -refract(-L, vec3(0.0, 1.0, 0.0), 1.0 / WATER_IOR);
+            vec3 incident = SUN_COL * Lw0.y + vec3(0.25, 0.33, 0.42);
+            vec3 water = mix(Cs * incident, bottom, exp(-b * dAcc));
 
             // Fresnel (Schlick) blend with the reflected sky
             float cosi = clamp(dot(-rd, n), 0.0, 1.0);
@@ -268,13 +294,16 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         }
     }
 
-    col = pow(clamp(col, 0.0, 1.0), vec3(1.0 / 2.2));
+    col = pow(clamp(col, 0.0, 1.0), vec3(1.0 / 2.2)) + ditherNoise(fragCoord);
 
-    // preset indicator: 1-3 small squares in the top-left corner
+    // preset indicator: 1-3 small squares in the top-left corner, for 2 s after a preset key
+    // (Buffer A texel (0,0).y = iTime of the last preset key, -1 before any)
+    float keyTime = texelFetch(iChannel0, ivec2(0), 0).y;
+    bool showPreset = keyTime >= 0.0 && iTime - keyTime < 2.0 && texelFetch(iChannel0, ivec2(0), 0).w > 0.5;
     vec2 px = fragCoord - vec2(8.0, iResolution.y - 14.0);
     float sz = max(4.0, iResolution.y / 90.0);
     for (int i = 0; i < 3; i++) {
-        if (i > preset) break;
+        if (i > preset || !showPreset) break;
         vec2 q = px - vec2(float(i) * sz * 1.8, 0.0);
         if (q.x >= 0.0 && q.x < sz && q.y >= -sz && q.y < 0.0) col = vec3(1.0);
     }

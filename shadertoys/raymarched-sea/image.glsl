@@ -6,20 +6,26 @@
 //   (a peaked crest with a rounded trough), and the result is raised to a "choppiness" exponent
 //   that starts at 4 and relaxes towards 1 (x -> mix(x, 1, 0.2)) per octave, so the big swell is
 //   sharp and the ripples are soft. Each octave rotates its domain by a fixed 2x2 matrix that also
-//   doubles the frequency (scale 2, angle ~34 deg, so octaves never line up); amplitude x 0.24.
+//   doubles the frequency (scale 2, angle ~34 deg, so octaves never line up); amplitude x 0.30 (0.24 read as smooth gel close up).
 // - The ray is marched against only 3 octaves (cheap, and the small ones barely move the hit
 //   point): from the crest plane it steps forward by the vertical gap until it is under the
 //   water, then refines that bracket with Illinois false position; normals come from 6 octaves
-//   by central differences whose step grows with distance (a cheap filter against shimmering
-//   at the horizon).
-// - Shading: sky gradient with a sun glow; water = deep colour with wrapped diffuse + back
-//   light through thin crests, mixed with the sky reflection by Schlick's Fresnel (F0 = 0.02),
-//   plus a sharp sun specular; exponential distance fog into the horizon colour.
-// - SUPERSAMPLE 1 renders a 3x3 grid per pixel (9x the cost); off by default.
+//   by central differences over the pixel's footprint (distance / grazing sine), and each octave
+//   fades out once its crests come closer than about two pixels (no horizon shimmer).
+// - Shading (linear light): sky gradient with a sun glow and an HDR disc; water = deep colour
+//   with wrapped diffuse + back light through thin crests, mixed with the sky reflection by
+//   Schlick's Fresnel (F0 = 0.02, capped at 0.7), plus the sun's glint: normalised Blinn-Phong
+//   whose lobe widens with the footprint, never brighter than the sun times Fresnel; exponential
+//   distance fog into the horizon colour; ACES tone curve, gamma 1/2.2, fixed dither.
+// - SUPERSAMPLE 2 (default) anti-aliases where it matters: 4 rotated-grid samples for the pixels
+//   whose ray grazes the sea near the horizon, one elsewhere; 1 renders a 3x3 grid per pixel
+//   everywhere (9x the cost); 0 is one sample everywhere.
 // - Camera cruises forward and turns slowly with time; dragging the mouse steers it
 //   (x = heading, y = pitch).
 
-#define SUPERSAMPLE 0
+#define SUPERSAMPLE 2
+
+const float EXPOSURE = 1.0;
 
 const int   MARCH_OCTAVES = 3;
 const int   SHADE_OCTAVES = 6;
@@ -35,10 +41,13 @@ const float WAVE_SPEED  = 0.8;
 const mat2 OCTAVE_TURN = mat2(1.662, 1.113, -1.113, 1.662);
 
 const vec3 SUN_DIR     = vec3(0.45, 0.2, 0.85);     // normalised where used
-const vec3 DEEP_WATER  = vec3(0.0, 0.07, 0.14);
-const vec3 CREST_TINT  = vec3(0.35, 0.62, 0.45);
-const vec3 ZENITH      = vec3(0.10, 0.27, 0.58);
-const vec3 HORIZON     = vec3(0.72, 0.80, 0.86);
+const vec3 DEEP_WATER  = vec3(0.0, 0.0124, 0.039);   // linear colours (gamma 2.2 at the end)
+const vec3 CREST_TINT  = vec3(0.177, 0.454, 0.268);
+const vec3 ZENITH      = vec3(0.022, 0.115, 0.407);
+const vec3 HORIZON     = vec3(0.582, 0.692, 0.780);
+const vec3 SUN_RADIANCE = vec3(1.0, 0.92, 0.8) * 10.0;  // the disc's brightness in skyColor (HDR)
+const float GLINT_POWER = 400.0;
+const float GLINT_SOLID_ANGLE = 0.25;  // the sun's lobe x this <= 1: a facet reflects at most the sun
 
 // ---------------------------------------------------------------- noise
 // Integer hash of a lattice point -> [0, 1): multiply-xor the coordinates with two odd
@@ -74,25 +83,31 @@ float crest(vec2 p, float k) {
     return pow(1.0 - pow(prof.x * prof.y, 0.65), k);
 }
 
-float waterHeight(vec2 xz, int octaves) {
+// The sea's height from `octaves` octaves. `footprint` is the width of water a pixel covers
+// (0 = exact): an octave whose crests come closer than about two pixels fades out, so the normal
+// shows only detail the pixel can hold (unfiltered, far octaves flicker: horizon shimmer).
+float waterHeight(vec2 xz, int octaves, float footprint) {
     vec2 p = xz * WAVE_FREQ;
     p.x *= 0.75;                          // slightly longer crests across the wind
     float phase = 1.0 + iTime * WAVE_SPEED;
     float amp = WAVE_HEIGHT;
     float k = WAVE_CHOP;
     float h = 0.0;
+    float freq = WAVE_FREQ;
     for (int i = 0; i < octaves; i++) {
         // two trains moving in opposite directions give a standing, tumbling chop
-        h += amp * (crest(p + phase, k) + crest(p - phase, k));
+        float keep = 1.0 - smoothstep(0.5, 1.5, freq * footprint);
+        h += amp * keep * (crest(p + phase, k) + crest(p - phase, k));
         p = OCTAVE_TURN * p;
-        amp *= 0.24;
+        freq *= 2.0;
+        amp *= 0.30;
         k = mix(k, 1.0, 0.2);
     }
     return h;
 }
 
 // signed vertical distance from the surface
-float above(vec3 p, int octaves) { return p.y - waterHeight(p.xz, octaves); }
+float above(vec3 p, int octaves) { return p.y - waterHeight(p.xz, octaves, 0.0); }
 
 // Height-field intersection in two phases. (1) Walk forward from the crest plane with steps
 // proportional to the vertical gap, divided by (|rd.y| + a slope bound) so a step cannot jump
@@ -144,8 +159,8 @@ float traceSea(vec3 ro, vec3 rd, out bool hit) {
 }
 
 vec3 waterNormal(vec3 p, float eps) {
-    float hx = waterHeight(p.xz + vec2(eps, 0.0), SHADE_OCTAVES) - waterHeight(p.xz - vec2(eps, 0.0), SHADE_OCTAVES);
-    float hz = waterHeight(p.xz + vec2(0.0, eps), SHADE_OCTAVES) - waterHeight(p.xz - vec2(0.0, eps), SHADE_OCTAVES);
+    float hx = waterHeight(p.xz + vec2(eps, 0.0), SHADE_OCTAVES, eps) - waterHeight(p.xz - vec2(eps, 0.0), SHADE_OCTAVES, eps);
+    float hz = waterHeight(p.xz + vec2(0.0, eps), SHADE_OCTAVES, eps) - waterHeight(p.xz - vec2(0.0, eps), SHADE_OCTAVES, eps);
     return normalize(vec3(-hx, 2.0 * eps, -hz));
 }
 
@@ -156,11 +171,14 @@ vec3 skyColor(vec3 rd) {
     vec3 col = mix(HORIZON, ZENITH, pow(up, 0.45));
     float mu = max(dot(rd, sun), 0.0);
     col += vec3(1.0, 0.72, 0.42) * (0.25 * pow(mu, 6.0) + 0.35 * pow(mu, 90.0));
-    col += vec3(1.0, 0.9, 0.75) * 4.0 * smoothstep(0.99975, 0.99988, mu);   // the disc
+    col += SUN_RADIANCE * smoothstep(0.99975, 0.99988, mu);   // the disc
     return col;
 }
 
-vec3 shadeWater(vec3 p, vec3 n, vec3 rd, float dist) {
+// `footprint`: the width of water the pixel covers; the detail it filtered away widens the sun's
+// lobe. The lobe is normalised Blinn-Phong times the sun's radiance (SUN_RADIANCE, the disc's
+// own brightness) and Fresnel: never brighter than the sun itself, the same energy when wide.
+vec3 shadeWater(vec3 p, vec3 n, vec3 rd, float footprint) {
     vec3 sun = normalize(SUN_DIR);
     float cosV = clamp(dot(n, -rd), 0.0, 1.0);
     float F = 0.02 + 0.98 * pow(1.0 - cosV, 5.0);   // Schlick, water F0 ~ 0.02
@@ -178,10 +196,11 @@ vec3 shadeWater(vec3 p, vec3 n, vec3 rd, float dist) {
 
     vec3 col = mix(body, refl, F);
 
-    // sun glint: normalised Blinn-Phong, sharp
+    // sun glint: normalised Blinn-Phong, sharp near, wider where the footprint hides slopes
     vec3 hv = normalize(sun - rd);
-    float spec = pow(max(dot(n, hv), 0.0), 400.0) * (400.0 + 8.0) / (8.0 * 3.14159);
-    col += vec3(1.0, 0.92, 0.8) * spec * F * 1.5;
+    float s = GLINT_POWER / (1.0 + GLINT_POWER * 0.1 * smoothstep(0.0, 1.0, footprint * 2.0));
+    float spec = pow(max(dot(n, hv), 0.0), s) * (s + 8.0) / (8.0 * 3.14159) * max(dot(n, sun), 0.0);
+    col += SUN_RADIANCE * min(spec * GLINT_SOLID_ANGLE, 1.0) * F;
 
     return col;
 }
@@ -193,7 +212,8 @@ mat3 lookBasis(float yaw, float pitch) {
     return mat3(right, up, fwd);
 }
 
-vec3 render(vec2 fragCoord) {
+// The camera's ray through fragCoord.
+void viewRay(vec2 fragCoord, out vec3 ro, out vec3 rd) {
     vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
 
     // slow orbit: the heading turns with time while the boat cruises along it
@@ -205,34 +225,76 @@ vec3 render(vec2 fragCoord) {
         yaw += m.x * 3.0;
         pitch = clamp(-0.16 + m.y * 1.2, -0.9, 0.4);
     }
-    vec3 ro = vec3(30.0 * sin(t * 0.04), 3.4 + 0.15 * sin(t * 0.8), 5.0 * t);
+    ro = vec3(30.0 * sin(t * 0.04), 3.4 + 0.15 * sin(t * 0.8), 5.0 * t);
     mat3 cam = lookBasis(yaw, pitch);
-    vec3 rd = normalize(cam * vec3(uv, 2.0));
+    rd = normalize(cam * vec3(uv, 2.0));
+}
 
+vec3 render(vec2 fragCoord) {
+    vec3 ro, rd;
+    viewRay(fragCoord, ro, rd);
     vec3 sky = skyColor(rd);
     bool hit;
     float dist = traceSea(ro, rd, hit);
     if (!hit) return sky;
 
     vec3 p = ro + rd * dist;
-    float eps = max(0.002, dist * 1.5 / iResolution.y);
-    vec3 n = waterNormal(p, eps);
-    vec3 col = shadeWater(p, n, rd, dist);
+    // the water one pixel covers: pixel angle x distance, stretched by the grazing angle
+    float footprint = dist * (1.0 / iResolution.y) / max(abs(rd.y), 0.05);
+    vec3 n = waterNormal(p, max(0.002, footprint));
+    vec3 col = shadeWater(p, n, rd, footprint);
 
     float fog = 1.0 - exp(-dist * 0.0045);
     return mix(col, skyColor(normalize(vec3(rd.x, 0.0, rd.z))) , fog * fog);
 }
 
+// ACES filmic tone curve (Stephen Hill's fitted RRT + ODT, sRGB primaries in and out)
+vec3 acesFitted(vec3 c) {
+    const mat3 toAces = mat3(0.59719, 0.07600, 0.02840, 0.35458, 0.90834, 0.13383, 0.04823, 0.01566, 0.83777);
+    const mat3 fromAces = mat3(1.60475, -0.10208, -0.00327, -0.53108, 1.10813, -0.07276, -0.07367, -0.00605, 1.07602);
+    c = toAces * c;
+    vec3 a = c * (c + 0.0245786) - 0.000090537;
+    vec3 b = c * (0.983729 * c + 0.4329510) + 0.238081;
+    return clamp(fromAces * (a / b), 0.0, 1.0);
+}
+
+// Triangular dither of +-1 code value per channel, fixed per pixel (the same every frame, so it
+// neither flickers nor changes a golden frame): turns the 8-bit steps of smooth gradients into
+// grain. Two uniform hashes per channel (one 3-vector hash of the pixel, another of a shifted one).
+vec3 ditherNoise(vec2 fragCoord) {
+    vec3 p = fract(vec3(fragCoord.xyx) * vec3(0.1031, 0.1030, 0.0973));
+    p += dot(p, p.yxz + 33.33);
+    vec3 a = fract((p.xxy + p.yzz) * p.zyx);
+    vec3 q = fract(vec3(fragCoord.yxy + 17.0) * vec3(0.1031, 0.1030, 0.0973));
+    q += dot(q, q.yxz + 33.33);
+    vec3 b = fract((q.xxy + q.yzz) * q.zyx);
+    return (a + b - 1.0) / 255.0;
+}
+
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
-#if SUPERSAMPLE
+#if SUPERSAMPLE == 1
     vec3 col = vec3(0.0);
     for (int j = -1; j <= 1; j++)
         for (int i = -1; i <= 1; i++)
             col += render(fragCoord + vec2(i, j) / 3.0);
     col /= 9.0;
+#elif SUPERSAMPLE == 2
+    // adaptive: 4 rotated-grid samples only where the ray grazes the sea near the horizon (the
+    // crest silhouettes alias there, a few % of the pixels); one sample elsewhere
+    vec3 ro, rd;
+    viewRay(fragCoord, ro, rd);
+    int samples = (rd.y > -0.06 && rd.y < 0.01) ? 4 : 1;
+    vec3 col = vec3(0.0);
+    for (int k = 0; k < samples; k++) {
+        // rotated grid: (1, 3), (-3, 1), (3, -1), (-1, -3) / 8 of a pixel; one sample: the centre
+        vec2 o = samples == 1 ? vec2(0.0) : vec2(k == 0 ? 1.0 : k == 1 ? -3.0 : k == 2 ? 3.0 : -1.0,
+                                                 k == 0 ? 3.0 : k == 1 ? 1.0 : k == 2 ? -1.0 : -3.0) / 8.0;
+        col += render(fragCoord + o);
+    }
+    col /= float(samples);
 #else
     vec3 col = render(fragCoord);
 #endif
-    col = pow(clamp(col, 0.0, 1.0), vec3(0.75)); // mild display curve
-    fragColor = vec4(col, 1.0);
+    col = acesFitted(col * EXPOSURE);                    // tone map: the sun rolls off, no clipping
+    fragColor = vec4(pow(col, vec3(1.0 / 2.2)) + ditherNoise(fragCoord), 1.0);
 }

@@ -1,9 +1,9 @@
-// ripple-pool / Buffer A: height-field wave simulation (one grid cell per pixel).
+// ripple-pool / Buffer A: height-field wave simulation (one grid cell per pixel up to 180 rows).
 //
 // Layout (RGBA32F, reads itself = previous frame):
-//   .x  surface height h(t)      in pixels (0 = calm)
+//   .x  surface height h(t)      in cells (0 = calm)
 //   .y  surface height h(t-1)    (the leapfrog scheme keeps two time levels)
-//   .zw iMouse.xy of the previous frame (same value in every pixel), used to
+//   .zw the pointer of the previous frame in cells (iMouse.xy / grid scale, the same in every cell), used to
 //       scale drag drops by the distance the pointer moved
 //
 // Update (explicit leapfrog for h_tt = c^2 * laplacian(h), damped velocity):
@@ -28,8 +28,11 @@
 // 2-D; the kick fills it, so the outgoing ring is the highest point from about
 // 10 frames after the click on, moving out at a steady c.
 // Full strength on the click frame (iMouse.w > 0); on later frames of a drag the
-// strength is scaled by the distance moved (capped at 1), so a slow drag does not
-// pile up dozens of overlapping bumps and holding still adds nothing.
+// bump is a line: the raised cosine of the distance to the segment from the
+// previous pointer position to this one (a capsule), so a fast drag draws a
+// continuous trough instead of a chain of stamped discs; its strength is scaled
+// by the distance moved (capped at 1), so a slow drag does not pile up bumps and
+// holding still adds nothing.
 
 const float C2        = 0.45;   // (wave speed in px/frame)^2
 const float DAMPING   = 0.995;  // velocity damping per step
@@ -40,6 +43,18 @@ const float DROP_KICK = 0.2;    // fraction of the bump also given as velocity
 const float DRAG_STEP = 6.0;    // a drag adds a full drop every DRAG_STEP px moved
 
 // #define RAIN                 // deterministic automatic drops (off: tests see only the mouse)
+
+// The drag's capsule: raised cosine of the distance from the cell centre to the
+// segment between the pointer's previous and current pixel centres.
+float lineShape(ivec2 cell, vec2 from, vec2 to, float radius)
+{
+    vec2 c = vec2(cell) + 0.5;
+    vec2 ab = to - from;
+    float k = clamp(dot(c - from, ab) / max(dot(ab, ab), 1e-6), 0.0, 1.0);
+    float r = length(c - from - ab * k);
+    if (r >= radius) return 0.0;
+    return 0.5 + 0.5 * cos(3.14159265 * r / radius);
+}
 
 float dropShape(ivec2 cell, ivec2 centre, float radius)
 {
@@ -61,10 +76,19 @@ float hashU(uint n)   // integer hash: the same on every GPU
 }
 #endif
 
+// The simulation grid: one cell per pixel up to 180 rows; on a taller canvas the grid stays 180
+// rows high (the lower-left part of the buffer) and the Image scales it up, so drops, rings and
+// their speed are the same fraction of the picture at any canvas size.
+float gridScale() { return max(1.0, iResolution.y / 180.0); }
+
 void mainImage(out vec4 fragColor, in vec2 fragCoord)
 {
+    float scale = gridScale();
+    ivec2 grid = max(ivec2(iResolution.xy / scale), ivec2(1));
+    vec2 mouse = iMouse.xy / scale;                 // the pointer in cells
     ivec2 p   = ivec2(fragCoord);
-    ivec2 top = ivec2(iResolution.xy) - 1;
+    if (any(greaterThanEqual(p, grid))) { fragColor = vec4(0.0, 0.0, mouse); return; }
+    ivec2 top = grid - 1;
 
     vec4 s = texelFetch(iChannel0, p, 0);
     float h  = s.x;
@@ -90,28 +114,27 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
     if (iFrame == 0) { hn = 0.0; hp = 0.0; }
 
     // Mouse drops.
-    float strength = 0.0;
+    float bump = 0.0;
     if (iMouse.w > 0.0) {
-        strength = 1.0;                                  // click frame
+        bump = DROP_AMP * dropShape(p, ivec2(floor(mouse)), DROP_R);   // click frame
     } else if (iMouse.z > 0.0) {
-        strength = min(1.0, length(iMouse.xy - s.zw) / DRAG_STEP);  // drag
+        float strength = min(1.0, length(mouse - s.zw) / DRAG_STEP);  // drag: a line
+        if (strength > 0.0)
+            bump = DROP_AMP * strength * lineShape(p, floor(s.zw) + 0.5, floor(mouse) + 0.5, DROP_R);
     }
-    if (strength > 0.0) {
-        float bump = DROP_AMP * strength * dropShape(p, ivec2(floor(iMouse.xy)), DROP_R);
-        hn += bump;
-        hp += bump * (1.0 - DROP_KICK);
-    }
+    hn += bump;
+    hp += bump * (1.0 - DROP_KICK);
 
 #ifdef RAIN
     // one drop every 37 frames at a pseudo-random place (fixed by the frame number)
     if (iFrame > 0 && iFrame % 37 == 0) {
         uint k = uint(iFrame / 37);
-        ivec2 c0 = ivec2(vec2(hashU(2u * k), hashU(2u * k + 1u)) * (iResolution.xy - 40.0) + 20.0);
+        ivec2 c0 = ivec2(vec2(hashU(2u * k), hashU(2u * k + 1u)) * (vec2(grid) - 40.0) + 20.0);
         float bump = 0.7 * DROP_AMP * dropShape(p, c0, DROP_R);
         hn += bump;
         hp += bump * (1.0 - DROP_KICK);
     }
 #endif
 
-    fragColor = vec4(hn, hp, iMouse.xy);
+    fragColor = vec4(hn, hp, mouse);
 }

@@ -31,14 +31,13 @@ const vec3  SUN_DIR  = vec3(0.12, 0.16, 0.98);   // towards the sun (normalised 
 const vec3  SUN_COL  = vec3(1.0, 0.93, 0.82);
 const float WALL_UP  = 4.0 * DEPTH;   // height of the shading wall + deck above the floor
 
-float H(ivec2 q)
-{
-    ivec2 top = ivec2(iResolution.xy) - 1;
-    return GAIN * texelFetch(iChannel0, clamp(q, ivec2(0), top), 0).x;
-}
+// Buffer A's grid: one cell per pixel up to 180 rows, else 180 rows scaled up (see buffer_a.glsl).
+float gridScale() { return max(1.0, iResolution.y / 180.0); }
+vec2 gridSize() { return max(floor(iResolution.xy / gridScale()), vec2(1.0)); }
 
-float Hs(vec2 pos)   // bilinear height at a pixel-space position
+float Hs(vec2 pos)   // bilinear height at a position in cells, clamped to the grid (walls)
 {
+    pos = clamp(pos, vec2(0.5), gridSize() - 0.5);
     return GAIN * texture(iChannel0, pos / iResolution.xy).x;
 }
 
@@ -80,10 +79,10 @@ vec3 tiles(vec2 t, float grout, float aa)
 vec3 floorAlbedo(vec2 q, float tileSize)
 {
     vec2 t = q / tileSize;
-    float aa = 1.0 / tileSize;                        // one pixel, in tiles
+    float aa = 1.0 / (tileSize * gridScale());        // one pixel, in tiles
     vec3 c = tiles(t, 0.03, aa);
     // lane line down the middle with a T at each end (edges antialiased)
-    vec2 ext = iResolution.xy / tileSize;
+    vec2 ext = gridSize() / tileSize;
     float mid = ext.y * 0.5;
     float xs = min(t.x - 1.6, ext.x - 1.6 - t.x);     // distance to the T bars
     float lane = min(1.0 - smoothstep(0.35 - aa, 0.35 + aa, abs(t.y - mid)),
@@ -94,20 +93,34 @@ vec3 floorAlbedo(vec2 q, float tileSize)
     return mix(c, c * vec3(0.10, 0.16, 0.38), m);
 }
 
+// Triangular dither of +-1 code value per channel, fixed per pixel (the same every frame, so it
+// neither flickers nor changes a golden frame): turns the 8-bit steps of smooth gradients into
+// grain. Two uniform hashes per channel (one 3-vector hash of the pixel, another of a shifted one).
+vec3 ditherNoise(vec2 fragCoord) {
+    vec3 p = fract(vec3(fragCoord.xyx) * vec3(0.1031, 0.1030, 0.0973));
+    p += dot(p, p.yxz + 33.33);
+    vec3 a = fract((p.xxy + p.yzz) * p.zyx);
+    vec3 q = fract(vec3(fragCoord.yxy + 17.0) * vec3(0.1031, 0.1030, 0.0973));
+    q += dot(q, q.yxz + 33.33);
+    vec3 b = fract((q.xxy + q.yzz) * q.zyx);
+    return (a + b - 1.0) / 255.0;
+}
+
 void mainImage(out vec4 fragColor, in vec2 fragCoord)
 {
-    vec2 res = iResolution.xy;
-    ivec2 p = ivec2(fragCoord);
+    // everything below is in grid cells: the picture is the grid scaled up
+    vec2 res = gridSize();
+    vec2 fc = fragCoord / gridScale();
     float tileSize = res.y / 11.0;
 
     // --- surface ---------------------------------------------------------
-    float h = H(p);
-    float gx = 0.5 * (H(p + ivec2(1, 0)) - H(p - ivec2(1, 0)));
-    float gy = 0.5 * (H(p + ivec2(0, 1)) - H(p - ivec2(0, 1)));
+    float h = Hs(fc);
+    float gx = 0.5 * (Hs(fc + vec2(1, 0)) - Hs(fc - vec2(1, 0)));
+    float gy = 0.5 * (Hs(fc + vec2(0, 1)) - Hs(fc - vec2(0, 1)));
     vec3 n = normalize(vec3(-gx, -gy, 1.0));
 
     vec3 eye = vec3(0.5 * res, 1.8 * res.y);
-    vec3 s = vec3(fragCoord, h);
+    vec3 s = vec3(fc, h);
     vec3 v = normalize(s - eye);
 
     vec3 sd = normalize(SUN_DIR);
@@ -132,7 +145,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
         vec3 w = s + t * lwall;
         float along = (lw.x < lw.y) ? w.y : w.x;
         vec2 wt = vec2(along, -w.z) / tileSize;
-        albedo = tiles(wt, 0.03, 1.0 / tileSize) * 0.92;
+        albedo = tiles(wt, 0.03, 1.0 / (tileSize * gridScale())) * 0.92;
         bool sunny = (lw.x < lw.y) ? (t.x * sd.x < 0.0) : (t.y * sd.y < 0.0);
         light = sunny ? 0.55 : 0.1;
         pathLen = lwall;
@@ -154,7 +167,8 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
         float hxy = 0.25 * (Hs(sc + vec2(1, 1)) + Hs(sc - vec2(1, 1))
                           - Hs(sc + vec2(1, -1)) - Hs(sc + vec2(-1, 1)));
         float det = (1.0 - k * hxx) * (1.0 - k * hyy) - k * k * hxy * hxy;
-        float caustic = 1.0 / (abs(det) + 0.12) * 1.12 / (1.0 + 0.12);
+        // normalised once: flat water (det = 1) gives exactly 1
+        float caustic = (1.0 + 0.12) / (abs(det) + 0.12);
         caustic = min(caustic, 6.0);
 
         // soft darkening where floor meets walls
@@ -168,7 +182,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
     vec3 lit = albedo * (vec3(0.30, 0.38, 0.45) + 1.5 * SUN_COL * light * sd.z);
     // Beer-Lambert along the underwater path (plus the same distance up again
     // for the light, roughly), with in-scattering towards the water colour
-    float depthM = mix(DEPTH_M.x, DEPTH_M.y, smoothstep(0.15, 0.85, fragCoord.x / res.x));
+    float depthM = mix(DEPTH_M.x, DEPTH_M.y, smoothstep(0.15, 0.85, fc.x / res.x));
     float metres = (pathLen + DEPTH) / DEPTH * depthM * 0.5;
     vec3 T = exp(-SIGMA * metres);
     vec3 refr = lit * T + WATER * (1.0 - T);
@@ -184,5 +198,5 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
     // tone map + gamma
     col = 1.0 - exp(-col * 1.3);
     col = pow(col, vec3(1.0 / 2.2));
-    fragColor = vec4(col, 1.0);
+    fragColor = vec4(col + ditherNoise(fragCoord), 1.0);
 }

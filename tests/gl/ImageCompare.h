@@ -55,6 +55,49 @@ inline int maxAbsError(const Image8& a, const Image8& b) {
     return largest;
 }
 
+// The largest mean |a - b| over any `block` x `block` square (RGB, squares start every half
+// block, so a defect of 1.5 blocks is always covered whole by one square and a 10x10 one covers
+// at least 7x7 of an 8x8 square): a localised defect (a black 10x10 block) that whole-image PSNR
+// averages away. -1 when the sizes differ.
+inline double maxBlockMeanError(const Image8& a, const Image8& b, int block = 8) {
+    if (!sameSize(a, b)) return -1.0;
+    double largest = 0.0;
+    const int stride = std::max(1, block / 2);
+    for (int y0 = 0; y0 + block <= a.height; y0 += stride)
+        for (int x0 = 0; x0 + block <= a.width; x0 += stride) {
+            double sum = 0.0;
+            for (int y = y0; y < y0 + block; ++y)
+                for (int x = x0; x < x0 + block; ++x) {
+                    const std::size_t i = (static_cast<std::size_t>(y) * a.width + x) * 4;
+                    for (std::size_t c = 0; c < 3; ++c) sum += std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c]));
+                }
+            largest = std::max(largest, sum / (3.0 * block * block));
+        }
+    return largest;
+}
+
+// The largest |mean (b - a)| of one channel over one cell of a `cells` x `cells` grid: a
+// systematic shift of a region (a changed Fresnel F0 or absorption constant) that code
+// generation noise, which has no sign, does not make. In levels. -1 when the sizes differ.
+inline double maxRegionBias(const Image8& a, const Image8& b, int cells = 4) {
+    if (!sameSize(a, b)) return -1.0;
+    double largest = 0.0;
+    for (int cy = 0; cy < cells; ++cy)
+        for (int cx = 0; cx < cells; ++cx) {
+            const int x0 = a.width * cx / cells, x1 = a.width * (cx + 1) / cells;
+            const int y0 = a.height * cy / cells, y1 = a.height * (cy + 1) / cells;
+            double sum[3] = {0.0, 0.0, 0.0};
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) {
+                    const std::size_t i = (static_cast<std::size_t>(y) * a.width + x) * 4;
+                    for (std::size_t c = 0; c < 3; ++c) sum[c] += int(b.rgba[i + c]) - int(a.rgba[i + c]);
+                }
+            const double n = double(x1 - x0) * double(y1 - y0);
+            for (double s : sum) largest = std::max(largest, n > 0 ? std::abs(s) / n : 0.0);
+        }
+    return largest;
+}
+
 // |a - b| * gain per RGB channel (clamped to 255), alpha 255, rows top first like the inputs.
 // Empty image when the sizes differ.
 inline Image8 makeDiffImage(const Image8& a, const Image8& b, int gain) {

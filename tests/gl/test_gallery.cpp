@@ -1,7 +1,9 @@
 // The gallery (shadertoys/<name>/, our own water shaders): golden frames of each at 320x180 at
-// fixed times, with scripted mouse and keys where the shader takes input (Golden.h's tolerance),
+// fixed times, with the mouse for every port that reads it, scripted keys, and every #define
+// variant (GalleryRender.h's cases, Golden.h's tolerance),
 // and the checks on numbers that say the physics is what the README claims: ripple-pool's
 // simulation (symmetry, steady ring speed, damping) and lake-optics' presets (float dumps).
+#include "GalleryRender.h"
 #include "GlTestSupport.h"
 #include "Golden.h"
 
@@ -18,55 +20,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct GalleryCase {
-    const char* name;       // golden file tests/golden/gallery/<name>.png
-    const char* shadertoy;  // folder under shadertoys/
-    const char* options;    // time, inputs
-    int frame = 0;          // the frame compared (the run renders frames 0..frame)
-    friend void PrintTo(const GalleryCase& c, std::ostream* os) { *os << c.name; }
-};
-
 class GalleryGolden : public ::testing::TestWithParam<GalleryCase> {};
-
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 TEST_P(GalleryGolden, MatchesCheckedInFrame) {
     const GalleryCase& c = GetParam();
     const fs::path dir = freshOutputDir(std::string("golden/gallery/") + c.name);
-    const fs::path folder = sourceDir() / "shadertoys" / c.shadertoy;
-    std::string options = c.options;
-    // Input scripts are named relative to the shadertoy's folder.
-    for (const char* flag : {"--mouse-script ", "--key-script "})
-        if (const auto at = options.find(flag); at != std::string::npos)
-            options.insert(at + std::string(flag).size(), folder.string() + "/");
-    auto run = runToyhost("run " + quoted(folder) + " --size 320x180 --quiet --frames " + std::to_string(c.frame + 1) +
-                          " --capture-every " + std::to_string(std::max(c.frame, 1)) + " " + options + " --out " +
-                          quoted(dir / (std::string(c.name) + "_%04d.png")));
-    ASSERT_EQ(run.exitCode, 0) << run.output;
-    char file[64];
-    std::snprintf(file, sizeof file, "%s_%04d.png", c.name, c.frame);
-    expectMatchesGolden(sourceDir(), std::string("gallery/") + c.name + ".png", dir / file);
+    const auto frame = renderGalleryCase(c, dir);
+    ASSERT_TRUE(frame);
+    expectMatchesGolden(sourceDir(), std::string("gallery/") + c.name + ".png", *frame);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Shaders, GalleryGolden,
-    ::testing::Values(GalleryCase{"raymarched_sea_t4", "raymarched-sea", "--start-time 4"},
-                      GalleryCase{"raymarched_sea_t20", "raymarched-sea", "--start-time 20"},
-                      GalleryCase{"exp_sine_ocean_t3", "exp-sine-ocean", "--start-time 3"},
-                      GalleryCase{"exp_sine_ocean_t10", "exp-sine-ocean", "--start-time 10"},
-                      GalleryCase{"exp_sine_ocean_mouse", "exp-sine-ocean", "--start-time 10 --mouse 112,72"},
-                      GalleryCase{"lake_optics_t2", "lake-optics", "--start-time 2"},
-                      GalleryCase{"lake_optics_t7_5", "lake-optics", "--start-time 7.5"},
-                      GalleryCase{"lake_optics_muddy", "lake-optics", "--start-time 2 --key-script keys-muddy.json", 3},
-                      GalleryCase{"lake_optics_tannin", "lake-optics", "--start-time 2 --key-script keys-tannin.json", 3},
-                      GalleryCase{"caustics_pool_t2", "caustics-pool", "--start-time 2"},
-                      GalleryCase{"caustics_pool_t6_5", "caustics-pool", "--start-time 6.5"},
-                      GalleryCase{"coastal_foam_t2", "coastal-foam", "--start-time 2"},
-                      GalleryCase{"coastal_foam_t5_5", "coastal-foam", "--start-time 5.5"},
-                      GalleryCase{"ripple_pool_calm", "ripple-pool", ""},
-                      GalleryCase{"ripple_pool_drag_f30", "ripple-pool", "--mouse-script drag.json", 30},
-                      GalleryCase{"ripple_pool_drag_f90", "ripple-pool", "--mouse-script drag.json", 90}),
-    [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Shaders, GalleryGolden, ::testing::ValuesIn(galleryCases()),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 // ---------------------------------------------------------------------------------------------
 // ripple-pool: Buffer A's height field (.x) after one click, as numbers
@@ -158,6 +123,32 @@ TEST_F(RipplePool, ScriptedDragDisturbsTheWaterAlongItsPathOnly) {
     // More than 45 frames * 0.7 px + the drop radius away from every point of the path: flat.
     for (auto [x, y] : {std::pair{300, 160}, {20, 160}, {60, 5}, {150, 10}, {310, 120}})
         EXPECT_EQ(height(field, x, y), 0.0f) << "ripple far from the drag at (" << x << ", " << y << ")";
+}
+
+// The grid is 180 rows on any canvas at least that tall: the same click (the same place in the
+// picture) on a 320x180 and a 640x360 canvas gives the same height field, cell for cell, so drop
+// size and ring speed are fractions of the picture, not pixels.
+TEST_F(RipplePool, TheSameClickOnADoubleSizeCanvasGivesTheSameField) {
+    std::vector<float> fields[2];
+    for (int scale : {1, 2}) {
+        auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", kWidth * scale, kHeight * scale);
+        ASSERT_TRUE(toy);
+        stepAt(*toy);
+        const InputEvent click[] = {InputEvent::mouseDown((kDropX + 0.25f) * scale, (kDropY + 0.75f) * scale),
+                                    InputEvent::mouseUp()};
+        stepAt(*toy, click);
+        for (int i = 0; i < 20; ++i) stepAt(*toy);
+        std::vector<float> field;
+        toy->player().readRgba32f(PassId::BufferA, field);
+        // the grid's cells: the lower-left 320x180 of the buffer
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x)
+                fields[scale - 1].push_back(field[(static_cast<std::size_t>(y) * kWidth * scale + x) * 4]);
+    }
+    float largest = 0.0f;
+    for (float h : fields[0]) largest = std::max(largest, std::abs(h));
+    EXPECT_GT(largest, 0.05f) << "no ripple";
+    EXPECT_EQ(fields[0], fields[1]) << "the double-size canvas simulates a different field";
 }
 
 TEST_F(RipplePool, CalmPoolStaysFlatWithoutInput) {

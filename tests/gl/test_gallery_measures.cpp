@@ -1,0 +1,116 @@
+// The gallery's measured bounds (issue 20), with tests/support/FrameMeasures.h over 4 frames of
+// each port at 320x180, --fps 30 --start-time 3 (docs/gallery.md has the 640x360 numbers): the
+// far-field shimmer ratio, the share of clipped pixels under the horizon, the black level where
+// the scene has shadow, and that the dither is there. Bounds sit between today's numbers and the
+// numbers before issue 20 (in comments), so a regression to the old behaviour fails.
+#include "FrameMeasures.h"
+#include "GalleryRender.h"
+#include "GlTestSupport.h"
+
+#include "image/ImageFile.h"
+
+namespace toyhost::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Frames 0..3 of `shadertoy` (with `edits` applied to a copy) at 320x180, 30 fps, from t = 3 s.
+std::vector<Image8> renderFrames(const std::string& shadertoy, const std::string& name, const std::string& options = "",
+                                 const std::vector<SourceEdit>& edits = {}) {
+    const fs::path dir = freshOutputDir("gallery-measures/" + name);
+    const fs::path folder = editedShadertoy(shadertoy, edits, dir);
+    std::vector<Image8> frames;
+    if (folder.empty()) return frames;
+    auto run = runToyhost("run " + shellQuoted(folder) + " --size 320x180 --fps 30 --start-time 3 --frames 4 --quiet " +
+                          options + " --out " + shellQuoted(dir / "f_%04d.png"));
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    for (int i = 0; i < 4; ++i) {
+        char file[32];
+        std::snprintf(file, sizeof file, "f_%04d.png", i);
+        auto image = loadImageFile(dir / file);
+        EXPECT_TRUE(image.ok()) << image.error().text();
+        if (image.ok()) frames.push_back(std::move(*image));
+    }
+    return frames;
+}
+
+double worstClippedShare(const std::vector<Image8>& frames, int horizon) {
+    double worst = 0.0;
+    for (const Image8& f : frames) worst = std::max(worst, clippedShare(f, std::max(horizon, 0)));
+    return worst;
+}
+
+struct PortBounds {
+    const char* shadertoy;
+    double maxShimmerRatio;  // band / near; 0: not checked (no horizon in view)
+    double maxBand;          // band alone; 0: not checked
+    int maxBlack;            // darkest luma; 255: not checked (no shadow in view)
+    friend void PrintTo(const PortBounds& b, std::ostream* os) { *os << b.shadertoy; }
+};
+
+class GalleryMeasures : public ::testing::TestWithParam<PortBounds> {};
+
+TEST_P(GalleryMeasures, WithinTheirBounds) {
+    const PortBounds& b = GetParam();
+    const auto frames = renderFrames(b.shadertoy, b.shadertoy);
+    ASSERT_EQ(frames.size(), 4u);
+    const Shimmer s = measureShimmer(frames);
+    const double clipped = worstClippedShare(frames, s.horizon);
+    int black = 255;
+    for (const Image8& f : frames) black = std::min(black, blackLevel(f));
+    std::printf("%s: horizon %d, band %.2f, near %.2f, ratio %.2f, clipped %.3f%%, black %d\n", b.shadertoy, s.horizon,
+                s.band, s.near, s.ratio(), clipped * 100.0, black);
+    EXPECT_LE(clipped, 0.005) << "clipped pixels under the horizon";
+    if (b.maxShimmerRatio > 0) {
+        EXPECT_GE(s.horizon, 0) << "no horizon found";
+        EXPECT_LE(s.ratio(), b.maxShimmerRatio) << "far-field shimmer";
+    }
+    if (b.maxBand > 0) EXPECT_LE(s.band, b.maxBand) << "shimmer of the band under the horizon";
+    EXPECT_LE(black, b.maxBlack) << "black level";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Gallery, GalleryMeasures,
+    ::testing::Values(
+        // before issue 20 at 320x180: ratio 4.70, clipped 0.03%
+        PortBounds{"exp-sine-ocean", 3.0, 0, 255},
+        // before: ratio 2.28, clipped 2.1%, black 33 (the issue's goal: ratio <= 1.5)
+        PortBounds{"raymarched-sea", 1.5, 0, 24},
+        // before: band 5.87 (the issue's goal: 0.6x of 5.7 = 3.4), black 39 (rock in shadow)
+        PortBounds{"coastal-foam", 0, 3.4, 16},
+        PortBounds{"lake-optics", 0, 0, 255},  // before: clipped 0.1%
+        PortBounds{"caustics-pool", 0, 0, 255}, PortBounds{"ripple-pool", 0, 0, 255}),
+    [](const auto& info) {
+        std::string name = info.param.shadertoy;
+        std::replace(name.begin(), name.end(), '-', '_');
+        return name;
+    });
+
+// A known defect (issue 20's goal, not reached: exp-sine-ocean's ratio is ~2.3 at 320x180, the
+// mid-field swell moving at grazing angles): run by its own CTest entry with WILL_FAIL.
+TEST(GalleryMeasuresKnownDefect, DISABLED_ExpSineOceanShimmerRatioAtMost1_5) {
+    const auto frames = renderFrames("exp-sine-ocean", "exp-sine-ocean-goal");
+    ASSERT_EQ(frames.size(), 4u);
+    const Shimmer s = measureShimmer(frames);
+    EXPECT_LE(s.ratio(), 1.5);
+}
+
+// Looking down at exp-sine-ocean's smooth water: the dither adds code values to the 8-bit steps
+// of the gradient (the image without it, by an edit, has clearly fewer colours in the same place).
+TEST(GalleryDither, ExpSineOceanLookingDownIsDithered) {
+    const std::string down = "--mouse 160,5";
+    const auto dithered = renderFrames("exp-sine-ocean", "exp-sine-down", down);
+    const auto plain = renderFrames("exp-sine-ocean", "exp-sine-down-plain", down,
+                                    {{"image.glsl", "    return (a + b - 1.0) / 255.0;", "    return vec3(0.0);"}});
+    ASSERT_EQ(dithered.size(), 4u);
+    ASSERT_EQ(plain.size(), 4u);
+    const Image8& d = dithered[0];
+    const int top = d.height * 85 / 100;
+    const int withDither = distinctCodeValues(d, top, d.height, d.width / 4, 3 * d.width / 4);
+    const int without = distinctCodeValues(plain[0], top, d.height, d.width / 4, 3 * d.width / 4);
+    std::printf("colours looking down: %d dithered, %d without\n", withDither, without);
+    EXPECT_GE(2 * withDither, 5 * without) << "fewer than 2.5x the undithered colours";
+}
+
+}  // namespace
+}  // namespace toyhost::testing
