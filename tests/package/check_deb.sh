@@ -18,7 +18,7 @@ status=0
 grep -qE "^ Version: $version\$" "$work/info.txt" || { echo "the .deb's version is not $version"; status=1; }
 grep -qE "^ Maintainer: .+" "$work/info.txt" || { echo "the .deb names no maintainer"; status=1; }
 depends="$(sed -n 's/^ Depends: //p' "$work/info.txt")"
-for package in libegl1 libgles2 libpng16-16 libfftw3-single3 libstdc++6 libc6; do
+for package in libegl1 libgles2 libdeflate0 libfftw3-single3 libstdc++6 libc6; do
   [[ ", $depends" == *", $package "* || ", $depends," == *", $package,"* ]] \
     || { echo "Depends lacks $package (dpkg-shlibdeps should have found it): $depends"; status=1; }
 done
