@@ -11,6 +11,7 @@
 
 #include "Commands.h"
 #include "Console.h"
+#include "NumberOptions.h"
 #include "core/Defaults.h"
 #include "core/NumberText.h"
 #include "image/ImageWriters.h"
@@ -189,15 +190,9 @@ nlohmann::ordered_json toJson(const CompareReport& report, const std::string& a,
 }  // namespace
 
 void CompareCommand::define(CLI::App& compare) {
-    const CLI::Validator wholeNumber(
-        [](std::string& text) {
-            std::string problem = wholeNumberProblem(text, INT32_MIN, INT32_MAX);
-            if (problem.empty()) text = std::to_string(*parseDecimalInteger(text));
-            return problem;
-        },
-        "");
-    const CLI::Validator decimalNumber([](std::string& text) { return decimalNumberProblem(text); }, "");
-    const CLI::Validator timeoutSeconds([](std::string& text) { return timeoutSecondsProblem(text); }, "");
+    const CLI::Validator wholeNumber = cli::wholeNumberOption();
+    const CLI::Validator decimalNumber = cli::decimalNumberOption();
+    const CLI::Validator timeoutSeconds = cli::timeoutSecondsOption();
     compare.add_option("a", a_, "The first shadertoy (folder, manifest or Shadertoy JSON export): the reference")->required();
     compare.add_option("b", b_, "The second shadertoy, rendered with the same settings and inputs")->required();
     compare.add_option("--size", size_, "Canvas size WxH (default: A's manifest defaults, else " +

@@ -5,6 +5,7 @@
 
 #include "Commands.h"
 #include "Console.h"
+#include "NumberOptions.h"
 #include "core/Defaults.h"
 #include "core/NumberText.h"
 #include "drivers/headless/HeadlessDriver.h"
@@ -39,15 +40,9 @@ std::string number(double value) {
 // given". A whole number is handed on without leading zeros. Ranges beyond what the type holds are
 // checked by prepareSession, which also serves library callers.
 void requireDecimalNumbers(CLI::App& run) {
-    const CLI::Validator wholeNumber(
-        [](std::string& text) {
-            std::string problem = wholeNumberProblem(text, INT32_MIN, INT32_MAX);
-            if (problem.empty()) text = std::to_string(*parseDecimalInteger(text));
-            return problem;
-        },
-        "");
-    const CLI::Validator decimalNumber([](std::string& text) { return decimalNumberProblem(text); }, "");
-    const CLI::Validator timeoutSeconds([](std::string& text) { return timeoutSecondsProblem(text); }, "");
+    const CLI::Validator wholeNumber = cli::wholeNumberOption();
+    const CLI::Validator decimalNumber = cli::decimalNumberOption();
+    const CLI::Validator timeoutSeconds = cli::timeoutSecondsOption();
     for (const char* name : {"--frames", "--png-level", "--video-quality", "--encoder-threads", "--capture-memory",
                              "--capture-every", "--checkpoint-every"})
         run.get_option(name)->transform(wholeNumber);  // transform: it may rewrite the text
