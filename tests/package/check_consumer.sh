@@ -31,8 +31,11 @@ case "$mode" in
       -Wl,-rpath,"$(pkg-config --variable=libdir toyhost)" ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
-ldd "$exe" | grep -q "$stage/.*libtoyhost.so" \
-  || { echo "the consumer does not load the staged libtoyhost.so:"; ldd "$exe"; exit 1; }
+# ldd's whole output first: `ldd | grep -q` under pipefail fails when grep exits early and ldd
+# gets SIGPIPE on its next line (seen on CI).
+libs="$(ldd "$exe")"
+grep -q "$stage/.*libtoyhost.so" <<<"$libs" \
+  || { echo "the consumer does not load the staged libtoyhost.so:"; echo "$libs"; exit 1; }
 
 compare() {  # compare NAME SHADERTOY SIZE FRAMES
   local name="$1" shadertoy="$2" size="$3" frames="$4"

@@ -10,7 +10,7 @@ mkdir -p "$out"
 log="$out/embed-glfw-mouse.log"
 "$app" "$shadertoy" --size 160x90 --fps 60 --wait-events --check >"$log" 2>&1 &
 pid=$!
-window="$(timeout 20 xdotool search --sync --onlyvisible --name '^embed-glfw$' | head -n1)"
+window="$(timeout 20 xdotool search --sync --onlyvisible --name '^embed-glfw$' | sed -n 1p)"
 xdotool windowfocus --sync "$window"
 # The quad starts 16 pixels in: window (56, 61) is canvas pixel (40, 45) from the bottom left.
 xdotool mousemove --window "$window" 56 61 mousedown 1
