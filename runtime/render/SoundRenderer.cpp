@@ -48,7 +48,10 @@ Result<std::vector<float>> renderSound(GlContext& context, const ManifestDesc& m
 
     const std::size_t samples = static_cast<std::size_t>(std::llround(seconds * defaults::kSampleRate));
     const std::size_t perBlock = static_cast<std::size_t>(side) * side;
-    std::vector<float> stereo(samples * 2);
+    // Reserved, not filled: an hour of sound is 1.3 GB, and zero-filling it up front kept the
+    // thread from seeing a stop request for seconds under load. Pages are touched block by block.
+    std::vector<float> stereo;
+    stereo.reserve(samples * 2);
     std::vector<std::uint8_t> pixels(perBlock * 4);
     std::vector<float> block(perBlock * 2);
     glBindVertexArray(vertexArray.id());
@@ -75,7 +78,7 @@ Result<std::vector<float>> renderSound(GlContext& context, const ManifestDesc& m
         if (desc.activity) desc.activity->idle();
         decodeSoundBlock(pixels, block);
         const std::size_t count = std::min(perBlock, samples - first);
-        std::copy_n(block.begin(), count * 2, stereo.begin() + static_cast<std::ptrdiff_t>(first * 2));
+        stereo.insert(stereo.end(), block.begin(), block.begin() + static_cast<std::ptrdiff_t>(count * 2));
     }
     unbind();
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
