@@ -164,6 +164,7 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
     };
     checkGl();
     judgeOutput(*player, settings, result, firstUniform);
+    result.otherShareAtFrames = result.share.otherShare;
     // Patience for fade-ins and shaders that need time: check every quarter second of iTime, up to
     // a bound in iTime (frames), never in wall time, so the verdict does not depend on load.
     for (int frame = settings.frames;
@@ -244,6 +245,7 @@ nlohmann::json toJson(const ProbeResult& r) {
             {"uniform_image", r.uniformImage},
             {"uniform_colour_changed", r.uniformColourChanged},
             {"other_share", std::round(r.share.otherShare * 1e6) / 1e6},
+            {"other_share_at_frames", std::round(r.otherShareAtFrames * 1e6) / 1e6},
             {"mean_level", std::round(r.share.meanLevel * 1000) / 1000},
             {"dominant", {r.share.dominant[0], r.share.dominant[1], r.share.dominant[2]}},
             {"judged_size", std::to_string(r.judgedWidth) + "x" + std::to_string(r.judgedHeight)},
@@ -279,6 +281,7 @@ ProbeResult fromJson(const nlohmann::json& j) {
     r.standInEffect = j.value("stand_in_effect", "");
     r.share.otherShare = j.value("other_share", 0.0);
     r.share.meanLevel = j.value("mean_level", 0.0);
+    r.otherShareAtFrames = j.value("other_share_at_frames", 0.0);
     r.share.dominantShare = 1.0 - r.share.otherShare;
     if (auto d = j.find("dominant"); d != j.end() && d->is_array() && d->size() == 3)
         for (int k = 0; k < 3; ++k) r.share.dominant[k] = (*d)[k].get<std::uint8_t>();

@@ -53,6 +53,7 @@ struct ProbeResult {
     // is valid output, not a degenerate one.
     bool uniformColourChanged = false;
     FrameShare share;                      // the last judged Image frame's measure
+    double otherShareAtFrames = 0;         // share.otherShare after the first `frames` frames
     int judgedWidth = 0, judgedHeight = 0; // the size it was judged at
     std::string glError;                   // a GL error after rendering ("GL_INVALID_OPERATION")
     std::vector<std::string> nonFiniteBuffers;  // "Buffer A: 12 NaN, 0 Inf"

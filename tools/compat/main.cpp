@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -25,6 +26,10 @@ using namespace toyhost::compat;
 
 namespace {
 
+// The wall-time guard of a probe whose CPU time is limited to `timeoutSeconds`: generous, since a
+// loaded machine stretches wall time; it is there for a probe that waits without computing.
+int wallGuardSeconds(int timeoutSeconds) { return std::max(10 * timeoutSeconds, 300); }
+
 // Runs one probe in a child process; the child writes its JSON result into a pipe.
 ProbeResult probeInChild(const fs::path& file, const ProbeSettings& settings, int timeoutSeconds) {
     ProbeResult result;
@@ -38,6 +43,11 @@ ProbeResult probeInChild(const fs::path& file, const ProbeSettings& settings, in
     const pid_t pid = fork();
     if (pid == 0) {
         close(fds[0]);
+        // The limit is CPU time (SIGXCPU, then SIGKILL), so a slow shader's verdict does not
+        // depend on the machine's load; the parent's wall-time guard below only catches a probe
+        // blocked without using the CPU.
+        const rlimit cpu{static_cast<rlim_t>(timeoutSeconds), static_cast<rlim_t>(timeoutSeconds) + 5};
+        setrlimit(RLIMIT_CPU, &cpu);
         // On a GL thread, as every toyhost run: large shaders need its stack.
         std::string text;
         runOnGlThread([&] { text = toJson(runProbe(file, settings)).dump(); });
@@ -51,7 +61,7 @@ ProbeResult probeInChild(const fs::path& file, const ProbeSettings& settings, in
     }
     close(fds[1]);
     std::string text;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeoutSeconds);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(wallGuardSeconds(timeoutSeconds));
     bool timedOut = false;
     for (;;) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
@@ -71,7 +81,9 @@ ProbeResult probeInChild(const fs::path& file, const ProbeSettings& settings, in
     int status = 0;
     waitpid(pid, &status, 0);
 
-    if (timedOut) result.error = "timed out after " + std::to_string(timeoutSeconds) + " s";
+    if (timedOut) result.error = "no progress after " + std::to_string(wallGuardSeconds(timeoutSeconds)) + " s (wall time)";
+    else if (WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL))
+        result.error = "timed out after " + std::to_string(timeoutSeconds) + " s of CPU time";
     else if (WIFSIGNALED(status)) result.error = "crashed (signal " + std::to_string(WTERMSIG(status)) + ")";
     else if (auto json = nlohmann::json::parse(text, nullptr, false); !json.is_discarded()) result = fromJson(json);
     else result.error = "no result from the probe";
@@ -201,7 +213,8 @@ int main(int argc, char** argv) {
         ->required();
     app.add_option("--size", size, "Canvas WxH")->capture_default_str();
     app.add_option("--frames", settings.frames, "Frames per shader")->capture_default_str();
-    app.add_option("--timeout", timeout, "Seconds before a shader is killed")->capture_default_str();
+    app.add_option("--timeout", timeout, "Seconds of CPU time before a shader is killed (a wall-time guard of 10x, at least 300 s, catches a probe that waits)")
+        ->capture_default_str();
     app.add_option("--media", mediaFolders, "Folder with real stock media files");
     app.add_option("--known", knownFile, "TSV of id<TAB>explanation for known failures");
     app.add_option("--markdown", markdownOut, "Write the markdown table here");
