@@ -123,12 +123,12 @@ std::string outputVerdict(const ProbeResult& r) {
     if (r.uniformImage && r.uniformColourChanged) {
         if (problems.empty()) return "ok (full-screen colour changing over time)";
     } else if (r.uniformImage) {
-        problems.push_back("uniform colour");
+        problems.push_back("nearly one colour");
     }
     std::string verdict;
     if (problems.empty() && r.firstNonUniformTime >= 0) {
         char text[64];
-        std::snprintf(text, sizeof text, "ok (one colour until iTime %.2f)", r.firstNonUniformTime);
+        std::snprintf(text, sizeof text, "ok (nearly one colour until iTime %.2f)", r.firstNonUniformTime);
         verdict = text;
     } else {
         verdict = problems.empty() ? "ok" : joined(problems);
@@ -144,7 +144,7 @@ std::string outputVerdict(const ProbeResult& r) {
 // A first explanation for a failure nobody has looked at yet (known-issues entries replace it).
 std::string likelyReason(const ProbeResult& r) {
     if (r.uniformImage)
-        return "one colour through iTime 5 s with the mouse dragged: it may wait for keys" +
+        return "nearly one colour through iTime 5 s (and at 320x180) with the mouse dragged: it may wait for keys" +
                std::string(r.standIns.empty() ? "" : ", depend on the real stock textures (stand-ins used)") +
                " or need more time";
     return "";
