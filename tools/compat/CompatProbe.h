@@ -1,6 +1,6 @@
-// One compatibility probe: load a Shadertoy export, compile it, render a few frames headless
-// and judge the output (uniform colour, NaN/Inf in buffers), collecting stand-ins and notices.
-// Creates and uses its own EGL context; run it in a child process so a hang can be killed.
+// One compatibility probe: load an export, render a few frames headless and judge the output
+// (nearly one colour, NaN/Inf in buffers, whether a pass rests on stand-ins). Needs GL: creates
+// its own EGL context; run it in a child process so a hang can be killed.
 #pragma once
 
 #include <filesystem>

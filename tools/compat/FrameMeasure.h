@@ -18,8 +18,8 @@ inline constexpr int kColourTolerance = 2;
 
 // A frame whose pixels differ from its dominant colour (beyond kColourTolerance) in less than
 // this share is degenerate. Chosen from the share real shaders have (docs/compat-wild.md,
-// "How degenerate is measured"): the lowest working frame of the public and wild corpora
-// differs in several percent of its pixels, a lone pixel or a faint haze in none.
+// "How degenerate is measured"): the lowest working frame of the public and wild corpora differs
+// in 1.0% of its pixels (the median in 74%), a lone pixel in 0.007% and a faint haze in none.
 inline constexpr double kMinOtherShare = 0.005;
 
 struct FrameShare {
