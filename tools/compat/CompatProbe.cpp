@@ -117,9 +117,12 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
         result.error = firstErrorLine(plan.error().text());
         return result;
     }
-    for (const StandInUse& standIn : plan->shadertoy.images.standIns())
+    for (const StandInUse& standIn : plan->shadertoy.images.standIns()) {
         if (std::find(result.standIns.begin(), result.standIns.end(), standIn.name) == result.standIns.end())
-            result.standIns.push_back(standIn.name), result.standInIds.push_back(standIn.id);
+            result.standIns.push_back(standIn.name);
+        if (std::find(result.standInIds.begin(), result.standInIds.end(), standIn.id) == result.standInIds.end())
+            result.standInIds.push_back(standIn.id);
+    }
     HeadlessOptions headless;
     headless.platform = settings.eglPlatform;
     auto context = createHeadlessContext(headless);
