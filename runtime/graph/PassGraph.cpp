@@ -1,5 +1,7 @@
 #include "graph/PassGraph.h"
 
+#include "manifest/BufferWraps.h"
+
 #include <algorithm>
 #include <optional>
 #include <vector>
@@ -55,28 +57,8 @@ PassGraph buildPassGraph(const ManifestDesc& manifest) {
     // (or Cube A's) filter is set on its texture object by each channel reading it, channel 0 to 3,
     // just before the draw, so in one pass the highest channel reading a texture decides the
     // filter for all of them. Wrap is set on both textures of a buffer when a channel reading it is
-    // created, so the last such channel of the whole shader decides it: in an export, passes as
-    // listed and each pass's inputs as listed (the order the site creates them in); in a manifest,
-    // render order and channel order.
-    std::array<std::optional<Wrap>, kBufferCount + 1> lastWrap;  // [4]: Cube A
-    auto slotOf = [](const ChannelPlan& plan) { return plan.kind == ChannelKind::CubeBuffer ? kBufferCount : plan.buffer; };
-    struct Created {
-        int pass, passOrder, channel, channelOrder;
-    };
-    std::vector<Created> created;
-    for (size_t i = 0; i < graph.passes.size(); ++i)
-        for (int c = 0; c < kChannelCount; ++c) {
-            const PassDesc& pass = manifest.passes[i];
-            const int passOrder = pass.listedAt >= 0 ? pass.listedAt : static_cast<int>(i);
-            created.push_back({static_cast<int>(i), passOrder, c, pass.channels[c].listedAt >= 0 ? pass.channels[c].listedAt : c});
-        }
-    std::stable_sort(created.begin(), created.end(), [](const Created& a, const Created& b) {
-        return a.passOrder != b.passOrder ? a.passOrder < b.passOrder : a.channelOrder < b.channelOrder;
-    });
-    for (const Created& at : created) {
-        const ChannelPlan& plan = graph.passes[at.pass].channels[at.channel];
-        if (plan.kind == ChannelKind::Buffer || plan.kind == ChannelKind::CubeBuffer) lastWrap[slotOf(plan)] = plan.sampler.wrap;
-    }
+    // created, so the last such channel of the whole shader decides it (manifest/BufferWraps.h).
+    const BufferWraps lastWrap = siteBufferWraps(manifest);
     for (PassPlan& pass : graph.passes)
         for (int c = 0; c < kChannelCount; ++c) {
             ChannelPlan& low = pass.channels[c];
@@ -89,10 +71,9 @@ PassGraph buildPassGraph(const ManifestDesc& manifest) {
                 }
             }
         }
-    for (PassPlan& pass : graph.passes)
-        for (ChannelPlan& plan : pass.channels)
-            if (plan.kind == ChannelKind::Buffer || plan.kind == ChannelKind::CubeBuffer)
-                plan.sampler.wrap = *lastWrap[slotOf(plan)];
+    for (size_t i = 0; i < graph.passes.size(); ++i)
+        for (int c = 0; c < kChannelCount; ++c)
+            graph.passes[i].channels[c].sampler.wrap = wrapSampled(lastWrap, manifest.passes[i].channels[c]);
     return graph;
 }
 

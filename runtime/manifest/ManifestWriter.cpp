@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/AtomicFile.h"
+#include "manifest/BufferWraps.h"
 #include "manifest/StockMedia.h"
 
 namespace toyhost {
@@ -18,7 +19,8 @@ std::string passFileName(PassId id) {
 
 namespace {
 
-ordered_json channelJson(const ChannelDesc& channel) {
+// `wrap`: the wrap the channel samples with (for a buffer or Cube A, the site's quirk decides it).
+ordered_json channelJson(const ChannelDesc& channel, Wrap wrap) {
     const ChannelKindInfo& kind = channelKindInfo(channel.kind);
     const std::string key = kind.manifestKey;
     ordered_json out;
@@ -49,7 +51,7 @@ ordered_json channelJson(const ChannelDesc& channel) {
     }
     if (kind.fixedSampler) return out;
     out["filter"] = filterName(channel.sampler.filter);
-    out["wrap"] = wrapName(channel.sampler.wrap);
+    out["wrap"] = wrapName(wrap);
     if (kind.vflip) out["vflip"] = channel.sampler.vflip;
     return out;
 }
@@ -65,6 +67,10 @@ std::string manifestJson(const ManifestDesc& desc) {
     root["name"] = desc.name;
     if (desc.commonSource) root["common"] = "common.glsl";
     ordered_json passes = ordered_json::object();
+    // Every channel reading a buffer or Cube A is written with the wrap that buffer ends up with:
+    // an export's is decided by its listed order (manifest/BufferWraps.h), which a manifest cannot
+    // hold; with all readers agreeing, the manifest's own order gives the same wrap.
+    const BufferWraps wraps = siteBufferWraps(desc);
     std::vector<const PassDesc*> all;
     for (const PassDesc& pass : desc.passes) all.push_back(&pass);
     if (desc.sound) all.push_back(&*desc.sound);
@@ -75,7 +81,7 @@ std::string manifestJson(const ManifestDesc& desc) {
         ordered_json channels = ordered_json::object();
         for (int c = 0; c < kChannelCount; ++c)
             if (pass.channels[c].kind != ChannelKind::None)
-                channels["iChannel" + std::to_string(c)] = channelJson(pass.channels[c]);
+                channels["iChannel" + std::to_string(c)] = channelJson(pass.channels[c], wrapSampled(wraps, pass.channels[c]));
         if (!channels.empty()) body["channels"] = channels;
         passes[passName(pass.id)] = body;
     }

@@ -199,6 +199,54 @@ INSTANTIATE_TEST_SUITE_P(Shaders, ExportImportRun,
                                            ImportCase{"TriplePendulumKeyboard", "corpus/public/lclcz4.json", "A"}),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// The buffer wrap quirk follows the export's listed order, which a manifest cannot hold: Image is
+// listed first and Buffer A's repeat input last, so on the site Buffer A wraps with repeat, which
+// Image shows by sampling it at -0.5..1.5. Render order (Buffer A, then Image) would end on Image's
+// clamp. The imported folder must render what the export renders (it rendered clamp before).
+TEST(ExportRun, ImportedFolderKeepsTheWrapOfTheExportsOrder) {
+    const fs::path dir = freshOutputDir("export-run/import-wrap-order");
+    auto channel = [](int n, const char* wrap) {
+        return json{{"id", 257}, {"src", "/media/previz/buffer00.png"}, {"ctype", "buffer"}, {"channel", n},
+                    {"sampler", {{"filter", "nearest"}, {"wrap", wrap}, {"vflip", "true"}, {"srgb", "false"},
+                                 {"internal", "byte"}}},
+                    {"published", 1}};
+    };
+    auto pass = [](const char* type, const char* name, int output, const char* code, json inputs) {
+        return json{{"inputs", inputs}, {"outputs", json::array({{{"id", output}, {"channel", 0}}})}, {"code", code},
+                    {"name", name}, {"description", ""}, {"type", type}};
+    };
+    const json document = {
+        {"Shader",
+         {{"ver", "0.1"},
+          {"info", {{"id", "tWrap1"}, {"name", "Wrap order"}, {"username", "tester"}, {"description", ""},
+                    {"tags", json::array()}, {"published", 3}}},
+          {"renderpass",
+           json::array({pass("image", "Image", 37,
+                             "void mainImage(out vec4 c, in vec2 f) {\n"
+                             "    c = texture(iChannel0, f / iResolution.xy * 2.0 - 0.5);\n}\n",
+                             json::array({channel(0, "clamp")})),
+                        pass("buffer", "Buffer A", 257,
+                             "void mainImage(out vec4 c, in vec2 f) {\n"
+                             "    vec2 uv = f / iResolution.xy;\n"
+                             "    c = vec4(uv, step(0.5, fract(uv.x * 4.0)), 1.0);\n}\n",
+                             json::array({channel(2, "clamp"), channel(0, "repeat")}))})}}}};
+    writeFile(dir / "wrap.json", document.dump(2));
+    auto import = runToyhost("import " + quoted(dir / "wrap.json") + " " + quoted(dir / "imported"));
+    ASSERT_EQ(import.exitCode, 0) << import.output;
+    const std::string options = " --size 64x36 --frames 2 --quiet --date " + std::string(kDate);
+    for (const auto& [label, target] : {std::pair{"export", dir / "wrap.json"}, std::pair{"folder", dir / "imported"}}) {
+        auto run = runToyhost("run " + quoted(target) + options + " --out " + quoted(dir / label / "f_%d.png"));
+        ASSERT_EQ(run.exitCode, 0) << label << ": " << run.output;
+    }
+    expectSameFrames(dir / "export", dir / "folder", 2);
+    // Repeat, not clamp: the left quarter samples Buffer A at u < 0, which repeat wraps to u + 1
+    // (red near 1) and clamp would hold at u = 0 (red 0).
+    auto frame = loadImageFile(dir / "export" / "f_1.png");
+    ASSERT_TRUE(frame.ok()) << frame.error().text();
+    const std::uint8_t* leftMiddle = &frame->rgba[4 * (18 * frame->width + 4)];
+    EXPECT_GT(leftMiddle[0], 150) << "the export's Buffer A is sampled with clamp: the listed order is lost";
+}
+
 // The keyboard input of the imported folder is live: pressing R (reset the obstacles) changes
 // 4cdXR8's Buffer A, in the export and in the imported folder alike.
 TEST(ExportRun, KeyboardInputOfAnExportReachesTheShader) {

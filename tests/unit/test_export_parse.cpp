@@ -18,6 +18,8 @@
 #include "TestFolder.h"
 #include "export/LoadShadertoy.h"
 #include "export/ShadertoyExport.h"
+#include "graph/PassGraph.h"
+#include "manifest/BufferWraps.h"
 #include "manifest/ManifestWriter.h"
 #include "manifest/StockMedia.h"
 
@@ -696,8 +698,11 @@ TEST(ExportCorpus, EveryPublicExportParsesWithItsPassesAndInputs) {
 
 using TempFolder = toyhost::testing::TestFolder;
 
+// `a` an export, `b` the folder it was imported to. A buffer channel's wrap in `b` is the one the
+// site samples with in `a` (decided by the export's listed order, manifest/BufferWraps.h).
 void expectSameChannels(const ManifestDesc& a, const ManifestDesc& b) {
     ASSERT_EQ(passIds(a), passIds(b));
+    const BufferWraps wraps = siteBufferWraps(a);
     for (size_t i = 0; i < a.passes.size(); ++i) {
         const PassDesc& pa = a.passes[i];
         const PassDesc& pb = b.passes[i];
@@ -712,7 +717,7 @@ void expectSameChannels(const ManifestDesc& a, const ManifestDesc& b) {
             if (const StockMediaInfo* stock = findStockMedia(ca.media)) EXPECT_EQ(findStockMedia(cb.media), stock) << where;
             else EXPECT_EQ(ca.media, cb.media) << where;
             EXPECT_EQ(ca.file, cb.file) << where;
-            expectSampler(cb.sampler, ca.sampler.filter, ca.sampler.wrap, ca.sampler.vflip, where);
+            expectSampler(cb.sampler, ca.sampler.filter, wrapSampled(wraps, ca), ca.sampler.vflip, where);
         }
     }
     EXPECT_EQ(a.commonSource.has_value(), b.commonSource.has_value());
@@ -779,13 +784,47 @@ TEST(ExportImport, WrittenFolderLoadsBackIdentically) {
     const auto& c = pass(*loaded, PassId::BufferC).channels;
     EXPECT_EQ(c[2].media, "London");  // the site's name, which the loader accepts
     EXPECT_EQ(findStockMedia(c[2].media), findStockMedia(kLondon));
-    expectSampler(c[0].sampler, Filter::Mipmap, Wrap::Clamp, false, "Buffer C / iChannel0");
+    // The export says clamp, but the site samples Buffer A with repeat: Buffer A's own iChannel0
+    // (repeat) is its last created reader, Buffer A being listed after Buffer C.
+    expectSampler(c[0].sampler, Filter::Mipmap, Wrap::Repeat, false, "Buffer C / iChannel0");
     expectSampler(c[2].sampler, Filter::Nearest, Wrap::Clamp, false, "Buffer C / iChannel2");
     const auto& image = pass(*loaded, PassId::Image).channels;
     EXPECT_EQ(image[1].buffer, 2);
     expectSampler(image[0].sampler, Filter::Mipmap, Wrap::Repeat, true, "Image / iChannel0");
     expectSampler(image[3].sampler, Filter::Linear, Wrap::Repeat, false, "Image / iChannel3");
     EXPECT_EQ(image[2].kind, ChannelKind::None);
+}
+
+// The buffer wrap quirk follows an export's listed order, which a manifest cannot hold: Image is
+// listed first and Buffer A's repeat input last, so the site samples Buffer A with repeat
+// everywhere, while render order (A, then Image) ends on Image's clamp. The imported folder must
+// sample as the export does (it sampled with clamp before).
+TEST(ExportImport, TheImportedFolderKeepsTheWrapTheExportsOrderGives) {
+    const std::string aInputs = "[" +
+        input("buffer", "257", "/media/previz/buffer00.png", 2, samplerJson("linear", "clamp", "\"false\"")) + "," +
+        input("buffer", "257", "/media/previz/buffer00.png", 0, samplerJson("linear", "repeat", "\"false\"")) + "]";
+    const std::string imageInputs = "[" + input("buffer", "257", "/media/previz/buffer00.png", 0,
+                                                samplerJson("linear", "clamp", "\"false\"")) + "]";
+    const ManifestDesc exported = parseOk(apiExport({apiPass("image", "Image", "37", kImageCode, imageInputs),
+                                                     apiPass("buffer", "Buffer A", "257", "// a\n", aInputs)}));
+    const PassGraph fromExport = buildPassGraph(exported);
+    ASSERT_EQ(fromExport.passes.back().id, PassId::Image);
+    EXPECT_EQ(fromExport.passes.back().channels[0].sampler.wrap, Wrap::Repeat);
+
+    TempFolder temp;
+    ASSERT_TRUE(writeManifestFolder(exported, temp.path / "toy", false).ok());
+    Result<ManifestDesc> imported = loadShadertoy(temp.path / "toy");
+    ASSERT_TRUE(imported.ok()) << imported.error().text();
+    const PassGraph fromFolder = buildPassGraph(*imported);
+    ASSERT_EQ(fromFolder.passes.size(), fromExport.passes.size());
+    for (size_t i = 0; i < fromExport.passes.size(); ++i)
+        for (int c = 0; c < kChannelCount; ++c)
+            EXPECT_EQ(fromFolder.passes[i].channels[c].sampler.wrap, fromExport.passes[i].channels[c].sampler.wrap)
+                << passName(fromExport.passes[i].id) << " / iChannel" << c;
+    // What the manifest says is what the shader samples with.
+    const json manifest = json::parse(readFile(temp.path / "toy" / "manifest.json"));
+    EXPECT_EQ(manifest["passes"]["Image"]["channels"]["iChannel0"]["wrap"], "repeat");
+    EXPECT_EQ(manifest["passes"]["Buffer A"]["channels"]["iChannel2"]["wrap"], "repeat");
 }
 
 TEST(ExportImport, ManifestJsonIsValidAndNamesThePassFiles) {

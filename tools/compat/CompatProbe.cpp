@@ -13,6 +13,7 @@
 #include "export/LoadShadertoy.h"
 #include "gl/GlContext.h"
 #include "gl/HeadlessContext.h"
+#include "image/ImageWriters.h"
 #include "player/Player.h"
 #include "session/SessionCore.h"
 #include "timing/FrameClock.h"
@@ -33,20 +34,17 @@ private:
 };
 
 
-// `firstUniform` keeps the colour of the first uniform frame judged, to tell a flash from a
-// frozen screen.
-void judgeOutput(const Player& player, ProbeResult& result, std::optional<std::array<std::uint8_t, 3>>& firstUniform) {
+// `firstUniform` keeps the dominant colour of the first nearly uniform frame judged, to tell a
+// flash from a frozen screen.
+void judgeOutput(const Player& player, const ProbeSettings& settings, ProbeResult& result,
+                 std::optional<std::array<std::uint8_t, 3>>& firstUniform) {
     const ManifestDesc& manifest = player.manifest();
-    std::vector<std::uint8_t> image;
-    player.readRgba8(PassId::Image, image);
-    result.uniformImage = true;
-    for (size_t i = 4; i < image.size() && result.uniformImage; i += 4)
-        for (int k = 0; k < 3; ++k)
-            if (image[i + k] != image[k]) result.uniformImage = false;
-    if (result.uniformImage && image.size() >= 3) {
-        const std::array<std::uint8_t, 3> colour{image[0], image[1], image[2]};
-        if (!firstUniform) firstUniform = colour;
-        else if (*firstUniform != colour) result.uniformColourChanged = true;
+    player.readRgba8(PassId::Image, result.lastImage);
+    result.share = measureFrame(result.lastImage);
+    result.uniformImage = nearlyUniform(result.share, settings.minOtherShare);
+    if (result.uniformImage && !result.lastImage.empty()) {
+        if (!firstUniform) firstUniform = result.share.dominant;
+        else if (colourChanged(*firstUniform, result.share.dominant)) result.uniformColourChanged = true;
     }
     std::vector<float> floats;
     for (const PassDesc& pass : manifest.passes) {
@@ -63,11 +61,29 @@ void judgeOutput(const Player& player, ProbeResult& result, std::optional<std::a
     }
 }
 
-}  // namespace
+// The channels showing a stand-in (by the id the export writes) left unbound: they read black,
+// declared with the sampler type they had, so the shader still compiles.
+void unbindStandIns(ManifestDesc& manifest, const std::vector<std::string>& ids) {
+    auto unbind = [&](PassDesc& pass) {
+        for (ChannelDesc& channel : pass.channels) {
+            if (channel.kind == ChannelKind::None || channel.kind == ChannelKind::Buffer ||
+                channel.kind == ChannelKind::CubeBuffer || channel.kind == ChannelKind::Keyboard)
+                continue;
+            const std::string id = channel.media.empty() ? channel.file.string() : channel.media;
+            if (std::find(ids.begin(), ids.end(), id) == ids.end()) continue;
+            const SamplerType declared = channel.samplerType;
+            channel = ChannelDesc{};
+            channel.samplerType = declared;
+        }
+    };
+    for (PassDesc& pass : manifest.passes) unbind(pass);
+    if (manifest.sound) unbind(*manifest.sound);
+}
 
-namespace {
-
-ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& settings) {
+// `blankIds`: stand-ins (by id) to leave unbound; `wallClock`: iDate at frame 0, the same for
+// every run of one probe so that runs compare.
+ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& settings,
+                           const std::vector<std::string>& blankIds, double wallClock) {
     ProbeResult result;
     result.file = exportFile.filename().string();
     // An export is known by its file name (<id>.json); a manifest folder by the folder's name.
@@ -86,6 +102,11 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
     // driven frame by frame with the visitor's mouse below.
     SessionOptions options;
     options.target = exportFile;
+    if (!blankIds.empty()) {
+        auto changed = std::make_shared<ManifestDesc>(*manifest);
+        unbindStandIns(*changed, blankIds);
+        options.shadertoy = std::move(changed);
+    }
     options.width = settings.width;
     options.height = settings.height;
     options.frames = 1;
@@ -96,9 +117,12 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
         result.error = firstErrorLine(plan.error().text());
         return result;
     }
-    for (const StandInUse& standIn : plan->shadertoy.images.standIns())
+    for (const StandInUse& standIn : plan->shadertoy.images.standIns()) {
         if (std::find(result.standIns.begin(), result.standIns.end(), standIn.name) == result.standIns.end())
             result.standIns.push_back(standIn.name);
+        if (std::find(result.standInIds.begin(), result.standInIds.end(), standIn.id) == result.standInIds.end())
+            result.standInIds.push_back(standIn.id);
+    }
     HeadlessOptions headless;
     headless.platform = settings.eglPlatform;
     auto context = createHeadlessContext(headless);
@@ -118,7 +142,7 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
     // Like a visitor, the probe drags the mouse across the canvas from frame 1 and lets go before
     // the last frames (ProbeScript.h), so shaders that show nothing until clicked get their click. Time and date come from the same fixed-step
     // clock a headless run uses.
-    const FrameClock clock(60.0, 0.0, localWallClockNow());
+    const FrameClock clock(60.0, 0.0, wallClock);
     std::vector<InputEvent> events;
     auto frameAt = [&](int frame) {
         events = probeMouseAt(frame, settings.frames, settings.width, settings.height);
@@ -142,7 +166,8 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
         }
     };
     checkGl();
-    judgeOutput(*player, result, firstUniform);
+    judgeOutput(*player, settings, result, firstUniform);
+    result.otherShareAtFrames = result.share.otherShare;
     // Patience for fade-ins and shaders that need time: check every quarter second of iTime, up to
     // a bound in iTime (frames), never in wall time, so the verdict does not depend on load.
     for (int frame = settings.frames;
@@ -150,25 +175,25 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
         frameAt(frame);
         if (frame % 15 != 0) continue;
         result.nonFiniteBuffers.clear();
-        judgeOutput(*player, result, firstUniform);
+        judgeOutput(*player, settings, result, firstUniform);
         if (!result.uniformImage || result.uniformColourChanged) result.firstNonUniformTime = frame / 60.0;
     }
     checkGl();
+    result.judgedWidth = settings.width;
+    result.judgedHeight = settings.height;
     return result;
 }
 
-}  // namespace
-
-ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) {
-    ProbeResult first = probeAtOneSize(exportFile, settings);
+// One colour at the small size: shaders drawing at fixed pixel positions (a layout for 800x450, a
+// 100 px ring) can miss a 160x90 canvas. Render the second size before calling the frame empty.
+ProbeResult probeAtBothSizes(const fs::path& exportFile, const ProbeSettings& settings,
+                             const std::vector<std::string>& blankIds, double wallClock) {
+    ProbeResult first = probeAtOneSize(exportFile, settings, blankIds, wallClock);
     if (!first.degenerate() || !first.compiled || !first.glError.empty()) return first;
-    // One colour at the small size: shaders drawing at fixed pixel positions (a layout for
-    // 800x450, a 100 px ring) can miss a 160x90 canvas. Render the second size before calling
-    // the frame empty.
     ProbeSettings larger = settings;
     larger.width = std::max(settings.width * 2, kSecondWidth);
     larger.height = std::max(settings.height * 2, kSecondHeight);
-    ProbeResult second = probeAtOneSize(exportFile, larger);
+    ProbeResult second = probeAtOneSize(exportFile, larger, blankIds, wallClock);
     second.secondSize = std::to_string(larger.width) + "x" + std::to_string(larger.height);
     if (second.passed()) {
         second.msPerFrame = first.msPerFrame;  // the table's timings stay at one size
@@ -176,6 +201,39 @@ ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) 
     }
     first.secondSize = second.secondSize;
     return first;
+}
+
+}  // namespace
+
+ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) {
+    const double wallClock = localWallClockNow();
+    ProbeResult result = probeAtBothSizes(exportFile, settings, {}, wallClock);
+    if (settings.checkStandIns && result.passed() && !result.standInIds.empty()) {
+        // The same probe with the stand-ins unbound, at the size that passed: a picture that does
+        // not change never read them; one that goes degenerate passed on their content alone.
+        ProbeSettings same = settings;
+        same.width = result.judgedWidth;
+        same.height = result.judgedHeight;
+        const ProbeResult blank = probeAtOneSize(exportFile, same, result.standInIds, wallClock);
+        if (!blank.passed()) result.standInEffect = "verdict";
+        else if (blank.framesRendered == result.framesRendered && blank.lastImage == result.lastImage)
+            result.standInEffect = "none";
+        else result.standInEffect = "picture";
+    }
+    if (!settings.framesOut.empty() && !result.lastImage.empty()) {
+        std::error_code ec;
+        fs::create_directories(settings.framesOut, ec);
+        (void)writePng(settings.framesOut / (result.id + ".png"), result.judgedWidth, result.judgedHeight,
+                       result.lastImage);
+    }
+    return result;
+}
+
+std::string standInEffectText(const ProbeResult& r) {
+    if (r.standInEffect == "none") return "the same picture without them";
+    if (r.standInEffect == "picture") return "the picture depends on them";
+    if (r.standInEffect == "verdict") return "passes only with them: one colour without them";
+    return "";
 }
 
 nlohmann::json toJson(const ProbeResult& r) {
@@ -189,10 +247,17 @@ nlohmann::json toJson(const ProbeResult& r) {
             {"ms_per_frame", std::round(r.msPerFrame * 100) / 100},
             {"uniform_image", r.uniformImage},
             {"uniform_colour_changed", r.uniformColourChanged},
+            {"other_share", std::round(r.share.otherShare * 1e6) / 1e6},
+            {"other_share_at_frames", std::round(r.otherShareAtFrames * 1e6) / 1e6},
+            {"mean_level", std::round(r.share.meanLevel * 1000) / 1000},
+            {"dominant", {r.share.dominant[0], r.share.dominant[1], r.share.dominant[2]}},
+            {"judged_size", std::to_string(r.judgedWidth) + "x" + std::to_string(r.judgedHeight)},
             {"gl_error", r.glError},
             {"first_non_uniform_time", r.firstNonUniformTime},
             {"non_finite_buffers", r.nonFiniteBuffers},
             {"stand_ins", r.standIns},
+            {"stand_in_ids", r.standInIds},
+            {"stand_in_effect", r.standInEffect},
             {"notices", r.notices},
             {"error", r.error},
             {"second_size", r.secondSize},
@@ -215,6 +280,16 @@ ProbeResult fromJson(const nlohmann::json& j) {
     r.firstNonUniformTime = j.value("first_non_uniform_time", -1.0);
     r.nonFiniteBuffers = j.value("non_finite_buffers", std::vector<std::string>{});
     r.standIns = j.value("stand_ins", std::vector<std::string>{});
+    r.standInIds = j.value("stand_in_ids", std::vector<std::string>{});
+    r.standInEffect = j.value("stand_in_effect", "");
+    r.share.otherShare = j.value("other_share", 0.0);
+    r.share.meanLevel = j.value("mean_level", 0.0);
+    r.otherShareAtFrames = j.value("other_share_at_frames", 0.0);
+    r.share.dominantShare = 1.0 - r.share.otherShare;
+    if (auto d = j.find("dominant"); d != j.end() && d->is_array() && d->size() == 3)
+        for (int k = 0; k < 3; ++k) r.share.dominant[k] = (*d)[k].get<std::uint8_t>();
+    if (std::sscanf(j.value("judged_size", "").c_str(), "%dx%d", &r.judgedWidth, &r.judgedHeight) != 2)
+        r.judgedWidth = r.judgedHeight = 0;
     r.notices = j.value("notices", std::vector<std::string>{});
     r.error = j.value("error", "");
     r.secondSize = j.value("second_size", "");

@@ -1,6 +1,6 @@
-// One compatibility probe: load a Shadertoy export, compile it, render a few frames headless
-// and judge the output (uniform colour, NaN/Inf in buffers), collecting stand-ins and notices.
-// Creates and uses its own EGL context; run it in a child process so a hang can be killed.
+// One compatibility probe: load an export, render a few frames headless and judge the output
+// (nearly one colour, NaN/Inf in buffers, whether a pass rests on stand-ins). Needs GL: creates
+// its own EGL context; run it in a child process so a hang can be killed.
 #pragma once
 
 #include <filesystem>
@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "FrameMeasure.h"
 #include "gl/HeadlessContext.h"
 
 namespace toyhost::compat {
@@ -24,8 +25,16 @@ struct ProbeSettings {
     // A frame that is still one colour after `frames` frames may be a fade-in or a shader waiting
     // for input: keep rendering until iTime reaches this (a bound in frames, not wall time).
     double patienceSeconds = 5.0;
+    // A frame is degenerate when fewer than this share of its pixels differ from its dominant
+    // colour (FrameMeasure.h).
+    double minOtherShare = kMinOtherShare;
     std::vector<std::filesystem::path> mediaFolders;
     toyhost::EglPlatform eglPlatform = toyhost::EglPlatform::Automatic;
+    // Where the last judged Image frame goes as <id>.png (empty: nowhere), to look at.
+    std::filesystem::path framesOut;
+    // Check a passing verdict that used stand-ins again with them unbound (black), to say whether
+    // the verdict depends on them.
+    bool checkStandIns = true;
 };
 
 struct ProbeResult {
@@ -37,16 +46,28 @@ struct ProbeResult {
     int framesRendered = 0;
     double msPerFrame = 0;                 // CPU time per frame of the first `frames` frames
     double firstNonUniformTime = -1;       // iTime when a uniform Image first changed, if it did later
-    bool uniformImage = false;             // every Image pixel has the same colour
-    // The uniform colour changed between the frames judged: a full-screen flash or fade, which is
-    // valid output, not a degenerate one.
+    // The Image is (nearly) one colour: fewer than minOtherShare of its pixels differ from its
+    // dominant colour by more than kColourTolerance.
+    bool uniformImage = false;
+    // That dominant colour changed between the frames judged: a full-screen flash or fade, which
+    // is valid output, not a degenerate one.
     bool uniformColourChanged = false;
+    FrameShare share;                      // the last judged Image frame's measure
+    double otherShareAtFrames = 0;         // share.otherShare after the first `frames` frames
+    int judgedWidth = 0, judgedHeight = 0; // the size it was judged at
     std::string glError;                   // a GL error after rendering ("GL_INVALID_OPERATION")
     std::vector<std::string> nonFiniteBuffers;  // "Buffer A: 12 NaN, 0 Inf"
     std::vector<std::string> standIns;     // stock media names replaced by stand-ins
+    std::vector<std::string> standInIds;   // their ids as the export writes them
+    // Whether a passing verdict depends on its stand-ins, found by rendering again with them
+    // unbound (black): "" (no stand-ins, or not checked), "none" (the same picture without them),
+    // "picture" (a different picture that still passes), "verdict" (degenerate without them: the
+    // pass rests on the stand-in's content).
+    std::string standInEffect;
     std::vector<std::string> notices;
     std::string error;                     // why it did not load, compile or render
     std::string secondSize;                // "320x180" when the first size gave one colour and this one was tried
+    std::vector<std::uint8_t> lastImage;   // the last judged Image frame (RGBA8, not in the JSON)
 
     // The picture is judged; NaN/Inf in a buffer is a note (packed data, masked pixels and a
     // normalize(0) outside the drawn area are NaN with a right picture).
@@ -55,6 +76,9 @@ struct ProbeResult {
 };
 
 ProbeResult runProbe(const std::filesystem::path& exportFile, const ProbeSettings& settings);
+
+// What the table says about a verdict's stand-ins ("" when it has none or they were not checked).
+std::string standInEffectText(const ProbeResult& result);
 
 nlohmann::json toJson(const ProbeResult& result);
 ProbeResult fromJson(const nlohmann::json& json);
