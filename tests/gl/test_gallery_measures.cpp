@@ -72,8 +72,9 @@ TEST_P(GalleryMeasures, WithinTheirBounds) {
 INSTANTIATE_TEST_SUITE_P(
     Gallery, GalleryMeasures,
     ::testing::Values(
-        // before issue 20 at 320x180: ratio 4.70, clipped 0.03%
-        PortBounds{"exp-sine-ocean", 3.0, 0, 255},
+        // before issue 20 at 320x180: ratio 4.70, clipped 0.03%; footprint filtering alone 2.3
+        // (the issue's goal: 1.5; today 1.18)
+        PortBounds{"exp-sine-ocean", 1.5, 0, 255},
         // before: ratio 2.28, clipped 2.1%, black 33 (the issue's goal: ratio <= 1.5)
         PortBounds{"raymarched-sea", 1.5, 0, 24},
         // before: band 5.87 (the issue's goal: 0.6x of 5.7 = 3.4), black 39 (rock in shadow)
@@ -85,15 +86,6 @@ INSTANTIATE_TEST_SUITE_P(
         std::replace(name.begin(), name.end(), '-', '_');
         return name;
     });
-
-// A known defect (issue 20's goal, not reached: exp-sine-ocean's ratio is ~2.3 at 320x180, the
-// mid-field swell moving at grazing angles): run by its own CTest entry with WILL_FAIL.
-TEST(GalleryMeasuresKnownDefect, DISABLED_ExpSineOceanShimmerRatioAtMost1_5) {
-    const auto frames = renderFrames("exp-sine-ocean", "exp-sine-ocean-goal");
-    ASSERT_EQ(frames.size(), 4u);
-    const Shimmer s = measureShimmer(frames);
-    EXPECT_LE(s.ratio(), 1.5);
-}
 
 // Looking down at exp-sine-ocean's smooth water: the dither adds code values to the 8-bit steps
 // of the gradient (the image without it, by an edit, has clearly fewer colours in the same place).

@@ -22,7 +22,7 @@ struct Mutation {
 
 const Mutation kMutations[] = {
     {"exp_sine_fresnel_f0_002", "exp_sine_ocean_t3",
-     {"image.glsl", "float F = 0.04 + 0.96 * pow(1.0 - cosV, 5.0);", "float F = 0.02 + 0.98 * pow(1.0 - cosV, 5.0);"}},
+     {"image.glsl", "float Fk = 0.04 + 0.96 * pow(", "float Fk = 0.02 + 0.98 * pow("}},
     {"exp_sine_black_block_10x10", "exp_sine_ocean_t3",
      {"image.glsl", "fragColor = vec4(pow(col, vec3(1.0 / 2.2)) + ditherNoise(fragCoord), 1.0);",
       "fragColor = vec4(pow(col, vec3(1.0 / 2.2)) + ditherNoise(fragCoord), 1.0);\n"
