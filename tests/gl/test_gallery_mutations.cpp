@@ -47,6 +47,8 @@ const Mutation kMutations[] = {
       "if (iMouse.z > 0.0) yaw = (0.5 - iMouse.x / iResolution.x) * 1.2;"}},
     {"caustics_pool_mouse_ignored", "caustics_pool_mouse",
      {"image.glsl", "if (iMouse.z > 0.0) yaw", "if (iMouse.z > 1e9) yaw"}},
+    {"ripple_pool_fresnel_constant", "ripple_pool_drag_f90",
+     {"image.glsl", "float F = 0.02 + 0.98 * pow(1.0 - cosi, 5.0);", "float F = 0.02;"}},
     {"coastal_foam_mouse_ignored", "coastal_foam_mouse",
      {"image.glsl", "if (iMouse.z > 0.0) yaw", "if (iMouse.z > 1e9) yaw"}},
 };
