@@ -1,6 +1,7 @@
 // ripple-pool / Image: a tiled swimming pool seen from straight above.
 //
-// iChannel0 = Buffer A (height field, .x = height in pixels, linear filtering).
+// iChannel0 = Buffer D (the height field at the end of the frame, .x = height
+// in cells, linear filtering; common.glsl simulates it).
 // The eye is a wide-angle pinhole above the pool centre (half the pool's short
 // side up) and the water surface lies in the image plane, so pixel p shows the
 // water at p: where you click is where the ripple appears. Towards the edges the
@@ -19,7 +20,7 @@
 //  - the sun is high, so a caustic sits only ~7 px from its ripple; the wall
 //    and deck on the sunny side shade a band of floor (the refracted sun ray
 //    from the floor point is traced up to the wall top)
-// All ripple optics use fixed pixel units (the simulation is one cell per pixel),
+// All ripple optics use grid cells (one per pixel up to 180 rows, then scaled),
 // the tile pattern scales with the canvas height.
 
 const float GAIN     = 2.5;           // visual height exaggeration of the simulated field
@@ -36,8 +37,8 @@ const float WALL_UP  = 4.0 * DEPTH;   // height of the shading wall + deck above
 const float RIM      = 30.0;          // the walls rise this far above the water (cells)
 const float EYE_UP   = 0.5;           // eye height above the water, in canvas heights
 
-// Buffer A's grid: one cell per pixel up to 180 rows, else 180 rows scaled up (see buffer_a.glsl).
-float gridScale() { return max(1.0, iResolution.y / 180.0); }
+// The simulation's grid: one cell per pixel up to 180 rows, else 180 rows scaled up (gridScale()
+// in common.glsl).
 vec2 gridSize() { return max(floor(iResolution.xy / gridScale()), vec2(1.0)); }
 
 float Hs(vec2 pos)   // bilinear height at a position in cells, clamped to the grid (walls)
