@@ -243,9 +243,9 @@ LakeColours lakeColours(const std::shared_ptr<GlContext>& context, std::initiali
     (void)toy->renderFrame(atTwo, {});
     std::vector<float> image;
     toy->player().readRgba32f(PassId::Image, image);
-    // Regions at 320x180 (x, y, w, h; origin bottom-left) from the shader's README: water 0.2-1.4 m
-    // deep over sand, and water whose floor lies 29 m down.
-    return {meanColour(image, kWidth, 160, 30, 40, 22), meanColour(image, kWidth, 210, 80, 80, 40)};
+    // Regions at 320x180 (x, y, w, h; origin bottom-left) from the shader's README: water 0.3-1.4 m
+    // deep over sand, and water whose floor lies 28.7-29.2 m down (depths read from the shader).
+    return {meanColour(image, kWidth, 158, 0, 40, 22), meanColour(image, kWidth, 240, 72, 80, 40)};
 }
 
 TEST_F(LakeOptics, PresetsGiveDifferentWaterAndTropicalDeepIsBluerThanShallow) {
