@@ -276,7 +276,7 @@ vec3 shadeRock(vec3 p, vec3 rd, float wet) {
     if (dif > 0.0) dif *= rockShadow(p + n * 0.03, L);
     // crevice occlusion: the fine ridged detail is low in gullies, where little sky reaches
     float ridge = ridgedFbm(p.xz * 0.88, 2);
-    float ao = clamp(1.4 * ridge * ridge, 0.03, 1.0);
+    float ao = clamp(1.4 * ridge * ridge, 0.0, 1.0);     // deep cracks see almost no sky
     vec3 amb = vec3(0.32, 0.40, 0.52) * (0.55 + 0.45 * n.y) * ao;
     return alb * (SUN_COL * dif * (0.6 + 0.4 * ao) + amb);
 }
