@@ -265,15 +265,18 @@ float rockShadow(vec3 p, vec3 L) {
     return clamp(res, 0.0, 1.0);
 }
 
-vec3 shadeRock(vec3 p, vec3 rd) {
+// `wet` 0..1: a water film fills the rock's pores, so less light scatters back out of it: darker
+// and more saturated (the albedo roughly squared), with a glossy film on top (see mainImage).
+vec3 shadeRock(vec3 p, vec3 rd, float wet) {
     vec3 n = rockNormal(p.xz);
     vec3 L = normalize(SUN_DIR);
     vec3 alb = rockAlbedo(p.xz, p.y, n);
+    alb = mix(alb, alb * alb, wet);
     float dif = max(dot(n, L), 0.0);
     if (dif > 0.0) dif *= rockShadow(p + n * 0.03, L);
     // crevice occlusion: the fine ridged detail is low in gullies, where little sky reaches
     float ridge = ridgedFbm(p.xz * 0.88, 2);
-    float ao = clamp(1.4 * ridge * ridge, 0.03, 1.0);
+    float ao = clamp(1.4 * ridge * ridge, 0.0, 1.0);     // deep cracks see almost no sky
     vec3 amb = vec3(0.32, 0.40, 0.52) * (0.55 + 0.45 * n.y) * ao;
     return alb * (SUN_COL * dif * (0.6 + 0.4 * ao) + amb);
 }
@@ -363,13 +366,18 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
 
     if (tr > 0.0) {
         vec3 p = ro + rd * tr;
-        col = shadeRock(p, rd);
-        // wet rock just above the water: darker, with a sky sheen
+        // wet rock just above the water (the swash keeps it wet): darker, more saturated, and
+        // a glossy water film: Schlick's Fresnel (F0 = 0.02) of the sky, kept under 0.1 because
+        // the film follows the rock's roughness (no mirror-bright grazing streaks, which read
+        // as foam), and small sun glints where the film faces the sun
         float hw = waterH(p.xz, t, 3);
-        float film = smoothstep(0.4, 0.0, p.y - hw);
+        float film = smoothstep(0.6, 0.0, p.y - hw);
+        col = shadeRock(p, rd, film);
         vec3 nr = rockNormal(p.xz);
-        float sheen = 0.04 + 0.96 * pow(1.0 - clamp(dot(-rd, nr), 0.0, 1.0), 5.0);
-        col = mix(col, col * 0.55 + sky(reflect(rd, nr)) * sheen * 0.5, film);
+        vec3 rr = reflect(rd, nr);
+        float sheen = min(0.02 + 0.98 * pow(1.0 - clamp(dot(-rd, nr), 0.0, 1.0), 5.0), 0.1);
+        float glint = pow(max(dot(rr, normalize(SUN_DIR)), 0.0), 80.0) * (80.0 + 2.0) / 6.2832;
+        col += film * (sky(rr) * sheen + SUN_COL * glint * 0.05);
         col = aerial(col, rd, tr);
     } else if (tw < FAR && rd.y < 0.0) {
         vec3 p = ro + rd * tw;

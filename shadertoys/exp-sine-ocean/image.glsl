@@ -15,6 +15,12 @@
 // - Distance-aware filtering: each wave of the normal fades to its mean once its wavelength nears
 //   the width of water one pixel covers (distance x pixel angle / grazing sine), and the sun's
 //   glitter lobe widens (normalised, so its energy stays) where detail has been filtered away.
+// - Sub-pixel roughness: the slopes a pixel no longer shows (the faded waves' slope variance, plus
+//   the capillary ripples shorter than any modelled wave) make the reflection a lobe, not a
+//   mirror: Fresnel x sky is averaged over four normals spread by that variance. Far water thus
+//   turns into the even, bright sheet a camera sees, instead of flickering facets.
+// - Sky: single-scattering air with a per-channel Rayleigh optical depth along an air mass of
+//   1 / (sin(elevation) + 0.1): deep blue overhead, whitening towards the horizon, plus a sun glow.
 // - Shading: Schlick's Fresnel with F0 = 0.04 mixes a sky reflection (which carries a bright HDR
 //   sun, hence the glitter path) with a subsurface tint, stronger in the troughs than on the
 //   crests; ACES filmic curve (Stephen Hill's fitted RRT+ODT), then gamma 1/2.2 and a fixed
@@ -30,6 +36,10 @@ const int   MARCH_STEPS  = 48;
 const float CAMERA_Y     = 1.2;    // above the top plane
 const float GLINT_POWER  = 900.0;  // the near sun glitter lobe (Phong exponent)
 const float WAVE_MEAN    = 0.4658; // mean of exp(sin x - 1) over a period (I0(1) / e)
+const float WAVE_SLOPE_VAR = 0.1076; // variance of d/dx exp(sin x - 1) over a period
+// Slope variance (both axes) of the capillary ripples no wave here models: Cox & Munk's clean
+// minus slick sea surface (0.0033 per m/s of wind) at a fresh breeze of ~9 m/s.
+const float CAPILLARY_SLOPE_VAR = 0.03;
 
 const vec3  SUN_DIR      = vec3(0.25, 0.1, 1.0);           // normalised where used
 const vec3  TROUGH_TINT  = vec3(0.015, 0.07, 0.10);        // subsurface colour in the troughs
@@ -64,6 +74,22 @@ float waveSum(vec2 xz, int n, float footprint) {
         dir = GOLDEN_TURN * dir;
     }
     return sum / total;
+}
+
+// Slope variance (both axes) that the waves of waveSum lose at `footprint`: each wave's slope
+// amplitude is weight x frequency / total weight, and a wave faded by `keep` keeps keep^2 of its
+// variance. Checked numerically (drag included) against the slope variance inside a pixel's
+// footprint: within 10% for footprints 0.05 .. 0.8.
+float lostSlopeVariance(float footprint) {
+    float freq = 1.0, weight = 1.0, total = 0.0, lost = 0.0;
+    for (int i = 0; i < NORMAL_WAVES; i++) {
+        float keep = 1.0 - smoothstep(1.0, 3.0, freq * footprint);
+        lost += weight * weight * freq * freq * (1.0 - keep * keep);
+        total += weight;
+        weight *= 0.8;
+        freq *= 1.18;
+    }
+    return lost * WAVE_SLOPE_VAR / (total * total);
 }
 
 float surfaceY(vec2 xz, int n, float footprint) { return (waveSum(xz, n, footprint) - 1.0) * DEPTH; }
@@ -109,14 +135,22 @@ float pixelFootprint(float dist, vec3 rd) {
     return dist * pixelAngle / max(abs(rd.y), 0.02);
 }
 
-vec3 sky(vec3 rd) {
+// The air: light scattered once towards the eye, with a Rayleigh optical depth per channel (blue
+// scatters most) along an air mass of 1 / (sin(elevation) + 0.1) (bounded at the horizon), plus
+// the glow around the sun. No sun disc: see sky().
+vec3 skyAir(vec3 rd) {
+    const vec3 RAYLEIGH_DEPTH = vec3(0.13, 0.30, 0.68);   // at the zenith, ~ 1 / wavelength^4
     vec3 sun = normalize(SUN_DIR);
-    float y = max(rd.y, 0.0);
-    vec3 col = mix(vec3(0.40, 0.56, 0.74), vec3(0.03, 0.12, 0.42), pow(y, 0.4));
+    float airMass = 1.0 / (max(rd.y, 0.0) + 0.1);
+    vec3 col = 0.75 * (1.0 - exp(-RAYLEIGH_DEPTH * airMass));
     float mu = max(dot(rd, sun), 0.0);
     col += vec3(1.0, 0.62, 0.28) * (0.18 * pow(mu, 16.0) + 0.8 * pow(mu, 300.0));
-    col += vec3(1.0, 0.80, 0.55) * 40.0 * smoothstep(0.99988, 0.99993, mu);   // HDR disc
     return col;
+}
+
+vec3 sky(vec3 rd) {
+    float mu = max(dot(rd, normalize(SUN_DIR)), 0.0);
+    return skyAir(rd) + vec3(1.0, 0.80, 0.55) * 40.0 * smoothstep(0.99988, 0.99993, mu);   // HDR disc
 }
 
 // ACES filmic tone curve, Stephen Hill's fit of the RRT + ODT (sRGB primaries in and out)
@@ -174,12 +208,28 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         float footprint = pixelFootprint(dist, rd);
         vec3 n = waterNormal(p.xz, footprint);
 
-        float cosV = max(dot(n, -rd), 0.0);
-        float F = 0.04 + 0.96 * pow(1.0 - cosV, 5.0);     // Schlick, water F0 = 0.04
+        // Fresnel x sky over the slopes this pixel does not resolve: four normals at +-sigma
+        // along two tangent axes (sigma^2 = half the two-axis variance). The sun disc is left to
+        // the glitter lobe below (four taps cannot sample a disc this small).
+        float sigma = sqrt(0.5 * (lostSlopeVariance(footprint) + CAPILLARY_SLOPE_VAR));
+        vec3 tx = normalize(cross(n, vec3(0.0, 0.0, 1.0)));
+        vec3 tz = cross(tx, n);
+        float F = 0.0;
+        vec3 refl = vec3(0.0);
+        for (int k = 0; k < 4; k++) {
+            vec2 o = vec2(k & 1, k >> 1) * 2.0 - 1.0;
+            vec3 nk = normalize(n + sigma * (o.x * tx + o.y * tz));
+            float Fk = 0.04 + 0.96 * pow(1.0 - max(dot(nk, -rd), 0.0), 5.0);   // Schlick, F0 = 0.04
+            vec3 rk = reflect(rd, nk);
+            rk.y = abs(rk.y);                             // no reflections from below the horizon
+            refl += Fk * skyAir(rk);
+            F += Fk;
+        }
+        refl /= max(F, 1e-4);                             // the Fresnel-weighted mean sky
+        F *= 0.25;
 
         vec3 r = reflect(rd, n);
-        r.y = abs(r.y);                                   // no reflections from below the horizon
-        vec3 refl = sky(r);
+        r.y = abs(r.y);
         // the sun's glitter: a lobe wider than the tiny disc, so wave facets catch it. The slopes
         // that the filtered normal no longer shows widen the lobe with distance; the lobe is
         // normalised ((s + 2) / 2pi, relative to the near lobe), so the glitter path keeps its

@@ -228,11 +228,11 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     float t = iTime;
     vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
 
-    // camera: 14 m above the water, looking down ~40 degrees across the shore
+    // camera: 11 m above the water, looking down ~22 degrees across the shore, the horizon in view
     float yaw = 0.0;
     if (iMouse.z > 0.0) yaw = (iMouse.x / iResolution.x - 0.5) * 1.2;
-    vec3 ro = vec3(-1.0, 14.0, -11.0);
-    vec3 ta = vec3(6.5, 0.0, 4.5);
+    vec3 ro = vec3(-1.0, 11.0, -11.0);
+    vec3 ta = vec3(6.5, 4.0, 4.5);
     vec3 fw0 = ta - ro;
     fw0.xz = mat2(cos(yaw), -sin(yaw), sin(yaw), cos(yaw)) * fw0.xz;
     vec3 fw = normalize(fw0);

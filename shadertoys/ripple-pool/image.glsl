@@ -1,14 +1,18 @@
 // ripple-pool / Image: a tiled swimming pool seen from straight above.
 //
-// iChannel0 = Buffer A (height field, .x = height in pixels, linear filtering).
-// The eye is a pinhole high above the pool centre and the water surface lies in
-// the image plane, so pixel p shows the water at p: where you click is where the
-// ripple appears.
+// iChannel0 = Buffer D (the height field at the end of the frame, .x = height
+// in cells, linear filtering; common.glsl simulates it).
+// The eye is a wide-angle pinhole above the pool centre (half the pool's short
+// side up) and the water surface lies in the image plane, so pixel p shows the
+// water at p: where you click is where the ripple appears. Towards the edges the
+// view meets the water up to ~64 degrees from the normal, where Fresnel matters.
 //  - normal from central differences of the height field
 //  - refraction (Snell, n = 1.333) of the view ray down to a tiled floor at
 //    DEPTH pixels; rays that leave the pool sideways hit the tiled walls
-//  - reflection of a procedural sky + sun, mixed in with Schlick's Fresnel
-//    (F0 = 0.02 for water)
+//  - reflection of the scene, mixed in with Schlick's Fresnel (F0 = 0.02 for
+//    water): the tiled walls rising RIM above the water, above them a procedural
+//    sky + sun. Replacing F by F0 changes the edges of the picture by several
+//    levels (a mutation test checks it fails its golden).
 //  - Beer-Lambert absorption along the refracted path (red is absorbed most)
 //  - caustics by the refracted-area rule: sunlight bent by the surface moves a
 //    floor point by -alpha*DEPTH*grad(h) (alpha = 1 - 1/1.333, small slopes), the
@@ -16,7 +20,7 @@
 //  - the sun is high, so a caustic sits only ~7 px from its ripple; the wall
 //    and deck on the sunny side shade a band of floor (the refracted sun ray
 //    from the floor point is traced up to the wall top)
-// All ripple optics use fixed pixel units (the simulation is one cell per pixel),
+// All ripple optics use grid cells (one per pixel up to 180 rows, then scaled),
 // the tile pattern scales with the canvas height.
 
 const float GAIN     = 2.5;           // visual height exaggeration of the simulated field
@@ -30,9 +34,11 @@ const vec3  SUN_DIR  = vec3(0.12, 0.16, 0.98);   // towards the sun (normalised 
                                                  // caustics sit close under their ripples
 const vec3  SUN_COL  = vec3(1.0, 0.93, 0.82);
 const float WALL_UP  = 4.0 * DEPTH;   // height of the shading wall + deck above the floor
+const float RIM      = 30.0;          // the walls rise this far above the water (cells)
+const float EYE_UP   = 0.5;           // eye height above the water, in canvas heights
 
-// Buffer A's grid: one cell per pixel up to 180 rows, else 180 rows scaled up (see buffer_a.glsl).
-float gridScale() { return max(1.0, iResolution.y / 180.0); }
+// The simulation's grid: one cell per pixel up to 180 rows, else 180 rows scaled up (gridScale()
+// in common.glsl).
 vec2 gridSize() { return max(floor(iResolution.xy / gridScale()), vec2(1.0)); }
 
 float Hs(vec2 pos)   // bilinear height at a position in cells, clamped to the grid (walls)
@@ -106,6 +112,30 @@ vec3 ditherNoise(vec2 fragCoord) {
     return (a + b - 1.0) / 255.0;
 }
 
+// Light on a tiled wall: sun on the walls facing it, sky light on all. `dir` is the ray that
+// reached the wall (its sign tells which wall), `acrossX` whether the wall is an x = const one.
+vec3 litWall(vec3 albedo, vec2 dir, bool acrossX)
+{
+    vec3 sd = normalize(SUN_DIR);
+    bool sunny = acrossX ? (dir.x * sd.x < 0.0) : (dir.y * sd.y < 0.0);
+    return albedo * (vec3(0.30, 0.38, 0.45) + 1.5 * SUN_COL * (sunny ? 0.55 : 0.1) * sd.z);
+}
+
+// What the water reflects along r (upwards) from the surface point s: the walls above the
+// water up to RIM, then the sky.
+vec3 reflectedScene(vec3 s, vec3 r, vec2 res, float tileSize)
+{
+    vec2 bound = mix(vec2(0.0), res, step(0.0, r.xy));
+    vec2 rd = vec2(abs(r.x) < 1e-6 ? 1e-6 : r.x, abs(r.y) < 1e-6 ? 1e-6 : r.y);
+    vec2 l = max((bound - s.xy) / rd, 0.0);
+    bool acrossX = l.x < l.y;                         // meets a wall x = const first
+    vec3 w = s + r * min(l.x, l.y);
+    if (w.z >= RIM) return sky(r);
+    float along = acrossX ? w.y : w.x;
+    vec3 albedo = tiles(vec2(along, RIM - w.z) / tileSize, 0.03, 1.0 / (tileSize * gridScale())) * 0.92;
+    return litWall(albedo, r.xy, acrossX);
+}
+
 void mainImage(out vec4 fragColor, in vec2 fragCoord)
 {
     // everything below is in grid cells: the picture is the grid scaled up
@@ -119,7 +149,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
     float gy = 0.5 * (Hs(fc + vec2(0, 1)) - Hs(fc - vec2(0, 1)));
     vec3 n = normalize(vec3(-gx, -gy, 1.0));
 
-    vec3 eye = vec3(0.5 * res, 1.8 * res.y);
+    vec3 eye = vec3(0.5 * res, EYE_UP * res.y);
     vec3 s = vec3(fc, h);
     vec3 v = normalize(s - eye);
 
@@ -189,7 +219,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
 
     // --- reflection + Fresnel ----------------------------------------------
     vec3 r = reflect(v, n);
-    vec3 refl = sky(r);
+    vec3 refl = reflectedScene(s, r, res, tileSize);
     float cosi = clamp(dot(-v, n), 0.0, 1.0);
     float F = 0.02 + 0.98 * pow(1.0 - cosi, 5.0);
 

@@ -122,7 +122,7 @@ inline std::vector<GalleryCase> galleryCases() {
         {"ripple_pool_drag_f30", "ripple-pool", "--mouse-script drag.json", 30},
         {"ripple_pool_drag_f90", "ripple-pool", "--mouse-script drag.json", 90},
         {"ripple_pool_rain", "ripple-pool", "", 80,
-         {{"buffer_a.glsl", "// #define RAIN", "#define RAIN"}}},
+         {{"common.glsl", "// #define RAIN", "#define RAIN"}}},
     };
 }
 

@@ -34,7 +34,8 @@ INSTANTIATE_TEST_SUITE_P(Shaders, GalleryGolden, ::testing::ValuesIn(galleryCase
                          [](const auto& info) { return std::string(info.param.name); });
 
 // ---------------------------------------------------------------------------------------------
-// ripple-pool: Buffer A's height field (.x) after one click, as numbers
+// ripple-pool: the height field (.x of Buffer D, the state at the end of a frame) after one
+// click, as numbers
 
 class RipplePool : public GlTest {};
 
@@ -59,7 +60,7 @@ TEST_F(RipplePool, OneDropSpreadsSymmetricallyAtSteadySpeedAndDecays) {
     for (int after = 1; after <= 40; ++after) {
         stepAt(*toy);
         if (after % 10) continue;
-        toy->player().readRgba32f(PassId::BufferA, field);
+        toy->player().readRgba32f(PassId::BufferD, field);
         // Four-fold symmetry about the drop's pixel centre (and the diagonal), out to the ring
         // and beyond, until reflections from the walls (70+ px away) could arrive.
         float peak = 0.0f;
@@ -112,7 +113,7 @@ TEST_F(RipplePool, ScriptedDragDisturbsTheWaterAlongItsPathOnly) {
         stepAt(*toy, events);
     }
     std::vector<float> field;
-    toy->player().readRgba32f(PassId::BufferA, field);
+    toy->player().readRgba32f(PassId::BufferD, field);
     // Points of the drag: the start (60, 70), the turn (150, 100), the end (260, 40).
     for (auto [x, y] : {std::pair{60, 70}, {105, 85}, {150, 100}, {205, 70}, {260, 40}}) {
         float largest = 0.0f;
@@ -139,7 +140,7 @@ TEST_F(RipplePool, TheSameClickOnADoubleSizeCanvasGivesTheSameField) {
         stepAt(*toy, click);
         for (int i = 0; i < 20; ++i) stepAt(*toy);
         std::vector<float> field;
-        toy->player().readRgba32f(PassId::BufferA, field);
+        toy->player().readRgba32f(PassId::BufferD, field);
         // the grid's cells: the lower-left 320x180 of the buffer
         for (int y = 0; y < kHeight; ++y)
             for (int x = 0; x < kWidth; ++x)
@@ -151,12 +152,50 @@ TEST_F(RipplePool, TheSameClickOnADoubleSizeCanvasGivesTheSameField) {
     EXPECT_EQ(fields[0], fields[1]) << "the double-size canvas simulates a different field";
 }
 
+// The ring's radius (the cell of the largest |h| east of the drop, out to 70 cells) in a field.
+int ringRadius(const std::vector<float>& field) {
+    int radius = 0;
+    float peak = 0.0f;
+    for (int r = 0; r <= 70; ++r)
+        if (std::abs(height(field, kDropX + r, kDropY)) > peak) {
+            peak = std::abs(height(field, kDropX + r, kDropY));
+            radius = r;
+        }
+    return radius;
+}
+
+// Fixed step: the simulation takes 60 steps per second of iTime at any frame rate, so the same
+// click seen at the same iTime has spread as far at 15, 30 and 60 fps (one step per frame, as
+// before, would give rings 4x and 2x smaller at 15 and 30 fps).
+TEST_F(RipplePool, RingsSpreadByTimeNotByFrames) {
+    std::vector<int> radii;
+    for (double fps : {60.0, 30.0, 15.0}) {
+        auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", kWidth, kHeight);
+        ASSERT_TRUE(toy);
+        const int perTick = int(60.0 / fps);  // frames per 1/15 s: 4, 2, 1
+        for (int i = 0; i < 4 / perTick; ++i) stepAt(*toy, {}, fps);
+        const InputEvent click[] = {InputEvent::mouseDown(kDropX + 0.25f, kDropY + 0.75f), InputEvent::mouseUp()};
+        stepAt(*toy, click, fps);  // iTime 1/15 s (4 steps)
+        for (int i = 0; i < int(fps * 0.5); ++i) stepAt(*toy, {}, fps);  // 0.5 s later (30 steps)
+        std::vector<float> field;
+        toy->player().readRgba32f(PassId::BufferD, field);
+        radii.push_back(ringRadius(field));
+        std::printf("%.0f fps: iFrame %d, ring at %d cells 0.5 s after the drop\n", fps, int(toy->player().frame()),
+                    radii.back());
+    }
+    ASSERT_EQ(radii.size(), 3u);
+    EXPECT_GE(radii[0], 15) << "the ring has not spread (about 0.67 cells a step, 30 steps)";
+    // The drop lands at the start of its frame: at 15 fps up to 3 steps (2 cells) earlier than at 60.
+    EXPECT_LE(std::abs(radii[1] - radii[0]), 2) << "30 fps spreads differently from 60 fps";
+    EXPECT_LE(std::abs(radii[2] - radii[0]), 3) << "15 fps spreads differently from 60 fps";
+}
+
 TEST_F(RipplePool, CalmPoolStaysFlatWithoutInput) {
     auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", 64, 36);
     ASSERT_TRUE(toy);
     for (int i = 0; i < 30; ++i) stepAt(*toy);
     std::vector<float> field;
-    toy->player().readRgba32f(PassId::BufferA, field);
+    toy->player().readRgba32f(PassId::BufferD, field);
     for (std::size_t i = 0; i < field.size(); i += 4) ASSERT_EQ(field[i], 0.0f) << "pixel " << i / 4;
 }
 
@@ -204,9 +243,9 @@ LakeColours lakeColours(const std::shared_ptr<GlContext>& context, std::initiali
     (void)toy->renderFrame(atTwo, {});
     std::vector<float> image;
     toy->player().readRgba32f(PassId::Image, image);
-    // Regions at 320x180 (x, y, w, h; origin bottom-left) from the shader's README: water 0.2-1.4 m
-    // deep over sand, and water whose floor lies 29 m down.
-    return {meanColour(image, kWidth, 160, 30, 40, 22), meanColour(image, kWidth, 210, 80, 80, 40)};
+    // Regions at 320x180 (x, y, w, h; origin bottom-left) from the shader's README: water 0.3-1.4 m
+    // deep over sand, and water whose floor lies 28.7-29.2 m down (depths read from the shader).
+    return {meanColour(image, kWidth, 158, 0, 40, 22), meanColour(image, kWidth, 240, 72, 80, 40)};
 }
 
 TEST_F(LakeOptics, PresetsGiveDifferentWaterAndTropicalDeepIsBluerThanShallow) {

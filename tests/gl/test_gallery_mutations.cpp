@@ -22,7 +22,7 @@ struct Mutation {
 
 const Mutation kMutations[] = {
     {"exp_sine_fresnel_f0_002", "exp_sine_ocean_t3",
-     {"image.glsl", "float F = 0.04 + 0.96 * pow(1.0 - cosV, 5.0);", "float F = 0.02 + 0.98 * pow(1.0 - cosV, 5.0);"}},
+     {"image.glsl", "float Fk = 0.04 + 0.96 * pow(", "float Fk = 0.02 + 0.98 * pow("}},
     {"exp_sine_black_block_10x10", "exp_sine_ocean_t3",
      {"image.glsl", "fragColor = vec4(pow(col, vec3(1.0 / 2.2)) + ditherNoise(fragCoord), 1.0);",
       "fragColor = vec4(pow(col, vec3(1.0 / 2.2)) + ditherNoise(fragCoord), 1.0);\n"
@@ -47,6 +47,8 @@ const Mutation kMutations[] = {
       "if (iMouse.z > 0.0) yaw = (0.5 - iMouse.x / iResolution.x) * 1.2;"}},
     {"caustics_pool_mouse_ignored", "caustics_pool_mouse",
      {"image.glsl", "if (iMouse.z > 0.0) yaw", "if (iMouse.z > 1e9) yaw"}},
+    {"ripple_pool_fresnel_constant", "ripple_pool_drag_f90",
+     {"image.glsl", "float F = 0.02 + 0.98 * pow(1.0 - cosi, 5.0);", "float F = 0.02;"}},
     {"coastal_foam_mouse_ignored", "coastal_foam_mouse",
      {"image.glsl", "if (iMouse.z > 0.0) yaw", "if (iMouse.z > 1e9) yaw"}},
 };
