@@ -183,14 +183,18 @@ TEST_F(WindowMode, RipplePoolDragLeavesRipplesWhereThePointerWent) {
     xdo("key --window " + window_ + " F6");
     ASSERT_TRUE(within(10, [&] { return title().find("paused") != std::string::npos; })) << title();
     const int before = shownFrame();
-    xdo("mousemove --window " + window_ + " 30 70 mousedown 1");
-    waitFrames(1);
-    for (int x = 40; x <= 100; x += 10) {
-        xdo("mousemove --window " + window_ + " " + std::to_string(x) + " 70");
-        waitFrames(1);
-    }
-    xdo("mouseup 1");
-    waitFrames(1);
+    // The frame counter is read before each input: read after it, the one frame that input paints
+    // may already be shown, and waiting for one more would wait forever (paused).
+    auto inputPaintsAFrame = [&](const std::string& input) {
+        const int from = shownFrame();
+        xdo(input);
+        EXPECT_TRUE(within(30, [&] { return shownFrame() >= from + 1; }))
+            << input << ": iFrame stayed at " << from << "\n" << title() << "\n" << toyhost_->log();
+    };
+    inputPaintsAFrame("mousemove --window " + window_ + " 30 70 mousedown 1");
+    for (int x = 40; x <= 100; x += 10)
+        inputPaintsAFrame("mousemove --window " + window_ + " " + std::to_string(x) + " 70");
+    inputPaintsAFrame("mouseup 1");
     const int painted = shownFrame() - before;
     const Image8 dragged = screenshot();
     EXPECT_LE(painted, 12) << "paused, only input paints frames";
