@@ -105,6 +105,20 @@ int main(int argc, char** argv) {
         measure("libpng+zlib-1 (before)", [&] { return libpngEncode(rows, w, h, 1); });
         measure("libpng+zlib-6 adaptive", [&] { return libpngEncode(rows, w, h, 6); });
         PngEncoder encoder;
+        for (PngFilter filter : {PngFilter::Adaptive, PngFilter::Sub, PngFilter::Up, PngFilter::Paeth}) {
+            const std::string name = std::string("fast-runs ") + filterName(filter);
+            measure(name.c_str(), [&] {
+                std::span<const std::uint8_t> s = encoder.encode(rows.data(), w, h, {1, filter, PngDeflate::FastRuns});
+                return std::vector<std::uint8_t>(s.begin(), s.end());
+            });
+        }
+        if (std::getenv("PNG_CANDIDATES_FAST_ONLY")) {
+            measure("libdeflate-1 none", [&] {
+                std::span<const std::uint8_t> s = encoder.encode(rows.data(), w, h, {1, PngFilter::None});
+                return std::vector<std::uint8_t>(s.begin(), s.end());
+            });
+            continue;
+        }
         for (int level : {0, 1, 4, 6, 12})
             for (PngFilter filter :
                  {PngFilter::None, PngFilter::Sub, PngFilter::Up, PngFilter::Paeth, PngFilter::Adaptive}) {
