@@ -260,7 +260,7 @@ std::size_t FastPngDeflate::compress(const std::uint8_t* const* rowsTopFirst, in
                                      std::vector<std::uint8_t>& out, std::size_t at) {
     const std::size_t pixels = static_cast<std::size_t>(width), rows = static_cast<std::size_t>(height);
     const std::size_t rowBytes = pixels * kBpp, lineBytes = rowBytes + 1;
-    const std::size_t bandRows = std::max<std::size_t>(1, kBandBytes / lineBytes);
+    const std::size_t bandRows = std::min(rows, std::max<std::size_t>(1, kBandBytes / lineBytes));
     // Worst case per band: 13 bits a byte, the header, the stored form's block headers, slack.
     const std::size_t bandBound = (bandRows * lineBytes * kMaxLiteralBits) / 8 + 1024 + (bandRows * lineBytes) / 65535 * 5;
     zeros_.assign(rowBytes, 0);

@@ -161,7 +161,7 @@ TEST(FastPngDeflate, ASampleThatMisleadsTheCodeStillRoundTripsAndIsCapped) {
     EXPECT_LT(size, p.rgba.size() + p.rgba.size() / 50);
 }
 
-TEST(FastPngDeflate, PngLevelOneUsesTheFastPathAndTwoUpLibdeflate) {
+TEST(FastPngDeflate, PngLevelOneIsTheFastPathAndTheOthersLibdeflate) {
     EXPECT_EQ(pngSettingsForLevel(1).deflate, PngDeflate::FastRuns);
     EXPECT_EQ(pngSettingsForLevel(0).deflate, PngDeflate::Libdeflate);
     for (int level = 2; level <= 9; ++level) EXPECT_EQ(pngSettingsForLevel(level).deflate, PngDeflate::Libdeflate);
