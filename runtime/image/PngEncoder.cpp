@@ -44,8 +44,8 @@ int filterType(PngFilter filter) {
 PngSettings pngSettingsForLevel(int level) {
     // Index = --png-level. Chosen from measurements on rendered 1920x1080 frames (ocean, a flat
     // UI, noise, bench-trivial; docs/performance.md "PNG encoder"): the fast path (sampled filter,
-    // runs only) costs about what storing the rows does, 3-7x less than libdeflate level 1, and is
-    // 30-50x smaller than unfiltered libdeflate 1 on smooth or flat frames (13% larger than zlib 1
+    // runs only) costs about what storing the rows does, 3-10x less than libdeflate level 1, and is
+    // 3-43x smaller than unfiltered libdeflate 1 on smooth or flat frames (13% larger than zlib 1
     // on a 3D render); libdeflate 1 with the per-row adaptive filter is smaller on all but noise;
     // the slower levels and filters buy the last percent.
     static constexpr std::array<PngSettings, 10> kLevels = {{
