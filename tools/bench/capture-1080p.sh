@@ -2,8 +2,9 @@
 # The capture acceptance benchmark (issue 19): bench-trivial at 1920x1080, whole processes
 # (start-up included), raw RGBA to stdout vs a PNG of every frame, run alternately PAIRS times;
 # prints the medians (wall and CPU seconds), the PNG/raw ratio, the PNG files' total size and
-# whether every PNG decodes (ffmpeg) to exactly the raw stream's pixels. With --base OTHER_TOYHOST the same pairs run for a
-# second binary (e.g. a build of an older commit) interleaved with the first.
+# whether every PNG decodes (ffmpeg) to exactly the raw stream's pixels. With --base OTHER_TOYHOST
+# the same pairs run for a second binary (e.g. a build of an older commit) interleaved with the
+# first.
 #
 # usage: tools/bench/capture-1080p.sh BUILD_DIR [--base TOYHOST] [--pairs N] [--frames N] [--png-level L]
 set -euo pipefail
