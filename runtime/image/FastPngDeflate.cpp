@@ -224,7 +224,7 @@ void writeDynamicHeader(BitWriter& w, bool final, const std::array<std::uint8_t,
         w.flush();
     }
 
-    for (int b = 0; b < 256; ++b) codes.literal[static_cast<std::size_t>(b)] = litCodes[static_cast<std::size_t>(b)] | std::uint32_t{litLengths[static_cast<std::size_t>(b)]} << 16;
+    for (std::size_t b = 0; b < 256; ++b) codes.literal[b] = litCodes[b] | std::uint32_t{litLengths[b]} << 16;
     codes.endOfBlock = litCodes[kEndOfBlock] | std::uint32_t{litLengths[kEndOfBlock]} << 16;
     const std::uint32_t dist = distCodes[3], distBits = distLengths[3];
     for (std::size_t m = 3; m <= 258; ++m) {
@@ -262,7 +262,8 @@ std::size_t FastPngDeflate::compress(const std::uint8_t* const* rowsTopFirst, in
     const std::size_t rowBytes = pixels * kBpp, lineBytes = rowBytes + 1;
     const std::size_t bandRows = std::min(rows, std::max<std::size_t>(1, kBandBytes / lineBytes));
     // Worst case per band: 13 bits a byte, the header, the stored form's block headers, slack.
-    const std::size_t bandBound = (bandRows * lineBytes * kMaxLiteralBits) / 8 + 1024 + (bandRows * lineBytes) / 65535 * 5;
+    const std::size_t bandBytesMax = bandRows * lineBytes;
+    const std::size_t bandBound = bandBytesMax * kMaxLiteralBits / 8 + 1024 + bandBytesMax / 65535 * 5;
     zeros_.assign(rowBytes, 0);
     sample_.resize(lineBytes);
     band_.resize(bandRows * lineBytes);

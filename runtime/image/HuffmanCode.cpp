@@ -24,7 +24,8 @@ void treeDepths(const std::vector<std::uint64_t>& weights, std::vector<int>& dep
         parent[a] = parent[b] = static_cast<int>(n + made);
     }
     std::vector<int> nodeDepth(2 * n - 1, 0);
-    for (std::size_t node = 2 * n - 2; node-- > 0;) nodeDepth[node] = nodeDepth[static_cast<std::size_t>(parent[node])] + 1;
+    for (std::size_t node = 2 * n - 2; node-- > 0;)
+        nodeDepth[node] = nodeDepth[static_cast<std::size_t>(parent[node])] + 1;
     depth.assign(nodeDepth.begin(), nodeDepth.begin() + static_cast<std::ptrdiff_t>(n));
 }
 }  // namespace

@@ -1,7 +1,8 @@
 // libFuzzer target: toyhost's PNG encoder (runtime/image/PngEncoder.h) on arbitrary RGBA images:
-// byte 0 picks the width (1..256 pixels: runs longer than a deflate match), byte 1 the deflate (the fast path or a libdeflate level)
-// and the row filter, the rest are the pixels (as many whole rows as there are). libpng must
-// decode every file to exactly those pixels; anything else traps.
+// byte 0 picks the width (1..256 pixels: runs longer than a deflate match), byte 1 the deflate
+// (the fast path or a libdeflate level) and the row filter, the rest are the pixels (as many
+// whole rows as there are). libpng must decode every file to exactly those pixels; anything else
+// traps.
 #include <cstddef>
 #include <cstdint>
 #include <vector>

@@ -113,7 +113,8 @@ TEST(FastPngDeflate, NoiseStaysNearItsRawSize) {
 
 TEST(FastPngDeflate, EveryByteValueInEveryChannelRoundTrips) {
     PngEncoder encoder;
-    expectRoundTrips(make("every byte", 256, 5, [](int x, int y, int c) { return (x + y * 3 + c * 64) & 255; }), encoder);
+    expectRoundTrips(make("every byte", 256, 5, [](int x, int y, int c) { return (x + y * 3 + c * 64) & 255; }),
+                     encoder);
     expectRoundTrips(make("every pair", 256, 256, [](int x, int y, int c) { return c % 2 ? x : y; }), encoder);
 }
 
@@ -156,7 +157,8 @@ TEST(FastPngDeflate, ASampleThatMisleadsTheCodeStillRoundTripsAndIsCapped) {
     // code then fits zeros, the noise codes badly, and the band is stored instead.
     PngEncoder encoder;
     std::uint32_t state = 7;
-    const Picture p = make("misleading sample", 512, 400, [&](int, int y, int) { return y % 16 == 0 ? 0 : static_cast<int>(lcg(state)); });
+    const Picture p = make("misleading sample", 512, 400,
+                           [&](int, int y, int) { return y % 16 == 0 ? 0 : static_cast<int>(lcg(state)); });
     const std::size_t size = expectRoundTrips(p, encoder);
     EXPECT_LT(size, p.rgba.size() + p.rgba.size() / 50);
 }
@@ -219,7 +221,8 @@ TEST(HuffmanCode, CanonicalCodesFollowRfc1951sExample) {
     const std::vector<std::uint16_t> msbFirst = {0b010, 0b011, 0b100, 0b101, 0b110, 0b00, 0b1110, 0b1111};
     for (std::size_t s = 0; s < lengths.size(); ++s) {
         std::uint16_t reversed = 0;
-        for (int b = 0; b < lengths[s]; ++b) reversed = static_cast<std::uint16_t>(reversed << 1 | ((codes[s] >> b) & 1));
+        for (int b = 0; b < lengths[s]; ++b)
+            reversed = static_cast<std::uint16_t>(reversed << 1 | ((codes[s] >> b) & 1));
         EXPECT_EQ(reversed, msbFirst[s]) << "symbol " << s;
     }
 }
