@@ -32,8 +32,8 @@ struct ImageScratch {
 
 // `rgba` holds width * height * 4 bytes, rows bottom first; the file gets the top row first.
 // `compressionLevel` is `--png-level`: 0 (stored) .. 9 (smallest), mapped to a row filter and a
-// libdeflate level by pngSettingsForLevel (image/PngEncoder.h); the default 1 favours speed when
-// capturing frames.
+// deflate (the fast path or a libdeflate level) by pngSettingsForLevel (image/PngEncoder.h); the
+// default 1 favours speed when capturing frames.
 Status writePng(const std::filesystem::path& path, int width, int height, std::span<const std::uint8_t> rgba,
                 int compressionLevel = 1, ImageScratch* scratch = nullptr);
 

@@ -6,9 +6,11 @@
 
 #include <libdeflate.h>
 
+#include "image/PngFilters.h"
+
 namespace toyhost {
 namespace {
-constexpr std::size_t kBpp = 4;  // RGBA8: the filters' "corresponding byte of the pixel to the left"
+constexpr std::size_t kBpp = 4;  // RGBA8
 
 void put32(std::uint8_t* at, std::uint32_t v) {
     at[0] = static_cast<std::uint8_t>(v >> 24);
@@ -17,61 +19,22 @@ void put32(std::uint8_t* at, std::uint32_t v) {
     at[3] = static_cast<std::uint8_t>(v);
 }
 
-// Appends a chunk: length, type, data, CRC-32 of type + data (PNG spec 5.3).
-void appendChunk(std::vector<std::uint8_t>& out, const char type[4], const std::uint8_t* data, std::size_t size) {
-    const std::size_t at = out.size();
-    out.resize(at + 12 + size);
-    put32(&out[at], static_cast<std::uint32_t>(size));
-    std::memcpy(&out[at + 4], type, 4);
-    if (size) std::memcpy(&out[at + 8], data, size);
-    put32(&out[at + 8 + size], libdeflate_crc32(0, &out[at + 4], 4 + size));
+// Completes the chunk whose `size` data bytes are already at at + 8: length, type and the CRC-32
+// of type + data (PNG spec 5.3). Returns the offset just past the chunk.
+std::size_t finishChunk(std::uint8_t* file, std::size_t at, const char type[4], std::size_t size) {
+    put32(&file[at], static_cast<std::uint32_t>(size));
+    std::memcpy(&file[at + 4], type, 4);
+    put32(&file[at + 8 + size], libdeflate_crc32(0, &file[at + 4], 4 + size));
+    return at + 12 + size;
 }
 
-std::uint8_t paeth(int a, int b, int c) {
-    const int p = a + b - c;
-    const int pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
-    if (pa <= pb && pa <= pc) return static_cast<std::uint8_t>(a);
-    return static_cast<std::uint8_t>(pb <= pc ? b : c);
-}
-
-// Filter type `type` (0 none .. 4 paeth) of `row` into `out`; `prior` is the row above (zeros
-// for the first row).
-void filterRow(int type, const std::uint8_t* row, const std::uint8_t* prior, std::uint8_t* out, std::size_t n) {
-    switch (type) {
-    case 0: std::memcpy(out, row, n); return;
-    case 1:
-        for (std::size_t i = 0; i < kBpp; ++i) out[i] = row[i];
-        for (std::size_t i = kBpp; i < n; ++i) out[i] = static_cast<std::uint8_t>(row[i] - row[i - kBpp]);
-        return;
-    case 2:
-        for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::uint8_t>(row[i] - prior[i]);
-        return;
-    case 3:
-        for (std::size_t i = 0; i < kBpp; ++i) out[i] = static_cast<std::uint8_t>(row[i] - (prior[i] >> 1));
-        for (std::size_t i = kBpp; i < n; ++i)
-            out[i] = static_cast<std::uint8_t>(row[i] - ((row[i - kBpp] + prior[i]) >> 1));
-        return;
-    default:
-        for (std::size_t i = 0; i < kBpp; ++i) out[i] = static_cast<std::uint8_t>(row[i] - prior[i]);
-        for (std::size_t i = kBpp; i < n; ++i)
-            out[i] = static_cast<std::uint8_t>(row[i] - paeth(row[i - kBpp], prior[i], prior[i - kBpp]));
-        return;
-    }
-}
-
-std::uint64_t signedMagnitude(const std::uint8_t* bytes, std::size_t n) {
-    std::uint64_t sum = 0;
-    for (std::size_t i = 0; i < n; ++i) sum += static_cast<std::uint64_t>(std::abs(static_cast<std::int8_t>(bytes[i])));
-    return sum;
-}
-
-// PNG filter type numbers of the fixed filters.
+// PNG filter type numbers of the fixed filters; -1 for the adaptive choice.
 int filterType(PngFilter filter) {
     switch (filter) {
-    case PngFilter::None: return 0;
-    case PngFilter::Sub: return 1;
-    case PngFilter::Up: return 2;
-    case PngFilter::Paeth: return 4;
+    case PngFilter::None: return kPngNone;
+    case PngFilter::Sub: return kPngSub;
+    case PngFilter::Up: return kPngUp;
+    case PngFilter::Paeth: return kPngPaeth;
     case PngFilter::Adaptive: break;
     }
     return -1;
@@ -80,14 +43,15 @@ int filterType(PngFilter filter) {
 
 PngSettings pngSettingsForLevel(int level) {
     // Index = --png-level. Chosen from measurements on rendered 1920x1080 frames (ocean, a flat
-    // UI, noise, bench-trivial; docs/performance.md "PNG encoder"): libdeflate level 1 on
-    // unfiltered rows is the fastest compressor on every frame and smaller than zlib level 1
-    // (what toyhost used before); the Up filter costs a little more and shrinks smooth or flat
-    // frames 10-40x; the adaptive choice and libdeflate's slow levels buy the last percent.
+    // UI, noise, bench-trivial; docs/performance.md "PNG encoder"): the fast path (sampled filter,
+    // runs only) costs about what storing the rows does, 3-10x less than libdeflate level 1, and is
+    // 3-43x smaller than unfiltered libdeflate 1 on smooth or flat frames (13% larger than zlib 1
+    // on a 3D render); libdeflate 1 with the per-row adaptive filter is smaller on all but noise;
+    // the slower levels and filters buy the last percent.
     static constexpr std::array<PngSettings, 10> kLevels = {{
         {0, PngFilter::None},       // 0: stored, no compression
-        {1, PngFilter::None},       // 1: fastest compression (the capture default)
-        {1, PngFilter::Up},
+        {1, PngFilter::Adaptive, PngDeflate::FastRuns},  // 1: fastest compression (the capture default)
+        {1, PngFilter::Adaptive},
         {4, PngFilter::Up},
         {4, PngFilter::Paeth},
         {6, PngFilter::Paeth},
@@ -110,10 +74,46 @@ PngEncoder& PngEncoder::operator=(PngEncoder&&) noexcept = default;
 
 std::span<const std::uint8_t> PngEncoder::encode(const std::uint8_t* const* rowsTopFirst, int width, int height,
                                                  PngSettings settings) {
+    static constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    constexpr std::size_t kIhdr = 8, kIdat = kIhdr + 25;
+    const int fixed = filterType(settings.filter);
+    auto ensure = [&](std::size_t size) {
+        if (file_.size() < size) file_.resize(size);
+    };
+    ensure(kIdat + 8);
+
+    std::size_t compressed = 0;
+    if (settings.deflate == PngDeflate::FastRuns) {
+        const int filter = fixed < 0 ? FastPngDeflate::kChooseFilter : fixed;
+        compressed = fast_.compress(rowsTopFirst, width, height, filter, file_, kIdat + 8) - (kIdat + 8);
+    } else {
+        compressed = deflateWithLibdeflate(rowsTopFirst, width, height, settings, fixed);
+        if (compressed == 0) return {};
+    }
+    ensure(kIdat + 8 + compressed + 4 + 12);
+
+    std::uint8_t* file = file_.data();
+    std::memcpy(file, kSignature, 8);
+    std::uint8_t* ihdr = file + kIhdr + 8;
+    put32(ihdr, static_cast<std::uint32_t>(width));
+    put32(ihdr + 4, static_cast<std::uint32_t>(height));
+    ihdr[8] = 8;   // bit depth
+    ihdr[9] = 6;   // colour type: RGBA
+    ihdr[10] = 0;  // deflate
+    ihdr[11] = 0;  // adaptive filtering (filter method 0)
+    ihdr[12] = 0;  // not interlaced
+    finishChunk(file, kIhdr, "IHDR", 13);
+    const std::size_t iend = finishChunk(file, kIdat, "IDAT", compressed);
+    fileSize_ = finishChunk(file, iend, "IEND", 0);
+    return {file_.data(), fileSize_};
+}
+
+std::size_t PngEncoder::deflateWithLibdeflate(const std::uint8_t* const* rowsTopFirst, int width, int height,
+                                              PngSettings settings, int fixed) {
     if (!compressor_ || compressorLevel_ != settings.deflateLevel) {
         compressor_.reset(libdeflate_alloc_compressor(settings.deflateLevel));
         compressorLevel_ = compressor_ ? settings.deflateLevel : -1;
-        if (!compressor_) return {};
+        if (!compressor_) return 0;
     }
     const std::size_t rowBytes = static_cast<std::size_t>(width) * kBpp;
     const std::size_t lineBytes = rowBytes + 1;
@@ -121,7 +121,6 @@ std::span<const std::uint8_t> PngEncoder::encode(const std::uint8_t* const* rows
     filtered_.resize(lineBytes * rows);
 
     std::vector<std::uint8_t> zeros;
-    const int fixed = filterType(settings.filter);
     std::array<std::vector<std::uint8_t>, 5> trial;
     if (fixed < 0)
         for (auto& t : trial) t.resize(rowBytes);
@@ -135,52 +134,28 @@ std::span<const std::uint8_t> PngEncoder::encode(const std::uint8_t* const* rows
         std::uint8_t* line = &filtered_[y * lineBytes];
         if (fixed >= 0) {
             line[0] = static_cast<std::uint8_t>(fixed);
-            filterRow(fixed, row, prior, line + 1, rowBytes);
+            pngFilterRow(fixed, row, prior, line + 1, rowBytes);
             continue;
         }
         int best = 0;
         std::uint64_t bestSum = ~std::uint64_t(0);
         for (int type = 0; type < 5; ++type) {
-            filterRow(type, row, prior, trial[type].data(), rowBytes);
-            const std::uint64_t sum = signedMagnitude(trial[type].data(), rowBytes);
+            pngFilterRow(type, row, prior, trial[static_cast<std::size_t>(type)].data(), rowBytes);
+            const std::uint64_t sum = pngSignedMagnitude(trial[static_cast<std::size_t>(type)].data(), rowBytes);
             if (sum < bestSum) {
                 bestSum = sum;
                 best = type;
             }
         }
         line[0] = static_cast<std::uint8_t>(best);
-        std::memcpy(line + 1, trial[best].data(), rowBytes);
+        std::memcpy(line + 1, trial[static_cast<std::size_t>(best)].data(), rowBytes);
     }
 
-    static constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    const std::size_t bound = libdeflate_zlib_compress_bound(compressor_.get(), filtered_.size());
-    file_.clear();
-    file_.reserve(8 + 25 + 12 + bound + 12);
-    file_.insert(file_.end(), kSignature, kSignature + 8);
-    std::uint8_t ihdr[13];
-    put32(ihdr, static_cast<std::uint32_t>(width));
-    put32(ihdr + 4, static_cast<std::uint32_t>(height));
-    ihdr[8] = 8;   // bit depth
-    ihdr[9] = 6;   // colour type: RGBA
-    ihdr[10] = 0;  // deflate
-    ihdr[11] = 0;  // adaptive filtering (filter method 0)
-    ihdr[12] = 0;  // not interlaced
-    appendChunk(file_, "IHDR", ihdr, sizeof ihdr);
-
     // The zlib stream is compressed straight into the IDAT chunk's data field.
-    const std::size_t idat = file_.size();
-    file_.resize(idat + 8 + bound);
-    const std::size_t compressed = libdeflate_zlib_compress(compressor_.get(), filtered_.data(), filtered_.size(),
-                                                            &file_[idat + 8], bound);
-    if (compressed == 0) return {};  // cannot happen with the bound above
-    put32(&file_[idat], static_cast<std::uint32_t>(compressed));
-    std::memcpy(&file_[idat + 4], "IDAT", 4);
-    file_.resize(idat + 8 + compressed);
-    const std::uint32_t crc = libdeflate_crc32(0, &file_[idat + 4], 4 + compressed);
-    file_.resize(file_.size() + 4);
-    put32(&file_[idat + 8 + compressed], crc);
-    appendChunk(file_, "IEND", nullptr, 0);
-    return file_;
+    constexpr std::size_t kData = 8 + 25 + 8;
+    const std::size_t bound = libdeflate_zlib_compress_bound(compressor_.get(), filtered_.size());
+    if (file_.size() < kData + bound) file_.resize(kData + bound);
+    return libdeflate_zlib_compress(compressor_.get(), filtered_.data(), filtered_.size(), &file_[kData], bound);
 }
 
 }  // namespace toyhost

@@ -1,4 +1,4 @@
-// PngEncoder: every --png-level and every row filter writes a standard PNG that libpng itself
+// PngEncoder: every --png-level, every row filter and both deflates write a standard PNG that libpng itself
 // decodes to exactly the pixels given (images with flat areas, gradients, noise and odd sizes).
 #include <gtest/gtest.h>
 
@@ -70,7 +70,7 @@ std::vector<const std::uint8_t*> rowTable(const Picture& p) {
 }
 }  // namespace
 
-TEST(PngEncoder, EveryFilterAndDeflateLevelRoundTripsExactlyThroughLibpng) {
+TEST(PngEncoder, EveryFilterAndDeflateRoundTripsExactlyThroughLibpng) {
     PngEncoder encoder;  // one encoder for all: switching level and filter between files
     for (const Picture& p : pictures()) {
         const std::vector<const std::uint8_t*> rows = rowTable(p);
@@ -84,6 +84,16 @@ TEST(PngEncoder, EveryFilterAndDeflateLevelRoundTripsExactlyThroughLibpng) {
                 EXPECT_EQ(h, p.height);
                 EXPECT_TRUE(decoded == p.rgba) << p.name << " deflate level " << level << " filter " << static_cast<int>(filter);
             }
+        for (PngFilter filter : {PngFilter::None, PngFilter::Sub, PngFilter::Up, PngFilter::Paeth, PngFilter::Adaptive}) {
+            const std::span<const std::uint8_t> file =
+                encoder.encode(rows.data(), p.width, p.height, {1, filter, PngDeflate::FastRuns});
+            ASSERT_FALSE(file.empty());
+            int w = 0, h = 0;
+            const std::vector<std::uint8_t> decoded = libpngDecode(file, w, h);
+            EXPECT_EQ(w, p.width);
+            EXPECT_EQ(h, p.height);
+            EXPECT_TRUE(decoded == p.rgba) << p.name << " fast path, filter " << static_cast<int>(filter);
+        }
     }
 }
 

@@ -76,8 +76,9 @@ void RunCommand::define(CLI::App& run) {
                    "frames on stdout: per frame width*height*4 bytes RGBA8, rows top first, no header");
     run.add_option("--png-level", pngLevel_,
                    "PNG compression 0 (stored) .. 9 (smallest) (default " + std::to_string(defaults::kPngLevel) +
-                       ", fastest compression); 1: libdeflate, rows unfiltered; 2-5: Up/Paeth filters; 6-9: "
-                       "adaptive filters, slower deflate (docs/performance.md)");
+                       ", fastest compression); 1: toyhost's fast path (sampled filter, runs only); 2: libdeflate 1, "
+                       "adaptive filter; 3-5: Up/Paeth filters; 6-9: adaptive filters, slower deflate "
+                       "(docs/performance.md)");
     run.add_option("--exr-compression", exrCompression_,
                    "EXR compression: " + exrCompressionNames() +
                        " (default none: the site's export; none..piz are lossless, pxr24 keeps 24 bits of a float, "
