@@ -79,12 +79,15 @@ std::vector<std::string> ffmpegArguments(const VideoRequest& r) {
     } else {
         // Hardware encoders take 4:2:0 frames (VAAPI uploaded to the device); their quality
         // option is not -crf, so --video-quality goes only where it was asked.
-        if (codec == "h264_vaapi") args.insert(args.end(), {"-vf", "format=nv12,hwupload"});
+        if (codec == "h264_vaapi") args.insert(args.end(), {"-vf", "vflip,format=nv12,hwupload"});
         else if (codec == "h264_qsv") args.insert(args.end(), {"-pix_fmt", "nv12"});
         else if (codec == "h264_nvenc") args.insert(args.end(), {"-pix_fmt", "yuv420p"});
         if (r.settings.preset) args.insert(args.end(), {"-preset", *r.settings.preset});
         if (r.settings.quality) args.insert(args.end(), {"-crf", std::to_string(*r.settings.quality)});
     }
+    // Frames go down the pipe as GL reads them, bottom row first; ffmpeg's vflip turns them by
+    // stepping its row pointer backwards, so toyhost makes no flipped copy of each frame.
+    if (codec != "h264_vaapi") args.insert(args.end(), {"-vf", "vflip"});
     // The same frames give the same bytes: no random Matroska UIDs, no version strings.
     args.insert(args.end(), {"-fflags", "+bitexact", "-flags:v", "+bitexact"});
     // The output is a temporary name without the real extension, so the container is explicit.
@@ -151,11 +154,10 @@ Error VideoSink::ffmpegFailed(const std::string& what) const {
 
 Status VideoSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
     Clock::time_point at = Clock::now();
-    const std::span<const std::uint8_t> topFirst =
-        rowsTopFirst(rgba8BottomUp(frame, scratch.bytes), frame.width, frame.height, scratch.rows);
+    const std::span<const std::uint8_t> bottomUp = rgba8BottomUp(frame, scratch.bytes);
     at = addEncodeTime(at);
     // Writing into ffmpeg's pipe waits while ffmpeg encodes: this is where a video's encoding shows.
-    Status written = ffmpeg_->write(std::as_bytes(topFirst));
+    Status written = ffmpeg_->write(std::as_bytes(bottomUp));
     addWriteTime(at);
     if (!written) {
         // ffmpeg stopped reading: it failed; wait for it so its log is complete.

@@ -52,6 +52,8 @@ TEST(VideoArguments, Mp4IsH264FromRawRgbaOnStdin) {
                                 "-i", "pipe:0"}));
     EXPECT_TRUE(contains(args, {"-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt", "yuv420p"}));
     EXPECT_TRUE(contains(args, {"-f", "mp4"}));
+    // Frames go down the pipe bottom row first (as GL reads them) and ffmpeg turns them: no copy.
+    EXPECT_TRUE(contains(args, {"-vf", "vflip"}));
 }
 
 TEST(VideoArguments, OddSizesKeepFullChromaAndQualityIsTheCrf) {
@@ -75,6 +77,12 @@ TEST(VideoArguments, WebmIsVp9AndACustomCodecGetsOnlyWhatWasAsked) {
     // Bit-exact output: no random Matroska UIDs, so the same frames give the same file.
     EXPECT_TRUE(contains(mkv, {"-fflags", "+bitexact", "-flags:v", "+bitexact"}));
     EXPECT_EQ(std::count(mkv.begin(), mkv.end(), "-crf"), 0);
+    EXPECT_TRUE(contains(mkv, {"-vf", "vflip"}));
+    VideoSettings vaapi;
+    vaapi.codec = "h264_vaapi";
+    const auto hw = ffmpegArguments({"x", ".mp4", 64, 64, 60, vaapi});
+    EXPECT_TRUE(contains(hw, {"-vf", "vflip,format=nv12,hwupload"}));
+    EXPECT_EQ(std::count(hw.begin(), hw.end(), "-vf"), 1);
 }
 
 TEST(ProgressLine, ShowsFramesRateEtaAndBytes) {
@@ -101,7 +109,7 @@ TEST(VideoArguments, PresetPassesThroughAndHardwareEncodersGetTheirPixelPath) {
     vaapi.codec = "h264_vaapi";
     const auto args = ffmpegArguments({"/tmp/o", ".mp4", 64, 64, 30, vaapi});
     EXPECT_TRUE(contains(args, {"-vaapi_device", "/dev/dri/renderD128"}));
-    EXPECT_TRUE(contains(args, {"-c:v", "h264_vaapi", "-vf", "format=nv12,hwupload"}));
+    EXPECT_TRUE(contains(args, {"-c:v", "h264_vaapi", "-vf", "vflip,format=nv12,hwupload"}));
     VideoSettings nvenc;
     nvenc.codec = "h264_nvenc";
     nvenc.preset = "p1";
