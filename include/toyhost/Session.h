@@ -92,6 +92,33 @@ public:
     Status read(std::string_view pass, std::span<std::uint8_t> out, RowOrder order = RowOrder::TopFirst) const;
     Status read(std::string_view pass, std::span<float> out, RowOrder order = RowOrder::TopFirst) const;
 
+    // Queued reads, for rendering many frames into memory (what toyhost's own recording does):
+    // queueRead() starts reading a pass's latest output back and returns at once; takeRead() waits
+    // for the oldest queued read and copies it into `out`. Step the next frame in between and it
+    // renders while the previous one is read back, instead of after it as with step(); read().
+    // The values equal what read() gives for the same frame and type (a buffer's floats clamped
+    // and rounded for 8-bit, Image's levels / 255 as floats). Reads are taken in the order they
+    // were queued; at most kMaxQueuedReads wait at once; each keeps the size it was queued at
+    // (resize(), restart() and reload() in between do not change it). Added as new members only:
+    // programs built against the header without them keep working with this library.
+    struct QueuedRead {
+        int frame = 0;  // iFrame of the frame read (-1: queued before the first frame)
+        int width = 0;
+        int height = 0;
+    };
+    static constexpr int kMaxQueuedReads = 4;
+    Result<QueuedRead> queueRead(std::string_view pass);
+    int queuedReads() const;
+    // The read takeRead() gives next, if any, and whether it is complete (takeRead() would not
+    // wait for the GPU).
+    std::optional<QueuedRead> nextQueuedRead() const;
+    bool nextQueuedReadDone() const;
+    // `out` must hold exactly width * height * 4 values of that read.
+    Result<QueuedRead> takeRead(std::span<std::uint8_t> out, RowOrder order = RowOrder::TopFirst);
+    Result<QueuedRead> takeRead(std::span<float> out, RowOrder order = RowOrder::TopFirst);
+    // Forgets every queued read not taken.
+    void dropQueuedReads();
+
     // The Image output as a texture of the session's GL context (for sampling in the caller's own
     // shaders: bottom row first, as GL textures are), valid until the next step() or resize().
     unsigned int imageTexture() const;

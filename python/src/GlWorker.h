@@ -38,8 +38,11 @@ public:
         return done.get();
     }
 
-private:
+    // Hands `job` over without waiting for it (it runs after the jobs handed over before it). The
+    // job must not throw. Same conditions as call().
     void post(std::function<void()> job);
+
+private:
     void serve();
 
     std::mutex mutex_;
