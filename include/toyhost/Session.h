@@ -64,7 +64,10 @@ struct Reloaded {
 
 class TOYHOST_API Session {
 public:
-    // With toyhost's own headless EGL context (no display needed).
+    // With toyhost's own headless EGL context (no display needed). The environment variable
+    // TOYHOST_EGL_PLATFORM chooses its EGL platform as for the toyhost commands: surfaceless
+    // (Mesa), device (EGL_EXT_platform_device, e.g. NVIDIA's headless driver) or automatic (unset:
+    // surfaceless when available, else the first device); another value is a usage error.
     static Result<std::unique_ptr<Session>> createHeadless(const Shadertoy& shadertoy, const SessionSettings& settings = {});
     // On the caller's OpenGL ES 3 context, current on this thread. Every call that renders saves
     // the GL state toyhost touches (framebuffer bindings, program, viewport, active texture and

@@ -249,3 +249,21 @@ def test_reload_recompiles_without_restarting(tmp_path):
         assert broken.problems[0].pass_ == "Image"
         session.step()
         assert tuple(session.frame()[0, 0, :2]) == (5, 102), "the last good program runs"
+
+
+def test_toyhost_egl_platform_chooses_the_platform_as_for_the_cli(rows, monkeypatch):
+    monkeypatch.setenv("TOYHOST_EGL_PLATFORM", "wayland")
+    with pytest.raises(toyhost.UsageError, match="TOYHOST_EGL_PLATFORM=wayland"):
+        toyhost.Session(rows, size=(16, 8))
+    monkeypatch.setenv("TOYHOST_EGL_PLATFORM", "surfaceless")
+    with toyhost.Session(rows, size=(16, 8)) as session:
+        assert session.backend.startswith("EGL surfaceless;"), session.backend
+    monkeypatch.setenv("TOYHOST_EGL_PLATFORM", "device")
+    try:
+        session = toyhost.Session(rows, size=(16, 8))
+    except toyhost.GlError as error:  # an EGL without the device platform
+        pytest.skip(f"no EGL device platform here: {error}")
+    with session:
+        assert session.backend.startswith("EGL device"), session.backend
+        session.step()
+        assert session.frame()[0, 0].tolist() == [255, 0, 0, 255], "it renders there too"

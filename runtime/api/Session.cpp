@@ -162,6 +162,10 @@ Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const S
         impl->watchdog = std::make_unique<Watchdog>(limits);
     }
     if (headless) {
+        // The environment chooses the EGL platform, as for every toyhost command.
+        Result<EglPlatform> platform = eglPlatformFromEnvironment();
+        if (!platform) return platform.error();
+        plan->options.eglPlatform = *platform;
         HeadlessOptions headlessOptions;
         headlessOptions.platform = plan->options.eglPlatform;
         Result<std::shared_ptr<GlContext>> context = createHeadlessContext(headlessOptions);

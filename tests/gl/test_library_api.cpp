@@ -141,6 +141,40 @@ TEST(LibraryApi, QueuedReadsEqualSynchronousReads) {
     });
 }
 
+// TOYHOST_EGL_PLATFORM chooses a headless session's EGL platform as it does the CLI's.
+TEST(LibraryApi, TheEnvironmentChoosesTheEglPlatform) {
+    Result<Shadertoy> probe = Shadertoy::load(sourceDir() / "shadertoys/pingpong-probe");
+    ASSERT_TRUE(probe.ok()) << probe.error().text();
+    const char* before = std::getenv("TOYHOST_EGL_PLATFORM");
+    const std::string kept = before ? before : "";
+    auto backendWith = [&](const char* platform) -> Result<std::string> {
+        setenv("TOYHOST_EGL_PLATFORM", platform, 1);
+        Result<std::string> backend = Error("not run", Code::Internal);
+        runOnGlThread([&] {
+            Result<std::unique_ptr<Session>> session = Session::createHeadless(*probe);
+            if (session) backend = (*session)->backend();
+            else backend = session.error();
+        });
+        return backend;
+    };
+    Result<std::string> wrong = backendWith("wayland");
+    Result<std::string> surfaceless = backendWith("surfaceless");
+    Result<std::string> device = backendWith("device");
+    if (before) setenv("TOYHOST_EGL_PLATFORM", kept.c_str(), 1);
+    else unsetenv("TOYHOST_EGL_PLATFORM");
+
+    ASSERT_FALSE(wrong.ok()) << "TOYHOST_EGL_PLATFORM=wayland was not refused";
+    EXPECT_EQ(wrong.error().first().code, Code::Usage);
+    EXPECT_NE(wrong.error().text().find("TOYHOST_EGL_PLATFORM=wayland"), std::string::npos) << wrong.error().text();
+    ASSERT_TRUE(surfaceless.ok()) << surfaceless.error().text();
+    EXPECT_EQ(surfaceless->rfind("EGL surfaceless;", 0), 0u) << *surfaceless;
+    // The device platform, where this machine's EGL has it (Mesa's has, on llvmpipe too).
+    if (!device.ok() && device.error().first().code == Code::GlEgl)
+        GTEST_SKIP() << "no EGL device platform here: " << device.error().text();
+    ASSERT_TRUE(device.ok()) << device.error().text();
+    EXPECT_EQ(device->rfind("EGL device", 0), 0u) << "TOYHOST_EGL_PLATFORM=device was not used: " << *device;
+}
+
 class LibraryOnCurrentContext : public GlTest {};
 
 // The caller's context: toyhost renders into its own targets and leaves the caller's state as it
