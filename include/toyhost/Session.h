@@ -158,4 +158,13 @@ private:
 // session created there must also be used and destroyed there).
 TOYHOST_API void runOnGlThread(const std::function<void()>& job);
 
+// What happens when a session's frameTimeout or compileTimeout passes while its thread is still
+// inside GL, which cannot be interrupted. By default nothing more: the call returns the error once
+// the draw or compile ends, however long that takes. A program that would rather end at once sets
+// a handler (toyhost compare prints the diagnostic and exits with 124, as toyhost run does). It is
+// called on a watchdog thread, at most once per session, with the diagnostic (its file is the
+// shadertoy's), while the session's thread is still stuck; it may end the process. Process-wide;
+// an empty handler restores the default.
+TOYHOST_API void setWatchdogExpiryHandler(std::function<void(const Diagnostic&)> handler);
+
 }  // namespace toyhost

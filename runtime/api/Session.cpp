@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <mutex>
 #include <optional>
 #include <type_traits>
 
@@ -27,6 +28,13 @@ public:
     void notice(const Diagnostic& notice) override { kept.push_back(notice); }
     std::vector<Diagnostic> kept;
 };
+
+// setWatchdogExpiryHandler's handler, read by every session's watchdog when a limit passes.
+std::mutex expiryMutex;
+std::function<void(const Diagnostic&)>& expiryHandler() {
+    static std::function<void(const Diagnostic&)> handler;
+    return handler;
+}
 
 std::optional<PassId> passNamed(std::string_view name) {
     for (PassId id : {PassId::BufferA, PassId::BufferB, PassId::BufferC, PassId::BufferD, PassId::Image})
@@ -159,6 +167,17 @@ Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const S
         WatchdogDesc limits;
         limits.frameLimit = settings.frameTimeout;
         limits.compileLimit = settings.compileTimeout;
+        limits.expire = [file = shadertoy.path().string()](const Diagnostic& expired, int) {
+            std::function<void(const Diagnostic&)> handler;
+            {
+                std::lock_guard<std::mutex> lock(expiryMutex);
+                handler = expiryHandler();
+            }
+            if (!handler) return;
+            Diagnostic named = expired;
+            if (named.file.empty()) named.file = file;
+            handler(named);
+        };
         impl->watchdog = std::make_unique<Watchdog>(limits);
     }
     if (headless) {
@@ -352,5 +371,10 @@ Result<std::vector<float>> Session::renderSound(double seconds) {
 const std::vector<Diagnostic>& Session::notices() const { return impl_->notices.kept; }
 
 std::string Session::backend() const { return impl_->context->describe(); }
+
+void setWatchdogExpiryHandler(std::function<void(const Diagnostic&)> handler) {
+    std::lock_guard<std::mutex> lock(expiryMutex);
+    expiryHandler() = std::move(handler);
+}
 
 }  // namespace toyhost
