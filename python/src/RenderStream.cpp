@@ -1,6 +1,7 @@
 // RenderStream: the worker's side (one job per frame) and Python's (next, cancel).
 #include "RenderStream.h"
 
+#include <new>
 #include <span>
 
 #include "Errors.h"
@@ -46,9 +47,13 @@ void RenderStream::renderOne() {
     }
     // Reads that are complete are taken (without waiting); the oldest is waited for only when
     // kInFlight wait, or when every frame was rendered: the frames just queued render meanwhile.
-    while (done && session_.queuedReads() > 0 &&
-           (next_ >= frames || session_.queuedReads() > kInFlight || session_.nextQueuedReadDone()))
-        done = takeOne();
+    try {
+        while (done && session_.queuedReads() > 0 &&
+               (next_ >= frames || session_.queuedReads() > kInFlight || session_.nextQueuedReadDone()))
+            done = takeOne();
+    } catch (const std::bad_alloc&) {  // a frame's memory: the job must not throw
+        done = Error("render: out of memory for a frame's pixels", Code::Internal);
+    }
     if (!done) dropReads();
 
     std::lock_guard<std::mutex> lock(mutex_);
