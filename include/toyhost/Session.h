@@ -64,7 +64,10 @@ struct Reloaded {
 
 class TOYHOST_API Session {
 public:
-    // With toyhost's own headless EGL context (no display needed).
+    // With toyhost's own headless EGL context (no display needed). The environment variable
+    // TOYHOST_EGL_PLATFORM chooses its EGL platform as for the toyhost commands: surfaceless
+    // (Mesa), device (EGL_EXT_platform_device, e.g. NVIDIA's headless driver) or automatic (unset:
+    // surfaceless when available, else the first device); another value is a usage error.
     static Result<std::unique_ptr<Session>> createHeadless(const Shadertoy& shadertoy, const SessionSettings& settings = {});
     // On the caller's OpenGL ES 3 context, current on this thread. Every call that renders saves
     // the GL state toyhost touches (framebuffer bindings, program, viewport, active texture and
@@ -91,6 +94,33 @@ public:
     // width() * height() * 4 values.
     Status read(std::string_view pass, std::span<std::uint8_t> out, RowOrder order = RowOrder::TopFirst) const;
     Status read(std::string_view pass, std::span<float> out, RowOrder order = RowOrder::TopFirst) const;
+
+    // Queued reads, for rendering many frames into memory (what toyhost's own recording does):
+    // queueRead() starts reading a pass's latest output back and returns at once; takeRead() waits
+    // for the oldest queued read and copies it into `out`. Step the next frame in between and it
+    // renders while the previous one is read back, instead of after it as with step(); read().
+    // The values equal what read() gives for the same frame and type (a buffer's floats clamped
+    // and rounded for 8-bit, Image's levels / 255 as floats). Reads are taken in the order they
+    // were queued; at most kMaxQueuedReads wait at once; each keeps the size it was queued at
+    // (resize(), restart() and reload() in between do not change it). Added as new members only:
+    // programs built against the header without them keep working with this library.
+    struct QueuedRead {
+        int frame = 0;  // iFrame of the frame read (-1: queued before the first frame)
+        int width = 0;
+        int height = 0;
+    };
+    static constexpr int kMaxQueuedReads = 4;
+    Result<QueuedRead> queueRead(std::string_view pass);
+    int queuedReads() const;
+    // The read takeRead() gives next, if any, and whether it is complete (takeRead() would not
+    // wait for the GPU).
+    std::optional<QueuedRead> nextQueuedRead() const;
+    bool nextQueuedReadDone() const;
+    // `out` must hold exactly width * height * 4 values of that read.
+    Result<QueuedRead> takeRead(std::span<std::uint8_t> out, RowOrder order = RowOrder::TopFirst);
+    Result<QueuedRead> takeRead(std::span<float> out, RowOrder order = RowOrder::TopFirst);
+    // Forgets every queued read not taken.
+    void dropQueuedReads();
 
     // The Image output as a texture of the session's GL context (for sampling in the caller's own
     // shaders: bottom row first, as GL textures are), valid until the next step() or resize().
@@ -127,5 +157,14 @@ private:
 // Runs `job` on a thread with a stack large enough for Mesa's GLSL compiler and waits for it (a
 // session created there must also be used and destroyed there).
 TOYHOST_API void runOnGlThread(const std::function<void()>& job);
+
+// What happens when a session's frameTimeout or compileTimeout passes while its thread is still
+// inside GL, which cannot be interrupted. By default nothing more: the call returns the error once
+// the draw or compile ends, however long that takes. A program that would rather end at once sets
+// a handler (toyhost compare prints the diagnostic and exits with 124, as toyhost run does). It is
+// called on a watchdog thread, at most once per session, with the diagnostic (its file is the
+// shadertoy's), while the session's thread is still stuck; it may end the process. Process-wide;
+// an empty handler restores the default.
+TOYHOST_API void setWatchdogExpiryHandler(std::function<void(const Diagnostic&)> handler);
 
 }  // namespace toyhost

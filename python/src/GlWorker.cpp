@@ -3,6 +3,8 @@
 
 #include <unistd.h>
 
+#include <chrono>
+
 #include <toyhost/Session.h>
 
 namespace toyhost::python {
@@ -33,6 +35,7 @@ void GlWorker::post(std::function<void()> job) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         jobs_.push_back(std::move(job));
+        pending_.fetch_add(1, std::memory_order_release);
     }
     wake_.notify_one();
 }
@@ -41,11 +44,17 @@ void GlWorker::serve() {
     for (;;) {
         std::function<void()> job;
         {
+            // A caller usually hands the next job over within microseconds (step() then frame()):
+            // look for it briefly before sleeping, so that it needs no wake-up.
+            const auto until = std::chrono::steady_clock::now() + kSpin;
+            while (pending_.load(std::memory_order_acquire) == 0 && std::chrono::steady_clock::now() < until)
+                std::this_thread::yield();
             std::unique_lock<std::mutex> lock(mutex_);
             wake_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });
             if (jobs_.empty()) return;  // stopping, and nothing left to do
             job = std::move(jobs_.front());
             jobs_.pop_front();
+            pending_.fetch_sub(1, std::memory_order_release);
         }
         job();
     }

@@ -4,6 +4,8 @@
 // caller releases the GIL while it waits. No GL context itself: the jobs make and use one.
 #pragma once
 
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <deque>
 #include <functional>
@@ -35,11 +37,25 @@ public:
         auto task = std::make_shared<std::packaged_task<Value()>>(std::move(job));
         std::future<Value> done = task->get_future();
         post([task] { (*task)(); });
+        const auto until = std::chrono::steady_clock::now() + kSpin;
+        while (done.wait_for(std::chrono::seconds(0)) != std::future_status::ready &&
+               std::chrono::steady_clock::now() < until)
+            std::this_thread::yield();
         return done.get();
     }
 
-private:
+    // Hands `job` over without waiting for it (it runs after the jobs handed over before it). The
+    // job must not throw. Same conditions as call().
     void post(std::function<void()> job);
+
+    // How long either side looks for the other's answer (yielding the core) before sleeping on
+    // it. A wake-up from sleep costs tens of microseconds on an idle virtual machine, twice per
+    // call; step(); frame() on a trivial 320x180 shader measured 0.28 ms/frame with 30 us against
+    // 0.34-0.39 without (the CLI: 0.36-0.39), the ocean unchanged (docs/performance.md).
+    static constexpr std::chrono::microseconds kSpin{50};
+
+private:
+    std::atomic<int> pending_{0};
     void serve();
 
     std::mutex mutex_;

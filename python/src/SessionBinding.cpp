@@ -20,6 +20,7 @@
 #include "Errors.h"
 #include "Gil.h"
 #include "GlWorker.h"
+#include "RenderStream.h"
 
 namespace py = pybind11;
 
@@ -68,6 +69,10 @@ public:
             (void)session_.release();
             return;
         }
+        // Frames being rendered ahead stop first (their jobs never touch the session after this).
+        for (std::weak_ptr<RenderStream>& stream : streams_)
+            if (std::shared_ptr<RenderStream> alive = stream.lock()) alive->cancel();
+        streams_.clear();
         // A destructor may run without the GIL held (interpreter shutdown); release only when held.
         if (PyGILState_Check()) onGlThread([&] { session_.reset(); });
         else worker_.call([&] { session_.reset(); });
@@ -85,19 +90,15 @@ public:
         });
     }
 
-    // step() at the fixed time step and read(): one trip to the worker for both (render()).
-    template <class T>
-    std::pair<int, py::array_t<T>> stepAndRead(const std::vector<InputEvent>& events, const std::string& pass) {
+    // render(): frames rendered ahead on the worker, taken by RenderStream.next().
+    std::shared_ptr<RenderStream> render(std::vector<InputEvent> events, int frames, int every, const std::string& pass,
+                                         bool floats) {
         Session& s = open();
-        py::array_t<T> pixels({height_, width_, 4});
-        std::span<T> out(pixels.mutable_data(), static_cast<std::size_t>(pixels.size()));
-        const int index = onGlThread([&] {
-            const int rendered = s.frame();
-            throwIfFailed(s.step(events));
-            throwIfFailed(s.read(pass, out, RowOrder::TopFirst));
-            return rendered;
-        });
-        return {index, std::move(pixels)};
+        std::erase_if(streams_, [](const std::weak_ptr<RenderStream>& stream) { return stream.expired(); });
+        RenderRequest request{std::move(events), frames, every, pass, floats};
+        std::shared_ptr<RenderStream> stream = RenderStream::start(worker_, s, std::move(request));
+        streams_.push_back(stream);
+        return stream;
     }
 
     template <class T>
@@ -184,9 +185,26 @@ private:
 
     GlWorker worker_;
     std::unique_ptr<Session> session_;  // created, used and destroyed on worker_
+    std::vector<std::weak_ptr<RenderStream>> streams_;  // render() iterations, cancelled at close()
     int width_ = 0;  // the canvas, kept here so that allocating a frame's array needs no round trip
     int height_ = 0;
 };
+
+// The next frame of a render() as (iFrame, array), the array owning the frame's memory; None at the
+// end.
+template <class T>
+py::object arrayOwning(int frame, int width, int height, std::unique_ptr<T[]> values) {
+    T* data = values.get();
+    py::capsule owner(values.release(), [](void* p) { delete[] static_cast<T*>(p); });
+    return py::make_tuple(frame, py::array_t<T>({height, width, 4}, data, owner));
+}
+
+py::object nextRendered(RenderStream& stream) {
+    std::optional<RenderedFrame> frame = withoutGil([&] { return stream.next(); });
+    if (!frame) return py::none();
+    if (frame->floats) return arrayOwning(frame->frame, frame->width, frame->height, std::move(frame->floats));
+    return arrayOwning(frame->frame, frame->width, frame->height, std::move(frame->bytes));
+}
 
 SessionSettings settingsFrom(int width, int height, double fps, double startTime, const std::string& date,
                              const std::vector<std::filesystem::path>& mediaFolders,
@@ -219,6 +237,10 @@ void bindSession(py::module_& module) {
                    " structure_changed=" + (r.structureChanged ? "True" : "False") + " recompiled=" +
                    std::to_string(r.recompiled.size()) + " problems=" + std::to_string(r.problems.size()) + ">";
         });
+    py::class_<RenderStream, std::shared_ptr<RenderStream>>(module, "RenderStream",
+                                                            "Session.render()'s frames, rendered ahead.")
+        .def("next", &nextRendered, "The next (iframe, array), or None after the last.")
+        .def("cancel", &RenderStream::cancel, "Stops rendering; frames not taken are dropped.");
     py::class_<NativeSession>(module, "NativeSession")
         .def(py::init([](const Shadertoy& shadertoy, int width, int height, double fps, double startTime,
                          const std::string& date, const std::vector<std::filesystem::path>& mediaFolders,
@@ -235,8 +257,8 @@ void bindSession(py::module_& module) {
         .def_property_readonly("closed", &NativeSession::closed)
         .def("step", &NativeSession::step, py::arg("events"), py::arg("time"), py::arg("time_delta"),
              py::arg("frame_rate"))
-        .def("step_read_uint8", &NativeSession::stepAndRead<std::uint8_t>, py::arg("events"), py::arg("pass_"))
-        .def("step_read_float32", &NativeSession::stepAndRead<float>, py::arg("events"), py::arg("pass_"))
+        .def("render", &NativeSession::render, py::arg("events"), py::arg("frames"), py::arg("every"),
+             py::arg("pass_"), py::arg("floats"), py::keep_alive<0, 1>())
         .def("read_uint8", &NativeSession::read<std::uint8_t>, py::arg("pass_"))
         .def("read_float32", &NativeSession::read<float>, py::arg("pass_"))
         .def("read_into_uint8", &NativeSession::readInto<std::uint8_t>, py::arg("pass_"), py::arg("out"))

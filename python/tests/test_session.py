@@ -157,6 +157,28 @@ def test_render_yields_the_frames_the_cli_captures(probe):
         assert session.next_frame == 15, "nothing rendered for a pass that does not exist"
 
 
+def test_render_runs_ahead_of_the_loop_and_stops_when_left(probe):
+    with toyhost.Session(probe, size=(32, 16), date=DATE) as session:
+        for index, image in session.render(100):
+            assert column(image, 3)[1] == index, "each array is its own frame's, while later ones render"
+            if index == 3:
+                break
+        ahead = session.next_frame
+        assert 4 <= ahead <= 4 + 5, f"at most 5 frames rendered past the last one yielded, not {ahead - 4}"
+        more = list(session.render(2))
+        assert [index for index, _ in more] == [ahead, ahead + 1], "the next render goes on from there"
+        assert column(more[1][1], 3)[1] == ahead + 1
+        session.step()
+        assert column(session.frame(), 3)[1] == ahead + 2, "no read of the render was left queued"
+    # Closing the session while a render is under way ends it with an error, not a hang.
+    session = toyhost.Session(probe, size=(32, 16), date=DATE)
+    frames = session.render(1000)
+    assert next(frames)[0] == 0
+    session.close()
+    with pytest.raises(toyhost.UsageError, match="closed"):
+        next(frames)
+
+
 def test_time_restart_and_resize(tmp_path):
     clock = write_shadertoy(tmp_path / "clock", {"Image": (
         "void mainImage(out vec4 c, in vec2 p) {\n"
@@ -227,3 +249,21 @@ def test_reload_recompiles_without_restarting(tmp_path):
         assert broken.problems[0].pass_ == "Image"
         session.step()
         assert tuple(session.frame()[0, 0, :2]) == (5, 102), "the last good program runs"
+
+
+def test_toyhost_egl_platform_chooses_the_platform_as_for_the_cli(rows, monkeypatch):
+    monkeypatch.setenv("TOYHOST_EGL_PLATFORM", "wayland")
+    with pytest.raises(toyhost.UsageError, match="TOYHOST_EGL_PLATFORM=wayland"):
+        toyhost.Session(rows, size=(16, 8))
+    monkeypatch.setenv("TOYHOST_EGL_PLATFORM", "surfaceless")
+    with toyhost.Session(rows, size=(16, 8)) as session:
+        assert session.backend.startswith("EGL surfaceless;"), session.backend
+    monkeypatch.setenv("TOYHOST_EGL_PLATFORM", "device")
+    try:
+        session = toyhost.Session(rows, size=(16, 8))
+    except toyhost.GlError as error:  # an EGL without the device platform
+        pytest.skip(f"no EGL device platform here: {error}")
+    with session:
+        assert session.backend.startswith("EGL device"), session.backend
+        session.step()
+        assert session.frame()[0, 0].tolist() == [255, 0, 0, 255], "it renders there too"

@@ -15,6 +15,10 @@ toyhost.Error subclasses carrying toyhost's diagnostics (file, pass, line, code.
 
 import os
 
+# Imported here, with the module, rather than by the first frame: importing numpy takes 70-90 ms,
+# which would otherwise land on whatever first makes an array (a frame, in a timed loop).
+import numpy
+
 from . import _toyhost
 from ._compare import CompareReport, FrameDifference, compare, compare_images
 from ._errors import (CompileError, Error, GlError, InputError, InternalError, ManifestError, OutputError,
@@ -96,8 +100,6 @@ class Session:
         into instead of a new one (C-contiguous, writeable), returned."""
         dtype = _dtype_name(dtype)
         if out is not None:
-            import numpy
-
             if not isinstance(out, numpy.ndarray):
                 raise UsageError(f"out: expected a numpy array, got {type(out).__name__}")
             return (self._native.read_into_uint8 if dtype == "uint8" else self._native.read_into_float32)(pass_, out)
@@ -108,7 +110,14 @@ class Session:
     def render(self, frames, every=1, pass_="Image", dtype="uint8", mouse=None, keys=None):
         """Renders ``frames`` frames and yields ``(iframe, array)`` for the 0th, every-th and last of
         them (as the CLI's --capture-every), each array as frame() gives it. ``mouse`` and ``keys``
-        are applied before the first frame, as step() takes them, and stay."""
+        are applied before the first frame, as step() takes them, and stay.
+
+        The frames are rendered ahead of the loop, as the CLI renders ahead of its encoders: while
+        your loop handles a frame, the next ones render and are read back (at most 5 frames ahead
+        of the one yielded). So inside the loop the session is already further on (``next_frame``,
+        ``frame()``, and a ``step()`` there renders after the frames already rendered), and leaving
+        the loop early leaves the session up to 5 frames past the last one yielded; frames rendered
+        but not taken are dropped."""
         frames, every = int(frames), int(every)
         if frames < 0:
             raise UsageError(f"render: frames must be 0 or more, got {frames}")
@@ -117,13 +126,15 @@ class Session:
         readable = [p for p in self.shadertoy.passes if p == "Image" or p.startswith("Buffer ")]
         if pass_ not in readable:  # said before any frame renders
             raise UsageError(f'render: no pass "{pass_}" to read (this shadertoy has {", ".join(readable)})')
-        step_read = self._native.step_read_uint8 if _dtype_name(dtype) == "uint8" else self._native.step_read_float32
-        for n in range(frames):
-            events = self._events(mouse, keys, ()) if n == 0 else []
-            if n % every == 0 or n == frames - 1:
-                yield step_read(events, pass_)  # (iFrame, array), in one trip to the GL thread
-            else:
-                self._native.step(events, None, 0.0, 0.0)
+        stream = self._native.render(self._events(mouse, keys, ()), frames, every, pass_,
+                                     _dtype_name(dtype) == "float32")
+        try:
+            while (item := stream.next()) is not None:
+                yield item
+            if self.closed:
+                raise UsageError("the session was closed while render() ran")
+        finally:
+            stream.cancel()
 
     def render_sound(self, seconds=0.0):
         """The Sound pass (mainSound) as the site renders it: float32 samples of shape (n, 2), stereo
@@ -232,8 +243,6 @@ def _size(size):
 def _dtype_name(dtype):
     if dtype == "uint8" or dtype == "float32":
         return dtype
-    import numpy
-
     try:
         name = numpy.dtype(dtype).name
     except TypeError:

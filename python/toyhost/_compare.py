@@ -8,6 +8,8 @@ import os
 from dataclasses import dataclass, field
 from typing import List, Optional
 
+import numpy
+
 from . import _toyhost
 
 
@@ -106,8 +108,6 @@ def compare_images(a, b, channels=3, min_psnr=None, max_diff=None, diff_image=Fa
     toyhost compare does: ``channels`` 3 compares R, G, B (as for Image, whose alpha is always 1),
     4 all four. Returns a FrameDifference (frame and time 0); ``diff_image`` asks for the
     difference image."""
-    import numpy
-
     first = numpy.ascontiguousarray(a)
     second = numpy.ascontiguousarray(b)
     return _frame(_toyhost.compare_images(first, second, int(channels), None if min_psnr is None else float(min_psnr),

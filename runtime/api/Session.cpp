@@ -4,13 +4,17 @@
 
 #include <algorithm>
 #include <cstring>
+#include <mutex>
 #include <optional>
+#include <type_traits>
 
 #include "gl/CurrentContext.h"
 #include "gl/GlStateGuard.h"
 #include "gl/GlThread.h"
 #include "gl/HeadlessContext.h"
+#include "image/PixelConversion.h"
 #include "manifest/ManifestDesc.h"
+#include "render/PendingReads.h"
 #include "session/SessionCore.h"
 #include "timing/FrameClock.h"
 
@@ -24,6 +28,13 @@ public:
     void notice(const Diagnostic& notice) override { kept.push_back(notice); }
     std::vector<Diagnostic> kept;
 };
+
+// setWatchdogExpiryHandler's handler, read by every session's watchdog when a limit passes.
+std::mutex expiryMutex;
+std::function<void(const Diagnostic&)>& expiryHandler() {
+    static std::function<void(const Diagnostic&)> handler;
+    return handler;
+}
 
 std::optional<PassId> passNamed(std::string_view name) {
     for (PassId id : {PassId::BufferA, PassId::BufferB, PassId::BufferC, PassId::BufferD, PassId::Image})
@@ -43,6 +54,7 @@ public:
     std::optional<FrameClock> clock;
     mutable std::vector<std::uint8_t> bytes;  // readback scratch
     mutable std::vector<float> floats;
+    PendingReads reads;  // queueRead() .. takeRead(); emptied with the context current
 
     // What every call that renders does around its GL work: the context current (headless) or the
     // caller's state kept (its own context).
@@ -70,6 +82,49 @@ public:
             return Error("no pass \"" + std::string(name) + "\" to read (Image, or a buffer the shadertoy has)",
                          Code::Usage);
         return *id;
+    }
+        // A queued read's values into `out`, rows in `order`, converted as the synchronous reads
+    // convert (Renderer::readRgba8 / readRgba32f): one pass over the mapped pixels.
+    template <class Source, class T>
+    static void convertRows(const Source* rows, std::span<T> out, int width, int height, RowOrder order) {
+        const std::size_t row = static_cast<std::size_t>(width) * 4;
+        for (int y = 0; y < height; ++y) {
+            const Source* from = rows + static_cast<std::size_t>(order == RowOrder::TopFirst ? height - 1 - y : y) * row;
+            T* to = out.data() + static_cast<std::size_t>(y) * row;
+            if constexpr (std::is_same_v<Source, T>) std::memcpy(to, from, row * sizeof(T));
+            else if constexpr (std::is_same_v<T, float>)
+                for (std::size_t i = 0; i < row; ++i) to[i] = from[i] / 255.0f;
+            else
+                for (std::size_t i = 0; i < row; ++i) to[i] = unorm8(from[i]);
+        }
+    }
+    template <class T>
+    Result<Session::QueuedRead> takeRead(std::span<T> out, RowOrder order) {
+        if (reads.size() == 0) return Error("takeRead: no read is queued (queueRead() first)", Code::Usage);
+        const PendingReads::Read read = reads.oldest();
+        const std::size_t values = static_cast<std::size_t>(read.width) * read.height * 4;
+        if (out.size() != values)
+            return Error("takeRead: the destination holds " + std::to_string(out.size()) + " values, the frame " +
+                             std::to_string(values) + " (width * height * 4 of the read)",
+                         Code::Usage);
+        if (Status made = current(); !made) return made.error();
+        Status taken = withGl([&] {
+            // The wait may be for the GPU still drawing: the watchdog is told which pass.
+            core->player().publishPendingDraws();
+            Result<std::span<const std::byte>> pixels = reads.mapOldest();
+            core->player().publishPendingDraws();
+            if (pixels) {
+                if (read.format == PixelFormat::Rgba8)
+                    convertRows(reinterpret_cast<const std::uint8_t*>(pixels->data()), out, read.width, read.height, order);
+                else
+                    convertRows(reinterpret_cast<const float*>(pixels->data()), out, read.width, read.height, order);
+            }
+            Status released = reads.releaseOldest();
+            return pixels ? released : Status(pixels.error());
+        });
+        if (Status limit = expired(); !limit) return limit.error();
+        if (!taken) return taken.error();
+        return Session::QueuedRead{read.frame, read.width, read.height};
     }
     template <class T>
     static void copyRows(const std::vector<T>& rows, std::span<T> out, int width, int height, RowOrder order) {
@@ -112,9 +167,24 @@ Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const S
         WatchdogDesc limits;
         limits.frameLimit = settings.frameTimeout;
         limits.compileLimit = settings.compileTimeout;
+        limits.expire = [file = shadertoy.path().string()](const Diagnostic& expired, int) {
+            std::function<void(const Diagnostic&)> handler;
+            {
+                std::lock_guard<std::mutex> lock(expiryMutex);
+                handler = expiryHandler();
+            }
+            if (!handler) return;
+            Diagnostic named = expired;
+            if (named.file.empty()) named.file = file;
+            handler(named);
+        };
         impl->watchdog = std::make_unique<Watchdog>(limits);
     }
     if (headless) {
+        // The environment chooses the EGL platform, as for every toyhost command.
+        Result<EglPlatform> platform = eglPlatformFromEnvironment();
+        if (!platform) return platform.error();
+        plan->options.eglPlatform = *platform;
         HeadlessOptions headlessOptions;
         headlessOptions.platform = plan->options.eglPlatform;
         Result<std::shared_ptr<GlContext>> context = createHeadlessContext(headlessOptions);
@@ -143,6 +213,7 @@ Session::~Session() {
     if (!impl_) return;
     // The GL objects go with their context current; a caller's state is kept.
     impl_->withGl([&] {
+        impl_->reads.clear();
         impl_->core.reset();
         return 0;
     });
@@ -213,6 +284,49 @@ Status Session::read(std::string_view name, std::span<float> out, RowOrder order
     return okStatus();
 }
 
+Result<Session::QueuedRead> Session::queueRead(std::string_view name) {
+    Result<PassId> pass = impl_->pass(name);
+    if (!pass) return pass.error();
+    if (queuedReads() >= kMaxQueuedReads)
+        return Error("queueRead: " + std::to_string(kMaxQueuedReads) + " reads wait already: take one first (takeRead)",
+                     Code::Usage);
+    if (Status current = impl_->current(); !current) return current.error();
+    const PassOutput output = impl_->core->player().output(*pass);
+    const PendingReads::Read read{frame() - 1, output.width, output.height, output.format};
+    Status started = impl_->withGl([&] { return impl_->reads.start(output.framebuffer, read); });
+    if (!started) return started.error();
+    return QueuedRead{read.frame, read.width, read.height};
+}
+
+int Session::queuedReads() const { return static_cast<int>(impl_->reads.size()); }
+
+std::optional<Session::QueuedRead> Session::nextQueuedRead() const {
+    if (impl_->reads.size() == 0) return std::nullopt;
+    const PendingReads::Read& read = impl_->reads.oldest();
+    return QueuedRead{read.frame, read.width, read.height};
+}
+
+bool Session::nextQueuedReadDone() const {
+    if (impl_->reads.size() == 0 || !impl_->current()) return false;
+    return impl_->withGl([&] { return impl_->reads.oldestDone(); });
+}
+
+Result<Session::QueuedRead> Session::takeRead(std::span<std::uint8_t> out, RowOrder order) {
+    return impl_->takeRead(out, order);
+}
+
+Result<Session::QueuedRead> Session::takeRead(std::span<float> out, RowOrder order) {
+    return impl_->takeRead(out, order);
+}
+
+void Session::dropQueuedReads() {
+    if (impl_->reads.size() == 0 || !impl_->current()) return;
+    impl_->withGl([&] {
+        while (impl_->reads.size() > 0) (void)impl_->reads.releaseOldest();
+        return 0;
+    });
+}
+
 unsigned int Session::imageTexture() const { return impl_->core->player().output(PassId::Image).texture; }
 
 Status Session::drawImage(unsigned int framebuffer, int x, int y, int w, int h) const {
@@ -257,5 +371,10 @@ Result<std::vector<float>> Session::renderSound(double seconds) {
 const std::vector<Diagnostic>& Session::notices() const { return impl_->notices.kept; }
 
 std::string Session::backend() const { return impl_->context->describe(); }
+
+void setWatchdogExpiryHandler(std::function<void(const Diagnostic&)> handler) {
+    std::lock_guard<std::mutex> lock(expiryMutex);
+    expiryHandler() = std::move(handler);
+}
 
 }  // namespace toyhost

@@ -24,13 +24,9 @@ Result<GlProcess> prepareGlProcess() {
         process.closedAtStart[fd] = true;
     }
     requestWebGlDriverBehaviour();
-    if (const char* platform = std::getenv("TOYHOST_EGL_PLATFORM"); platform && *platform) {
-        const std::string name = platform;
-        if (name == "device") process.eglPlatform = EglPlatform::Device;
-        else if (name == "surfaceless") process.eglPlatform = EglPlatform::Surfaceless;
-        else if (name != "automatic")
-            return Error("TOYHOST_EGL_PLATFORM=" + name + ": expected surfaceless, device or automatic", Code::Usage);
-    }
+    Result<EglPlatform> platform = eglPlatformFromEnvironment();
+    if (!platform) return platform.error();
+    process.eglPlatform = *platform;
     return process;
 }
 

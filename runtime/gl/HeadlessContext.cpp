@@ -3,6 +3,7 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GLES3/gl3.h>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <mutex>
@@ -176,6 +177,16 @@ const char* eglPlatformName(EglPlatform platform) {
         case EglPlatform::Automatic: break;
     }
     return "automatic";
+}
+
+Result<EglPlatform> eglPlatformFromEnvironment() {
+    const char* platform = std::getenv("TOYHOST_EGL_PLATFORM");
+    if (!platform || !*platform) return EglPlatform::Automatic;
+    const std::string name = platform;
+    if (name == "device") return EglPlatform::Device;
+    if (name == "surfaceless") return EglPlatform::Surfaceless;
+    if (name == "automatic") return EglPlatform::Automatic;
+    return Error("TOYHOST_EGL_PLATFORM=" + name + ": expected surfaceless, device or automatic", Code::Usage);
 }
 
 Result<std::shared_ptr<GlContext>> createHeadlessContext(const HeadlessOptions& options) {

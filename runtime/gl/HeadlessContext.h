@@ -26,4 +26,9 @@ Result<std::shared_ptr<GlContext>> createHeadlessContext(const HeadlessOptions& 
 // "surfaceless", "device" or "automatic".
 const char* eglPlatformName(EglPlatform platform);
 
+// The platform the environment asks for (TOYHOST_EGL_PLATFORM: surfaceless, device or automatic;
+// unset or empty: automatic), the one place every headless context's choice is read from: the
+// CLI, the compatibility runner and the library (so Python too). A usage error names the variable.
+Result<EglPlatform> eglPlatformFromEnvironment();
+
 }  // namespace toyhost

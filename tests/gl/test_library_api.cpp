@@ -55,6 +55,126 @@ TEST(LibraryApi, AHeadlessFrameEqualsTheClisPng) {
     });
 }
 
+// queueRead()/takeRead(): the values read() gives for the same frame and type (8-bit and float,
+// of an 8-bit Image and a float buffer), in the order queued, each at the size it was queued at.
+TEST(LibraryApi, QueuedReadsEqualSynchronousReads) {
+    Result<Shadertoy> probe = Shadertoy::load(sourceDir() / "shadertoys/pingpong-probe");
+    ASSERT_TRUE(probe.ok()) << probe.error().text();
+    SessionSettings settings;
+    settings.width = 16;
+    settings.height = 8;
+    runOnGlThread([&] {
+        Result<std::unique_ptr<Session>> made = Session::createHeadless(*probe, settings);
+        ASSERT_TRUE(made.ok()) << made.error().text();
+        Session& session = **made;
+        const std::size_t values = 16 * 8 * 4;
+        std::vector<std::uint8_t> none;
+        EXPECT_FALSE(session.takeRead(std::span<std::uint8_t>(none)).ok()) << "nothing queued";
+        struct Expected {
+            std::vector<std::uint8_t> image8, buffer8;
+            std::vector<float> imageF, bufferF;
+        };
+        std::vector<Expected> expected;
+        int taken = 0;
+        auto takeFrame = [&](int frame) {
+            const Expected& e = expected[static_cast<std::size_t>(frame)];
+            std::vector<std::uint8_t> bytes(values);
+            std::vector<float> floats(values);
+            ASSERT_EQ(session.nextQueuedRead()->frame, frame);
+            // Even frames: Image as bytes, Buffer A as floats; odd frames the other way round.
+            if (frame % 2 == 0) {
+                Result<Session::QueuedRead> image = session.takeRead(std::span<std::uint8_t>(bytes), RowOrder::BottomFirst);
+                ASSERT_TRUE(image.ok()) << image.error().text();
+                EXPECT_EQ(image->frame, frame);
+                EXPECT_EQ(bytes, e.image8) << "Image, 8-bit, frame " << frame;
+                ASSERT_TRUE(session.takeRead(std::span<float>(floats), RowOrder::BottomFirst).ok());
+                EXPECT_EQ(floats, e.bufferF) << "Buffer A, floats, frame " << frame;
+            } else {
+                ASSERT_TRUE(session.takeRead(std::span<float>(floats), RowOrder::BottomFirst).ok());
+                EXPECT_EQ(floats, e.imageF) << "Image as floats, frame " << frame;
+                ASSERT_TRUE(session.takeRead(std::span<std::uint8_t>(bytes), RowOrder::BottomFirst).ok());
+                EXPECT_EQ(bytes, e.buffer8) << "Buffer A, 8-bit, frame " << frame;
+            }
+            ++taken;
+        };
+        for (int frame = 0; frame < 6; ++frame) {
+            ASSERT_TRUE(session.step().ok());
+            Expected e{std::vector<std::uint8_t>(values), std::vector<std::uint8_t>(values), std::vector<float>(values),
+                       std::vector<float>(values)};
+            ASSERT_TRUE(session.read("Image", e.image8, RowOrder::BottomFirst).ok());
+            ASSERT_TRUE(session.read("Buffer A", e.buffer8, RowOrder::BottomFirst).ok());
+            ASSERT_TRUE(session.read("Image", e.imageF, RowOrder::BottomFirst).ok());
+            ASSERT_TRUE(session.read("Buffer A", e.bufferF, RowOrder::BottomFirst).ok());
+            expected.push_back(std::move(e));
+            ASSERT_TRUE(session.queueRead("Image").ok());
+            ASSERT_TRUE(session.queueRead("Buffer A").ok());
+            if (session.queuedReads() == Session::kMaxQueuedReads) {
+                EXPECT_FALSE(session.queueRead("Image").ok()) << "more than kMaxQueuedReads";
+                takeFrame(taken);
+            }
+        }
+        EXPECT_FALSE(session.queueRead("Buffer C").ok()) << "the probe has no Buffer C";
+        // A resize does not change a read queued before it; a destination of the wrong size is
+        // refused and the read stays.
+        ASSERT_EQ(session.queuedReads(), 2);
+        ASSERT_TRUE(session.resize(8, 4).ok());
+        std::vector<std::uint8_t> small(8 * 4 * 4);
+        EXPECT_FALSE(session.takeRead(std::span<std::uint8_t>(small)).ok());
+        EXPECT_EQ(session.nextQueuedRead()->width, 16);
+        takeFrame(taken);
+        EXPECT_EQ(taken, 6);
+        EXPECT_EQ(session.queuedReads(), 0);
+        // Top row first (the default) is the bottom-first rows reversed; dropQueuedReads forgets.
+        ASSERT_TRUE(session.step().ok());
+        std::vector<std::uint8_t> bottomFirst(small.size()), topFirst(small.size());
+        ASSERT_TRUE(session.read("Image", bottomFirst, RowOrder::BottomFirst).ok());
+        ASSERT_TRUE(session.queueRead("Image").ok());
+        ASSERT_TRUE(session.takeRead(std::span<std::uint8_t>(topFirst)).ok());
+        for (int y = 0; y < 4; ++y)
+            EXPECT_TRUE(std::equal(topFirst.begin() + y * 32, topFirst.begin() + y * 32 + 32,
+                                   bottomFirst.begin() + (3 - y) * 32))
+                << "row " << y;
+        ASSERT_TRUE(session.queueRead("Image").ok());
+        session.dropQueuedReads();
+        EXPECT_EQ(session.queuedReads(), 0);
+        EXPECT_FALSE(session.nextQueuedRead().has_value());
+    });
+}
+
+// TOYHOST_EGL_PLATFORM chooses a headless session's EGL platform as it does the CLI's.
+TEST(LibraryApi, TheEnvironmentChoosesTheEglPlatform) {
+    Result<Shadertoy> probe = Shadertoy::load(sourceDir() / "shadertoys/pingpong-probe");
+    ASSERT_TRUE(probe.ok()) << probe.error().text();
+    const char* before = std::getenv("TOYHOST_EGL_PLATFORM");
+    const std::string kept = before ? before : "";
+    auto backendWith = [&](const char* platform) -> Result<std::string> {
+        setenv("TOYHOST_EGL_PLATFORM", platform, 1);
+        Result<std::string> backend = Error("not run", Code::Internal);
+        runOnGlThread([&] {
+            Result<std::unique_ptr<Session>> session = Session::createHeadless(*probe);
+            if (session) backend = (*session)->backend();
+            else backend = session.error();
+        });
+        return backend;
+    };
+    Result<std::string> wrong = backendWith("wayland");
+    Result<std::string> surfaceless = backendWith("surfaceless");
+    Result<std::string> device = backendWith("device");
+    if (before) setenv("TOYHOST_EGL_PLATFORM", kept.c_str(), 1);
+    else unsetenv("TOYHOST_EGL_PLATFORM");
+
+    ASSERT_FALSE(wrong.ok()) << "TOYHOST_EGL_PLATFORM=wayland was not refused";
+    EXPECT_EQ(wrong.error().first().code, Code::Usage);
+    EXPECT_NE(wrong.error().text().find("TOYHOST_EGL_PLATFORM=wayland"), std::string::npos) << wrong.error().text();
+    ASSERT_TRUE(surfaceless.ok()) << surfaceless.error().text();
+    EXPECT_EQ(surfaceless->rfind("EGL surfaceless;", 0), 0u) << *surfaceless;
+    // The device platform, where this machine's EGL has it (Mesa's has, on llvmpipe too).
+    if (!device.ok() && device.error().first().code == Code::GlEgl)
+        GTEST_SKIP() << "no EGL device platform here: " << device.error().text();
+    ASSERT_TRUE(device.ok()) << device.error().text();
+    EXPECT_EQ(device->rfind("EGL device", 0), 0u) << "TOYHOST_EGL_PLATFORM=device was not used: " << *device;
+}
+
 class LibraryOnCurrentContext : public GlTest {};
 
 // The caller's context: toyhost renders into its own targets and leaves the caller's state as it
@@ -99,6 +219,12 @@ TEST_F(LibraryOnCurrentContext, RendersAndKeepsTheCallersGlState) {
     std::vector<float> a(16 * 8 * 4);
     ASSERT_TRUE((*session)->read("Buffer A", a, RowOrder::BottomFirst).ok());
     EXPECT_EQ(state(), before) << "reading changed the caller's state";
+    ASSERT_TRUE((*session)->queueRead("Buffer A").ok());
+    EXPECT_EQ(state(), before) << "queueing a read changed the caller's state";
+    std::vector<float> queued(a.size());
+    ASSERT_TRUE((*session)->takeRead(std::span<float>(queued), RowOrder::BottomFirst).ok());
+    EXPECT_EQ(queued, a) << "a queued read differs from read()";
+    EXPECT_EQ(state(), before) << "taking a queued read changed the caller's state";
     EXPECT_NE((*session)->imageTexture(), 0u);
     ASSERT_TRUE((*session)->drawImage(framebuffer, 0, 0, 4, 4).ok());
     EXPECT_EQ(state(), before) << "drawing into the caller's framebuffer changed its state";

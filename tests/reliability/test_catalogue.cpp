@@ -456,6 +456,12 @@ std::vector<Case> catalogue() {
              {{"toy/endless.glsl", kEndlessFrame}}),
          runToyBare("--size 320x180 --frames 2 --frame-timeout 1 --out '@D/out/f_%04d.png'"), 124,
          {"Buffer A", "--frame-timeout 1"}, "watchdog.frame"});
+    // compare: the draw that never ends is cut off at the limit as in run, not waited for (the
+    // frame takes minutes; the case is killed at 60 s, exit 137, if the watchdog does not end it).
+    add({"WatchdogFrameInCompare",
+         toy(kManifest, {{"toy/image.glsl", kEndlessFrame}, {"ok/manifest.json", kManifest}, {"ok/image.glsl", kImage}}),
+         "compare '@D/ok' '@D/toy' --size 320x180 --frames 2 --frame-timeout 1", 124,
+         {"@D/toy", "Image", "--frame-timeout 1"}, "watchdog.frame"});
     add({"WatchdogCompile", toy(kManifest, {{"toy/image.glsl", bigShader(3)}}),
          runToyBare("--size 16x8 --frames 1 --compile-timeout 0.5 --out '@D/out/f_%04d.png'"), 124,
          {"Image", "--compile-timeout 0.5"}, "watchdog.compile"});

@@ -5,7 +5,9 @@ it a build folder with tools/toyhost and the Python module (BUILD/python).
 Both sides do the same work per frame: render it and read it back into memory. The CLI streams
 raw RGBA to stdout (`--out -`, sent to /dev/null) and reports its frame loop's time (first frame
 and the rest); the Python side, in a fresh process each time like the CLI, times
-`session.step(); session.frame()` (a new numpy array per frame) over the same frames. Runs
+`session.step(); session.frame()` (a new numpy array per frame), and the render() iterator, over
+the same frames, from after `import toyhost` (which imports numpy) and the session's creation, as
+the CLI's clock starts after its start-up. Runs
 alternate CLI / Python and the median of each is kept, because the machine is shared.
 
 usage: tools/bench/python_bench.py BUILD_DIR [--reps N] [--quick] [--write docs/performance.md]

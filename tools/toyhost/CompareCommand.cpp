@@ -226,13 +226,13 @@ void CompareCommand::define(CLI::App& compare) {
     compare.add_option("--frames-out", framesOut_, "Write both frames of every compared frame: DIR/a_NNNN.png, DIR/b_NNNN.png");
     compare.add_flag("--json", json_, "Print the report as JSON on stdout instead of the table (a PSNR of identical frames is null)");
     compare.add_option("--frame-timeout", frameTimeout_,
-                       "Watchdog: fail (exit 124) when one pass of a frame draws for longer than this many seconds, "
-                       "once the draw returns (default " +
+                       "Watchdog: end the comparison (exit 124) when one pass of a frame draws for longer than this "
+                       "many seconds, without waiting for the draw (default " +
                            std::to_string(static_cast<int>(defaults::kFrameTimeoutSeconds)) + "; 0: off)")
         ->default_val(defaults::kFrameTimeoutSeconds)
         ->check(timeoutSeconds);
     compare.add_option("--compile-timeout", compileTimeout_,
-                       "Watchdog: fail (exit 124) when compiling one pass takes longer than this many seconds "
+                       "Watchdog: end the comparison (exit 124) when compiling one pass takes longer than this many seconds "
                        "(default " + std::to_string(static_cast<int>(defaults::kCompileTimeoutSeconds)) + "; 0: off)")
         ->default_val(defaults::kCompileTimeoutSeconds)
         ->check(timeoutSeconds);
@@ -313,8 +313,12 @@ int CompareCommand::execute(const GlProcess&) {
         stoppedBy = stopSignal();
         return stoppedBy == 0;
     };
+    // A draw or compile past --frame-timeout / --compile-timeout cannot be interrupted: the process
+    // ends then (exit 124), as toyhost run's does, instead of waiting for GL to return.
+    setWatchdogExpiryHandler([](const Diagnostic& d) { endAfterWatchdog(d, kExitWatchdog); });
     std::optional<Result<CompareReport>> report;
     runOnGlThread([&] { report.emplace(compareShadertoys(*a, *b, settings)); });
+    setWatchdogExpiryHandler({});
     // Every file queued is complete (or its error known) before anything is reported.
     const Status written = files.finish();
     if (!*report) return trouble(report->error());

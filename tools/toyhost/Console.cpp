@@ -94,6 +94,19 @@ void say(const std::string& line) {
 }
 }  // namespace
 
+void endAfterWatchdog(const Diagnostic& d, int exitCode) {
+    // Nothing half-written may stay: unfinished files go and encoders are stopped before the
+    // process ends.
+    const inflight::CleanupReport cleaned = inflight::emergencyCleanup();
+    std::string line = "toyhost: " + formatDiagnostic(d);
+    if (cleaned.files || cleaned.children)
+        line += " (removed " + std::to_string(cleaned.files) + " unfinished file" + (cleaned.files == 1 ? "" : "s") +
+                ", stopped " + std::to_string(cleaned.children) + " child process" +
+                (cleaned.children == 1 ? "" : "es") + ")";
+    say(line);
+    ::_exit(exitCode);
+}
+
 int runSession(const SessionOptions& options, bool quiet, const SessionRunner& driver) {
     const SessionOptions limits = withDefaults(options);
     WatchdogDesc desc;
@@ -101,18 +114,7 @@ int runSession(const SessionOptions& options, bool quiet, const SessionRunner& d
     desc.compileLimit = *limits.compileTimeout;
     desc.watchSignals = true;
     desc.acknowledge = [](const Diagnostic& d) { say("toyhost: " + formatDiagnostic(d)); };
-    desc.expire = [](const Diagnostic& d, int exitCode) {
-        // Nothing half-written may stay: unfinished files go and encoders are stopped before the
-        // process ends.
-        const inflight::CleanupReport cleaned = inflight::emergencyCleanup();
-        std::string line = "toyhost: " + formatDiagnostic(d);
-        if (cleaned.files || cleaned.children)
-            line += " (removed " + std::to_string(cleaned.files) + " unfinished file" + (cleaned.files == 1 ? "" : "s") +
-                    ", stopped " + std::to_string(cleaned.children) + " child process" +
-                    (cleaned.children == 1 ? "" : "es") + ")";
-        say(line);
-        ::_exit(exitCode);
-    };
+    desc.expire = [](const Diagnostic& d, int exitCode) { endAfterWatchdog(d, exitCode); };
     Watchdog watchdog(std::move(desc));
     ConsoleObserver observer(quiet);
     Result<SessionReport> report = driver(options, observer, &watchdog);

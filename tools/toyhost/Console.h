@@ -50,6 +50,11 @@ private:
     std::chrono::steady_clock::time_point lastShown_;
 };
 
+// Ends the process now because the watchdog expired (`d` says why), from the watchdog's thread
+// while the GL thread may be stuck: unfinished files are removed and child processes stopped, the
+// diagnostic is printed, and the process exits with `exitCode` (124 for a limit).
+[[noreturn]] void endAfterWatchdog(const Diagnostic& d, int exitCode);
+
 // The way a command runs a session (`driver` is runHeadless or runWindow): with the watchdog the
 // options ask for and SIGINT/SIGTERM handling, printing notices, progress and the summary.
 // Returns the exit code.
