@@ -11,10 +11,13 @@
 
 #include <png.h>
 
+#include "LibpngDecode.h"
+
 #include "image/HuffmanCode.h"
 #include "image/PngEncoder.h"
 
 using namespace toyhost;
+using toyhost::testing::libpngDecode;
 
 namespace {
 struct Picture {
@@ -36,24 +39,6 @@ Picture make(std::string name, int w, int h, F&& byte) {
 std::uint32_t lcg(std::uint32_t& state) {
     state = state * 1664525u + 1013904223u;
     return state >> 24;
-}
-
-std::vector<std::uint8_t> libpngDecode(std::span<const std::uint8_t> file, int& width, int& height) {
-    png_image image{};
-    image.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_memory(&image, file.data(), file.size())) {
-        ADD_FAILURE() << "libpng: " << image.message;
-        return {};
-    }
-    image.format = PNG_FORMAT_RGBA;
-    width = static_cast<int>(image.width);
-    height = static_cast<int>(image.height);
-    std::vector<std::uint8_t> pixels(PNG_IMAGE_SIZE(image));
-    if (!png_image_finish_read(&image, nullptr, pixels.data(), 0, nullptr)) {
-        ADD_FAILURE() << "libpng: " << image.message;
-        return {};
-    }
-    return pixels;
 }
 
 // Encodes `p` with the fast path under every filter choice and checks libpng's decoding.

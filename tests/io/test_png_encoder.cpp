@@ -8,11 +8,14 @@
 
 #include <png.h>
 
+#include "LibpngDecode.h"
+
 #include "TestFolder.h"
 #include "image/ImageWriters.h"
 #include "image/PngEncoder.h"
 
 using namespace toyhost;
+using toyhost::testing::libpngDecode;
 
 namespace {
 struct Picture {
@@ -42,25 +45,6 @@ std::vector<Picture> pictures() {
     make("pixel", 1, 1, [](int, int, int c) { return 200 - c * 50; });
     make("row", 300, 1, [](int x, int, int c) { return x * (c + 2); });
     return all;
-}
-
-// libpng's own decoder (simplified API), as RGBA8 rows top first.
-std::vector<std::uint8_t> libpngDecode(std::span<const std::uint8_t> file, int& width, int& height) {
-    png_image image{};
-    image.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_memory(&image, file.data(), file.size())) {
-        ADD_FAILURE() << "libpng: " << image.message;
-        return {};
-    }
-    image.format = PNG_FORMAT_RGBA;
-    width = static_cast<int>(image.width);
-    height = static_cast<int>(image.height);
-    std::vector<std::uint8_t> pixels(PNG_IMAGE_SIZE(image));
-    if (!png_image_finish_read(&image, nullptr, pixels.data(), 0, nullptr)) {
-        ADD_FAILURE() << "libpng: " << image.message;
-        return {};
-    }
-    return pixels;
 }
 
 std::vector<const std::uint8_t*> rowTable(const Picture& p) {
