@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
     const Result<GlProcess> process = prepareGlProcess();
     CLI::App app{"toyhost: run Shadertoy shaders unmodified, in a window (GLFW) or headless on EGL (no display needed)"};
     app.name("toyhost");  // not argv[0]: the help text is the same however toyhost was started
-    app.set_version_flag("--version", std::string("toyhost ") + TOYHOST_VERSION);
+    app.set_version_flag("--version", std::string("toyhost ") + TOYHOST_VERSION_TEXT);
     app.require_subcommand(1);
     app.footer("Exit codes: 0 success; 1 the run failed (bad manifest, missing file, shader compile error, GL or "
                "write error); 2 bad command-line usage; 130 / 143 interrupted by SIGINT / SIGTERM.");

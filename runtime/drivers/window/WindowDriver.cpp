@@ -79,7 +79,13 @@ private:
     static RealTimeClockOptions clockOptions(const SessionOptions& o) {
         return {o.fps, o.startTime, 1.0 / defaults::kRestartTimeDelta};
     }
-    static Diagnostic notice(std::string message, Code code) { return {Severity::Notice, code, std::move(message)}; }
+    static Diagnostic notice(std::string message, Code code) {
+        Diagnostic d;
+        d.severity = Severity::Notice;
+        d.code = code;
+        d.message = std::move(message);
+        return d;
+    }
     void showTitle(SessionCore& s, double now) {
         // The state changes at once; the counters a few times a second.
         const bool paused = clock_.paused();
