@@ -3,8 +3,10 @@
 #include <cstring>
 
 // GCC on x86-64: each hot loop is compiled twice, for AVX2 and for the baseline (SSE2), and the
-// loader picks one by the CPU (an ifunc). Other compilers get the baseline only.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+// loader picks one by the CPU (an ifunc). Other compilers get the baseline only, and so does a
+// ThreadSanitizer build: its instrumented ifunc resolver runs before TSan's runtime starts and
+// crashes every program at load.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_THREAD__)
 #define TOYHOST_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define TOYHOST_SIMD_CLONES
