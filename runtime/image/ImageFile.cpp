@@ -9,6 +9,7 @@
 #include <stb_image.h>
 
 #include "core/AtomicFile.h"
+#include "image/JpegDecode.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -23,66 +24,6 @@ namespace {
 // The largest side a texture may have (toyhost's canvas limit, core/Defaults.h).
 constexpr int kMaxImageSide = 16384;
 
-// Debian's stb_image (2.27) builds a JPEG Huffman table from the 16 code counts of a DHT segment
-// without checking that they add up to at most 256, and writes past its table when they do (found
-// by tests/fuzz). Such a file is refused before stb sees it, and so is a scan that names a table
-// never defined. Walks the markers, also between the scans of a progressive JPEG.
-bool jpegHuffmanTablesValid(const std::string& data) {
-    auto byte = [&](std::size_t i) { return static_cast<unsigned char>(data[i]); };
-    if (data.size() < 4 || byte(0) != 0xFF || byte(1) != 0xD8) return true;  // not a JPEG: stb decides
-    std::size_t i = 2;
-    bool defined[2][4] = {};  // [DC, AC][table 0..3]
-    bool sequential = false, progressive = false;
-    while (i + 4 <= data.size()) {
-        if (byte(i) != 0xFF) {
-            ++i;  // entropy-coded data of a scan: look for the next marker
-            continue;
-        }
-        const unsigned marker = byte(i + 1);
-        if (marker == 0xFF || marker == 0x00 || (marker >= 0xD0 && marker <= 0xD7) || marker == 0x01) {
-            i += marker == 0xFF ? 1 : 2;  // fill byte, stuffed 0xFF00, restart marker, TEM
-            continue;
-        }
-        if (marker == 0xD9) return true;  // end of image
-        const std::size_t length = (std::size_t(byte(i + 2)) << 8) | byte(i + 3);
-        // Truncated: stb reports it, except in a DHT, where it reads zeros past the end and
-        // counts whatever came before into the table.
-        if (length < 2 || i + 2 + length > data.size()) return marker != 0xC4;
-        if (marker == 0xC4) {
-            std::size_t at = i + 4;
-            const std::size_t end = i + 2 + length;
-            while (at < end) {
-                if (at + 17 > end) return false;
-                std::size_t codes = 0;
-                for (int k = 1; k <= 16; ++k) codes += byte(at + k);
-                if (codes > 256 || at + 17 + codes > end) return false;
-                if ((byte(at) >> 4) < 2 && (byte(at) & 15) < 4) defined[byte(at) >> 4][byte(at) & 15] = true;
-                at += 17 + codes;
-            }
-        }
-        if (marker == 0xC0 || marker == 0xC1) sequential = true;
-        if (marker == 0xC2) progressive = true;
-        // A scan decodes with the tables its components name; stb reads a table that was never
-        // defined (uninitialised memory, fuzz findings) instead of failing. A sequential scan uses
-        // DC and AC tables; a progressive scan uses DC tables in a first DC pass (Ss = 0, Ah = 0),
-        // none in a DC refinement, and AC tables in a spectral band (Ss > 0).
-        if (marker == 0xDA && (sequential || progressive)) {
-            const std::size_t components = byte(i + 4);
-            if (length < 6 + 2 * components) return false;
-            const unsigned spectralStart = byte(i + 5 + 2 * components);
-            const unsigned approximationHigh = byte(i + 7 + 2 * components) >> 4;
-            const bool usesDc = sequential || (spectralStart == 0 && approximationHigh == 0);
-            const bool usesAc = sequential || spectralStart > 0;
-            for (std::size_t k = 0; k < components; ++k) {
-                const unsigned tables = byte(i + 6 + 2 * k);
-                if (usesDc && ((tables >> 4) > 3 || !defined[0][tables >> 4])) return false;
-                if (usesAc && ((tables & 15) > 3 || !defined[1][tables & 15])) return false;
-            }
-        }
-        i += 2 + length;
-    }
-    return true;
-}
 // Every PNG chunk fits in the file (stb allocates a chunk's declared length before reading it:
 // a 41-byte file can ask for gigabytes, a fuzz finding).
 bool pngChunksFit(const std::string& data) {
@@ -107,13 +48,16 @@ Result<Image8> loadImageFile(const fs::path& path) {
     Result<std::string> bytes = readTextFile(path, std::size_t(256) << 20);
     if (!bytes) return bytes.error();
     // Shadertoy's textures are PNG and JPEG; stb's other decoders (HDR, TGA, PSD, GIF, ...) are not
-    // exposed to users' files (fuzzing found endless loops and slow paths in them).
+    // exposed to users' files (fuzzing found endless loops and slow paths in them). JPEGs go to
+    // libjpeg-turbo, the decoder browsers use (stb's JPEG decoder read past its tables and shifted
+    // by negative amounts on corrupt files: tests/fuzz findings).
     const bool png = startsWith(*bytes, "\x89PNG\r\n\x1a\n");
     const bool jpeg = startsWith(*bytes, "\xFF\xD8\xFF");
     if (!png && !jpeg) return fileError(path.string(), "cannot decode image: not a PNG or JPEG file", Code::ImageDecode);
-    if (jpeg && !jpegHuffmanTablesValid(*bytes))
-        return fileError(path.string(), "cannot decode image: a JPEG Huffman table (DHT) is malformed", Code::ImageDecode);
-    if (png && !pngChunksFit(*bytes))
+    if (jpeg)
+        return decodeJpeg(std::span(reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size()),
+                          kMaxImageSide, path.string());
+    if (!pngChunksFit(*bytes))
         return fileError(path.string(), "cannot decode image: a PNG chunk is longer than the file", Code::ImageDecode);
     int declaredWidth = 0, declaredHeight = 0, declaredChannels = 0;
     const auto* raw = reinterpret_cast<const stbi_uc*>(bytes->data());

@@ -1,5 +1,5 @@
-// ImageFile: decodes PNG/JPEG (anything stb_image reads) into the RGBA8 pixels a browser hands to
-// WebGL for an <img>. No GL needed.
+// ImageFile: decodes PNG (stb_image) and JPEG (libjpeg-turbo, image/JpegDecode) into the RGBA8
+// pixels a browser hands to WebGL for an <img>. No GL needed.
 #pragma once
 
 #include <filesystem>

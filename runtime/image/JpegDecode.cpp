@@ -1,0 +1,151 @@
+#include "image/JpegDecode.h"
+
+#include <csetjmp>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>  // jpeglib.h needs FILE and size_t declared first
+
+#include <jerror.h>
+#include <jpeglib.h>
+
+namespace toyhost {
+
+namespace {
+
+// libjpeg's working memory beyond the decoded picture (a progressive JPEG keeps every DCT
+// coefficient: 2 bytes a sample, about 100 MB for a 4096x4096 colour texture). A few bytes can
+// declare a 16384x16384 progressive image; past this limit libjpeg stops with "insufficient memory"
+// instead of allocating gigabytes.
+constexpr long kMaxWorkingMemory = 512L << 20;
+
+// libjpeg reports a fatal error by calling error_exit, which must not return: it jumps back to
+// decodeInto(), which then cleans up. Warnings (corrupt data libjpeg can decode past) only count,
+// except the one that says the data ended early.
+struct Errors {
+    jpeg_error_mgr base;  // first: libjpeg sees a pointer to it
+    std::jmp_buf jump;
+    char message[JMSG_LENGTH_MAX];
+    int code;  // libjpeg's J_MESSAGE_CODE of the fatal error
+    bool endedEarly;
+};
+
+[[noreturn]] void onError(j_common_ptr info) {
+    auto* errors = reinterpret_cast<Errors*>(info->err);
+    (*info->err->format_message)(info, errors->message);
+    errors->code = info->err->msg_code;
+    std::longjmp(errors->jump, 1);
+}
+
+void onMessage(j_common_ptr info, int level) {
+    if (level < 0 && info->err->msg_code == JWRN_JPEG_EOF) reinterpret_cast<Errors*>(info->err)->endedEarly = true;
+}
+
+// Everything decodeInto() touches lives here, outside its frame, so that nothing it needs after a
+// longjmp is an automatic variable changed since setjmp, and no C++ object with a destructor is
+// jumped over.
+struct Job {
+    jpeg_decompress_struct info;
+    Errors errors;
+    const unsigned char* data;
+    unsigned long size;
+    int maxSide;
+    Image8* out;
+    bool tooLarge;
+};
+
+// Adobe's CMYK JPEGs store inverted values; as Chromium: R = C*K/255 (truncated), alpha 255.
+void cmykToRgba(std::uint8_t* row, std::size_t pixels) {
+    for (std::size_t x = 0; x < pixels; ++x) {
+        std::uint8_t* p = row + 4 * x;
+        const unsigned k = p[3];
+        p[0] = static_cast<std::uint8_t>(p[0] * k / 255);
+        p[1] = static_cast<std::uint8_t>(p[1] * k / 255);
+        p[2] = static_cast<std::uint8_t>(p[2] * k / 255);
+        p[3] = 255;
+    }
+}
+
+// Returns false with job.errors.message set (or job.tooLarge) when the file cannot be decoded.
+bool decodeInto(Job& job) {
+    job.info.err = jpeg_std_error(&job.errors.base);
+    job.errors.base.error_exit = onError;
+    job.errors.base.emit_message = onMessage;
+    job.errors.endedEarly = false;
+    job.errors.message[0] = '\0';
+    if (setjmp(job.errors.jump)) {
+        jpeg_destroy_decompress(&job.info);
+        return false;
+    }
+    jpeg_create_decompress(&job.info);
+    job.info.mem->max_memory_to_use = kMaxWorkingMemory;
+    jpeg_mem_src(&job.info, job.data, job.size);
+    jpeg_read_header(&job.info, TRUE);
+    job.out->width = static_cast<int>(job.info.image_width);
+    job.out->height = static_cast<int>(job.info.image_height);
+    if (job.info.image_width > static_cast<JDIMENSION>(job.maxSide) ||
+        job.info.image_height > static_cast<JDIMENSION>(job.maxSide)) {
+        job.tooLarge = true;
+        jpeg_destroy_decompress(&job.info);
+        return false;
+    }
+    const bool cmyk = job.info.jpeg_color_space == JCS_CMYK || job.info.jpeg_color_space == JCS_YCCK;
+    job.info.out_color_space = cmyk ? JCS_CMYK : JCS_EXT_RGBA;
+    job.info.dct_method = JDCT_ISLOW;
+    job.info.do_fancy_upsampling = TRUE;
+    job.info.do_block_smoothing = TRUE;
+    job.info.quantize_colors = FALSE;
+    jpeg_start_decompress(&job.info);
+
+    const int width = static_cast<int>(job.info.output_width);
+    const int height = static_cast<int>(job.info.output_height);
+    const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
+    job.out->width = width;
+    job.out->height = height;
+    job.out->rgba.resize(rowBytes * static_cast<std::size_t>(height));
+    while (job.info.output_scanline < job.info.output_height) {
+        // Files store the top row first; Image8 keeps the bottom row first.
+        const std::size_t y = static_cast<std::size_t>(height) - 1 - job.info.output_scanline;
+        JSAMPROW row = job.out->rgba.data() + y * rowBytes;
+        if (jpeg_read_scanlines(&job.info, &row, 1) != 1) break;
+        if (cmyk) cmykToRgba(row, static_cast<std::size_t>(width));
+        if (job.errors.endedEarly) break;
+    }
+    if (job.errors.endedEarly || job.info.output_scanline < job.info.output_height) {
+        jpeg_destroy_decompress(&job.info);
+        return false;
+    }
+    jpeg_finish_decompress(&job.info);
+    jpeg_destroy_decompress(&job.info);
+    return !job.errors.endedEarly;
+}
+
+}  // namespace
+
+Result<Image8> decodeJpeg(std::span<const unsigned char> bytes, int maxSide, const std::string& name) {
+    Image8 image;
+    Job job{};
+    job.data = bytes.data();
+    job.size = static_cast<unsigned long>(bytes.size());
+    job.maxSide = maxSide;
+    job.out = &image;
+    if (decodeInto(job)) return image;
+    if (job.tooLarge)
+        return fileError(name,
+                         "the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                             ", larger than the " + std::to_string(maxSide) + " a side textures may have",
+                         Code::ImageTooLarge);
+    if (job.errors.endedEarly)
+        return fileError(name, "cannot decode image: the JPEG data ends before the image does (a truncated file?)",
+                         Code::ImageDecode);
+    // Over the working-memory cap libjpeg asks for a backing store (temporary files), which it
+    // does not have: say what that means.
+    if (job.errors.code == JERR_NO_BACKING_STORE || job.errors.code == JERR_OUT_OF_MEMORY)
+        return fileError(name,
+                         "cannot decode image: decoding it needs more than " + std::to_string(kMaxWorkingMemory >> 20) +
+                             " MiB of working memory (its header declares " + std::to_string(image.width) + "x" +
+                             std::to_string(image.height) + ")",
+                         Code::ImageDecode);
+    return fileError(name, std::string("cannot decode image: ") + job.errors.message, Code::ImageDecode);
+}
+
+}  // namespace toyhost

@@ -1,0 +1,226 @@
+// JPEG decoding (image/JpegDecode through loadImageFile): libjpeg-turbo set up as the browser's
+// JPEG reader. The fixtures are encoded here with libjpeg's encoder, so each test knows the picture
+// the file holds; decoded values are checked against it within JPEG's error at quality 100.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <jpeglib.h>
+
+#include "TestFolder.h"
+#include "image/ImageFile.h"
+
+using namespace toyhost;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Encoding {
+    J_COLOR_SPACE space = JCS_RGB;  // of `samples`: JCS_RGB (3), JCS_GRAYSCALE (1), JCS_CMYK (4)
+    bool progressive = false;
+    bool subsampled = false;        // 4:2:0 chroma (libjpeg's default) instead of 4:4:4
+};
+
+int componentsOf(J_COLOR_SPACE space) { return space == JCS_GRAYSCALE ? 1 : space == JCS_CMYK ? 4 : 3; }
+
+// Encodes `samples` (top row first, componentsOf(space) bytes a pixel) at quality 100.
+std::vector<std::uint8_t> encodeJpeg(int width, int height, const std::vector<std::uint8_t>& samples,
+                                     const Encoding& how) {
+    jpeg_compress_struct info{};
+    jpeg_error_mgr errors{};
+    info.err = jpeg_std_error(&errors);
+    jpeg_create_compress(&info);
+    unsigned char* out = nullptr;
+    unsigned long outSize = 0;
+    jpeg_mem_dest(&info, &out, &outSize);
+    info.image_width = static_cast<JDIMENSION>(width);
+    info.image_height = static_cast<JDIMENSION>(height);
+    info.input_components = componentsOf(how.space);
+    info.in_color_space = how.space;
+    jpeg_set_defaults(&info);
+    jpeg_set_quality(&info, 100, TRUE);
+    if (!how.subsampled)
+        for (int c = 0; c < info.num_components; ++c) info.comp_info[c].h_samp_factor = info.comp_info[c].v_samp_factor = 1;
+    if (how.progressive) jpeg_simple_progression(&info);
+    jpeg_start_compress(&info, TRUE);
+    const std::size_t rowBytes = static_cast<std::size_t>(width) * static_cast<std::size_t>(info.input_components);
+    while (info.next_scanline < info.image_height) {
+        JSAMPROW row = const_cast<JSAMPROW>(samples.data() + info.next_scanline * rowBytes);
+        jpeg_write_scanlines(&info, &row, 1);
+    }
+    jpeg_finish_compress(&info);
+    jpeg_destroy_compress(&info);
+    std::vector<std::uint8_t> file(out, out + outSize);
+    std::free(out);
+    return file;
+}
+
+fs::path writeFile(const fs::path& file, const std::vector<std::uint8_t>& bytes) {
+    std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
+                                                static_cast<std::streamsize>(bytes.size()));
+    return file;
+}
+
+// The offset of the first SOFn marker's height field (FFC0 / FFC2: length, precision, height, width).
+std::size_t frameHeaderAt(const std::vector<std::uint8_t>& file) {
+    for (std::size_t i = 2; i + 9 < file.size(); ++i)
+        if (file[i] == 0xFF && (file[i + 1] == 0xC0 || file[i + 1] == 0xC2)) return i + 5;
+    ADD_FAILURE() << "no SOF0/SOF2 marker";
+    return 0;
+}
+
+void setDeclaredSize(std::vector<std::uint8_t>& file, int width, int height) {
+    const std::size_t at = frameHeaderAt(file);
+    file[at] = static_cast<std::uint8_t>(height >> 8);
+    file[at + 1] = static_cast<std::uint8_t>(height & 255);
+    file[at + 2] = static_cast<std::uint8_t>(width >> 8);
+    file[at + 3] = static_cast<std::uint8_t>(width & 255);
+}
+
+// Pixel (x, y) of a decoded image, y counted from the TOP row as in the file.
+const std::uint8_t* pixelFromTop(const Image8& image, int x, int y) {
+    return image.rgba.data() + (static_cast<std::size_t>(image.height - 1 - y) * image.width + x) * 4;
+}
+
+using TempFolder = toyhost::testing::TestFolder;
+
+}  // namespace
+
+// Top half red, bottom half blue, 4:4:4 at quality 100: the decoded rows are bottom first (as GL
+// uploads them), every alpha is 255, and the colours come back within JPEG's error.
+TEST(JpegDecode, RgbRowsComeBackBottomFirstWithOpaqueAlpha) {
+    TempFolder folder;
+    const int w = 16, h = 16;
+    std::vector<std::uint8_t> rgb;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) rgb.insert(rgb.end(), y < h / 2 ? std::initializer_list<std::uint8_t>{255, 0, 0}
+                                                                 : std::initializer_list<std::uint8_t>{0, 0, 255});
+    for (bool progressive : {false, true}) {
+        SCOPED_TRACE(progressive ? "progressive" : "baseline");
+        const fs::path file = writeFile(folder.path / "halves.jpg", encodeJpeg(w, h, rgb, {JCS_RGB, progressive, false}));
+        const Result<Image8> image = loadImageFile(file);
+        ASSERT_TRUE(image.ok()) << image.error().text();
+        ASSERT_EQ(image->width, w);
+        ASSERT_EQ(image->height, h);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const std::uint8_t* p = pixelFromTop(*image, x, y);
+                const int expectR = y < h / 2 ? 255 : 0, expectB = y < h / 2 ? 0 : 255;
+                ASSERT_NEAR(p[0], expectR, 6) << x << "," << y;
+                ASSERT_NEAR(p[1], 0, 6) << x << "," << y;
+                ASSERT_NEAR(p[2], expectB, 6) << x << "," << y;
+                ASSERT_EQ(p[3], 255);
+            }
+    }
+}
+
+// A one-component JPEG becomes R = G = B = grey, alpha 255, as the browser's upload of it.
+TEST(JpegDecode, GreyExpandsToEqualChannels) {
+    TempFolder folder;
+    const int w = 32, h = 8;
+    std::vector<std::uint8_t> grey;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) grey.push_back(static_cast<std::uint8_t>(x * 8));
+    const Result<Image8> image =
+        loadImageFile(writeFile(folder.path / "grey.jpg", encodeJpeg(w, h, grey, {JCS_GRAYSCALE, false, false})));
+    ASSERT_TRUE(image.ok()) << image.error().text();
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::uint8_t* p = pixelFromTop(*image, x, y);
+            ASSERT_EQ(p[0], p[1]);
+            ASSERT_EQ(p[1], p[2]);
+            ASSERT_EQ(p[3], 255);
+            ASSERT_NEAR(p[0], x * 8, 3) << x << "," << y;
+        }
+}
+
+// libjpeg writes CMYK with an Adobe marker, whose values are inverted: the browser's reader turns
+// them into R = C*K/255 (and G, B alike). C=200 M=100 Y=50 K=128 gives about (100, 50, 25).
+TEST(JpegDecode, AdobeCmykBecomesRgbAsTheBrowserDoes) {
+    TempFolder folder;
+    const int w = 16, h = 16;
+    std::vector<std::uint8_t> cmyk;
+    for (int i = 0; i < w * h; ++i) cmyk.insert(cmyk.end(), {200, 100, 50, 128});
+    const Result<Image8> image =
+        loadImageFile(writeFile(folder.path / "cmyk.jpg", encodeJpeg(w, h, cmyk, {JCS_CMYK, false, false})));
+    ASSERT_TRUE(image.ok()) << image.error().text();
+    for (int i = 0; i < w * h; ++i) {
+        const std::uint8_t* p = image->rgba.data() + 4 * i;
+        ASSERT_NEAR(p[0], 200 * 128 / 255, 3);
+        ASSERT_NEAR(p[1], 100 * 128 / 255, 3);
+        ASSERT_NEAR(p[2], 50 * 128 / 255, 3);
+        ASSERT_EQ(p[3], 255);
+    }
+}
+
+// The fuzz seeds cover the layouts users' textures come in (baseline, progressive, restart
+// intervals, 4:2:0, 4:2:2, 4:4:4, grey): each decodes to the size its header declares.
+TEST(JpegDecode, EveryLayoutOfTheFuzzSeedsDecodes) {
+    const fs::path dir = fs::path(TOYHOST_SOURCE_DIR) / "tests/fuzz/seeds/fuzz_image";
+    int decoded = 0;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        if (entry.path().extension() != ".jpg") continue;
+        SCOPED_TRACE(entry.path().filename().string());
+        std::ifstream in(entry.path(), std::ios::binary);
+        const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::size_t at = frameHeaderAt(bytes);
+        const int height = bytes[at] << 8 | bytes[at + 1], width = bytes[at + 2] << 8 | bytes[at + 3];
+        const Result<Image8> image = loadImageFile(entry.path());
+        ASSERT_TRUE(image.ok()) << image.error().text();
+        EXPECT_EQ(image->width, width);
+        EXPECT_EQ(image->height, height);
+        EXPECT_EQ(image->rgba.size(), std::size_t(width) * std::size_t(height) * 4);
+        ++decoded;
+    }
+    EXPECT_GE(decoded, 7);
+}
+
+// A file cut short is refused with a reason naming it (libjpeg alone would fill the rest grey).
+TEST(JpegDecode, ATruncatedFileIsRefusedWithItsName) {
+    TempFolder folder;
+    const int w = 64, h = 64;
+    std::vector<std::uint8_t> rgb;
+    for (int i = 0; i < w * h; ++i) rgb.insert(rgb.end(), {static_cast<std::uint8_t>(i * 7), static_cast<std::uint8_t>(i * 13), 90});
+    for (bool progressive : {false, true}) {
+        SCOPED_TRACE(progressive ? "progressive" : "baseline");
+        std::vector<std::uint8_t> bytes = encodeJpeg(w, h, rgb, {JCS_RGB, progressive, true});
+        bytes.resize(bytes.size() * 2 / 3);
+        const fs::path file = writeFile(folder.path / "cut.jpg", bytes);
+        const Result<Image8> image = loadImageFile(file);
+        ASSERT_FALSE(image.ok());
+        EXPECT_EQ(image.error().first().code, Code::ImageDecode);
+        EXPECT_NE(image.error().text().find(file.string()), std::string::npos) << image.error().text();
+        EXPECT_NE(image.error().text().find("truncated"), std::string::npos) << image.error().text();
+    }
+}
+
+// A side over the texture limit is refused from the header, before anything is decoded.
+TEST(JpegDecode, ASideOverTheTextureLimitIsRefusedFromTheHeader) {
+    TempFolder folder;
+    std::vector<std::uint8_t> bytes = encodeJpeg(8, 8, std::vector<std::uint8_t>(8 * 8 * 3, 128), {});
+    setDeclaredSize(bytes, 20000, 8);
+    const Result<Image8> image = loadImageFile(writeFile(folder.path / "wide.jpg", bytes));
+    ASSERT_FALSE(image.ok());
+    EXPECT_EQ(image.error().first().code, Code::ImageTooLarge);
+    EXPECT_NE(image.error().text().find("20000x8"), std::string::npos) << image.error().text();
+}
+
+// A few hundred bytes can declare a 16000x16000 progressive JPEG, whose DCT coefficients alone
+// need 1.5 GB: libjpeg's working memory is capped, so the file is refused instead of filling memory.
+TEST(JpegDecode, AHugeDeclaredProgressiveImageIsRefusedNotAllocated) {
+    TempFolder folder;
+    std::vector<std::uint8_t> bytes = encodeJpeg(16, 16, std::vector<std::uint8_t>(16 * 16 * 3, 60), {JCS_RGB, true, false});
+    setDeclaredSize(bytes, 16000, 16000);
+    const Result<Image8> image = loadImageFile(writeFile(folder.path / "huge.jpg", bytes));
+    ASSERT_FALSE(image.ok());
+    EXPECT_EQ(image.error().first().code, Code::ImageDecode);
+    EXPECT_NE(image.error().text().find("needs more than 512 MiB of working memory"), std::string::npos)
+        << image.error().text();
+    EXPECT_NE(image.error().text().find("16000x16000"), std::string::npos) << image.error().text();
+}
