@@ -7,7 +7,9 @@
 #include <exception>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <OpenEXR/ImfChannelList.h>
@@ -192,6 +194,20 @@ Status writeExr(const fs::path& path, int width, int height, std::span<const flo
 }
 
 namespace {
+// The size OpenEXR reads for an attribute of `type`, for the types whose values have a fixed size
+// (OpenEXR's standard attribute types); nothing for the others (strings, lists, unknown types).
+std::optional<std::uint64_t> exrFixedAttributeSize(std::string_view type) {
+    static const std::pair<std::string_view, std::uint64_t> kSizes[] = {
+        {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"deepImageState", 1},
+        {"double", 8}, {"envmap", 1}, {"float", 4}, {"int", 4}, {"keycode", 28}, {"lineOrder", 1},
+        {"m33f", 36}, {"m33d", 72}, {"m44f", 64}, {"m44d", 128}, {"rational", 8}, {"tiledesc", 9},
+        {"timecode", 8}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16}, {"v3i", 12}, {"v3f", 12}, {"v3d", 24},
+    };
+    for (const auto& [name, size] : kSizes)
+        if (name == type) return size;
+    return std::nullopt;
+}
+
 // The EXR header's attributes, walked before OpenEXR parses them: OpenEXR allocates an
 // attribute's declared size before reading it, so a 15-byte file can ask for gigabytes (a fuzz
 // finding). Every attribute must fit in the file.
@@ -218,6 +234,22 @@ Status exrHeaderFits(const fs::path& path) {
         const std::uint64_t size = byte(typeEnd + 1) | byte(typeEnd + 2) << 8 | byte(typeEnd + 3) << 16 |
                                    byte(typeEnd + 4) << 24;
         if (typeEnd + 5 + size > d.size()) return bad("an attribute is larger than the file");
+        // OpenEXR reads an attribute of a known fixed-size type by its type's size, whatever size
+        // it declares: a declaration that differs desynchronises every later attribute, and the
+        // walk above would then check other bytes than OpenEXR reads (a fuzz finding: a box2i that
+        // declared 0 bytes, after which OpenEXR took text for a size of 1.7 GB).
+        const std::string_view type(d.data() + nameEnd + 1, typeEnd - nameEnd - 1);
+        if (const std::optional<std::uint64_t> fixed = exrFixedAttributeSize(type); fixed && size != *fixed)
+            return bad("an attribute's declared size does not match its type");
+        // A preview image is read as its width and height, then that many RGBA pixels (allocated
+        // from the width and height): they must be exactly what the attribute holds.
+        if (type == "preview") {
+            if (size < 8) return bad("an attribute's declared size does not match its type");
+            const std::uint64_t at = typeEnd + 5;
+            const std::uint64_t w = byte(at) | byte(at + 1) << 8 | byte(at + 2) << 16 | byte(at + 3) << 24;
+            const std::uint64_t h = byte(at + 4) | byte(at + 5) << 8 | byte(at + 6) << 16 | byte(at + 7) << 24;
+            if (8 + 4 * w * h != size) return bad("an attribute's declared size does not match its type");
+        }
         // OpenEXR reads a channel list to its terminating NUL whatever size the attribute declares;
         // a list that does not end exactly at its declared size desynchronises every later
         // attribute (a fuzz finding). Entries: name, NUL, 16 bytes; then one NUL.

@@ -12,6 +12,12 @@
 #include <unistd.h>
 #include <vector>
 
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfPreviewImage.h>
+
 #include "TestFolder.h"
 #include "image/ImageWriters.h"
 
@@ -221,4 +227,54 @@ TEST(ImageIo, EveryExrCompressionReadsBackLosslessOnesExactlyAndHalfWithinHalfPr
         }
     }
     EXPECT_FALSE(exrCompressionNamed("zip9"));
+}
+
+namespace {
+// An EXR with a 2x2 preview image, written by OpenEXR itself; returns the file's bytes.
+std::string exrWithPreview(const fs::path& file) {
+    Imf::Header header(4, 4);
+    header.channels().insert("R", Imf::Channel(Imf::FLOAT));
+    header.setPreviewImage(Imf::PreviewImage(2, 2));
+    std::vector<float> red(16, 0.5f);
+    Imf::FrameBuffer frame;
+    frame.insert("R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(red.data()), sizeof(float), 4 * sizeof(float)));
+    {
+        Imf::OutputFile out(file.c_str(), header);
+        out.setFrameBuffer(frame);
+        out.writePixels(4);
+    }
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+}  // namespace
+
+// OpenEXR allocates a preview image from the width and height in its value, whatever size the
+// attribute declares; and it reads fixed-size attributes by their type's size. Headers whose
+// declarations disagree with what OpenEXR reads are refused before OpenEXR parses them.
+TEST(ImageIo, ExrAttributesWhoseSizesDisagreeWithTheirValuesAreRefused) {
+    TempFolder folder;
+    const fs::path good = folder.path / "preview.exr";
+    const std::string bytes = exrWithPreview(good);
+    ASSERT_TRUE(readExr(good).ok()) << readExr(good).error().text();
+
+    const std::size_t preview = bytes.find(std::string("preview\0preview\0", 16));
+    ASSERT_NE(preview, std::string::npos);
+    std::string huge = bytes;
+    huge[preview + 16 + 4 + 2] = '\x01';  // width 2 -> 65538: 4 * 65538 * 2 + 8 bytes, not 24
+    const fs::path hugeFile = folder.path / "huge-preview.exr";
+    std::ofstream(hugeFile, std::ios::binary) << huge;
+
+    const std::size_t window = bytes.find(std::string("displayWindow\0box2i\0", 20));
+    ASSERT_NE(window, std::string::npos);
+    std::string shortBox = bytes;
+    shortBox[window + 20] = '\x0c';  // a box2i that declares 12 bytes (OpenEXR reads 16)
+    const fs::path shortFile = folder.path / "short-box.exr";
+    std::ofstream(shortFile, std::ios::binary) << shortBox;
+
+    for (const fs::path& file : {hugeFile, shortFile}) {
+        const Result<ImageF32> read = readExr(file);
+        ASSERT_FALSE(read.ok()) << file;
+        EXPECT_NE(read.error().text().find("an attribute's declared size does not match its type"), std::string::npos)
+            << read.error().text();
+    }
 }

@@ -238,6 +238,7 @@ TEST(MediaImageFile, FuzzFindingsAreRefusedWithAReason) {
         {"stb-tga-declared-size-4350x33279-slow.tga", "not a PNG or JPEG file"},
         {"openexr-attribute-size-alloc-over-1gib.exr", "an attribute is larger than the file"},
         {"openexr-huge-data-window-alloc.exr", "not 1x1 .. 16384x16384"},
+        {"openexr-box2i-declared-size-mismatch-alloc.exr", "an attribute's declared size does not match its type"},
     };
     for (const auto& [file, reason] : expected) {
         SCOPED_TRACE(file);
