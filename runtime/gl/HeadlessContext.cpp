@@ -94,13 +94,14 @@ Result<std::shared_ptr<EglDisplay>> surfacelessDisplay() {
 
 // The first EGL device whose display initialises (NVIDIA's headless driver, or Mesa's devices).
 Result<std::shared_ptr<EglDisplay>> deviceDisplay() {
-    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (!hasToken(client, "EGL_EXT_platform_device") || !hasToken(client, "EGL_EXT_device_enumeration"))
-        return Error("EGL: the device platform (EGL_EXT_platform_device) is not available", Code::GlEgl);
+    // The functions are asked for, not the client extension string: with glvnd's libEGL and
+    // NVIDIA's driver (an H100, driver 580) the string lacked EGL_EXT_platform_device although
+    // eglQueryDevicesEXT listed the GPU and its display initialised.
     auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     auto getPlatformDisplay =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    if (!queryDevices || !getPlatformDisplay) return Error("EGL: the device functions are missing", Code::GlEgl);
+    if (!queryDevices || !getPlatformDisplay)
+        return Error("EGL: the device platform (EGL_EXT_platform_device) is not available", Code::GlEgl);
     EGLint count = 0;
     if (!queryDevices(0, nullptr, &count) || count <= 0) return Error("EGL: no EGL devices found", Code::GlEgl);
     std::vector<EGLDeviceEXT> devices(static_cast<size_t>(count));

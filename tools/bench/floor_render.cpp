@@ -160,16 +160,29 @@ bool hasExtension(const char* list, const char* name) {
     return false;
 }
 
-// An OpenGL ES 3.0 context on Mesa's surfaceless platform, current without any surface.
+// An OpenGL ES 3.0 context current without any surface: on Mesa's surfaceless platform, or with
+// TOYHOST_EGL_PLATFORM=device on the first EGL device (EGL_EXT_platform_device: NVIDIA's driver),
+// as toyhost chooses with the same variable.
 void createContext() {
-    if (!hasExtension(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), "EGL_MESA_platform_surfaceless"))
-        fail("EGL: EGL_MESA_platform_surfaceless is not available");
+    const char* platformName = std::getenv("TOYHOST_EGL_PLATFORM");
+    const bool device = platformName && std::string(platformName) == "device";
     auto getPlatformDisplay =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!getPlatformDisplay) fail("EGL: eglGetPlatformDisplayEXT is missing");
-    EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLDisplay display = EGL_NO_DISPLAY;
+    if (device) {
+        auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+        EGLDeviceEXT first = nullptr;
+        EGLint devices = 0;
+        if (!queryDevices || !queryDevices(1, &first, &devices) || devices < 1) fail("EGL: no EGL device found");
+        display = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, first, nullptr);
+    } else {
+        if (!hasExtension(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), "EGL_MESA_platform_surfaceless"))
+            fail("EGL: EGL_MESA_platform_surfaceless is not available (TOYHOST_EGL_PLATFORM=device for a GPU)");
+        display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    }
     if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr))
-        fail(std::string("EGL: cannot initialize the surfaceless display: ") + eglErrorText());
+        fail(std::string("EGL: cannot initialize the display: ") + eglErrorText());
     if (!hasExtension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context"))
         fail("EGL: EGL_KHR_surfaceless_context is not supported");
     if (!eglBindAPI(EGL_OPENGL_ES_API)) fail(std::string("EGL: eglBindAPI: ") + eglErrorText());
