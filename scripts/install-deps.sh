@@ -6,7 +6,7 @@ packages=(
   cmake ninja-build g++ pkg-config
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri   # EGL + OpenGL ES 3 (Mesa llvmpipe)
   libglfw3-dev libglm-dev nlohmann-json3-dev libcli11-dev
-  libstb-dev libpng-dev libopenexr-dev                  # image I/O: PNG in, PNG and EXR out
+  libpng-dev libopenexr-dev                              # image I/O: PNG in and out, EXR
   libjpeg62-turbo-dev                                    # JPEG in (libjpeg-turbo, the decoder browsers use)
   libdeflate-dev                                         # PNG capture: the fast deflate behind --png-level
   libfftw3-dev                                           # the music/mic texture (FFT, as WebAudio's analyser)

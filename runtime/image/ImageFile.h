@@ -1,4 +1,4 @@
-// ImageFile: decodes PNG (stb_image) and JPEG (libjpeg-turbo, image/JpegDecode) into the RGBA8
+// ImageFile: decodes PNG (libpng, image/PngDecode) and JPEG (libjpeg-turbo, image/JpegDecode) into the RGBA8
 // pixels a browser hands to WebGL for an <img>. No GL needed.
 #pragma once
 

@@ -1,5 +1,5 @@
 // libFuzzer target: the image readers toyhost uses on user files: loadImageFile (PNG/JPEG/...,
-// stb_image; runtime/image/ImageFile.h) and readExr (OpenEXR; runtime/image/ImageWriters.h). Each
+// libpng and libjpeg-turbo; runtime/image/ImageFile.h) and readExr (OpenEXR; runtime/image/ImageWriters.h). Each
 // input is written to one temp file, which both readers then open by path, as toyhost does.
 #include <cstddef>
 #include <cstdint>

@@ -18,11 +18,11 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfPreviewImage.h>
 
+#include "LibpngDecode.h"
 #include "TestFolder.h"
 #include "image/ImageWriters.h"
 
 #include <memory>
-#include <stb_image.h>
 
 using namespace toyhost;
 namespace fs = std::filesystem;
@@ -79,14 +79,17 @@ TEST(ImageIo, PngRoundTripKeepsPixelsAndPutsTheTopRowFirst) {
         ASSERT_EQ(read->width, width);
         ASSERT_EQ(read->height, height);
         EXPECT_EQ(read->rgba, bottomUp) << "level " << level;
-        // In the file itself (decoded by stb as stored, top row first) row 0 is the input's last
-        // row: the top of the image.
-        int w = 0, h = 0, n = 0;
-        std::unique_ptr<stbi_uc, void (*)(void*)> raw(stbi_load(file.c_str(), &w, &h, &n, 4), stbi_image_free);
-        ASSERT_TRUE(raw);
+        // In the file itself (decoded by libpng's simplified reader as stored, top row first) row 0
+        // is the input's last row: the top of the image.
+        std::ifstream in(file, std::ios::binary);
+        const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        int w = 0, h = 0;
+        const std::vector<std::uint8_t> raw = toyhost::testing::libpngDecode(bytes, w, h);
+        ASSERT_EQ(raw.size(), bottomUp.size());
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width * 4; ++x)
-                ASSERT_EQ(raw.get()[y * width * 4 + x], bottomUp[static_cast<std::size_t>((height - 1 - y) * width * 4 + x)])
+                ASSERT_EQ(raw[static_cast<std::size_t>(y * width * 4 + x)],
+                          bottomUp[static_cast<std::size_t>((height - 1 - y) * width * 4 + x)])
                     << "level " << level << " row " << y;
     }
     EXPECT_EQ(folder.files().size(), 3u);

@@ -234,6 +234,7 @@ TEST(MediaImageFile, FuzzFindingsAreRefusedWithAReason) {
         {"stb-jpeg-progressive-ac-scan-uses-undefined-table.jpg", "Quantization table 0x02 was not defined"},
         {"stb-jpeg-scan-uses-undefined-huffman-table.jpg", "Bogus Huffman table definition"},
         {"stb-png-idat-length-alloc-over-1gib.png", "a PNG chunk is longer than the file"},
+        {"stb-png-empty-idat-null-offset.png", "cannot decode image"},
         {"stb-hdr-rle-zero-count-endless-loop.hdr", "not a PNG or JPEG file"},
         {"stb-tga-declared-size-4350x33279-slow.tga", "not a PNG or JPEG file"},
         {"openexr-attribute-size-alloc-over-1gib.exr", "an attribute is larger than the file"},

@@ -1,0 +1,134 @@
+#include "image/PngDecode.h"
+
+#include <csetjmp>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include <png.h>
+
+namespace toyhost {
+
+namespace {
+
+// Deflate cannot expand data more than 1032 times (258 bytes from one 2-bit code, in theory; zlib's
+// documentation gives 1032:1 as the limit). A file smaller than its declared image divided by that
+// cannot hold it: refused before the picture's memory is allocated (a 100-byte file can declare
+// 16384x16384).
+constexpr std::uint64_t kDeflateMaxRatio = 1032;
+
+// Everything decodeInto() touches lives here, outside its frame: libpng reports errors by
+// longjmp back to decodeInto(), and no C++ object with a destructor may be jumped over.
+struct Job {
+    png_structp png;
+    png_infop info;
+    const unsigned char* data;
+    std::size_t size;
+    std::size_t at;  // read position in data
+    int maxSide;
+    Image8* out;
+    std::vector<png_bytep>* rows;
+    char message[256];
+    bool tooLarge;
+    bool tooShort;
+};
+
+void onError(png_structp png, png_const_charp message) {
+    auto* job = static_cast<Job*>(png_get_error_ptr(png));
+    std::strncpy(job->message, message ? message : "unknown error", sizeof job->message - 1);
+    png_longjmp(png, 1);
+}
+
+void onWarning(png_structp, png_const_charp) {}  // ancillary-chunk trouble: the picture is still read
+
+void onRead(png_structp png, png_bytep out, png_size_t length) {
+    auto* job = static_cast<Job*>(png_get_io_ptr(png));
+    if (length > job->size - job->at) png_error(png, "the PNG data ends before the image does (a truncated file?)");
+    std::memcpy(out, job->data + job->at, length);
+    job->at += length;
+}
+
+// Returns false with job.message set (or tooLarge / tooShort) when the file cannot be decoded.
+bool decodeInto(Job& job) {
+    job.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &job, onError, onWarning);
+    if (!job.png) {
+        std::strncpy(job.message, "libpng could not start", sizeof job.message - 1);
+        return false;
+    }
+    job.info = png_create_info_struct(job.png);
+    if (!job.info) {
+        png_destroy_read_struct(&job.png, nullptr, nullptr);
+        std::strncpy(job.message, "libpng could not start", sizeof job.message - 1);
+        return false;
+    }
+    if (setjmp(png_jmpbuf(job.png))) {
+        png_destroy_read_struct(&job.png, &job.info, nullptr);
+        return false;
+    }
+    png_set_read_fn(job.png, &job, onRead);
+    png_read_info(job.png, job.info);
+    const png_uint_32 width = png_get_image_width(job.png, job.info);
+    const png_uint_32 height = png_get_image_height(job.png, job.info);
+    job.out->width = static_cast<int>(width);
+    job.out->height = static_cast<int>(height);
+    if (width > static_cast<png_uint_32>(job.maxSide) || height > static_cast<png_uint_32>(job.maxSide)) {
+        job.tooLarge = true;
+        png_destroy_read_struct(&job.png, &job.info, nullptr);
+        return false;
+    }
+    // The filtered image data the header implies: a filter byte and the packed pixels per row.
+    const std::uint64_t bitsPerPixel =
+        std::uint64_t(png_get_channels(job.png, job.info)) * png_get_bit_depth(job.png, job.info);
+    const std::uint64_t inflated = std::uint64_t(height) * (1 + (std::uint64_t(width) * bitsPerPixel + 7) / 8);
+    if (std::uint64_t(job.size) * kDeflateMaxRatio < inflated) {
+        job.tooShort = true;
+        png_destroy_read_struct(&job.png, &job.info, nullptr);
+        return false;
+    }
+
+    png_set_expand(job.png);     // palette to RGB, grey below 8 bits to 8, tRNS to alpha
+    png_set_strip_16(job.png);   // 16-bit channels: the high byte
+    png_set_gray_to_rgb(job.png);
+    png_set_add_alpha(job.png, 0xFF, PNG_FILLER_AFTER);  // only where there is no alpha yet
+    png_set_interlace_handling(job.png);
+    png_read_update_info(job.png, job.info);
+    const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
+    if (png_get_rowbytes(job.png, job.info) != rowBytes) png_error(job.png, "unexpected row layout after conversion");
+
+    job.out->rgba.resize(rowBytes * height);
+    job.rows->resize(height);
+    for (png_uint_32 y = 0; y < height; ++y)  // files store the top row first; Image8 the bottom first
+        (*job.rows)[y] = job.out->rgba.data() + static_cast<std::size_t>(height - 1 - y) * rowBytes;
+    png_read_image(job.png, job.rows->data());
+    png_read_end(job.png, nullptr);
+    png_destroy_read_struct(&job.png, &job.info, nullptr);
+    return true;
+}
+
+}  // namespace
+
+Result<Image8> decodePng(std::span<const unsigned char> bytes, int maxSide, const std::string& name) {
+    Image8 image;
+    std::vector<png_bytep> rows;
+    Job job{};
+    job.data = bytes.data();
+    job.size = bytes.size();
+    job.maxSide = maxSide;
+    job.out = &image;
+    job.rows = &rows;
+    if (decodeInto(job)) return image;
+    if (job.tooLarge)
+        return fileError(name,
+                         "the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                             ", larger than the " + std::to_string(maxSide) + " a side textures may have",
+                         Code::ImageTooLarge);
+    if (job.tooShort)
+        return fileError(name,
+                         "cannot decode image: the PNG declares " + std::to_string(image.width) + "x" +
+                             std::to_string(image.height) + " but the file is too small to hold it (a truncated file?)",
+                         Code::ImageDecode);
+    return fileError(name, std::string("cannot decode image: ") + job.message, Code::ImageDecode);
+}
+
+}  // namespace toyhost
