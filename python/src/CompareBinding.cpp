@@ -38,7 +38,7 @@ py::object imageOrNone(const std::vector<std::uint8_t>& rgba, int width, int hei
     if (rgba.empty()) return py::none();
     py::array_t<std::uint8_t> out({py::ssize_t(height), py::ssize_t(width), py::ssize_t(4)});
     std::copy(rgba.begin(), rgba.end(), out.mutable_data());
-    return std::move(out);
+    return out;
 }
 
 py::dict differenceAsDict(const FrameDifference& d, int width, int height) {

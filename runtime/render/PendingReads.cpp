@@ -2,15 +2,33 @@
 
 #include <GLES3/gl3.h>
 
+#include <algorithm>
+#include <cstring>
 #include <string>
 
 #include "gl/GlContext.h"
 
 namespace toyhost {
 
-namespace {
-constexpr std::size_t kSpareBuffers = 4;
-}  // namespace
+Status PendingReads::newBuffer(std::size_t bytes, GlBuffer& out) {
+    out = toyhost::makeBuffer();
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, out.id());
+    glBufferData(GL_PIXEL_PACK_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_STREAM_READ);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    if (GLenum error = glGetError(); error != GL_NO_ERROR)
+        return Error(std::string("GL: cannot create a buffer for reading frames: ") + glErrorName(error), Code::GlReadback);
+    return okStatus();
+}
+
+Status PendingReads::reserve(std::size_t bytes, std::size_t count) {
+    spareLimit_ = std::max(spareLimit_, count);
+    for (std::size_t i = 0; i < count; ++i) {
+        GlBuffer buffer;
+        if (Status made = newBuffer(bytes, buffer); !made) return made;
+        spare_.emplace_back(bytes, std::move(buffer));
+    }
+    return okStatus();
+}
 
 Status PendingReads::start(unsigned int framebuffer, const Read& read) {
     Pending next;
@@ -22,11 +40,8 @@ Status PendingReads::start(unsigned int framebuffer, const Read& read) {
             spare_.erase(spare);
             break;
         }
-    if (!next.buffer) {
-        next.buffer = makeBuffer();
-        glBindBuffer(GL_PIXEL_PACK_BUFFER, next.buffer.id());
-        glBufferData(GL_PIXEL_PACK_BUFFER, static_cast<GLsizeiptr>(next.bytes), nullptr, GL_STREAM_READ);
-    }
+    if (!next.buffer)
+        if (Status made = newBuffer(next.bytes, next.buffer); !made) return made;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
     glBindBuffer(GL_PIXEL_PACK_BUFFER, next.buffer.id());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -36,8 +51,6 @@ Status PendingReads::start(unsigned int framebuffer, const Read& read) {
                  read.format == PixelFormat::Rgba8 ? GL_UNSIGNED_BYTE : GL_FLOAT, nullptr);
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    if (GLenum error = glGetError(); error != GL_NO_ERROR)
-        return Error(std::string("GL: cannot queue a read of a frame: ") + glErrorName(error), Code::GlReadback);
     next.fence = GlFence(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0));
     // Submitted now, so that the GPU works on it while the caller goes on.
     glFlush();
@@ -82,7 +95,7 @@ Status PendingReads::releaseOldest() {
             released = Error("GL: a frame's read buffer lost its content (glUnmapBuffer)", Code::GlReadback);
         glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     }
-    if (spare_.size() < kSpareBuffers) spare_.emplace_back(read.bytes, std::move(read.buffer));
+    if (spare_.size() < spareLimit_) spare_.emplace_back(read.bytes, std::move(read.buffer));
     return released;
 }
 

@@ -1,7 +1,7 @@
 // PendingReads: framebuffer reads queued without waiting (each into a pixel-pack buffer, followed
 // by a fence) and taken in the order they were queued, each with its own size and format; the
-// buffers are reused. The library Session's queued reads (queueRead / takeRead); a recording uses
-// the fixed-size ReadbackRing. Needs its GL context current for its whole life.
+// buffers are reused. The library Session's queued reads (queueRead / takeRead), and under a
+// recording's ReadbackRing. Needs its GL context current for its whole life.
 #pragma once
 
 #include <cstddef>
@@ -28,8 +28,11 @@ public:
     // The oldest read not yet taken. Requires size() > 0.
     const Read& oldest() const { return pending_.front().read; }
 
+    // Makes `count` buffers of `bytes` ready for later reads (kept while unused), so that reads of
+    // that size allocate nothing and a failure to allocate shows here. Errors name GL's error.
+    Status reserve(std::size_t bytes, std::size_t count);
     // Queues a read of `framebuffer`'s colour (read.width x read.height from the origin) and
-    // returns at once.
+    // returns at once. A GL error is checked only where a buffer had to be made (not per read).
     Status start(unsigned int framebuffer, const Read& read);
     // Whether the oldest read is complete (mapOldest() would not wait). Requires size() > 0.
     bool oldestDone() const;
@@ -50,8 +53,11 @@ private:
         bool mapped = false;
     };
     std::deque<Pending> pending_;
+    Status newBuffer(std::size_t bytes, GlBuffer& out);
+
     // Buffers of taken reads, by size, for the next reads (a few: a session reads one size).
     std::vector<std::pair<std::size_t, GlBuffer>> spare_;
+    std::size_t spareLimit_ = 4;
 };
 
 }  // namespace toyhost

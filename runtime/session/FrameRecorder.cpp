@@ -141,7 +141,7 @@ Status FrameRecorder::capture(const Player& player, int frame) {
         if (Status collected = collectOldest(); !collected) return collected;
     {
         Stopwatch readback{readbackSeconds_};
-        ring_->start(output.framebuffer, frame);
+        if (Status started = ring_->start(output.framebuffer, frame); !started) return started;
     }
     ++captured_;
     return poll();

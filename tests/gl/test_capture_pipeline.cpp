@@ -40,7 +40,7 @@ TEST_F(CapturePipeline, RingReturnsTheSameBytesAsASynchronousReadWithFramesInFli
                 ASSERT_TRUE(ring->takeOldest(got).ok());
                 EXPECT_EQ(got, expected[oldest]) << passName(pass) << " frame " << oldest;
             }
-            ring->start(toy->player().output(pass).framebuffer, frame);
+            ASSERT_TRUE(ring->start(toy->player().output(pass).framebuffer, frame).ok());
         }
         while (!ring->empty()) {
             const int oldest = ring->oldestFrame();
