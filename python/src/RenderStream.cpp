@@ -68,7 +68,7 @@ void RenderStream::renderOne() {
     } else {
         post();
     }
-    changed_.notify_all();
+    if (!running_) changed_.notify_all();  // finished, failed or paused: Python must look
 }
 
 Status RenderStream::takeOne() {
@@ -90,7 +90,7 @@ Status RenderStream::takeOne() {
     frame.frame = taken->frame;
     std::lock_guard<std::mutex> lock(mutex_);
     if (!cancelled_) ready_.push_back(std::move(frame));  // else dropped, as cancel() says
-    changed_.notify_all();
+    if (ready_.size() >= kWakeAt) changed_.notify_all();
     return okStatus();
 }
 
@@ -116,7 +116,9 @@ std::optional<RenderedFrame> RenderStream::next() {
             throw ToyhostError(std::move(failure));
         }
         if (finished_) return std::nullopt;
-        changed_.wait(lock);
+        // Woken once kWakeAt frames are ready (or the worker stopped), not for each frame: a
+        // wake-up costs the Python thread and the renderer more than the frames' handing over.
+        changed_.wait(lock, [&] { return cancelled_ || failed_ || finished_ || !running_ || ready_.size() >= kWakeAt; });
     }
 }
 

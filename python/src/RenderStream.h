@@ -45,7 +45,10 @@ class RenderStream : public std::enable_shared_from_this<RenderStream> {
 public:
     // Frames rendered ahead of the one Python takes: enough to keep the worker busy while Python
     // handles a frame; each costs its pixels' memory.
-    static constexpr std::size_t kReady = 2;
+    static constexpr std::size_t kReady = 4;
+    // Python, finding no frame ready, sleeps until this many are (or the rendering stopped): one
+    // wake-up per kWakeAt frames. Half of kReady, so that the worker keeps rendering meanwhile.
+    static constexpr std::size_t kWakeAt = 2;
     // Reads queued and not yet complete before the oldest is waited for (the CLI's readback ring
     // has as many).
     static constexpr int kInFlight = 3;

@@ -164,7 +164,7 @@ def test_render_runs_ahead_of_the_loop_and_stops_when_left(probe):
             if index == 3:
                 break
         ahead = session.next_frame
-        assert 4 <= ahead <= 4 + 5, f"at most 5 frames rendered past the last one yielded, not {ahead - 4}"
+        assert 4 <= ahead <= 4 + 7, f"at most 7 frames (4 ready, 3 being read) rendered past the last one yielded, not {ahead - 4}"
         more = list(session.render(2))
         assert [index for index, _ in more] == [ahead, ahead + 1], "the next render goes on from there"
         assert column(more[1][1], 3)[1] == ahead + 1
@@ -267,3 +267,40 @@ def test_toyhost_egl_platform_chooses_the_platform_as_for_the_cli(rows, monkeypa
         assert session.backend.startswith("EGL device"), session.backend
         session.step()
         assert session.frame()[0, 0].tolist() == [255, 0, 0, 255], "it renders there too"
+
+
+def test_step_then_frame_gives_each_frames_own_picture_whatever_comes_between(probe):
+    """step() reads the Image ahead for the frame() that usually follows; every other call between
+    them must still see the session as it is (iFrame in column 3's green, the canvas's size)."""
+    with toyhost.Session(probe, size=(32, 16), date=DATE) as session:
+        for index in range(4):  # the pattern: from the second step on, frame() takes the read-ahead
+            assert session.step() == index
+            image = session.frame()
+            assert column(image, 3)[1] == index
+            image[:] = 0  # the caller's array: changing it changes nothing kept
+        assert column(session.frame(), 3)[1] == 3, "a second frame() reads again"
+        session.step()
+        session.step()  # a step whose frame was not read: the next one is read on demand
+        assert column(session.frame(), 3)[1] == 5
+        session.step()
+        assert column(session.frame("Image"), 3)[1] == 6
+        session.step()
+        assert session.frame("Buffer A", dtype="float32")[0, 0, 0] == 8.0, "another pass: read on demand"
+        assert column(session.frame(), 3)[1] == 7
+        session.step()
+        session.frame()
+        session.step()  # read ahead (the pattern held), then the canvas changes under it
+        session.resize((24, 8))
+        resized = session.frame()
+        assert resized.shape == (8, 24, 4), "the read-ahead of the old size is dropped at resize"
+        session.step()
+        session.frame()
+        session.step()
+        frames = list(session.render(1))
+        assert [index for index, _ in frames] == [12]
+        assert column(session.frame(), 3)[1] == 12, "render() drops the read-ahead of frame 11"
+        session.step()
+        session.frame()
+        session.step()
+        session.restart()
+        assert column(session.frame(), 3)[1] == 14, "restart renders nothing: the frame shown stays"
