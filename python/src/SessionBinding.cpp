@@ -13,8 +13,6 @@
 #include <optional>
 #include <span>
 #include <string>
-#include <type_traits>
-#include <utility>
 #include <vector>
 
 #include <toyhost/Session.h>
@@ -65,10 +63,6 @@ public:
 
     // The session's GL objects and context go now, on the worker (idempotent).
     void close() {
-        // The prefetched array is a Python object: released only with the GIL (a destructor at
-        // interpreter shutdown may run without it; the array is then left to the process's end).
-        if (prefetched_ && !PyGILState_Check()) (void)prefetched_->release();
-        prefetched_.reset();
         if (!session_) return;
         if (!worker_.inOwnProcess()) {
             // A forked child's copy: its GL objects are the parent's to free; forget them here.
@@ -86,35 +80,20 @@ public:
     }
     bool closed() const { return !session_; }
 
-    // Renders the next frame; returns its iFrame. When the previous step's frame was read with
-    // frame() (the Image pass, uint8), this step reads its own in the same trip to the GL thread,
-    // for the frame() that likely follows: one hand-over a frame instead of two.
+    // Renders the next frame; returns its iFrame.
     int step(const std::vector<InputEvent>& events, std::optional<double> time, double timeDelta, double frameRate) {
         Session& s = open();
-        const bool prefetch = readAfterStep_;
-        forgetPrefetch();
-        py::array_t<std::uint8_t> pixels;
-        std::span<std::uint8_t> out;
-        if (prefetch) {
-            pixels = py::array_t<std::uint8_t>({height_, width_, 4});
-            out = std::span<std::uint8_t>(pixels.mutable_data(), static_cast<std::size_t>(pixels.size()));
-        }
-        const int index = onGlThread([&] {
+        return onGlThread([&] {
             const int index = s.frame();
             throwIfFailed(time ? s.stepAt(*time, timeDelta, frameRate, events) : s.step(events));
-            if (prefetch) throwIfFailed(s.read("Image", out, RowOrder::TopFirst));
             return index;
         });
-        if (prefetch) prefetched_ = std::move(pixels);
-        justStepped_ = true;
-        return index;
     }
 
     // render(): frames rendered ahead on the worker, taken by RenderStream.next().
     std::shared_ptr<RenderStream> render(std::vector<InputEvent> events, int frames, int every, const std::string& pass,
                                          bool floats) {
         Session& s = open();
-        forgetPrefetch();
         std::erase_if(streams_, [](const std::weak_ptr<RenderStream>& stream) { return stream.expired(); });
         RenderRequest request{std::move(events), frames, every, pass, floats};
         std::shared_ptr<RenderStream> stream = RenderStream::start(worker_, s, std::move(request));
@@ -125,18 +104,6 @@ public:
     template <class T>
     py::array_t<T> read(const std::string& pass) {
         Session& s = open();
-        const bool afterStep = std::exchange(justStepped_, false);
-        if constexpr (std::is_same_v<T, std::uint8_t>) {
-            if (pass == "Image") {
-                if (prefetched_) {
-                    py::array_t<T> pixels = std::move(*prefetched_);
-                    prefetched_.reset();
-                    readAfterStep_ = true;  // the pattern goes on: the next step reads too
-                    return pixels;
-                }
-                readAfterStep_ = afterStep;
-            }
-        }
         py::array_t<T> pixels({height_, width_, 4});
         std::span<T> out(pixels.mutable_data(), static_cast<std::size_t>(pixels.size()));
         throwIfFailed(onGlThread([&] { return s.read(pass, out, RowOrder::TopFirst); }));
@@ -171,7 +138,6 @@ public:
 
     Reloaded reload(const Shadertoy& next) {
         Session& s = open();
-        forgetPrefetch();
         Reloaded outcome = valueOrThrow(onGlThread([&] { return s.reload(next); }));
         width_ = s.width();
         height_ = s.height();
@@ -180,12 +146,10 @@ public:
 
     void restart() {
         Session& s = open();
-        forgetPrefetch();
         onGlThread([&] { s.restart(); });
     }
     void resize(int w, int h) {
         Session& s = open();
-        forgetPrefetch();
         throwIfFailed(onGlThread([&] { return s.resize(w, h); }));
         width_ = s.width();
         height_ = s.height();
@@ -200,13 +164,6 @@ public:
     std::string backend() { return ask([](Session& s) { return s.backend(); }); }
 
 private:
-    // A frame read ahead by step() no longer shows the session once anything else changed it.
-    void forgetPrefetch() {
-        prefetched_.reset();
-        justStepped_ = false;
-        readAfterStep_ = false;
-    }
-
     Session& open() {
         if (!session_) throw ToyhostError(Error("the session is closed", Code::Usage));
         if (!worker_.inOwnProcess())
@@ -229,12 +186,6 @@ private:
     GlWorker worker_;
     std::unique_ptr<Session> session_;  // created, used and destroyed on worker_
     std::vector<std::weak_ptr<RenderStream>> streams_;  // render() iterations, cancelled at close()
-    // step() then frame(): the Image pass read by the step for the frame() after it (Python thread,
-    // GIL held). justStepped_: nothing but a step since the last call; readAfterStep_: the last
-    // step's frame was read, so the next step reads its own.
-    std::optional<py::array_t<std::uint8_t>> prefetched_;
-    bool justStepped_ = false;
-    bool readAfterStep_ = false;
     int width_ = 0;  // the canvas, kept here so that allocating a frame's array needs no round trip
     int height_ = 0;
 };

@@ -270,35 +270,35 @@ def test_toyhost_egl_platform_chooses_the_platform_as_for_the_cli(rows, monkeypa
 
 
 def test_step_then_frame_gives_each_frames_own_picture_whatever_comes_between(probe):
-    """step() reads the Image ahead for the frame() that usually follows; every other call between
-    them must still see the session as it is (iFrame in column 3's green, the canvas's size)."""
+    """frame() shows the session as it is after whatever came between (iFrame in column 3's green,
+    the canvas's size), and each array is the caller's own."""
     with toyhost.Session(probe, size=(32, 16), date=DATE) as session:
-        for index in range(4):  # the pattern: from the second step on, frame() takes the read-ahead
+        for index in range(4):
             assert session.step() == index
             image = session.frame()
             assert column(image, 3)[1] == index
             image[:] = 0  # the caller's array: changing it changes nothing kept
         assert column(session.frame(), 3)[1] == 3, "a second frame() reads again"
         session.step()
-        session.step()  # a step whose frame was not read: the next one is read on demand
+        session.step()  # a step whose frame was not read
         assert column(session.frame(), 3)[1] == 5
         session.step()
         assert column(session.frame("Image"), 3)[1] == 6
         session.step()
-        assert session.frame("Buffer A", dtype="float32")[0, 0, 0] == 8.0, "another pass: read on demand"
+        assert session.frame("Buffer A", dtype="float32")[0, 0, 0] == 8.0, "another pass"
         assert column(session.frame(), 3)[1] == 7
         session.step()
         session.frame()
-        session.step()  # read ahead (the pattern held), then the canvas changes under it
+        session.step()
         session.resize((24, 8))
         resized = session.frame()
-        assert resized.shape == (8, 24, 4), "the read-ahead of the old size is dropped at resize"
+        assert resized.shape == (8, 24, 4), "the new canvas"
         session.step()
         session.frame()
         session.step()
         frames = list(session.render(1))
         assert [index for index, _ in frames] == [12]
-        assert column(session.frame(), 3)[1] == 12, "render() drops the read-ahead of frame 11"
+        assert column(session.frame(), 3)[1] == 12, "render()'s last frame"
         session.step()
         session.frame()
         session.step()
