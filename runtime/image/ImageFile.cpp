@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/AtomicFile.h"
+#include "core/Defaults.h"
 #include "image/JpegDecode.h"
 #include "image/PngDecode.h"
 
@@ -14,8 +15,8 @@ namespace toyhost {
 namespace fs = std::filesystem;
 
 namespace {
-// The largest side a texture may have (toyhost's canvas limit, core/Defaults.h).
-constexpr int kMaxImageSide = 16384;
+// The largest side a texture may have: toyhost's canvas limit.
+constexpr int kMaxImageSide = defaults::kMaxCanvasSide;
 
 // Every PNG chunk fits in the file: a chunk that claims more than the file holds is named as such
 // (the decoder before libpng allocated a chunk's declared length before reading it: a 41-byte

@@ -8,6 +8,8 @@
 #include <jerror.h>
 #include <jpeglib.h>
 
+#include "image/DecodeLimits.h"
+
 namespace toyhost {
 
 namespace {
@@ -129,11 +131,7 @@ Result<Image8> decodeJpeg(std::span<const unsigned char> bytes, int maxSide, con
     job.maxSide = maxSide;
     job.out = &image;
     if (decodeInto(job)) return image;
-    if (job.tooLarge)
-        return fileError(name,
-                         "the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                             ", larger than the " + std::to_string(maxSide) + " a side textures may have",
-                         Code::ImageTooLarge);
+    if (job.tooLarge) return imageTooLarge(name, image.width, image.height, maxSide);
     if (job.errors.endedEarly)
         return fileError(name, "cannot decode image: the JPEG data ends before the image does (a truncated file?)",
                          Code::ImageDecode);

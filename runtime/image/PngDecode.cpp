@@ -8,6 +8,8 @@
 
 #include <png.h>
 
+#include "image/DecodeLimits.h"
+
 namespace toyhost {
 
 namespace {
@@ -118,11 +120,7 @@ Result<Image8> decodePng(std::span<const unsigned char> bytes, int maxSide, cons
     job.out = &image;
     job.rows = &rows;
     if (decodeInto(job)) return image;
-    if (job.tooLarge)
-        return fileError(name,
-                         "the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                             ", larger than the " + std::to_string(maxSide) + " a side textures may have",
-                         Code::ImageTooLarge);
+    if (job.tooLarge) return imageTooLarge(name, image.width, image.height, maxSide);
     if (job.tooShort)
         return fileError(name,
                          "cannot decode image: the PNG declares " + std::to_string(image.width) + "x" +
