@@ -1,10 +1,7 @@
 #include "image/ImageFile.h"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <memory>
 #include <string>
+#include <string_view>
 
 #include "core/AtomicFile.h"
 #include "core/Defaults.h"

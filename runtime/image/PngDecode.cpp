@@ -103,7 +103,8 @@ bool decodeInto(Job& job) {
     for (png_uint_32 y = 0; y < height; ++y)  // files store the top row first; Image8 the bottom first
         (*job.rows)[y] = job.out->rgba.data() + static_cast<std::size_t>(height - 1 - y) * rowBytes;
     png_read_image(job.png, job.rows->data());
-    png_read_end(job.png, nullptr);
+    // Every row is decoded: what follows (text chunks, IEND) is not read, so a file cut after its
+    // image data still shows.
     png_destroy_read_struct(&job.png, &job.info, nullptr);
     return true;
 }

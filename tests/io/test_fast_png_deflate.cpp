@@ -13,6 +13,7 @@
 
 #include "LibpngDecode.h"
 
+#include "TestPictures.h"
 #include "image/HuffmanCode.h"
 #include "image/PngEncoder.h"
 
@@ -20,20 +21,11 @@ using namespace toyhost;
 using toyhost::testing::libpngDecode;
 
 namespace {
-struct Picture {
-    std::string name;
-    int width, height;
-    std::vector<std::uint8_t> rgba;  // rows top first
-};
+using toyhost::testing::Picture;
 
 template <class F>
 Picture make(std::string name, int w, int h, F&& byte) {
-    Picture p{std::move(name), w, h, {}};
-    p.rgba.reserve(static_cast<std::size_t>(w) * h * 4);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            for (int c = 0; c < 4; ++c) p.rgba.push_back(static_cast<std::uint8_t>(byte(x, y, c)));
-    return p;
+    return toyhost::testing::makePicture(std::move(name), w, h, std::forward<F>(byte));
 }
 
 std::uint32_t lcg(std::uint32_t& state) {

@@ -182,3 +182,17 @@ TEST(PngDecode, ADamagedImageChunkIsRefusedWithItsReason) {
     EXPECT_NE(image.error().text().find((folder.path / "bad.png").string()), std::string::npos) << image.error().text();
     EXPECT_NE(image.error().text().find("cannot decode image"), std::string::npos) << image.error().text();
 }
+
+// A file cut after its image data (no IEND) still shows, with every row.
+TEST(PngDecode, AFileMissingOnlyItsEndChunkDecodes) {
+    TempFolder folder;
+    writePngFile(folder.path / "ok.png", 4, 4, std::vector<std::vector<png_byte>>(4, std::vector<png_byte>(12, 9)), {});
+    std::vector<std::uint8_t> bytes = readBytes(folder.path / "ok.png");
+    const std::string text(bytes.begin(), bytes.end());
+    ASSERT_EQ(text.rfind("IEND"), bytes.size() - 8);
+    bytes.resize(bytes.size() - 12);
+    writeBytes(folder.path / "no-iend.png", bytes);
+    const Result<Image8> image = loadImageFile(folder.path / "no-iend.png");
+    ASSERT_TRUE(image.ok()) << image.error().text();
+    EXPECT_EQ(pixel(*image, 3, 3), (std::vector<int>{9, 9, 9, 255}));
+}

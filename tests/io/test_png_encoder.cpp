@@ -11,6 +11,7 @@
 #include "LibpngDecode.h"
 
 #include "TestFolder.h"
+#include "TestPictures.h"
 #include "image/ImageWriters.h"
 #include "image/PngEncoder.h"
 
@@ -18,22 +19,14 @@ using namespace toyhost;
 using toyhost::testing::libpngDecode;
 
 namespace {
-struct Picture {
-    std::string name;
-    int width, height;
-    std::vector<std::uint8_t> rgba;  // rows top first
-};
+using toyhost::testing::Picture;
 
 // Flat panels and lines (runs), a smooth gradient (filters pay), noise (incompressible), and a
 // 1x1 and a one-row image (the first-row and first-pixel cases of every filter).
 std::vector<Picture> pictures() {
     std::vector<Picture> all;
     auto make = [&](std::string name, int w, int h, auto pixel) {
-        Picture p{std::move(name), w, h, {}};
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x)
-                for (int c = 0; c < 4; ++c) p.rgba.push_back(static_cast<std::uint8_t>(pixel(x, y, c)));
-        all.push_back(std::move(p));
+        all.push_back(toyhost::testing::makePicture(std::move(name), w, h, pixel));
     };
     make("flat", 97, 61, [](int x, int y, int c) { return (x / 20 + y / 15) % 2 ? 40 + c * 60 : (x % 7 == 0 ? 0 : 250); });
     make("gradient", 131, 77, [](int x, int y, int c) { return c == 3 ? 255 - y : (x * (c + 1) + y * 3) & 255; });
