@@ -12,8 +12,8 @@
 #include <png.h>
 
 #include "LibpngDecode.h"
-
 #include "TestPictures.h"
+
 #include "image/HuffmanCode.h"
 #include "image/PngEncoder.h"
 
