@@ -80,6 +80,7 @@ public:
     Session& operator=(const Session&) = delete;
 
     // Renders the next frame at the fixed step (settings.fps), after applying `events` in order.
+    // Returns once the frame is submitted (glFlush), not drawn: a read() waits for it.
     Status step(std::span<const InputEvent> events = {});
     // Renders the next frame at iTime `time`, with iTimeDelta `timeDelta` and iFrameRate
     // `frameRate` (a real-time loop measures these itself).

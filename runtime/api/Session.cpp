@@ -241,7 +241,14 @@ Status Session::stepAt(double time, double timeDelta, double frameRate, std::spa
     FrameTime t{time, timeDelta, frameRate, impl_->clock->date(0)};
     // iDate follows iTime from the date of time 0 (FrameClock's form).
     t.date = dateAt(*impl_->core->plan().options.wallClock + (time - impl_->core->plan().options.startTime));
-    Status rendered = impl_->withGl([&] { return impl_->core->renderFrame(t, events); });
+    Status rendered = impl_->withGl([&] {
+        Status drawn = impl_->core->renderFrame(t, events);
+        // Submitted now, so that the GPU works on the frame while the caller goes on: a read that
+        // follows waits less (llvmpipe would start the frame only when it is read: step(); frame()
+        // on a trivial shader from Python, 1.18x the CLI's frame without this, 0.94-1.0x with it).
+        glFlush();
+        return drawn;
+    });
     if (Status limit = impl_->expired(); !limit) return limit;
     return rendered;
 }
