@@ -95,7 +95,7 @@ def main():
     # time depends on where its threads land on the 2 cores and varies by +-20% from process to
     # process, so the medians need many processes, not many frames.
     cases = [("trivial shader 320x180", REPO / "shadertoys/bench-trivial", (320, 180), 300 if args.quick else 2000,
-              args.reps * 3)]
+              args.reps * 6)]
     if (REPO.parent / "shared/shadertoys/MdXyzX/image.glsl").exists():
         cases.append(("ocean 800x450", REPO / "shadertoys/ocean", (800, 450), 8 if args.quick else 30, args.reps))
     else:
