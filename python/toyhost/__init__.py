@@ -79,7 +79,8 @@ class Session:
     # --- rendering -------------------------------------------------------------------------------
 
     def step(self, mouse=None, keys=None, time=None, time_delta=None, frame_rate=None, events=()):
-        """Renders the next frame and returns its iFrame.
+        """Renders the next frame and returns its iFrame. Returns once the frame is submitted to
+        the GPU, which draws it while Python goes on; frame() waits for it.
 
         ``mouse``: None leaves the mouse as it is; ``(x, y)`` holds the button down at canvas pixel
         (x, y), origin bottom-left (a press when it was up, a drag when already held); False

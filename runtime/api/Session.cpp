@@ -245,7 +245,7 @@ Status Session::stepAt(double time, double timeDelta, double frameRate, std::spa
         Status drawn = impl_->core->renderFrame(t, events);
         // Submitted now, so that the GPU works on the frame while the caller goes on: a read that
         // follows waits less (llvmpipe would start the frame only when it is read: step(); frame()
-        // on a trivial shader from Python, 1.18x the CLI's frame without this, 0.94-1.0x with it).
+        // on a trivial shader from Python, 1.18x the CLI's frame without this, 0.94-1.02x with it).
         glFlush();
         return drawn;
     });

@@ -240,9 +240,9 @@ TEST(Adversarial, AReaderThatGoesAwayEndsTheRunWithAWriteError) {
     EXPECT_NE(run.output.find("stdout"), std::string::npos) << run.output;
 }
 
-// The folder the frames are written into disappears while they are written: the run fails with the I/O
-// error and leaves nothing behind (neither the temporary file nor an encoder). The run is far
-// longer than the test (600 frames took 1.3 s, and once finished before the folder went).
+// The folder the frames are written into disappears while they are written (a file takes its
+// place): the run ends with the I/O error, not a hang or a crash. The run is far longer than the
+// test (600 frames took 1.3 s, and once finished before the folder went).
 TEST(Adversarial, AnOutputFolderThatVanishesIsAnErrorWithNothingLeft) {
     const fs::path dir = freshOutputDir("reliability/adversarial-vanished");
     BackgroundProcess run = startToyhost({"run", (sourceDir() / "shadertoys/ripple-pool").string(), "--size", "160x90",
