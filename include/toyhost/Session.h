@@ -83,7 +83,7 @@ public:
     // Returns once the frame is submitted (glFlush), not drawn: a read() waits for it.
     Status step(std::span<const InputEvent> events = {});
     // Renders the next frame at iTime `time`, with iTimeDelta `timeDelta` and iFrameRate
-    // `frameRate` (a real-time loop measures these itself).
+    // `frameRate` (a real-time loop measures these itself). Returns once submitted, as step().
     Status stepAt(double time, double timeDelta, double frameRate, std::span<const InputEvent> events = {});
     int frame() const;  // iFrame of the next frame
     int width() const;

@@ -7,8 +7,8 @@ raw RGBA to stdout (`--out -`, sent to /dev/null) and reports its frame loop's t
 and the rest); the Python side, in a fresh process each time like the CLI, times
 `session.step(); session.frame()` (a new numpy array per frame), and the render() iterator, over
 the same frames, from after `import toyhost` (which imports numpy) and the session's creation, as
-the CLI's clock starts after its start-up. Runs
-alternate CLI / Python and the median of each is kept, because the machine is shared.
+the CLI's clock starts after its start-up. Runs alternate CLI / Python and the median of each is
+kept, with a 90% interval on each ratio: one run varies by tens of percent on a small machine.
 
 usage: tools/bench/python_bench.py BUILD_DIR [--reps N] [--quick] [--write docs/performance.md]
 (--write replaces the block between "<!-- python-bench:begin -->" and "<!-- python-bench:end -->")"""
@@ -72,6 +72,23 @@ def child(way, target, width, height, frames):
         print(time.perf_counter() - start)
 
 
+def interval_and_verdict(python, cli):
+    """The ratio of the medians' 90% interval (bootstrap: both sides' runs resampled) and the
+    verdict: met only where the whole interval is within 3%, NOT met where all of it is above."""
+    draw = random.Random(1)
+    ratios = sorted(statistics.median(draw.choices(python, k=len(python)))
+                    / statistics.median(draw.choices(cli, k=len(cli))) for _ in range(2000))
+    low, high = ratios[100], ratios[1899]
+    if high <= 1.03:
+        verdict = "met"
+    elif low > 1.03:
+        verdict = "NOT met"
+    else:
+        median_met = statistics.median(python) / statistics.median(cli) <= 1.03
+        verdict = f"{'median met' if median_met else 'median not met'}, not shown either way"
+    return f"{low:.3f}-{high:.3f} | <= 1.03: {verdict}"
+
+
 def busy_ticks():
     with open("/proc/stat") as stat:
         fields = stat.readline().split()
@@ -126,34 +143,15 @@ def main():
                   + " ms/frame", file=sys.stderr)
         c = statistics.median(times["cli"]) * 1000 / frames
         cc = statistics.median(cpu["cli"]) * 1000
-        def spread(python, cli):
-            """The ratio of the medians' 90% interval (bootstrap: both sides' runs resampled)."""
-            draw = random.Random(1)
-            ratios = sorted(statistics.median(draw.choices(python, k=len(python)))
-                            / statistics.median(draw.choices(cli, k=len(cli))) for _ in range(2000))
-            return ratios[100], ratios[1899]
-
-        def cells(python, cli):
-            """The interval and the verdict: met only where the whole interval is within 3%."""
-            low, high = spread(python, cli)
-            ratio = statistics.median(python) / statistics.median(cli)
-            if high <= 1.03:
-                verdict = "met"
-            elif low > 1.03:
-                verdict = "NOT met"
-            else:
-                verdict = f"{'median met' if ratio <= 1.03 else 'median not met'}, not shown either way"
-            return f"{low:.3f}-{high:.3f} | <= 1.03: {verdict}"
-
         for way, label in (("step", "step(); frame()"), ("render", "render()")):
             p = statistics.median(times[way]) * 1000 / frames
             ratio = p / c
             rows.append(f"| {name}, {frames} frames, each read back: Python `{label}` / CLI `--out -` | "
                         f"{p:.3f} ms/frame | {c:.3f} ms/frame | **{ratio:.3f}** ({(p - c) * 1000:+.0f} us/frame) | "
-                        f"{cells(times[way], times['cli'])} |")
+                        f"{interval_and_verdict(times[way], times['cli'])} |")
             pc = statistics.median(cpu[way]) * 1000
             cpu_rows.append(f"| {name}, {frames} frames: Python `{label}` / CLI `--out -` | {pc:.3f} ms/frame | "
-                            f"{cc:.3f} ms/frame | **{pc / cc:.3f}** ({(pc - cc) * 1000:+.0f} us/frame) | {cells(cpu[way], cpu['cli'])} |")
+                            f"{cc:.3f} ms/frame | **{pc / cc:.3f}** ({(pc - cc) * 1000:+.0f} us/frame) | {interval_and_verdict(cpu[way], cpu['cli'])} |")
     elapsed = time.time() - started
     own = os.times()
     own_ticks = ((own.children_user - own_before.children_user) + (own.children_system - own_before.children_system)
