@@ -50,6 +50,10 @@ struct SessionSettings {
     // call that was running return an error once it returns (GL cannot be interrupted).
     double frameTimeout = 0;
     double compileTimeout = 0;
+    // Input scripts (the CLI's --mouse-script / --key-script JSON files) that step() replays by
+    // frame number before the caller's own events, as a headless run does; empty: none.
+    std::filesystem::path mouseScript;
+    std::filesystem::path keyScript;
 };
 
 enum class RowOrder { TopFirst, BottomFirst };
@@ -79,13 +83,17 @@ public:
     Session(const Session&) = delete;
     Session& operator=(const Session&) = delete;
 
-    // Renders the next frame at the fixed step (settings.fps), after applying `events` in order.
-    // Returns once the frame is submitted (glFlush), not drawn: a read() waits for it.
+    // Renders the next frame at the fixed step (settings.fps), after applying the input scripts'
+    // events due before it and then `events`, in order: the same frames as `toyhost run` with the
+    // same settings. Returns once the frame is submitted (glFlush), not drawn: a read() waits for it.
     Status step(std::span<const InputEvent> events = {});
     // Renders the next frame at iTime `time`, with iTimeDelta `timeDelta` and iFrameRate
-    // `frameRate` (a real-time loop measures these itself). Returns once submitted, as step().
+    // `frameRate` (a real-time loop measures these itself); iDate follows `time`. The input
+    // scripts' events of this frame number come first, as in step(). Returns once submitted.
     Status stepAt(double time, double timeDelta, double frameRate, std::span<const InputEvent> events = {});
     int frame() const;  // iFrame of the next frame
+    // The iTime step() gives frame `frame` (settings.startTime + frame / settings.fps).
+    double timeOf(int frame) const;
     int width() const;
     int height() const;
 

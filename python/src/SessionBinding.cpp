@@ -209,7 +209,8 @@ py::object nextRendered(RenderStream& stream) {
 SessionSettings settingsFrom(int width, int height, double fps, double startTime, const std::string& date,
                              const std::vector<std::filesystem::path>& mediaFolders,
                              const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
-                             bool floatImage, double frameTimeout, double compileTimeout) {
+                             bool floatImage, double frameTimeout, double compileTimeout,
+                             const std::filesystem::path& mouseScript, const std::filesystem::path& keyScript) {
     SessionSettings settings;
     settings.width = width;
     settings.height = height;
@@ -221,6 +222,8 @@ SessionSettings settingsFrom(int width, int height, double fps, double startTime
     settings.floatImage = floatImage;
     settings.frameTimeout = frameTimeout;
     settings.compileTimeout = compileTimeout;
+    settings.mouseScript = mouseScript;
+    settings.keyScript = keyScript;
     return settings;
 }
 
@@ -245,14 +248,15 @@ void bindSession(py::module_& module) {
         .def(py::init([](const Shadertoy& shadertoy, int width, int height, double fps, double startTime,
                          const std::string& date, const std::vector<std::filesystem::path>& mediaFolders,
                          const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
-                         bool floatImage, double frameTimeout, double compileTimeout) {
+                         bool floatImage, double frameTimeout, double compileTimeout,
+                         const std::filesystem::path& mouseScript, const std::filesystem::path& keyScript) {
                  return std::make_unique<NativeSession>(
                      shadertoy, settingsFrom(width, height, fps, startTime, date, mediaFolders, mediaFiles,
-                                             floatImage, frameTimeout, compileTimeout));
+                                             floatImage, frameTimeout, compileTimeout, mouseScript, keyScript));
              }),
              py::arg("shadertoy"), py::arg("width"), py::arg("height"), py::arg("fps"), py::arg("start_time"),
              py::arg("date"), py::arg("media_folders"), py::arg("media_files"), py::arg("float_image"),
-             py::arg("frame_timeout"), py::arg("compile_timeout"))
+             py::arg("frame_timeout"), py::arg("compile_timeout"), py::arg("mouse_script"), py::arg("key_script"))
         .def("close", &NativeSession::close)
         .def_property_readonly("closed", &NativeSession::closed)
         .def("step", &NativeSession::step, py::arg("events"), py::arg("time"), py::arg("time_delta"),

@@ -53,14 +53,17 @@ class Session:
     ``size`` is the canvas (iResolution), ``date`` iDate at time 0 ("YYYY-MM-DDTHH:MM:SS", local;
     default: now; fix it for repeatable frames), ``media_folders`` / ``media_files`` real files for
     Shadertoy's stock media (else deterministic stand-ins), ``float_image`` renders Image into 32-bit
-    floats, ``frame_timeout`` / ``compile_timeout`` are limits in seconds (0: none). Left out,
+    floats, ``frame_timeout`` / ``compile_timeout`` are limits in seconds (0: none), ``mouse_script``
+    / ``key_script`` are the CLI's --mouse-script / --key-script JSON files, replayed by step() and
+    render() before their own input (the same frames as the CLI with those scripts). Left out,
     size and fps are toyhost's defaults (800x450, 60).
 
     Close it (``close()`` or ``with``) to free its GL context at once rather than at garbage
     collection."""
 
     def __init__(self, shadertoy, size=None, fps=None, start_time=0.0, date=None, media_folders=(),
-                 media_files=None, float_image=False, frame_timeout=0.0, compile_timeout=0.0):
+                 media_files=None, float_image=False, frame_timeout=0.0, compile_timeout=0.0, mouse_script=None,
+                 key_script=None):
         if not isinstance(shadertoy, Shadertoy):
             shadertoy = load(shadertoy)
         width, height = (0, 0) if size is None else _size(size)
@@ -71,7 +74,8 @@ class Session:
             shadertoy, width, height, float(fps or 0), float(start_time), date or "",
             [os.fspath(f) for f in media_folders],
             [(str(k), os.fspath(v)) for k, v in (media_files or {}).items()],
-            bool(float_image), float(frame_timeout), float(compile_timeout))
+            bool(float_image), float(frame_timeout), float(compile_timeout),
+            os.fspath(mouse_script) if mouse_script else "", os.fspath(key_script) if key_script else "")
         self.shadertoy = shadertoy
         self._mouse_held = False
         self._keys_held = set()

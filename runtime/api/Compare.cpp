@@ -8,12 +8,8 @@
 #include <ctime>
 #include <limits>
 
-#include "core/AtomicFile.h"
 #include "core/Defaults.h"
-#include "input/InputScript.h"
-#include "input/InputScriptPlayer.h"
 #include "manifest/ManifestDesc.h"
-#include "timing/FrameClock.h"
 
 namespace toyhost {
 
@@ -29,8 +25,10 @@ std::string localNow() {
     return text;
 }
 
-// The run settings both get: the caller's, else A's manifest defaults, else B's, else toyhost's.
-SessionSettings commonSettings(const Shadertoy& a, const Shadertoy& b, const SessionSettings& given) {
+// The run settings both get: the caller's, else A's manifest defaults, else B's, else toyhost's;
+// the scripts of CompareSettings when the session settings name none.
+SessionSettings commonSettings(const Shadertoy& a, const Shadertoy& b, const SessionSettings& given,
+                               const std::filesystem::path& mouseScript, const std::filesystem::path& keyScript) {
     SessionSettings s = given;
     const RunDefaults& da = a.desc().runDefaults;
     const RunDefaults& db = b.desc().runDefaults;
@@ -40,13 +38,9 @@ SessionSettings commonSettings(const Shadertoy& a, const Shadertoy& b, const Ses
     }
     if (s.fps <= 0) s.fps = da.fps.value_or(db.fps.value_or(defaults::kFps));
     if (s.date.empty()) s.date = localNow();
+    if (s.mouseScript.empty()) s.mouseScript = mouseScript;
+    if (s.keyScript.empty()) s.keyScript = keyScript;
     return s;
-}
-
-Result<std::string> readScript(const std::filesystem::path& path) {
-    Result<std::string> text = readTextFile(path);
-    if (!text) return inFile(path.string(), text.error());
-    return text;
 }
 
 bool hasPass(const Shadertoy& shadertoy, const std::string& pass) {
@@ -67,31 +61,15 @@ Result<CompareReport> compareShadertoys(const Shadertoy& a, const Shadertoy& b, 
                                            : a.desc().runDefaults.frames.value_or(
                                                  b.desc().runDefaults.frames.value_or(defaults::kCompareFrames));
 
-    std::optional<MouseScriptPlayer> mouse;
-    std::optional<KeyScriptPlayer> keys;
-    if (!settings.mouseScript.empty()) {
-        Result<std::string> text = readScript(settings.mouseScript);
-        if (!text) return text.error();
-        Result<MouseScript> script = parseMouseScript(*text, settings.mouseScript.string());
-        if (!script) return script.error();
-        mouse.emplace(std::move(*script));
-    }
-    if (!settings.keyScript.empty()) {
-        Result<std::string> text = readScript(settings.keyScript);
-        if (!text) return text.error();
-        Result<KeyScript> script = parseKeyScript(*text, settings.keyScript.string());
-        if (!script) return script.error();
-        keys.emplace(std::move(*script));
-    }
-
-    const SessionSettings common = commonSettings(a, b, settings.session);
+    // Both sessions step through the same fixed-step input: the scripts replayed by each, the
+    // caller's extra events given to both.
+    const SessionSettings common = commonSettings(a, b, settings.session, settings.mouseScript, settings.keyScript);
     Result<std::unique_ptr<Session>> sessionA = Session::createHeadless(a, common);
     if (!sessionA) return sessionA.error();
     Result<std::unique_ptr<Session>> sessionB = Session::createHeadless(b, common);
     if (!sessionB) return sessionB.error();
     Session& first = **sessionA;
     Session& second = **sessionB;
-    const FrameClock clock(common.fps, common.startTime, 0.0);
 
     CompareReport report;
     report.width = first.width();
@@ -106,10 +84,8 @@ Result<CompareReport> compareShadertoys(const Shadertoy& a, const Shadertoy& b, 
     const bool wantDiff = settings.keepDiffImages || settings.diffImages;
     const int channels = pass == "Image" ? 3 : 4;  // Image's alpha is always 1
     for (int n = 0; n < frames; ++n) {
-        const double time = clock.time(n);
+        const double time = first.timeOf(n);
         events.clear();
-        if (mouse) mouse->eventsBeforeFrame(n, time, events);
-        if (keys) keys->eventsBeforeFrame(n, time, events);
         if (settings.input)
             for (const InputEvent& e : settings.input(n, time)) events.push_back(e);
         if (Status s = first.step(events); !s) return inFile(a.path().string(), s.error());

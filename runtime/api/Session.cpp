@@ -17,6 +17,7 @@
 #include "render/PendingReads.h"
 #include "session/SessionCore.h"
 #include "timing/FrameClock.h"
+#include "timing/Timeline.h"
 
 namespace toyhost {
 
@@ -51,7 +52,8 @@ public:
     KeptNotices notices;
     std::unique_ptr<Watchdog> watchdog;
     std::unique_ptr<SessionCore> core;
-    std::optional<FrameClock> clock;
+    std::optional<Timeline> timeline;  // step()'s fixed-step input
+    std::vector<InputEvent> events;     // step()'s scratch: scripted events, then the caller's
     mutable std::vector<std::uint8_t> bytes;  // readback scratch
     mutable std::vector<float> floats;
     PendingReads reads;  // queueRead() .. takeRead(); emptied with the context current
@@ -70,6 +72,8 @@ public:
     // The context usable here (a headless session's is made current on this thread; it fails when
     // another thread holds it).
     Status current() const { return ownContext ? context->makeCurrent() : okStatus(); }
+    // One frame rendered with `time` and `events`, submitted to the GPU.
+    Status render(const FrameTime& time, std::span<const InputEvent> events);
     // A limit that passed while the call ran.
     Status expired() const {
         if (watchdog)
@@ -78,7 +82,7 @@ public:
     }
     Result<PassId> pass(std::string_view name) const {
         std::optional<PassId> id = passNamed(name);
-        if (!id || !core->player().manifest().find(*id))
+        if (!id || !core->manifest().find(*id))
             return Error("no pass \"" + std::string(name) + "\" to read (Image, or a buffer the shadertoy has)",
                          Code::Usage);
         return *id;
@@ -110,9 +114,9 @@ public:
         if (Status made = current(); !made) return made.error();
         Status taken = withGl([&] {
             // The wait may be for the GPU still drawing: the watchdog is told which pass.
-            core->player().publishPendingDraws();
+            core->publishPendingDraws();
             Result<std::span<const std::byte>> pixels = reads.mapOldest();
-            core->player().publishPendingDraws();
+            core->publishPendingDraws();
             if (pixels) {
                 if (read.format == PixelFormat::Rgba8)
                     convertRows(reinterpret_cast<const std::uint8_t*>(pixels->data()), out, read.width, read.height, order);
@@ -158,11 +162,13 @@ Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const S
     options.media.folders = settings.mediaFolders;
     for (const auto& [id, file] : settings.mediaFiles) options.media.files.emplace_back(id, file);
     options.floatImage = settings.floatImage;
+    if (!settings.mouseScript.empty()) options.mouseScript = settings.mouseScript;
+    if (!settings.keyScript.empty()) options.keyScript = settings.keyScript;
     options.frameTimeout = settings.frameTimeout;
     options.compileTimeout = settings.compileTimeout;
     Result<SessionPlan> plan = prepareSession(options);
     if (!plan) return plan.error();
-    impl->clock.emplace(*plan->options.fps, plan->options.startTime, *plan->options.wallClock);
+    impl->timeline.emplace(timelineOf(*plan));
     if (settings.frameTimeout > 0 || settings.compileTimeout > 0) {
         WatchdogDesc limits;
         limits.frameLimit = settings.frameTimeout;
@@ -233,29 +239,40 @@ Result<std::unique_ptr<Session>> Session::createOnCurrentContext(const Shadertoy
 }
 
 Status Session::step(std::span<const InputEvent> events) {
-    return stepAt(impl_->clock->time(frame()), impl_->clock->timeDelta(), impl_->clock->fps(), events);
+    std::vector<InputEvent>& all = impl_->events;
+    all.clear();
+    const FrameTime time = impl_->timeline->next(frame(), all);
+    all.insert(all.end(), events.begin(), events.end());
+    return impl_->render(time, all);
 }
 
 Status Session::stepAt(double time, double timeDelta, double frameRate, std::span<const InputEvent> events) {
-    if (Status current = impl_->current(); !current) return current;
-    FrameTime t{time, timeDelta, frameRate, impl_->clock->date(0)};
-    // iDate follows iTime from the date of time 0 (FrameClock's form).
-    t.date = dateAt(*impl_->core->plan().options.wallClock + (time - impl_->core->plan().options.startTime));
-    Status rendered = impl_->withGl([&] {
-        Status drawn = impl_->core->renderFrame(t, events);
+    std::vector<InputEvent>& all = impl_->events;
+    all.clear();
+    impl_->timeline->eventsBefore(frame(), all);
+    all.insert(all.end(), events.begin(), events.end());
+    return impl_->render(impl_->timeline->atTime(time, timeDelta, frameRate), all);
+}
+
+double Session::timeOf(int n) const { return impl_->timeline->at(n).time; }
+
+Status Session::Impl::render(const FrameTime& t, std::span<const InputEvent> events) {
+    if (Status made = current(); !made) return made;
+    Status rendered = withGl([&] {
+        Status drawn = core->renderFrame(t, events);
         // Submitted now, so that the GPU works on the frame while the caller goes on: a read that
         // follows waits less (llvmpipe would start the frame only when it is read: step(); frame()
         // on a trivial shader from Python, 1.18x the CLI's frame without this, 0.94-1.02x with it).
         glFlush();
         return drawn;
     });
-    if (Status limit = impl_->expired(); !limit) return limit;
+    if (Status limit = expired(); !limit) return limit;
     return rendered;
 }
 
-int Session::frame() const { return impl_->core->player().frame(); }
-int Session::width() const { return impl_->core->player().width(); }
-int Session::height() const { return impl_->core->player().height(); }
+int Session::frame() const { return impl_->core->frame(); }
+int Session::width() const { return impl_->core->width(); }
+int Session::height() const { return impl_->core->height(); }
 
 Status Session::read(std::string_view name, std::span<std::uint8_t> out, RowOrder order) const {
     Result<PassId> pass = impl_->pass(name);
@@ -267,7 +284,7 @@ Status Session::read(std::string_view name, std::span<std::uint8_t> out, RowOrde
                      Code::Usage);
     if (Status current = impl_->current(); !current) return current;
     impl_->withGl([&] {
-        impl_->core->player().readRgba8(*pass, impl_->bytes);
+        impl_->core->readRgba8(*pass, impl_->bytes);
         return 0;
     });
     Impl::copyRows(impl_->bytes, out, width(), height(), order);
@@ -284,7 +301,7 @@ Status Session::read(std::string_view name, std::span<float> out, RowOrder order
                      Code::Usage);
     if (Status current = impl_->current(); !current) return current;
     impl_->withGl([&] {
-        impl_->core->player().readRgba32f(*pass, impl_->floats);
+        impl_->core->readRgba32f(*pass, impl_->floats);
         return 0;
     });
     Impl::copyRows(impl_->floats, out, width(), height(), order);
@@ -298,7 +315,7 @@ Result<Session::QueuedRead> Session::queueRead(std::string_view name) {
         return Error("queueRead: " + std::to_string(kMaxQueuedReads) + " reads wait already: take one first (takeRead)",
                      Code::Usage);
     if (Status current = impl_->current(); !current) return current.error();
-    const PassOutput output = impl_->core->player().output(*pass);
+    const PassOutput output = impl_->core->output(*pass);
     const PendingReads::Read read{frame() - 1, output.width, output.height, output.format};
     Status started = impl_->withGl([&] { return impl_->reads.start(output.framebuffer, read); });
     if (!started) return started.error();
@@ -334,13 +351,13 @@ void Session::dropQueuedReads() {
     });
 }
 
-unsigned int Session::imageTexture() const { return impl_->core->player().output(PassId::Image).texture; }
+unsigned int Session::imageTexture() const { return impl_->core->output(PassId::Image).texture; }
 
 Status Session::drawImage(unsigned int framebuffer, int x, int y, int w, int h) const {
     if (w <= 0 || h <= 0) return Error("drawImage: the size must be positive", Code::Usage);
     if (Status current = impl_->current(); !current) return current;
     impl_->withGl([&] {
-        const PassOutput image = impl_->core->player().output(PassId::Image);
+        const PassOutput image = impl_->core->output(PassId::Image);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, image.framebuffer);
         const bool same = w == image.width && h == image.height;
@@ -354,6 +371,7 @@ Status Session::drawImage(unsigned int framebuffer, int x, int y, int w, int h) 
 }
 
 void Session::restart() {
+    impl_->timeline->restart();
     impl_->withGl([&] {
         impl_->core->restart();
         return 0;
@@ -367,7 +385,7 @@ Status Session::resize(int w, int h) {
 
 Result<Reloaded> Session::reload(const Shadertoy& next) {
     Result<PlayerPlan> plan = planPlayer(next.desc(), impl_->core->plan().options.media);
-    ReloadOutcome outcome = impl_->withGl([&] { return impl_->core->reload(std::move(plan)); });
+    ReloadOutcome outcome = impl_->withGl([&] { return impl_->core->reload({}, std::move(plan)); });
     return Reloaded{outcome.applied, outcome.structureChanged, std::move(outcome.recompiled), std::move(outcome.problems)};
 }
 

@@ -7,6 +7,7 @@
 #include "core/Defaults.h"
 #include "capture/SoundFile.h"
 #include "export/LoadShadertoy.h"
+#include "session/SettingChecks.h"
 #include "timing/FrameClock.h"
 
 #include <algorithm>
@@ -91,6 +92,11 @@ Status checkSoundRequest(const SoundRequest& sound) {
 }
 }  // namespace
 
+TimelineDesc timelineOf(const SessionPlan& plan) {
+    const SessionOptions& o = plan.options;
+    return {o.fps.value_or(defaults::kFps), o.startTime, o.wallClock.value_or(0.0), plan.mouse, plan.keys};
+}
+
 Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     SessionOptions options = asked;
     if (!options.startedAt) options.startedAt = std::chrono::steady_clock::now();
@@ -98,7 +104,8 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
         if (Status sound = checkSoundRequest(*options.sound); !sound) return sound.error();
         if (options.outPattern) return usage("a sound session writes audio, not frames (no --out pattern)");
     }
-    if (options.frames && *options.frames < 1) return usage("--frames must be at least 1");
+    if (options.frames)
+        if (Status frames = checkFramesSetting(*options.frames); !frames) return frames.error();
     if (options.checkpointEvery && *options.checkpointEvery < 1) return usage("--checkpoint-every must be at least 1");
     if (options.checkpointEvery && !options.checkpoint) return usage("--checkpoint-every needs --checkpoint FILE");
     if (options.frameRange && options.shard) return usage("--frame-range and --shard cannot be combined");
@@ -125,11 +132,7 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     // A headless run's iDate is the wall clock at frame 0 unless --date (or a checkpoint) says
     // otherwise; a window shows the live date.
     if (!o.interactive && !o.wallClock) o.wallClock = localWallClockNow();
-    if (Status size = checkCanvasSize(*o.width, *o.height); !size) {
-        Error error = size.error();
-        if (options.width) error.diagnostics.front().message = "--size: " + error.diagnostics.front().message;
-        return error;
-    }
+    if (Status size = checkSizeSetting(*o.width, *o.height); !size) return size.error();
     if (o.checkpoint) {
         std::error_code ec;
         if (fs::is_directory(*o.checkpoint, ec))
@@ -143,17 +146,14 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
                                                     : "media folder not found (--media or $TOYHOST_MEDIA)",
                              Code::IoNotFound);
     }
-    if (o.fps && (!std::isfinite(*o.fps) || *o.fps < defaults::kMinFps || *o.fps > defaults::kMaxFps))
-        return usage("--fps must be a number of frames per second from 0.001 to 1000000");
-    if (!std::isfinite(o.startTime) || std::abs(o.startTime) > defaults::kMaxSeconds)
-        return usage("--start-time must be a number of seconds between -1e9 and 1e9");
-    if (o.mouse && (std::abs(o.mouse->x) > defaults::kMaxPixelCoordinate || std::abs(o.mouse->y) > defaults::kMaxPixelCoordinate))
-        return usage("--mouse: coordinates must be within +-1000000 pixels");
+    if (o.fps)
+        if (Status fps = checkFpsSetting(*o.fps); !fps) return fps.error();
+    if (Status start = checkStartTimeSetting(o.startTime); !start) return start.error();
+    if (o.mouse)
+        if (Status mouse = checkMouseSetting(o.mouse->x, o.mouse->y); !mouse) return mouse.error();
     if (*o.captureEvery < 1) return usage("--capture-every must be at least 1");
-    for (const auto& [name, value] : {std::pair{"--frame-timeout", *o.frameTimeout}, {"--compile-timeout", *o.compileTimeout}})
-        if (!std::isfinite(value) || value < 0 || (value > 0 && value < defaults::kMinTimeoutSeconds) ||
-            value > defaults::kMaxTimeoutSeconds)
-            return usage(std::string(name) + " must be 0 (off) or a number of seconds from 0.1 to 1000000");
+    for (const auto& [name, value] : {std::pair{"frame_timeout", *o.frameTimeout}, {"compile_timeout", *o.compileTimeout}})
+        if (Status limit = checkTimeoutSetting(name, value); !limit) return limit.error();
     if (*o.captureMemoryBytes == 0) return usage("--capture-memory must be at least 1 (MiB)");
     if (o.mouse && o.mouseScript) return usage("--mouse and --mouse-script cannot be combined");
     if (*o.pngLevel < 0 || *o.pngLevel > 9) return usage("--png-level must be 0..9");

@@ -25,6 +25,7 @@
 #include "media/ChannelMedia.h"
 #include "player/PlayerDesc.h"
 #include "session/Checkpoint.h"
+#include "timing/Timeline.h"
 
 namespace toyhost {
 
@@ -123,6 +124,9 @@ struct SessionPlan {
     int end = 0;
     std::optional<Checkpoint> resume;      // --resume: the state the run continues from
 };
+
+// The run's fixed-step input (timing/Timeline.h): its clock, date and input scripts.
+TimelineDesc timelineOf(const SessionPlan& plan);
 
 // Validates `options` (after withDefaults), loads the shadertoy and decodes its images, parses
 // the output pattern and the input scripts. No GL.

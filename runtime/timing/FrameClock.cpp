@@ -10,7 +10,11 @@ namespace toyhost {
 FrameClock::FrameClock(double fps, double startTime, double wallClockStart)
     : fps_(fps), startTime_(startTime), wallClockStart_(wallClockStart) {}
 
-glm::vec4 FrameClock::date(int frame) const { return dateAt(wallClockStart_ + (time(frame) - startTime_)); }
+glm::vec4 FrameClock::date(int frame) const { return dateOfTime(wallClockStart_, startTime_, time(frame)); }
+
+glm::vec4 dateOfTime(double wallClockStart, double startTime, double time) {
+    return dateAt(wallClockStart + (time - startTime));
+}
 
 glm::vec4 dateAt(double now) {
     const double whole = std::floor(now);

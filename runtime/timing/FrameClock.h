@@ -38,5 +38,8 @@ double localWallClockNow();
 Result<double> parseWallClock(const std::string& text);
 // iDate for a moment of that wall clock.
 glm::vec4 dateAt(double wallClock);
+// iDate at iTime `time` of a run whose iTime `startTime` was at wall clock `wallClockStart`: the one
+// rule for fixed steps (FrameClock, timing/Timeline.h) and for a window with --fps or --date.
+glm::vec4 dateOfTime(double wallClockStart, double startTime, double time);
 
 }  // namespace toyhost

@@ -35,7 +35,8 @@ FrameTime RealTimeClock::frame(double now, double wallClock) {
         t.frameRate = counter_.rate();
         ++framesSinceRestart_;
     }
-    t.date = dateAt(wallClock);
+    t.date = options_.wallClockStart ? dateOfTime(*options_.wallClockStart, options_.startTime, t.time)
+                                     : dateAt(wallClock);
     lastTime_ = t.time;
     fresh_ = false;
     stepPending_ = false;

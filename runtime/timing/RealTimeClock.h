@@ -12,6 +12,7 @@
 
 #include <optional>
 
+#include "core/Defaults.h"
 #include "timing/FrameTime.h"
 #include "timing/SiteFrameRate.h"
 
@@ -22,7 +23,10 @@ struct RealTimeClockOptions {
     double startTime = 0;            // iTime of the first frame (and after a restart)
     // The iTimeDelta of a frame that has no previous one (the first, and after a restart or a
     // pause) and of a frame forced while paused.
-    double nominalFps = 60;
+    double nominalFps = 1.0 / defaults::kRestartTimeDelta;
+    // Set (--fps or --date): iDate follows iTime from this wall clock at startTime, by the fixed
+    // step's rule (dateOfTime); else iDate is the live wall clock of each frame.
+    std::optional<double> wallClockStart;
 };
 
 class RealTimeClock {

@@ -18,7 +18,16 @@
 #include "player/Player.h"
 #include "session/SessionCore.h"
 
+namespace toyhost {
+// The GL tests look at the Player a SessionCore runs; programs use the session's own methods.
+struct SessionCoreAccess {
+    static Player& player(SessionCore& session) { return *session.player_; }
+};
+}  // namespace toyhost
+
 namespace toyhost::testing {
+
+inline Player& playerOf(SessionCore& session) { return SessionCoreAccess::player(session); }
 
 inline std::filesystem::path sourceDir() { return TOYHOST_SOURCE_DIR; }
 inline std::filesystem::path sharedDir() { return sourceDir() / ".." / "shared"; }
@@ -78,7 +87,7 @@ inline std::unique_ptr<SessionCore> loadSession(const std::shared_ptr<GlContext>
 
 // Renders the session's next frame at the fixed time step of that frame.
 inline void stepAt(SessionCore& session, std::span<const InputEvent> events = {}, double fps = 60.0) {
-    const Status rendered = session.renderFrame(fixedStep(session.player().frame(), fps), events);
+    const Status rendered = session.renderFrame(fixedStep(playerOf(session).frame(), fps), events);
     EXPECT_TRUE(rendered.ok()) << rendered.error().text();
 }
 

@@ -48,7 +48,7 @@ TEST_F(Allocations, APlayerFrameAllocatesNothing) {
         stepAt(*toy, events);
     }
     counting = false;
-    toy->player().finish();
+    playerOf(*toy).finish();
     EXPECT_EQ(allocations.load(), 0) << "heap allocations in 20 frames";
 }
 
@@ -72,7 +72,7 @@ TEST_F(Allocations, AFrameWithVideoAndMusicChannelsAllocatesNothing) {
     counting = true;
     for (int i = 0; i < 20; ++i) stepAt(*toy, {}, 24.0);  // a new video frame on most frames
     counting = false;
-    toy->player().finish();
+    playerOf(*toy).finish();
     EXPECT_EQ(allocations.load(), 0) << "heap allocations in 20 frames";
 }
 

@@ -26,7 +26,7 @@ TEST_F(CapturePipeline, RingReturnsTheSameBytesAsASynchronousReadWithFramesInFli
     auto toy = loadSession(context_, kProbe, 24, 10);
     ASSERT_TRUE(toy);
     for (PassId pass : {PassId::Image, PassId::BufferA}) {
-        const PixelFormat format = toy->player().output(pass).format;
+        const PixelFormat format = playerOf(*toy).output(pass).format;
         auto ring = ReadbackRing::create(24, 10, format, 3);
         ASSERT_TRUE(ring.ok()) << ring.error().text();
         std::vector<std::vector<std::byte>> expected;
@@ -34,13 +34,13 @@ TEST_F(CapturePipeline, RingReturnsTheSameBytesAsASynchronousReadWithFramesInFli
         for (int frame = 0; frame < 8; ++frame) {
             stepAt(*toy);
             expected.emplace_back(ring->frameBytes());
-            readFramebuffer(toy->player().output(pass).framebuffer, 24, 10, format, expected.back());
+            readFramebuffer(playerOf(*toy).output(pass).framebuffer, 24, 10, format, expected.back());
             if (ring->full()) {
                 const int oldest = ring->oldestFrame();
                 ASSERT_TRUE(ring->takeOldest(got).ok());
                 EXPECT_EQ(got, expected[oldest]) << passName(pass) << " frame " << oldest;
             }
-            ASSERT_TRUE(ring->start(toy->player().output(pass).framebuffer, frame).ok());
+            ASSERT_TRUE(ring->start(playerOf(*toy).output(pass).framebuffer, frame).ok());
         }
         while (!ring->empty()) {
             const int oldest = ring->oldestFrame();

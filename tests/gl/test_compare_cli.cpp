@@ -178,3 +178,24 @@ TEST(CompareCli, SigintStopsAfterTheFrameWithCompleteFiles) {
 
 }  // namespace
 }  // namespace toyhost::testing
+
+namespace toyhost::testing {
+namespace {
+
+// `run` and `compare` share their session flags (tools/toyhost/SessionFlags.h) and the library's
+// checks (session/SettingChecks.h): a value one refuses, the other refuses with the same message.
+TEST(CompareCli, SessionFlagsAreRefusedWithRunsMessages) {
+    const std::string probe = "'" + (sourceDir() / "shadertoys/timeline-probe").string() + "'";
+    for (const char* given : {"--size 0x0", "--size -1x10", "--fps 0", "--frames 0", "--start-time 2e9",
+                              "--mouse 1e9,3", "--date 2020-13-01"}) {
+        const CommandResult run = runToyhost("run " + probe + " --headless " + given);
+        const CommandResult compared = runToyhost("compare " + probe + " " + probe + " " + given);
+        EXPECT_EQ(run.exitCode, 2) << given << ": " << run.output;
+        EXPECT_EQ(compared.exitCode, 2) << given << ": " << compared.output;
+        EXPECT_EQ(compared.output, run.output) << given;
+        EXPECT_NE(run.output.find("toyhost: error: --"), std::string::npos) << given << ": " << run.output;
+    }
+}
+
+}  // namespace
+}  // namespace toyhost::testing

@@ -79,11 +79,11 @@ TEST_F(EveryInput, CubeAFacesCarryTheSitesRaysAndGlSamplesThemBackByDirection) {
     auto toy = loadSession(context_, dir, 8, 1, true);
     ASSERT_TRUE(toy);
     stepAt(*toy);
-    ASSERT_TRUE(toy->player().hasCube());
+    ASSERT_TRUE(playerOf(*toy).hasCube());
     std::vector<float> face;
     int n = 0;
     for (int f = 0; f < 6; ++f) {
-        toy->player().readCubeFace(f, face, n);
+        playerOf(*toy).readCubeFace(f, face, n);
         ASSERT_EQ(n, 1024);
         std::vector<std::pair<int, int>> pixels{{0, 0}, {n - 1, 0}, {0, n - 1}, {n - 1, n - 1}, {n / 2, n / 2}, {n / 2 - 1, n / 2 - 1}};
         for (int k = 0; k < 64; ++k) pixels.push_back({(k * 97 + 13) % n, (k * 389 + 7) % n});
@@ -98,7 +98,7 @@ TEST_F(EveryInput, CubeAFacesCarryTheSitesRaysAndGlSamplesThemBackByDirection) {
         }
     }
     std::vector<float> image8;
-    toy->player().readRgba32f(PassId::Image, image8);
+    playerOf(*toy).readRgba32f(PassId::Image, image8);
     const float dirs[8][3] = {{1, .2f, .3f}, {-1, -.4f, .1f}, {.1f, 1, -.5f}, {.3f, -1, .2f},
                               {-.2f, .1f, 1}, {.4f, .3f, -1}, {1, 1, .99f}, {-.7f, .7f, -.7f}};
     for (int i = 0; i < 8; ++i) {
@@ -143,15 +143,15 @@ TEST_F(EveryInput, CubeAReadsItsPreviousFrameAndImageItsCurrentOne) {
     int n = 0;
     for (int frame = 0; frame < 5; ++frame) {
         stepAt(*toy);
-        toy->player().readRgba32f(PassId::Image, pixels);
+        playerOf(*toy).readRgba32f(PassId::Image, pixels);
         EXPECT_FLOAT_EQ(pixels[0] * 16.0f, float(frame + 1)) << "Image sees this frame's faces at frame " << frame;
-        toy->player().readCubeFace(frame % 6, face, n);
+        playerOf(*toy).readCubeFace(frame % 6, face, n);
         EXPECT_FLOAT_EQ(face[(static_cast<std::size_t>(n / 3) * n + n / 5) * 4], float(frame + 1)) << frame;
     }
     // A restart clears the cube like the buffers (frame 0 starts from zero).
-    toy->player().restart();
+    playerOf(*toy).restart();
     stepAt(*toy);
-    toy->player().readRgba32f(PassId::Image, pixels);
+    playerOf(*toy).readRgba32f(PassId::Image, pixels);
     EXPECT_FLOAT_EQ(pixels[0] * 16.0f, 1.0f);
 }
 
@@ -200,7 +200,7 @@ TEST_F(EveryInput, VolumeVoxelsAreWhereTheBinFileSaysAndTheirSizeIsTheChannelRes
     ASSERT_TRUE(toy);
     stepAt(*toy);
     std::vector<float> pixels;
-    toy->player().readRgba32f(PassId::Image, pixels);
+    playerOf(*toy).readRgba32f(PassId::Image, pixels);
     for (int y = 0; y < 6; ++y)
         for (int x = 0; x < 4; ++x) {
             const float* p = &pixels[(static_cast<std::size_t>(y) * 4 + x) * 4];
@@ -228,7 +228,7 @@ TEST_F(EveryInput, AFloatVolumeKeepsItsValuesOutsideZeroToOne) {
     ASSERT_TRUE(toy);
     stepAt(*toy);
     std::vector<float> pixels;
-    toy->player().readRgba32f(PassId::Image, pixels);
+    playerOf(*toy).readRgba32f(PassId::Image, pixels);
     EXPECT_EQ(pixels[0], -0.5f);
     EXPECT_EQ(pixels[4], 7.25f);
 }
@@ -254,7 +254,7 @@ TEST_F(EveryInput, AVideoShowsItsFrameAtITimeAndICannelTimeIsItsLoopingPlaybackT
     for (int frame = 0; frame <= 130; ++frame) {
         stepAt(*toy);
         if (frame != 0 && frame != 7 && frame != 59 && frame != 60 && frame != 130) continue;
-        toy->player().readRgba32f(PassId::Image, pixels);
+        playerOf(*toy).readRgba32f(PassId::Image, pixels);
         const double t = frame / 60.0;
         const int videoFrame = static_cast<int>(std::floor(t * 10 + 1e-9)) % 20;
         EXPECT_NEAR(pixels[0] * 255, 12 * videoFrame, 1.01) << "iTime " << t;
@@ -281,7 +281,7 @@ TEST_F(EveryInput, APureToneInAMusicChannelPeaksInItsBinOfRowZero) {
     ASSERT_TRUE(toy);
     for (int frame = 0; frame < 31; ++frame) stepAt(*toy);  // iTime 0.5: the window is full
     std::vector<float> pixels;
-    toy->player().readRgba32f(PassId::Image, pixels);
+    playerOf(*toy).readRgba32f(PassId::Image, pixels);
     std::vector<float> row0(512), row1(512);
     for (int x = 0; x < 512; ++x) {
         row0[x] = pixels[static_cast<std::size_t>(x) * 4];
@@ -428,7 +428,7 @@ TEST_F(EveryInput, UninitialisedVariablesAndAnUnwrittenOutputAreZeroAsInWebGl) {
         ASSERT_TRUE(toy);
         stepAt(*toy);
         std::vector<float> pixels;
-        toy->player().readRgba32f(PassId::Image, pixels);
+        playerOf(*toy).readRgba32f(PassId::Image, pixels);
         // Pixel 0: the uninitialised values (alpha forced to 1 by Image); pixel 1: mainImage never
         // wrote its out, which WebGL zero-initialises (black).
         EXPECT_EQ(std::vector<float>(pixels.begin(), pixels.begin() + 3), (std::vector<float>{0, 0, 0}));
@@ -448,7 +448,7 @@ TEST_F(EveryInput, MipmapsOfAnImageAreExactBoxAverages) {
     ASSERT_TRUE(toy);
     stepAt(*toy);
     std::vector<float> pixels;
-    toy->player().readRgba32f(PassId::Image, pixels);
+    playerOf(*toy).readRgba32f(PassId::Image, pixels);
     EXPECT_NEAR(pixels[0] * 255, 128, 0.01) << "1x1 level";
     EXPECT_NEAR(pixels[4] * 255, 128, 0.01) << "8x8 level";
 }
@@ -472,7 +472,7 @@ TEST_F(EveryInput, TwoChannelsReadingOneBufferShareTheHigherChannelsFilter) {
     ASSERT_TRUE(toy);
     stepAt(*toy);
     std::vector<float> pixels;
-    toy->player().readRgba32f(PassId::Image, pixels);
+    playerOf(*toy).readRgba32f(PassId::Image, pixels);
     EXPECT_TRUE(pixels[0] == 0.0f || pixels[0] == 1.0f) << "channel 0 sampled with nearest: " << pixels[0];
     EXPECT_EQ(pixels[0], pixels[1]);
     EXPECT_NEAR(pixels[2], 0.5f, 1e-3) << "Buffer B alone keeps its linear filter";
@@ -494,7 +494,7 @@ TEST_F(EveryInput, ShadersMesasPreprocessorRefusesCompileAsInBrowsers) {
         auto toy = loadSession(context_, dir, 1, 1, true);
         ASSERT_TRUE(toy) << dir;
         stepAt(*toy);
-        toy->player().readRgba32f(PassId::Image, pixels);
+        playerOf(*toy).readRgba32f(PassId::Image, pixels);
         EXPECT_NEAR(pixels[0], want, 1e-6) << dir;
     }
     // A real error still names the user's line after the preprocessed retry fails too.
@@ -519,7 +519,7 @@ TEST_F(EveryInput, AUsersOwnLowpMacroCompiles) {
     ASSERT_TRUE(toy);
     stepAt(*toy);
     std::vector<float> pixels;
-    toy->player().readRgba32f(PassId::Image, pixels);
+    playerOf(*toy).readRgba32f(PassId::Image, pixels);
     EXPECT_EQ(std::vector<float>(pixels.begin(), pixels.begin() + 3), (std::vector<float>{0.25f, 0.5f, 0.5f}));
 }
 

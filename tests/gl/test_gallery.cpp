@@ -60,7 +60,7 @@ TEST_F(RipplePool, OneDropSpreadsSymmetricallyAtSteadySpeedAndDecays) {
     for (int after = 1; after <= 40; ++after) {
         stepAt(*toy);
         if (after % 10) continue;
-        toy->player().readRgba32f(PassId::BufferD, field);
+        playerOf(*toy).readRgba32f(PassId::BufferD, field);
         // Four-fold symmetry about the drop's pixel centre (and the diagonal), out to the ring
         // and beyond, until reflections from the walls (70+ px away) could arrive.
         float peak = 0.0f;
@@ -113,7 +113,7 @@ TEST_F(RipplePool, ScriptedDragDisturbsTheWaterAlongItsPathOnly) {
         stepAt(*toy, events);
     }
     std::vector<float> field;
-    toy->player().readRgba32f(PassId::BufferD, field);
+    playerOf(*toy).readRgba32f(PassId::BufferD, field);
     // Points of the drag: the start (60, 70), the turn (150, 100), the end (260, 40).
     for (auto [x, y] : {std::pair{60, 70}, {105, 85}, {150, 100}, {205, 70}, {260, 40}}) {
         float largest = 0.0f;
@@ -140,7 +140,7 @@ TEST_F(RipplePool, TheSameClickOnADoubleSizeCanvasGivesTheSameField) {
         stepAt(*toy, click);
         for (int i = 0; i < 20; ++i) stepAt(*toy);
         std::vector<float> field;
-        toy->player().readRgba32f(PassId::BufferD, field);
+        playerOf(*toy).readRgba32f(PassId::BufferD, field);
         // the grid's cells: the lower-left 320x180 of the buffer
         for (int y = 0; y < kHeight; ++y)
             for (int x = 0; x < kWidth; ++x)
@@ -178,9 +178,9 @@ TEST_F(RipplePool, RingsSpreadByTimeNotByFrames) {
         stepAt(*toy, click, fps);  // iTime 1/15 s (4 steps)
         for (int i = 0; i < int(fps * 0.5); ++i) stepAt(*toy, {}, fps);  // 0.5 s later (30 steps)
         std::vector<float> field;
-        toy->player().readRgba32f(PassId::BufferD, field);
+        playerOf(*toy).readRgba32f(PassId::BufferD, field);
         radii.push_back(ringRadius(field));
-        std::printf("%.0f fps: iFrame %d, ring at %d cells 0.5 s after the drop\n", fps, int(toy->player().frame()),
+        std::printf("%.0f fps: iFrame %d, ring at %d cells 0.5 s after the drop\n", fps, int(playerOf(*toy).frame()),
                     radii.back());
     }
     ASSERT_EQ(radii.size(), 3u);
@@ -195,7 +195,7 @@ TEST_F(RipplePool, CalmPoolStaysFlatWithoutInput) {
     ASSERT_TRUE(toy);
     for (int i = 0; i < 30; ++i) stepAt(*toy);
     std::vector<float> field;
-    toy->player().readRgba32f(PassId::BufferD, field);
+    playerOf(*toy).readRgba32f(PassId::BufferD, field);
     for (std::size_t i = 0; i < field.size(); i += 4) ASSERT_EQ(field[i], 0.0f) << "pixel " << i / 4;
 }
 
@@ -242,7 +242,7 @@ LakeColours lakeColours(const std::shared_ptr<GlContext>& context, std::initiali
     }
     (void)toy->renderFrame(atTwo, {});
     std::vector<float> image;
-    toy->player().readRgba32f(PassId::Image, image);
+    playerOf(*toy).readRgba32f(PassId::Image, image);
     // Regions at 320x180 (x, y, w, h; origin bottom-left) from the shader's README: water 0.3-1.4 m
     // deep over sand, and water whose floor lies 28.7-29.2 m down (depths read from the shader).
     return {meanColour(image, kWidth, 158, 0, 40, 22), meanColour(image, kWidth, 240, 72, 80, 40)};

@@ -30,7 +30,7 @@ TEST_F(MountainsLakes, WaterVolumeIsConservedFor300FramesAndImageShowsLakes) {
         // Image only on the last frame: buffers alone drive the simulation.
         stepAt(*toy);
         if (n % 25 != 0 && n != kFrames - 1) continue;
-        toy->player().readRgba32f(PassId::BufferC, c);
+        playerOf(*toy).readRgba32f(PassId::BufferC, c);
         const double total = totalWater(c, kW);
         const double relative = std::abs(total - expected) / expected;
         worst = std::max(worst, relative);
@@ -53,7 +53,7 @@ TEST_F(MountainsLakes, WaterVolumeIsConservedFor300FramesAndImageShowsLakes) {
     EXPECT_LT(driest, 0.01) << "no cell ever drained";
 
     std::vector<std::uint8_t> image;
-    toy->player().readRgba8(PassId::Image, image);
+    playerOf(*toy).readRgba8(PassId::Image, image);
     size_t blue = 0;
     double mean = 0, meanSq = 0;
     const size_t pixels = image.size() / 4;

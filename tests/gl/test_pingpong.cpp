@@ -25,9 +25,9 @@ TEST_F(PingPong, BuffersFollowThisFramePreviousFrameRuleFromClearedStart) {
     std::vector<float> a, b, image;
     for (int n = 0; n < 6; ++n) {
         stepAt(*toy);
-        toy->player().readRgba32f(PassId::BufferA, a);
-        toy->player().readRgba32f(PassId::BufferB, b);
-        toy->player().readRgba32f(PassId::Image, image);
+        playerOf(*toy).readRgba32f(PassId::BufferA, a);
+        playerOf(*toy).readRgba32f(PassId::BufferB, b);
+        playerOf(*toy).readRgba32f(PassId::Image, image);
         const float f = static_cast<float>(n);
         // A reads itself and the later B: previous frame's values, zero at frame 0.
         expectEveryPixel(a, f + 1, f, 10 * f, 0.25f, "Buffer A", n);
@@ -69,10 +69,10 @@ TEST_F(PingPong, ResizeKeepsBufferContentBottomLeftInBothSlots) {
     auto toy = loadSession(context_, sourceDir() / "shadertoys/pingpong-probe", 16, 8);
     ASSERT_TRUE(toy);
     for (int n = 0; n < 3; ++n) stepAt(*toy);
-    ASSERT_TRUE(toy->player().resize(8, 12).ok());
-    EXPECT_EQ(toy->player().width(), 8);
+    ASSERT_TRUE(playerOf(*toy).resize(8, 12).ok());
+    EXPECT_EQ(playerOf(*toy).width(), 8);
     std::vector<float> a;
-    toy->player().readRgba32f(PassId::BufferA, a);
+    playerOf(*toy).readRgba32f(PassId::BufferA, a);
     ASSERT_EQ(a.size(), 8u * 12u * 4u);
     for (int y = 0; y < 12; ++y) {
         const float expected = y < 8 ? 3.0f : 0.0f;  // frame 2 wrote A.x = 3
@@ -81,7 +81,7 @@ TEST_F(PingPong, ResizeKeepsBufferContentBottomLeftInBothSlots) {
     // Frame 3 reads the other slot (frame 2's output survived there too): A.x = 4 where the old
     // content was copied, 1 in the new rows.
     stepAt(*toy);
-    toy->player().readRgba32f(PassId::BufferA, a);
+    playerOf(*toy).readRgba32f(PassId::BufferA, a);
     EXPECT_EQ(a[(2 * 8 + 1) * 4], 4.0f);
     EXPECT_EQ(a[(10 * 8 + 1) * 4], 1.0f);
     EXPECT_EQ(a[(10 * 8 + 1) * 4 + 1], 3.0f) << "iFrame is not reset";

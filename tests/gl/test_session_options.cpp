@@ -44,22 +44,39 @@ TEST(SessionOptions, ImpossibleValuesAreUsageErrorsBeforeAnyWork) {
     refused(o, "--encoder-threads");
     o = probeOptions();
     o.frames = 0;
-    refused(o, "--frames");
+    refused(o, "frames: must be at least 1");
     o = probeOptions();
     o.fps = 0;
-    refused(o, "--fps");
+    refused(o, "fps: must be");
     o = probeOptions();
     o.fps = std::numeric_limits<double>::quiet_NaN();
-    refused(o, "--fps");
+    refused(o, "fps: must be");
     o = probeOptions();
     o.width = 0;
-    refused(o, "canvas size 0x8");
+    refused(o, "size: canvas size 0x8");
+    o = probeOptions();
+    o.frameTimeout = -1;
+    refused(o, "frame_timeout: must be");
     o = probeOptions();
     o.pngLevel = 10;
     refused(o, "--png-level");
     o = probeOptions();
     o.captureEvery = 0;
     refused(o, "--capture-every");
+}
+
+// The library names the setting, not a CLI flag: Diagnostic::field holds it, and the CLI shows its
+// flag there instead (tools/toyhost/SessionFlags.h; tests/gl/test_cli_errors.cpp).
+TEST(SessionOptions, ASettingsErrorNamesTheSettingInItsField) {
+    SessionOptions o = probeOptions();
+    o.width = -1;
+    o.height = 10;
+    Result<SessionPlan> run = prepareSession(o);
+    ASSERT_FALSE(run.ok());
+    EXPECT_EQ(run.error().first().field, "size");
+    EXPECT_EQ(run.error().first().message.find("--"), std::string::npos) << run.error().text();
+    EXPECT_EQ(formatDiagnostic(run.error().first()),
+              "error: size: canvas size -1x10 is not between 1x1 and 16384x16384 [usage.size]");
 }
 
 TEST(SessionOptions, PrepareDecodesTheImagesAndReportsStandIns) {

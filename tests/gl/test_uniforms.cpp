@@ -27,7 +27,7 @@ protected:
     }
     std::vector<float> read(PassId pass) const {
         std::vector<float> rgba;
-        toy_->player().readRgba32f(pass, rgba);
+        playerOf(*toy_).readRgba32f(pass, rgba);
         return rgba;
     }
     static void expectPixel(const std::vector<float>& row, int x, float r, float g, float b, float a,
@@ -54,7 +54,7 @@ TEST_F(Uniforms, ScalarAndVectorUniformsHaveShadertoyValues) {
     EXPECT_EQ(a[4 * 9], 44100.0f) << "iSampleRate";
     // vflip = true: texel (0,0) is the file's bottom-left pixel (10, 20, 30, 40).
     expectPixel(a, 10, 10 / 255.f, 20 / 255.f, 30 / 255.f, 40 / 255.f, "vflip true", k8BitTolerance);
-    while (toy_->player().frame() < 7) stepAt(*toy_);
+    while (playerOf(*toy_).frame() < 7) stepAt(*toy_);
     a = render(PassId::BufferA);
     EXPECT_EQ(a[4 * 1 + 3], 7.0f) << "iFrame";
 }
@@ -97,8 +97,8 @@ TEST_F(Uniforms, SamplersFlipWrapFilterAndMipmapLikeShadertoy) {
     expectPixel(b, 4, 0.5f, 1.0f / 3.0f, 0, 1, "top mip level of Buffer C is its mean", 1e-6f);
     // texelFetch (0,0) of the noise is the first row GL was given: the stand-in's bottom row
     // (vflip) or its top row.
-    const ChannelDesc& noise = toy_->player().manifest().find(PassId::BufferB)->channels[2];
-    const Image8* pixels = toy_->player().plan().images.find(noise);
+    const ChannelDesc& noise = playerOf(*toy_).manifest().find(PassId::BufferB)->channels[2];
+    const Image8* pixels = playerOf(*toy_).plan().images.find(noise);
     ASSERT_NE(pixels, nullptr);
     const std::size_t first = noise.sampler.vflip ? 0 : static_cast<std::size_t>(pixels->height - 1) * pixels->width * 4;
     expectPixel(b, 5, pixels->rgba[first] / 255.f, pixels->rgba[first + 1] / 255.f, pixels->rgba[first + 2] / 255.f,

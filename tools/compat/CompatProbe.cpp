@@ -14,9 +14,9 @@
 #include "gl/GlContext.h"
 #include "gl/HeadlessContext.h"
 #include "image/ImageWriters.h"
-#include "player/Player.h"
 #include "session/SessionCore.h"
 #include "timing/FrameClock.h"
+#include "timing/Timeline.h"
 
 namespace toyhost::compat {
 namespace fs = std::filesystem;
@@ -36,10 +36,10 @@ private:
 
 // `firstUniform` keeps the dominant colour of the first nearly uniform frame judged, to tell a
 // flash from a frozen screen.
-void judgeOutput(const Player& player, const ProbeSettings& settings, ProbeResult& result,
+void judgeOutput(const SessionCore& session, const ProbeSettings& settings, ProbeResult& result,
                  std::optional<std::array<std::uint8_t, 3>>& firstUniform) {
-    const ManifestDesc& manifest = player.manifest();
-    player.readRgba8(PassId::Image, result.lastImage);
+    const ManifestDesc& manifest = session.manifest();
+    session.readRgba8(PassId::Image, result.lastImage);
     result.share = measureFrame(result.lastImage);
     result.uniformImage = nearlyUniform(result.share, settings.minOtherShare);
     if (result.uniformImage && !result.lastImage.empty()) {
@@ -49,7 +49,7 @@ void judgeOutput(const Player& player, const ProbeSettings& settings, ProbeResul
     std::vector<float> floats;
     for (const PassDesc& pass : manifest.passes) {
         if (!isBuffer(pass.id)) continue;
-        player.readRgba32f(pass.id, floats);
+        session.readRgba32f(pass.id, floats);
         size_t nan = 0, inf = 0;
         for (float v : floats) {
             nan += std::isnan(v);
@@ -112,6 +112,7 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
     options.frames = 1;
     options.media.folders = settings.mediaFolders;
     options.eglPlatform = settings.eglPlatform;
+    options.wallClock = wallClock;
     Result<SessionPlan> plan = prepareSession(options);
     if (!plan) {
         result.error = firstErrorLine(plan.error().text());
@@ -131,25 +132,26 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
         return result;
     }
     NoticeCollector notices(result.notices);
+    // Time and date come from the fixed-step input every headless run uses.
+    Timeline timeline(timelineOf(*plan));
     auto session = SessionCore::start(std::move(*plan), *context, notices);
     if (!session) {
         result.error = firstErrorLine(session.error().text());
         return result;
     }
     result.compiled = true;
-    Player* player = &(*session)->player();
+    SessionCore* core = session->get();
 
     // Like a visitor, the probe drags the mouse across the canvas from frame 1 and lets go before
-    // the last frames (ProbeScript.h), so shaders that show nothing until clicked get their click. Time and date come from the same fixed-step
-    // clock a headless run uses.
-    const FrameClock clock(60.0, 0.0, wallClock);
+    // the last frames (ProbeScript.h), so shaders that show nothing until clicked get their click.
     std::vector<InputEvent> events;
     auto frameAt = [&](int frame) {
         events = probeMouseAt(frame, settings.frames, settings.width, settings.height);
-        (void)(*session)->renderFrame(clock.frameTime(frame), events);
+        const FrameTime time = timeline.next(frame, events);
+        (void)(*session)->renderFrame(time, events);
         // Finish each frame so ms/frame is the real shading cost: llvmpipe drops queued work for
         // tiles that a later draw overwrites before anything reads them.
-        player->finish();
+        core->finish();
         result.framesRendered = frame + 1;
     };
     // CPU time of the process (llvmpipe's threads included), not wall time, which grows with the
@@ -166,17 +168,19 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
         }
     };
     checkGl();
-    judgeOutput(*player, settings, result, firstUniform);
+    judgeOutput(*core, settings, result, firstUniform);
     result.otherShareAtFrames = result.share.otherShare;
     // Patience for fade-ins and shaders that need time: check every quarter second of iTime, up to
     // a bound in iTime (frames), never in wall time, so the verdict does not depend on load.
+    const int quarterSecond = std::max(1, static_cast<int>(std::lround(timeline.fps() / 4)));
     for (int frame = settings.frames;
-         result.uniformImage && !result.uniformColourChanged && frame / 60.0 < settings.patienceSeconds; ++frame) {
+         result.uniformImage && !result.uniformColourChanged && timeline.at(frame).time < settings.patienceSeconds;
+         ++frame) {
         frameAt(frame);
-        if (frame % 15 != 0) continue;
+        if (frame % quarterSecond != 0) continue;
         result.nonFiniteBuffers.clear();
-        judgeOutput(*player, settings, result, firstUniform);
-        if (!result.uniformImage || result.uniformColourChanged) result.firstNonUniformTime = frame / 60.0;
+        judgeOutput(*core, settings, result, firstUniform);
+        if (!result.uniformImage || result.uniformColourChanged) result.firstNonUniformTime = timeline.at(frame).time;
     }
     checkGl();
     result.judgedWidth = settings.width;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gl/GlThread.h"
+#include "SessionFlags.h"
 #include "session/SessionOptions.h"
 
 namespace toyhost::cli {
@@ -21,10 +22,9 @@ public:
 
 private:
     SessionOptions options_;
-    std::string target_, size_, capturePass_, mouse_, date_, codec_, frameRange_, shard_, exrCompression_, videoPreset_;
+    SessionFlags flags_;
+    std::string target_, capturePass_, codec_, frameRange_, shard_, exrCompression_, videoPreset_;
     std::optional<int> frames_, captureEvery_, pngLevel_, videoQuality_, captureMemoryMiB_, encoderThreads_;
-    std::optional<double> fps_, startTime_;
-    std::vector<std::string> mediaFiles_, mediaFolders_;
     bool headless_ = false, window_ = false, watch_ = false, quiet_ = false;
 };
 
@@ -39,7 +39,7 @@ int mediaCommand(const std::vector<std::string>& folders);
 struct SoundCommandOptions {
     std::string target, out;
     double seconds = 0;
-    std::vector<std::string> mediaFolders;
+    SessionFlags flags;  // --media, --media-file
     bool quiet = false;
 };
 int soundCommand(const SoundCommandOptions& options, const GlProcess& process);
@@ -52,11 +52,10 @@ public:
     int execute(const GlProcess& process);
 
 private:
-    std::string a_, b_, size_, pass_ = "Image", date_, mouse_, mouseScript_, keyScript_, diffOut_, framesOut_;
+    SessionFlags flags_;
+    std::string a_, b_, pass_ = "Image", diffOut_, framesOut_;
     std::optional<int> frames_, maxDiff_;
-    std::optional<double> fps_, startTime_, tolerancePsnr_;
-    std::vector<std::string> mediaFolders_, mediaFiles_;
-    double frameTimeout_ = 0, compileTimeout_ = 0;
+    std::optional<double> tolerancePsnr_;
     bool json_ = false;
 };
 

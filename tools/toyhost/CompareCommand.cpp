@@ -16,6 +16,7 @@
 #include "core/NumberText.h"
 #include "image/ImageWriters.h"
 #include "session/BackgroundWriter.h"
+#include "session/SettingChecks.h"
 #include "session/StopSignals.h"
 
 namespace toyhost::cli {
@@ -192,19 +193,13 @@ nlohmann::ordered_json toJson(const CompareReport& report, const std::string& a,
 void CompareCommand::define(CLI::App& compare) {
     const CLI::Validator wholeNumber = cli::wholeNumberOption();
     const CLI::Validator decimalNumber = cli::decimalNumberOption();
-    const CLI::Validator timeoutSeconds = cli::timeoutSecondsOption();
     compare.add_option("a", a_, "The first shadertoy (folder, manifest or Shadertoy JSON export): the reference")->required();
     compare.add_option("b", b_, "The second shadertoy, rendered with the same settings and inputs")->required();
-    compare.add_option("--size", size_, "Canvas size WxH (default: A's manifest defaults, else " +
-                                            std::to_string(defaults::kCanvasWidth) + "x" +
-                                            std::to_string(defaults::kCanvasHeight) + ")");
+    flags_.define(compare, SessionFlags::All);
     compare.add_option("--frames", frames_,
                        "Frames to render and compare (default: A's manifest defaults, else " +
                            std::to_string(defaults::kCompareFrames) + ")")
         ->transform(wholeNumber);
-    compare.add_option("--fps", fps_, "Fixed time step: frame n has iTime = start + n/F (default 60)")->check(decimalNumber);
-    compare.add_option("--start-time", startTime_, "iTime of frame 0, in seconds (default 0)")->check(decimalNumber);
-    compare.add_option("--date", date_, "iDate at frame 0, YYYY-MM-DDTHH:MM:SS (default: now, the same for both)");
     compare.add_option("--pass", pass_,
                        "Pass to compare: Image (default; R, G, B) or \"Buffer A\" .. \"Buffer D\" (or A..D; R, G, B, A "
                        "as 8-bit levels)");
@@ -215,57 +210,21 @@ void CompareCommand::define(CLI::App& compare) {
                        "Frames are equal when no sample differs by more than L levels (0..255); pixels within it "
                        "do not count as differing")
         ->transform(wholeNumber);
-    compare.add_option("--mouse", mouse_, "Press the button at pixel X,Y (origin bottom-left) on frame 0 and hold it");
-    compare.add_option("--mouse-script", mouseScript_, "JSON list of timed mouse events, replayed for both (see README)");
-    compare.add_option("--key-script", keyScript_, "JSON list of timed key events, replayed for both (see README)");
-    compare.add_option("--media", mediaFolders_, "Folder with real stock media files, by hash or name (repeatable)");
-    compare.add_option("--media-file", mediaFiles_, "Use FILE for a stock media id: ID=FILE (repeatable)");
     compare.add_option("--diff-out", diffOut_,
                        "Write a difference image of each frame that differs: DIR/diff_NNNN.png (|A - B| x " +
                            std::to_string(defaults::kCompareDiffGain) + " per channel, numbered by iFrame)");
     compare.add_option("--frames-out", framesOut_, "Write both frames of every compared frame: DIR/a_NNNN.png, DIR/b_NNNN.png");
     compare.add_flag("--json", json_, "Print the report as JSON on stdout instead of the table (a PSNR of identical frames is null)");
-    compare.add_option("--frame-timeout", frameTimeout_,
-                       "Watchdog: end the comparison (exit 124) when one pass of a frame draws for longer than this "
-                       "many seconds, without waiting for the draw (default " +
-                           std::to_string(static_cast<int>(defaults::kFrameTimeoutSeconds)) + "; 0: off)")
-        ->default_val(defaults::kFrameTimeoutSeconds)
-        ->check(timeoutSeconds);
-    compare.add_option("--compile-timeout", compileTimeout_,
-                       "Watchdog: end the comparison (exit 124) when compiling one pass takes longer than this many seconds "
-                       "(default " + std::to_string(static_cast<int>(defaults::kCompileTimeoutSeconds)) + "; 0: off)")
-        ->default_val(defaults::kCompileTimeoutSeconds)
-        ->check(timeoutSeconds);
 }
 
 int CompareCommand::execute(const GlProcess&) {
     CompareSettings settings;
     SessionSettings& s = settings.session;
-    if (!size_.empty() && !parseSize(size_, s.width, s.height))
-        return usage("--size " + size_ + ": expected WxH, e.g. 800x450");
+    std::optional<glm::vec2> mouse;
+    if (Status given = flags_.applyTo(s, mouse); !given) return trouble(given.error());
     if (frames_) {
-        if (*frames_ < 1) return usage("--frames must be at least 1");
+        if (Status frames = checkFramesSetting(*frames_); !frames) return trouble(frames.error());
         settings.frames = *frames_;
-    }
-    if (fps_) {
-        if (*fps_ < defaults::kMinFps || *fps_ > defaults::kMaxFps)
-            return usage("--fps must be between 0.001 and 1000000");
-        s.fps = *fps_;
-    }
-    if (startTime_) {
-        if (std::abs(*startTime_) > defaults::kMaxSeconds) return usage("--start-time must be within 1e9 seconds");
-        s.startTime = *startTime_;
-    }
-    s.date = date_;
-    s.frameTimeout = frameTimeout_;
-    s.compileTimeout = compileTimeout_;
-    for (const std::string& folder : mediaFolders_) s.mediaFolders.emplace_back(folder);
-    if (const char* folder = std::getenv("TOYHOST_MEDIA"); folder && *folder) s.mediaFolders.emplace_back(folder);
-    for (const std::string& entry : mediaFiles_) {
-        const size_t eq = entry.find('=');
-        if (eq == std::string::npos || eq == 0 || eq + 1 == entry.size())
-            return usage("--media-file " + entry + ": expected ID=FILE");
-        s.mediaFiles.emplace_back(entry.substr(0, eq), entry.substr(eq + 1));
     }
     if (pass_.size() == 1 && pass_[0] >= 'A' && pass_[0] <= 'D') pass_ = std::string("Buffer ") + pass_;
     if (pass_ != "Image" && pass_.rfind("Buffer ", 0) != 0)
@@ -280,18 +239,10 @@ int CompareCommand::execute(const GlProcess&) {
         if (*maxDiff_ < 0 || *maxDiff_ > 255) return usage("--max-diff must be between 0 and 255 levels");
         settings.tolerance.maxDiff = *maxDiff_;
     }
-    if (!mouse_.empty()) {
-        float x = 0, y = 0;
-        char comma = 0, extra = 0;
-        if (std::sscanf(mouse_.c_str(), "%f%c%f%c", &x, &comma, &y, &extra) != 3 || comma != ',' || !std::isfinite(x) ||
-            !std::isfinite(y) || std::abs(x) > defaults::kMaxPixelCoordinate || std::abs(y) > defaults::kMaxPixelCoordinate)
-            return usage("--mouse " + mouse_ + ": expected X,Y in pixels");
-        settings.input = [x, y](int frame, double) {
+    if (mouse)
+        settings.input = [x = mouse->x, y = mouse->y](int frame, double) {
             return frame == 0 ? std::vector<InputEvent>{InputEvent::mouseDown(x, y)} : std::vector<InputEvent>{};
         };
-    }
-    settings.mouseScript = mouseScript_;
-    settings.keyScript = keyScript_;
     Result<Shadertoy> a = Shadertoy::load(a_);
     if (!a) return trouble(a.error());
     Result<Shadertoy> b = Shadertoy::load(b_);

@@ -1,5 +1,7 @@
 #include "Console.h"
 
+#include "SessionFlags.h"
+
 #include <csignal>
 #include <iostream>
 #include <unistd.h>
@@ -17,7 +19,7 @@ void printDiagnostic(const Diagnostic& diagnostic) {
 void printError(const Error& error) { std::cerr << formatDiagnostics(error.diagnostics, "toyhost: ") << "\n"; }
 
 int fail(const Error& error) {
-    printError(error);
+    printError(withFlagNames(error));
     // Whatever ended a run that a signal asked to stop, the shell's convention says so.
     if (stopSignal()) return 128 + stopSignal();
     switch (error.category()) {

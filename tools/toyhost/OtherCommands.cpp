@@ -152,14 +152,13 @@ int soundCommand(const SoundCommandOptions& o, const GlProcess& process) {
     options.sound = SoundRequest{o.out, o.seconds};
     options.eglPlatform = process.eglPlatform;
     options.startedAt = process.startedAt;
-    for (const std::string& folder : o.mediaFolders) options.media.folders.emplace_back(folder);
-    if (const char* folder = std::getenv("TOYHOST_MEDIA"); folder && *folder) options.media.folders.emplace_back(folder);
+    // A runaway mainSound is ended like a runaway frame (each block of samples is one draw).
+    options.frameTimeout = defaults::kFrameTimeoutSeconds;
+    if (Status given = o.flags.applyTo(options); !given) return fail(given.error());
     if (o.out == "-" && process.closedAtStart[STDOUT_FILENO])
         return usage("--out -: stdout is closed; give it a file or a pipe (or --out music.wav)");
     if (o.out == "-" && isatty(STDOUT_FILENO))
         return usage("--out -: stdout is a terminal; redirect the WAV stream to a file or a pipe");
-    // A runaway mainSound is ended like a runaway frame (each block of samples is one draw).
-    options.frameTimeout = defaults::kFrameTimeoutSeconds;
     int code = kExitOk;
     runOnGlThread([&] { code = runSession(options, o.quiet, runHeadless); });
     return code;

@@ -11,7 +11,6 @@
 #include "drivers/headless/HeadlessDriver.h"
 #include "drivers/window/WindowContext.h"
 #include "drivers/window/WindowDriver.h"
-#include "timing/FrameClock.h"
 
 namespace toyhost::cli {
 
@@ -29,25 +28,16 @@ std::optional<PassId> parsePass(const std::string& text) {
     return std::nullopt;
 }
 
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
 // Every numeric option of `run` is checked as text before CLI11 converts it (core/NumberText.h):
 // CLI11 alone reads --frames 0x10 as 16, --png-level 010 as 8 (octal) and --frames '' as "not
 // given". A whole number is handed on without leading zeros. Ranges beyond what the type holds are
-// checked by prepareSession, which also serves library callers.
+// checked by prepareSession, which also serves library callers. The flags every session command
+// shares (--fps, --start-time, the timeouts) get theirs in SessionFlags.
 void requireDecimalNumbers(CLI::App& run) {
     const CLI::Validator wholeNumber = cli::wholeNumberOption();
-    const CLI::Validator decimalNumber = cli::decimalNumberOption();
-    const CLI::Validator timeoutSeconds = cli::timeoutSecondsOption();
     for (const char* name : {"--frames", "--png-level", "--video-quality", "--encoder-threads", "--capture-memory",
                              "--capture-every", "--checkpoint-every"})
         run.get_option(name)->transform(wholeNumber);  // transform: it may rewrite the text
-    for (const char* name : {"--fps", "--start-time"}) run.get_option(name)->check(decimalNumber);
-    for (const char* name : {"--frame-timeout", "--compile-timeout"}) run.get_option(name)->check(timeoutSeconds);
 }
 
 }  // namespace
@@ -63,13 +53,9 @@ void RunCommand::define(CLI::App& run) {
     run.add_flag("--headless", headless_, "Render without a window (EGL, no display needed); the default without a display");
     run.add_flag("--watch", watch_,
                  "Headless: render the frames again whenever a file of the shadertoy changes, until Ctrl-C");
-    run.add_option("--size", size_, "Canvas size WxH (default " + defaultSize + ")");
+    flags_.define(run, SessionFlags::All);
     run.add_option("--frames", frames_,
                    "Frames to render (default " + std::to_string(defaults::kFrames) + "; in a window: until closed)");
-    run.add_option("--fps", fps_,
-                   "Fixed time step: frame n has iTime = start + n/F, iTimeDelta = 1/F (default " + number(defaults::kFps) +
-                       "; in a window: real time)");
-    run.add_option("--start-time", startTime_, "iTime of frame 0, in seconds (default 0)");
     run.add_option("--out", options_.outPattern,
                    "Write captured frames: out/frame_%04d.png (8-bit, as shown) or .exr (32-bit float RGBA), "
                    "numbered by iFrame; a video movie.mp4|.webm|.mov|.mkv (through ffmpeg); or - for raw "
@@ -106,27 +92,11 @@ void RunCommand::define(CLI::App& run) {
     run.add_option("--capture-pass", capturePass_,
                    "Pass to capture: Image (default), \"Buffer A\" .. \"Buffer D\" (or A..D), or \"Cube A\" (its six "
                    "faces side by side, +X -X +Y -Y +Z -Z, each 1024 wide)");
-    run.add_option("--mouse", mouse_, "Press the button at pixel X,Y (origin bottom-left) on frame 0 and hold it");
-    run.add_option("--mouse-script", options_.mouseScript, "JSON list of timed mouse events (see README)");
-    run.add_option("--key-script", options_.keyScript, "JSON list of timed key events (see README)");
-    run.add_option("--media-file", mediaFiles_, "Use FILE for a stock media id: ID=FILE (repeatable)");
     run.add_option("--webcam", options_.media.webcam,
                    "What webcam channels show: a V4L2 camera (/dev/video0) or a video file (default: a moving stand-in)");
     run.add_option("--mic", options_.media.mic,
                    "What mic channels hear: an audio file, or live: alsa:DEVICE (alsa:default, alsa:hw:0), "
                    "pulse:DEVICE, lavfi:GRAPH (default: the spectrum the site shows without audio)");
-    run.add_option("--media", mediaFolders_,
-                   "Folder with real stock media files, by hash or name (repeatable; also $TOYHOST_MEDIA)");
-    run.add_option("--date", date_, "iDate at frame 0, YYYY-MM-DDTHH:MM:SS (default: now, local time)");
-    run.add_option("--frame-timeout", options_.frameTimeout,
-                   "Watchdog: end the run (exit 124) when one pass of a frame draws for longer than this many "
-                   "seconds, or the encoders take no frame for that long (default " +
-                       number(defaults::kFrameTimeoutSeconds) + " headless, off in a window; 0: off; else at least " +
-                       number(defaults::kMinTimeoutSeconds) + ")");
-    run.add_option("--compile-timeout", options_.compileTimeout,
-                   "Watchdog: end the run (exit 124) when compiling one pass takes longer than this many seconds "
-                   "(default " + number(defaults::kCompileTimeoutSeconds) + "; 0: off; else at least " +
-                       number(defaults::kMinTimeoutSeconds) + ")");
     run.add_option("--checkpoint", options_.checkpoint,
                    "Write the run's full state (every buffer, iFrame, time, mouse, keys) to FILE, atomically: "
                    "every --checkpoint-every frames, when interrupted and at the end");
@@ -149,15 +119,8 @@ void RunCommand::define(CLI::App& run) {
 int RunCommand::execute(const GlProcess& process) {
     SessionOptions& o = options_;
     o.target = target_;
-    if (!size_.empty()) {
-        int w = 0, h = 0;
-        if (!parseSize(size_, w, h)) return usage("--size " + size_ + ": expected WxH, e.g. 800x450");
-        o.width = w;
-        o.height = h;
-    }
+    if (Status given = flags_.applyTo(o); !given) return fail(given.error());
     o.frames = frames_;
-    o.fps = fps_;
-    if (startTime_) o.startTime = *startTime_;
     o.captureEvery = captureEvery_;
     o.pngLevel = pngLevel_;
     if (encoderThreads_) o.encoderThreads = *encoderThreads_;
@@ -169,28 +132,6 @@ int RunCommand::execute(const GlProcess& process) {
         std::optional<PassId> pass = parsePass(capturePass_);
         if (!pass) return usage("--capture-pass " + capturePass_ + ": expected Image, \"Buffer A\" .. \"Buffer D\" or \"Cube A\"");
         o.capturePass = *pass;
-    }
-    if (!mouse_.empty()) {
-        float x = 0, y = 0;
-        char comma = 0, extra = 0;
-        if (std::sscanf(mouse_.c_str(), "%f%c%f%c", &x, &comma, &y, &extra) != 3 || comma != ',' || !std::isfinite(x) ||
-            !std::isfinite(y))
-            return usage("--mouse " + mouse_ + ": expected X,Y in pixels");
-        o.mouse = glm::vec2(x, y);
-    }
-    for (const std::string& entry : mediaFiles_) {
-        const size_t eq = entry.find('=');
-        if (eq == std::string::npos || eq == 0 || eq + 1 == entry.size())
-            return usage("--media-file " + entry + ": expected ID=FILE");
-        o.media.files.emplace_back(entry.substr(0, eq), entry.substr(eq + 1));
-    }
-    for (const std::string& folder : mediaFolders_) o.media.folders.emplace_back(folder);
-    if (const char* mediaFolder = std::getenv("TOYHOST_MEDIA"); mediaFolder && *mediaFolder)
-        o.media.folders.emplace_back(mediaFolder);
-    if (!date_.empty()) {
-        Result<double> wallClock = parseWallClock(date_);
-        if (!wallClock) return usage("--date: " + wallClock.error().first().message);
-        o.wallClock = *wallClock;
     }
     o.eglPlatform = process.eglPlatform;
     o.startedAt = process.startedAt;

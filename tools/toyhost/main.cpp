@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
     sound->add_option("--seconds", soundOptions.seconds, "Length, as the site's 180 s by default")
         ->default_val(defaults::kSoundSeconds)
         ->check(CLI::Validator([](std::string& text) { return decimalNumberProblem(text); }, ""));
-    sound->add_option("--media", soundOptions.mediaFolders, "Folder with real stock media files (repeatable)");
+    soundOptions.flags.define(*sound, cli::SessionFlags::Media | cli::SessionFlags::Limits);
     sound->add_flag("--quiet", soundOptions.quiet, "Hide notices (stand-ins)");
 
     CompareCommand compareCommand;

@@ -2,34 +2,71 @@
 
 #include "gl/HeadlessContext.h"
 #include "session/AllProblems.h"
+#include "session/ShadertoyWatcher.h"
+
+#include <csignal>
 
 namespace toyhost {
 
-HeadlessDriver::HeadlessDriver(const SessionPlan& plan)
-    : plan_(plan), clock_(*plan.options.fps, plan.options.startTime, *plan.options.wallClock), mouse_(plan.mouse),
-      keys_(plan.keys) {}
+HeadlessDriver::HeadlessDriver(const SessionPlan& plan) : timeline_(timelineOf(plan)) {}
 
+// A resumed run starts at its checkpoint's frame: the scripts' earlier events are already in the
+// saved mouse and keyboard state, so the timeline replays and drops them.
 std::optional<FrameTime> HeadlessDriver::nextFrame(int frame, std::vector<InputEvent>& events) {
-    // A resumed run starts at its checkpoint's frame: the scripts' earlier events are already in
-    // the saved mouse and keyboard state, so they are replayed and dropped.
-    std::vector<InputEvent> earlier;
-    for (; next_ < frame; ++next_) {
-        earlier.clear();
-        mouse_.eventsBeforeFrame(next_, clock_.time(next_), earlier);
-        keys_.eventsBeforeFrame(next_, clock_.time(next_), earlier);
-    }
-    const double time = clock_.time(frame);
-    mouse_.eventsBeforeFrame(frame, time, events);
-    keys_.eventsBeforeFrame(frame, time, events);
-    next_ = frame + 1;
-    return clock_.frameTime(frame);
+    return timeline_.next(frame, events);
 }
 
-void HeadlessDriver::restart() {
-    mouse_ = MouseScriptPlayer(plan_.mouse);
-    keys_ = KeyScriptPlayer(plan_.keys);
-    next_ = 0;
+void HeadlessDriver::restart() { timeline_.restart(); }
+
+namespace {
+
+Diagnostic watchNotice(std::string message) {
+    Diagnostic d;
+    d.severity = Severity::Notice;
+    d.code = Code::WatchChanged;
+    d.message = std::move(message);
+    return d;
 }
+
+// --watch: the run's frames, then after every change of the shadertoy's files the frames again
+// from frame 0 with what changed rebuilt, until a stop. A round's files are complete before the
+// next begins.
+Result<SessionReport> runWatchRounds(SessionCore& session, HeadlessDriver& driver, ShadertoyWatcher& watcher,
+                                     SessionObserver& observer, Watchdog* watchdog) {
+    Result<SessionReport> round = session.run(driver);
+    auto stop = [&] { return session.stopRequested(); };
+    const SessionPlan& plan = session.plan();
+    while (true) {
+        if (!round && round.error().category() == Category::Interrupted) return round;
+        observer.roundFinished(round);
+        std::optional<ShadertoyChange> change;
+        while (!(change = watcher.wait(stop))) {
+            // Stopped while waiting: the last round's files are complete. Ctrl-C is how a --watch
+            // run is ended (exit 0); SIGTERM still says the run was terminated.
+            if (!session.stopRequested()) continue;
+            if (watchdog && watchdog->stop().reason == StopReason::Signal && watchdog->stop().signal == SIGINT)
+                return round ? round : Result<SessionReport>(session.report());
+            return Error("interrupted while watching the shadertoy's files; every round's files are complete",
+                         Code::Interrupted);
+        }
+        session.beginNextRound();  // the start-up of the next round: reloading and recompiling
+        ReloadOutcome outcome = session.reload(std::move(change->files), std::move(change->plan));
+        if (!session.running() || (!outcome.applied && !outcome.problems.empty())) {
+            observer.notice(watchNotice("no frames written: the shadertoy as it is now does not run; the files of the "
+                                        "last good round stay"));
+            round = Error(outcome.problems.empty() ? session.problems() : outcome.problems);
+            continue;
+        }
+        if (plan.end > plan.first)
+            observer.notice(watchNotice("rendering " + std::to_string(plan.end - plan.first) + " frame" +
+                                        (plan.end - plan.first == 1 ? "" : "s") + " again"));
+        session.restart();
+        driver.restart();
+        round = session.run(driver);
+    }
+}
+
+}  // namespace
 
 Result<SessionReport> runHeadless(const SessionOptions& options, SessionObserver& observer, Watchdog* watchdog) {
     Result<SessionPlan> prepared = prepareSession(options);
@@ -38,10 +75,14 @@ Result<SessionReport> runHeadless(const SessionOptions& options, SessionObserver
     headless.platform = prepared->options.eglPlatform;
     Result<std::shared_ptr<GlContext>> context = createHeadlessContext(headless);
     if (!context) return context.error();
+    std::optional<ShadertoyWatcher> watcher;
+    if (prepared->options.watch)
+        watcher.emplace(prepared->options.target, prepared->options.media, prepared->shadertoy.manifest);
     Result<std::unique_ptr<SessionCore>> session = SessionCore::start(std::move(*prepared), *context, observer, watchdog);
     if (!session) return session.error();
     if (options.sound) return (*session)->writeSound();
     HeadlessDriver driver((*session)->plan());
+    if (watcher) return runWatchRounds(**session, driver, *watcher, observer, watchdog);
     return (*session)->run(driver);
 }
 

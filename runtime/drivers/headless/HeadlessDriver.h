@@ -1,7 +1,7 @@
-// The headless driver: what a run without a window brings to a SessionCore (session/SessionCore.h): a
-// fixed-step clock (frame n at iTime = start + n / fps, timing/FrameClock.h) and the input scripts
-// (--mouse, --mouse-script, --key-script) replayed by frame number, so every headless run of the
-// same options renders the same frames. runHeadless is `toyhost run --headless` (and `--watch`)
+// The headless driver: what a run without a window brings to a SessionCore (session/SessionCore.h):
+// the run's fixed-step input (timing/Timeline.h: frame n at iTime = start + n / fps with the input
+// scripts of --mouse, --mouse-script, --key-script replayed by frame number), so every headless run
+// of the same options renders the same frames. runHeadless is `toyhost run --headless` (and `--watch`)
 // and `toyhost sound`. Needs no display; it makes its own EGL context on the calling thread (the
 // GL thread, gl/GlThread.h).
 #pragma once
@@ -10,9 +10,8 @@
 #include <vector>
 
 #include "core/Result.h"
-#include "input/InputScriptPlayer.h"
 #include "session/SessionCore.h"
-#include "timing/FrameClock.h"
+#include "timing/Timeline.h"
 
 namespace toyhost {
 
@@ -23,11 +22,7 @@ public:
     void restart() override;
 
 private:
-    const SessionPlan& plan_;
-    FrameClock clock_;
-    MouseScriptPlayer mouse_;
-    KeyScriptPlayer keys_;
-    int next_ = 0;  // the scripts' next frame
+    Timeline timeline_;
 };
 
 // Prepares `options` (every check before GL), creates a headless EGL context and runs the session:

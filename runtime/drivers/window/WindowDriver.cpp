@@ -1,12 +1,16 @@
 #include "drivers/window/WindowDriver.h"
 
 #include <atomic>
+#include <ctime>
 
 #include "core/Defaults.h"
 #include "drivers/window/WindowContext.h"
 #include "drivers/window/WindowEvents.h"
 #include "gl/GlThread.h"
+#include "image/ImageWriters.h"
 #include "render/Present.h"
+#include "session/BackgroundWriter.h"
+#include "session/ShadertoyWatcher.h"
 #include "session/AllProblems.h"
 #include "timing/FrameClock.h"
 #include "timing/ProgressLine.h"
@@ -14,20 +18,33 @@
 
 namespace toyhost {
 
+namespace fs = std::filesystem;
+
 namespace {
 
 double monotonicNow() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+std::string fileSafe(std::string name) {
+    for (char& c : name)
+        if (c == '/' || c == '\\' || c == ':' || static_cast<unsigned char>(c) < 32) c = '_';
+    return name.empty() ? std::string("toyhost") : name;
+}
+
 class WindowDriver final : public SessionDriver {
 public:
-    WindowDriver(WindowContext& window, WindowEvents& events, const SessionOptions& o, SessionObserver& observer)
-        : window_(window), events_(events), o_(o), observer_(observer), clock_(clockOptions(o), monotonicNow()),
-          wallStart_(o.wallClock.value_or(localWallClockNow())) {}
+    WindowDriver(WindowContext& window, WindowEvents& events, const SessionPlan& plan, ShadertoyWatcher& watcher,
+                 SessionObserver& observer)
+        : window_(window), events_(events), plan_(plan), o_(plan.options), watcher_(watcher), observer_(observer),
+          clock_(clockOptions(plan.options), monotonicNow()) {}
 
     bool poll(SessionCore& s) override {
+        reportScreenshots();
         if (events_.quitRequested()) return false;
+        // Hot reload between frames: the watcher loaded and planned the files off this thread.
+        if (std::optional<ShadertoyChange> change = watcher_.take())
+            (void)s.reload(std::move(change->files), std::move(change->plan));
         const double now = monotonicNow();
         if (events_.takeControl(Control::Help)) observer_.notice(notice(controlsHelp(), Code::WindowHelp));
         if (events_.takeControl(Control::Restart)) {
@@ -37,7 +54,7 @@ public:
         if (events_.takeControl(Control::Pause)) clock_.setPaused(!clock_.paused(), now);
         if (events_.takeControl(Control::Step)) clock_.stepOnce();
         if (events_.takeControl(Control::Screenshot))
-            if (Status shot = s.screenshot(); !shot) observer_.notice(shot.error().first());
+            if (Status shot = screenshot(s); !shot) observer_.notice(shot.error().first());
         // The canvas is the framebuffer (HiDPI: pixels, not window coordinates), except while
         // recording: a recording has one size, so the canvas stays at --size and is scaled to fit.
         framebuffer_ = events_.framebufferSize();
@@ -53,20 +70,19 @@ public:
         if (clock_.paused() && events_.hasEvents()) clock_.forceFrame();
         if (!clock_.shouldRender()) return std::nullopt;
         events_.takeEvents(events);
-        FrameTime time = clock_.frame(monotonicNow(), localWallClockNow());
-        if (o_.fps || o_.wallClock) time.date = dateAt(wallStart_ + (time.time - o_.startTime));
-        return time;
+        return clock_.frame(monotonicNow(), localWallClockNow());
     }
 
     void present(SessionCore& s) override {
-        events_.setCanvasSize(s.player().width(), s.player().height());
-        presentToDefaultFramebuffer(s.player().output(PassId::Image), framebuffer_.width, framebuffer_.height);
+        events_.setCanvasSize(s.width(), s.height());
+        presentToDefaultFramebuffer(s.output(PassId::Image), framebuffer_.width, framebuffer_.height);
         (void)window_.present();
     }
 
     void idle(SessionCore& s) override {
         // Paused, or waiting for a shadertoy that compiles: keep the window's content and wait.
-        if (s.running() && s.player().frame() > 0) {
+        reportScreenshots();
+        if (s.running() && s.frame() > 0) {
             present(s);
         } else {
             clearDefaultFramebuffer(framebuffer_.width, framebuffer_.height);
@@ -75,9 +91,17 @@ public:
         events_.waitForInput(0.05);
     }
 
+    // The screenshots still being written, then said where they are.
+    void finishScreenshots() {
+        writer_.drain();
+        reportScreenshots();
+    }
+
 private:
     static RealTimeClockOptions clockOptions(const SessionOptions& o) {
-        return {o.fps, o.startTime, 1.0 / defaults::kRestartTimeDelta};
+        RealTimeClockOptions clock{o.fps, o.startTime, 1.0 / defaults::kRestartTimeDelta, std::nullopt};
+        if (o.fps || o.wallClock) clock.wallClockStart = o.wallClock.value_or(localWallClockNow());
+        return clock;
     }
     static Diagnostic notice(std::string message, Code code) {
         Diagnostic d;
@@ -92,17 +116,59 @@ private:
         if (paused == titlePaused_ && now - titleShownAt_ < 0.25) return;
         titlePaused_ = paused;
         titleShownAt_ = now;
-        events_.setTitle(formatWindowTitle({s.name(), clock_.measuredFrameRate(), s.running() ? s.player().frame() - 1 : -1,
+        events_.setTitle(formatWindowTitle({s.name(), clock_.measuredFrameRate(), s.running() ? s.frame() - 1 : -1,
                                             clock_.time(), paused,
                                             s.problems().empty() ? "" : formatDiagnostic(s.problems().front())}));
     }
 
+    // F12: the shown frame as NAME-YYYYMMDD-HHMMSS-frameN.png in --out's folder or the working
+    // directory, written off the GL thread (a notice says where once it is written).
+    Status screenshot(SessionCore& s) {
+        if (!s.running() || s.frame() == 0) return Error("nothing is shown yet: no screenshot", Code::WindowScreenshot);
+        fs::path folder = ".";
+        if (plan_.output && plan_.output->format() != OutputFormat::RawStream) {
+            const fs::path parent = plan_.output->pathFor(0).parent_path();
+            if (!parent.empty()) folder = parent;
+        }
+        char stamp[32];
+        const std::time_t now = std::time(nullptr);
+        std::tm local{};
+        localtime_r(&now, &local);
+        std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
+        const std::string base = fileSafe(s.name()) + "-" + stamp + "-frame" + std::to_string(s.frame() - 1);
+        auto pixels = std::make_shared<std::vector<std::uint8_t>>();
+        s.readRgba8(PassId::Image, *pixels);
+        const int width = s.width(), height = s.height();
+        writer_.submit([folder, base, pixels, width, height]() -> Result<fs::path> {
+            // Two screenshots of one frame in one second (after a restart) get their own names.
+            fs::path file = folder / (base + ".png");
+            std::error_code ec;
+            for (int n = 2; fs::exists(file, ec); ++n) file = folder / (base + "-" + std::to_string(n) + ".png");
+            if (Status written = writePng(file, width, height, *pixels); !written) return written.error();
+            return file;
+        });
+        return okStatus();
+    }
+    void reportScreenshots() {
+        for (Result<fs::path>& written : writer_.takeFinished()) {
+            if (!written) {
+                for (const Diagnostic& d : written.error().diagnostics) observer_.notice(d);
+                continue;
+            }
+            Diagnostic d = notice("screenshot written", Code::WindowScreenshot);
+            d.file = written->string();
+            observer_.notice(d);
+        }
+    }
+
     WindowContext& window_;
     WindowEvents& events_;
+    const SessionPlan& plan_;
     const SessionOptions& o_;
+    ShadertoyWatcher& watcher_;
+    BackgroundWriter writer_;
     SessionObserver& observer_;
     RealTimeClock clock_;
-    double wallStart_;
     GlSurface::Size framebuffer_;
     bool titlePaused_ = false;
     double titleShownAt_ = -1;
@@ -118,6 +184,7 @@ Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& 
     windowOptions.height = *prepared->options.height;
     const std::string& name = prepared->shadertoy.manifest.name;
     windowOptions.title = name.empty() ? "toyhost" : name + " - toyhost";
+    ShadertoyWatcher watcher(prepared->options.target, prepared->options.media, prepared->shadertoy.manifest);
     Result<std::shared_ptr<WindowContext>> window = WindowContext::create(windowOptions);
     if (!window) return window.error();
     (*window)->releaseCurrent();  // the GL thread makes it current
@@ -137,8 +204,12 @@ Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& 
             Result<std::unique_ptr<SessionCore>> session = SessionCore::start(std::move(*prepared), *window, observer, watchdog);
             if (session) {
                 (void)(*window)->setSwapInterval(1);
-                WindowDriver driver(**window, events, (*session)->plan().options, observer);
+                WindowDriver driver(**window, events, (*session)->plan(), watcher, observer);
                 result = (*session)->run(driver);
+                driver.finishScreenshots();
+                // Closed before the shadertoy ever compiled: the run ends with why.
+                if (*result && !(*session)->running() && !(*session)->problems().empty())
+                    result = Result<SessionReport>(Error((*session)->problems()));
             } else {
                 result = session.error();
             }

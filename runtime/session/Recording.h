@@ -1,0 +1,62 @@
+// Recording: what a run writes with --out, round by round: the FrameRecorder (readback, encoders,
+// sink) of the round, which frames it captures (the capture-every rule), the files it completed,
+// and the rules for a run that does not complete (complete image files stay, a video or a raw
+// stream being written is discarded, dropped frames are counted). The session's loop asks it
+// whether a frame is captured and hands it the frames; the report's output facts come from here.
+// Needs the player's GL context current for its whole life.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/Result.h"
+#include "player/Player.h"
+#include "session/FrameRecorder.h"
+#include "session/SessionObserver.h"
+#include "session/SessionOptions.h"
+
+namespace toyhost {
+
+class FiniteCheck;
+
+class Recording {
+public:
+    // A recording of `plan`'s output (plan.output must be set).
+    Recording(const SessionPlan& plan, RunActivity* activity);
+    ~Recording();
+
+    // Starts a round's recorder for `player`'s canvas (ffmpeg for a video); a notice says which
+    // video encoder --codec auto chose. A round already begun is kept.
+    Status begin(const Player& player, SessionObserver& observer);
+    bool begun() const { return recorder_ != nullptr; }
+    // Whether frame `frame` of the run is captured (the capture-every rule and the last frame).
+    bool captures(int frame) const;
+    // Whether the Image pass must be drawn on frame `frame` for this recording.
+    bool needsImage(int frame) const { return captures(frame) && pass_ == PassId::Image; }
+    Status capture(const Player& player, int frame);
+    // Hands completed readbacks to the encoders; once per frame that is not captured.
+    Status poll();
+    std::uint64_t bytesWritten() const { return recorder_ ? recorder_->bytesWritten() : 0; }
+
+    // Waits for every readback and encoder and completes the round's output.
+    Status complete();
+    // After complete(): the report's output facts (files, bytes, encoders, capture times with the
+    // loop's `renderSeconds`); warnings (a NaN in a float capture, frames dropped in real time) go
+    // to `observer`, `finite` checks the captured float frames. The next round begins anew.
+    void report(SessionReport& report, double renderSeconds, SessionObserver& observer, FiniteCheck& finite);
+    // A run that ends interrupted: what it leaves, as the end of the message ("; 3 files written").
+    std::string abandon();
+    // An interrupted run's video is discarded even when finish() just completed it.
+    void discardVideo();
+
+private:
+    const SessionPlan& plan_;
+    RunActivity* activity_;
+    PassId pass_;
+    std::unique_ptr<FrameRecorder> recorder_;
+    std::vector<int> captured_;  // frame numbers captured this round
+};
+
+}  // namespace toyhost

@@ -1,0 +1,53 @@
+#include "session/SettingChecks.h"
+
+#include <cmath>
+
+#include "core/Defaults.h"
+#include "player/PlayerDesc.h"
+
+namespace toyhost {
+
+Error settingError(const std::string& setting, std::string message, Code code) {
+    Error error(std::move(message), code);
+    error.diagnostics.front().field = setting;
+    return error;
+}
+
+Status checkSizeSetting(int width, int height) {
+    if (Status size = checkCanvasSize(width, height); !size)
+        return settingError("size", size.error().first().message, size.error().first().code);
+    return okStatus();
+}
+
+Status checkFramesSetting(int frames) {
+    if (frames < 1) return settingError("frames", "must be at least 1");
+    return okStatus();
+}
+
+Status checkFpsSetting(double fps) {
+    if (!std::isfinite(fps) || fps < defaults::kMinFps || fps > defaults::kMaxFps)
+        return settingError("fps", "must be a number of frames per second from 0.001 to 1000000");
+    return okStatus();
+}
+
+Status checkStartTimeSetting(double seconds) {
+    if (!std::isfinite(seconds) || std::abs(seconds) > defaults::kMaxSeconds)
+        return settingError("start_time", "must be a number of seconds between -1e9 and 1e9");
+    return okStatus();
+}
+
+Status checkMouseSetting(double x, double y) {
+    if (!std::isfinite(x) || !std::isfinite(y) || std::abs(x) > defaults::kMaxPixelCoordinate ||
+        std::abs(y) > defaults::kMaxPixelCoordinate)
+        return settingError("mouse", "coordinates must be within +-1000000 pixels");
+    return okStatus();
+}
+
+Status checkTimeoutSetting(const std::string& setting, double seconds) {
+    if (!std::isfinite(seconds) || seconds < 0 || (seconds > 0 && seconds < defaults::kMinTimeoutSeconds) ||
+        seconds > defaults::kMaxTimeoutSeconds)
+        return settingError(setting, "must be 0 (off) or a number of seconds from 0.1 to 1000000");
+    return okStatus();
+}
+
+}  // namespace toyhost

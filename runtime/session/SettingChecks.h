@@ -1,0 +1,25 @@
+// SettingChecks: one check per number a user gives a run (the CLI's flags, the library's
+// SessionSettings, Python's keywords), each with one message. The error names the setting in
+// Diagnostic::field ("size", "fps", "frame_timeout"), not a CLI flag: a library caller reads
+// "size: canvas size 0x0 is not between 1x1 and 16384x16384", and the CLI shows its own flag
+// there (tools/toyhost/SessionFlags.h). prepareSession runs them once for every run; a command that
+// builds settings itself (compare) runs the same ones. No GL needed.
+#pragma once
+
+#include <string>
+
+#include "core/Result.h"
+
+namespace toyhost {
+
+// A usage error about `setting`.
+Error settingError(const std::string& setting, std::string message, Code code = Code::Usage);
+
+Status checkSizeSetting(int width, int height);                   // "size"
+Status checkFramesSetting(int frames);                            // "frames"
+Status checkFpsSetting(double fps);                               // "fps"
+Status checkStartTimeSetting(double seconds);                     // "start_time"
+Status checkMouseSetting(double x, double y);                     // "mouse"
+Status checkTimeoutSetting(const std::string& setting, double seconds);  // "frame_timeout", "compile_timeout"
+
+}  // namespace toyhost

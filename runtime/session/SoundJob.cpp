@@ -1,0 +1,88 @@
+#include "session/SoundJob.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "capture/SoundFile.h"
+#include "capture/WavFile.h"
+#include "core/Defaults.h"
+#include "render/SoundRenderer.h"
+
+namespace toyhost {
+
+namespace fs = std::filesystem;
+
+Result<std::vector<float>> SoundJob::render(const PlayerPlan& shadertoy, double seconds) {
+    SoundRenderDesc desc;
+    desc.seconds = seconds;
+    desc.activity = activity_;
+    desc.stopRequested = stopRequested_;
+    return renderSound(context_, shadertoy.manifest, shadertoy.images, desc);
+}
+
+Result<SessionReport> SoundJob::writeFile(const PlayerPlan& shadertoy, const SoundRequest& request, SessionReport report) {
+    using Clock = std::chrono::steady_clock;
+    const double seconds = request.seconds > 0 ? request.seconds : defaults::kSoundSeconds;
+    const Clock::time_point started = Clock::now();
+    Result<std::vector<float>> stereo = render(shadertoy, seconds);
+    if (!stereo) return stereo.error();
+    const Clock::time_point rendered = Clock::now();
+    if (stopRequested_()) return Error("interrupted: no audio file was written", Code::Interrupted);
+    auto samples = std::make_shared<std::vector<float>>(std::move(*stereo));
+    const fs::path out = request.out;
+    writer_.submit([out, samples]() -> Result<fs::path> {
+        if (Status written = writeSoundFile(out, *samples); !written) return written.error();
+        return out;
+    });
+    if (activity_) activity_->begin(RunActivity::Phase::WaitingForOutput);
+    writer_.drain();
+    if (activity_) activity_->idle();
+    for (Result<fs::path>& written : writer_.takeFinished()) {
+        if (!written) return written.error();
+        if (*written == "-") report.toStdout = true;
+        else report.files.push_back(*written);
+    }
+    report.firstFrameSeconds = std::chrono::duration<double>(rendered - started).count();
+    report.restSeconds = std::chrono::duration<double>(Clock::now() - rendered).count();
+    report.soundSeconds = seconds;
+    return report;
+}
+
+Result<std::shared_ptr<TemporaryFiles>> SoundJob::soundTrack(SessionPlan& plan, SessionObserver& observer) {
+    const SessionOptions& o = plan.options;
+    if (!plan.shadertoy.manifest.sound) return std::shared_ptr<TemporaryFiles>();
+    const bool video = plan.output && plan.output->format() == OutputFormat::Video;
+    const double fps = o.fps.value_or(defaults::kFps);
+    const double end = std::min(o.startTime + *o.frames / fps, defaults::kSoundSeconds);
+    if (!video || *o.frames <= 0 || end <= o.startTime) {
+        Diagnostic skipped;
+        skipped.severity = Severity::Notice;
+        skipped.code = Code::SoundSkipped;
+        skipped.message = video ? "the Sound pass ends at 180 s, before this run starts: the video has no sound"
+                                : "the Sound pass is not rendered: only a video --out (.mp4, .webm, .mov, .mkv) carries "
+                                  "sound; `toyhost sound` writes it to an audio file";
+        skipped.pass = "Sound";
+        observer.notice(skipped);
+        return std::shared_ptr<TemporaryFiles>();
+    }
+    Result<std::vector<float>> stereo = render(plan.shadertoy, end);
+    if (!stereo) return stereo.error();
+    const std::size_t skip =
+        std::min(stereo->size(), 2 * static_cast<std::size_t>(std::llround(o.startTime * defaults::kSampleRate)));
+    auto track = std::make_shared<TemporaryFiles>("soundtrack", std::initializer_list<const char*>{"wav"});
+    if (!track->registerAll()) return Error("not started: toyhost is stopping", Code::Interrupted);
+    auto samples = std::make_shared<std::vector<float>>(stereo->begin() + static_cast<std::ptrdiff_t>(skip), stereo->end());
+    writer_.submit([track, samples]() -> Result<fs::path> {
+        if (Status wav = writeWav16((*track)[0], *samples, static_cast<int>(defaults::kSampleRate)); !wav)
+            return wav.error();
+        return (*track)[0];
+    });
+    writer_.drain();
+    for (Result<fs::path>& written : writer_.takeFinished())
+        if (!written) return written.error();
+    plan.options.video.audio = (*track)[0];
+    return track;
+}
+
+}  // namespace toyhost

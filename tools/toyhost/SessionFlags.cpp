@@ -1,0 +1,166 @@
+#include "SessionFlags.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <utility>
+
+#include "Commands.h"
+#include "NumberOptions.h"
+#include "core/Defaults.h"
+#include "session/SettingChecks.h"
+#include "timing/FrameClock.h"
+
+namespace toyhost::cli {
+
+namespace {
+
+// The settings the library's errors name, and the flags that set them.
+constexpr std::pair<const char*, const char*> kFlagOfSetting[] = {
+    {"size", "--size"},
+    {"frames", "--frames"},
+    {"fps", "--fps"},
+    {"start_time", "--start-time"},
+    {"date", "--date"},
+    {"mouse", "--mouse"},
+    {"frame_timeout", "--frame-timeout"},
+    {"compile_timeout", "--compile-timeout"},
+};
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+Error usageError(std::string message) { return Error(std::move(message), Code::Usage); }
+
+}  // namespace
+
+Error withFlagNames(Error error) {
+    for (Diagnostic& d : error.diagnostics)
+        for (const auto& [setting, flag] : kFlagOfSetting)
+            if (d.field == setting) d.field = flag;
+    return error;
+}
+
+void SessionFlags::define(CLI::App& command, unsigned groups) {
+    const CLI::Validator decimalNumber = decimalNumberOption();
+    const CLI::Validator timeoutSeconds = timeoutSecondsOption();
+    if (groups & Canvas)
+        command.add_option("--size", size_,
+                           "Canvas size WxH (default: the manifest's \"defaults\", else " +
+                               std::to_string(defaults::kCanvasWidth) + "x" + std::to_string(defaults::kCanvasHeight) + ")");
+    if (groups & Clock) {
+        command.add_option("--fps", fps_,
+                           "Fixed time step: frame n has iTime = start + n/F, iTimeDelta = 1/F (default: the "
+                           "manifest's, else " + number(defaults::kFps) + "; in a window: real time)")
+            ->check(decimalNumber);
+        command.add_option("--start-time", startTime_, "iTime of frame 0, in seconds (default 0)")->check(decimalNumber);
+        command.add_option("--date", date_, "iDate at frame 0, YYYY-MM-DDTHH:MM:SS (default: now, local time)");
+    }
+    if (groups & Input) {
+        command.add_option("--mouse", mouse_, "Press the button at pixel X,Y (origin bottom-left) on frame 0 and hold it");
+        command.add_option("--mouse-script", mouseScript_, "JSON list of timed mouse events (docs/cli.md)");
+        command.add_option("--key-script", keyScript_, "JSON list of timed key events (docs/cli.md)");
+    }
+    if (groups & Media) {
+        command.add_option("--media", mediaFolders_,
+                           "Folder with real stock media files, by hash or name (repeatable; also $TOYHOST_MEDIA)");
+        command.add_option("--media-file", mediaFiles_, "Use FILE for a stock media id: ID=FILE (repeatable)");
+    }
+    if (groups & Limits) {
+        command.add_option("--frame-timeout", frameTimeout_,
+                           "Watchdog: end the run (exit 124) when one pass of a frame draws for longer than this many "
+                           "seconds, or the encoders take no frame for that long (default " +
+                               number(defaults::kFrameTimeoutSeconds) + " headless, off in a window; 0: off; else at least " +
+                               number(defaults::kMinTimeoutSeconds) + ")")
+            ->check(timeoutSeconds);
+        command.add_option("--compile-timeout", compileTimeout_,
+                           "Watchdog: end the run (exit 124) when compiling one pass takes longer than this many "
+                           "seconds (default " + number(defaults::kCompileTimeoutSeconds) + "; 0: off; else at least " +
+                               number(defaults::kMinTimeoutSeconds) + ")")
+            ->check(timeoutSeconds);
+    }
+}
+
+Status SessionFlags::parseMouse(std::optional<glm::vec2>& mouse) const {
+    if (mouse_.empty()) return okStatus();
+    float x = 0, y = 0;
+    char comma = 0, extra = 0;
+    if (std::sscanf(mouse_.c_str(), "%f%c%f%c", &x, &comma, &y, &extra) != 3 || comma != ',' || !std::isfinite(x) ||
+        !std::isfinite(y))
+        return usageError("--mouse " + mouse_ + ": expected X,Y in pixels");
+    mouse = glm::vec2(x, y);
+    return okStatus();
+}
+
+Status SessionFlags::parseMedia(std::vector<std::filesystem::path>& folders,
+                                std::vector<std::pair<std::string, std::filesystem::path>>& files) const {
+    for (const std::string& entry : mediaFiles_) {
+        const std::size_t eq = entry.find('=');
+        if (eq == std::string::npos || eq == 0 || eq + 1 == entry.size())
+            return usageError("--media-file " + entry + ": expected ID=FILE");
+        files.emplace_back(entry.substr(0, eq), entry.substr(eq + 1));
+    }
+    for (const std::string& folder : mediaFolders_) folders.emplace_back(folder);
+    if (const char* folder = std::getenv("TOYHOST_MEDIA"); folder && *folder) folders.emplace_back(folder);
+    return okStatus();
+}
+
+Status SessionFlags::applyTo(SessionOptions& o) const {
+    if (!size_.empty()) {
+        int w = 0, h = 0;
+        if (!parseSize(size_, w, h)) return usageError("--size " + size_ + ": expected WxH, e.g. 800x450");
+        o.width = w;
+        o.height = h;
+    }
+    if (fps_) o.fps = *fps_;
+    if (startTime_) o.startTime = *startTime_;
+    if (!date_.empty()) {
+        Result<double> wallClock = parseWallClock(date_);
+        if (!wallClock) return settingError("date", wallClock.error().first().message, wallClock.error().first().code);
+        o.wallClock = *wallClock;
+    }
+    if (Status mouse = parseMouse(o.mouse); !mouse) return mouse;
+    if (!mouseScript_.empty()) o.mouseScript = mouseScript_;
+    if (!keyScript_.empty()) o.keyScript = keyScript_;
+    if (frameTimeout_) o.frameTimeout = *frameTimeout_;
+    if (compileTimeout_) o.compileTimeout = *compileTimeout_;
+    std::vector<std::pair<std::string, std::filesystem::path>> files;
+    if (Status media = parseMedia(o.media.folders, files); !media) return media;
+    for (auto& [id, file] : files) o.media.files.emplace_back(id, file);
+    return okStatus();
+}
+
+Status SessionFlags::applyTo(SessionSettings& s, std::optional<glm::vec2>& mouse) const {
+    // The library's settings take 0 for "the default": what the user gave is checked here, with
+    // the checks (and messages) prepareSession gives a run.
+    if (!size_.empty()) {
+        if (!parseSize(size_, s.width, s.height)) return usageError("--size " + size_ + ": expected WxH, e.g. 800x450");
+        if (Status size = checkSizeSetting(s.width, s.height); !size) return size;
+    }
+    if (fps_) {
+        if (Status fps = checkFpsSetting(*fps_); !fps) return fps;
+        s.fps = *fps_;
+    }
+    if (startTime_) {
+        if (Status start = checkStartTimeSetting(*startTime_); !start) return start;
+        s.startTime = *startTime_;
+    }
+    if (!date_.empty()) {
+        if (Result<double> wallClock = parseWallClock(date_); !wallClock)
+            return settingError("date", wallClock.error().first().message, wallClock.error().first().code);
+        s.date = date_;
+    }
+    if (Status parsed = parseMouse(mouse); !parsed) return parsed;
+    if (mouse)
+        if (Status inRange = checkMouseSetting(mouse->x, mouse->y); !inRange) return inRange;
+    s.mouseScript = mouseScript_;
+    s.keyScript = keyScript_;
+    s.frameTimeout = frameTimeout_.value_or(defaults::kFrameTimeoutSeconds);
+    s.compileTimeout = compileTimeout_.value_or(defaults::kCompileTimeoutSeconds);
+    return parseMedia(s.mediaFolders, s.mediaFiles);
+}
+
+}  // namespace toyhost::cli
