@@ -216,8 +216,8 @@ void CompareCommand::define(CLI::App& compare) {
                        "do not count as differing")
         ->transform(wholeNumber);
     compare.add_option("--mouse", mouse_, "Press the button at pixel X,Y (origin bottom-left) on frame 0 and hold it");
-    compare.add_option("--mouse-script", mouseScript_, "JSON list of timed mouse events, replayed for both (see README)");
-    compare.add_option("--key-script", keyScript_, "JSON list of timed key events, replayed for both (see README)");
+    compare.add_option("--mouse-script", mouseScript_, "JSON list of timed mouse events, replayed for both (see docs/input.md)");
+    compare.add_option("--key-script", keyScript_, "JSON list of timed key events, replayed for both (see docs/input.md)");
     compare.add_option("--media", mediaFolders_, "Folder with real stock media files, by hash or name (repeatable)");
     compare.add_option("--media-file", mediaFiles_, "Use FILE for a stock media id: ID=FILE (repeatable)");
     compare.add_option("--diff-out", diffOut_,

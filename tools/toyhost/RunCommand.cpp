@@ -107,8 +107,8 @@ void RunCommand::define(CLI::App& run) {
                    "Pass to capture: Image (default), \"Buffer A\" .. \"Buffer D\" (or A..D), or \"Cube A\" (its six "
                    "faces side by side, +X -X +Y -Y +Z -Z, each 1024 wide)");
     run.add_option("--mouse", mouse_, "Press the button at pixel X,Y (origin bottom-left) on frame 0 and hold it");
-    run.add_option("--mouse-script", options_.mouseScript, "JSON list of timed mouse events (see README)");
-    run.add_option("--key-script", options_.keyScript, "JSON list of timed key events (see README)");
+    run.add_option("--mouse-script", options_.mouseScript, "JSON list of timed mouse events (see docs/input.md)");
+    run.add_option("--key-script", options_.keyScript, "JSON list of timed key events (see docs/input.md)");
     run.add_option("--media-file", mediaFiles_, "Use FILE for a stock media id: ID=FILE (repeatable)");
     run.add_option("--webcam", options_.media.webcam,
                    "What webcam channels show: a V4L2 camera (/dev/video0) or a video file (default: a moving stand-in)");
