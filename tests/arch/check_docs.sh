@@ -57,7 +57,7 @@ fi
 shopt -s nullglob
 for page in "$src/README.md" "$src"/docs/*.md; do
   [[ -f "$page" ]] || continue
-  dir="$(dirname "$page")"
+  dir="${page%/*}"
   while IFS= read -r target; do
     target="${target%%#*}"
     [[ -z "$target" || "$target" == *://* || "$target" == mailto:* ]] && continue
