@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 # Writes toyhost.1 (man, roff) from the built CLI's help (`toyhost --help` and every subcommand's,
-# options as CLI11 prints them) and from README.md (the introduction and the first examples).
+# options as CLI11 prints them) and from README.md (the introduction, and the toyhost commands of its
+# "Five common uses").
 # Run by the build (packaging/CMakeLists.txt). Usage: make-manpage.py TOYHOST README VERSION OUT
 import re
 import sys
@@ -35,20 +36,21 @@ def readme_sections(readme):
 
 
 def paragraphs(markdown_text):
-    # Prose paragraphs (no code blocks, no headings) as roff, separated by .PP
+    # Prose paragraphs (no code blocks, headings or HTML such as the README's picture) as roff,
+    # separated by .PP
     out, in_code = [], False
     for block in re.split(r"\n\s*\n", markdown_text):
         if block.lstrip().startswith("```") or in_code:
             in_code = block.count("```") % 2 == 1 if not in_code else block.count("```") % 2 == 0
             continue
-        if block.lstrip().startswith("#"):
+        if block.lstrip().startswith(("#", "<")):
             continue
         out.append(markdown(" ".join(block.split())))
     return "\n.PP\n".join(out)
 
 
-def code_blocks(markdown_text):
-    return re.findall(r"```[a-z]*\n(.*?)```", markdown_text, flags=re.S)
+def shell_blocks(markdown_text):
+    return re.findall(r"```sh\n(.*?)```", markdown_text, flags=re.S)
 
 
 def options(title, entries):
@@ -80,16 +82,19 @@ def main():
         page.append(f".PP\nUsage: \\fBtoyhost {roff(c.usage.split(' ', 1)[1])}\\fR")
         page.append(options("Arguments", c.positionals))
         page.append(options("Options", c.options))
-    examples = code_blocks(sections.get("Running shaders", ""))
+    # The shell examples of the README's uses that run toyhost itself (not the repository's scripts).
+    examples = [b.rstrip("\n") for b in shell_blocks(sections.get("Five common uses", "")) if "tools/toyhost" in b]
     if examples:
-        text = re.sub(r"\S*build\S*/tools/toyhost", "toyhost", examples[0].rstrip("\n"))
+        text = re.sub(r"\S*build\S*/tools/toyhost", "toyhost", "\n".join(examples))
         page += [".SH EXAMPLES", "In toyhost's source tree (its \\fBshadertoys/\\fR folder):", ".PP", ".nf", roff(text), ".fi"]
     if top.footer:
         page += [".SH EXIT STATUS", roff(top.footer)]
     page += [".SH SEE ALSO",
-             "The README (/usr/share/doc/toyhost/README.md where installed) for the manifest format, "
-             "window mode, capture and the library API (\\fBfind_package(toyhost)\\fR, "
-             "\\fBpkg\\-config toyhost\\fR)."]
+             "The README and the reference pages it links (/usr/share/doc/toyhost/README.md and "
+             "/usr/share/doc/toyhost/docs/ where installed): docs/manifest.md for the manifest format, "
+             "docs/running.md for messages and exit codes, docs/window.md for window mode, "
+             "docs/capture.md for capture, docs/library.md for the library API "
+             "(\\fBfind_package(toyhost)\\fR, \\fBpkg\\-config toyhost\\fR), docs/python.md for Python."]
     with open(out_path, "w", encoding="utf-8") as f:
         f.write("\n".join(p for p in page if p) + "\n")
 

@@ -10,7 +10,8 @@ out="$root/docs/cli.md"
     echo "# toyhost command-line reference"
     echo
     echo "This page is the output of \`toyhost --help\` and of each command's \`--help\`, regenerated"
-    echo "by \`scripts/update-cli-doc.sh\`; a test fails while they differ. README shows examples."
+    echo "by \`scripts/update-cli-doc.sh\`; a test fails while they differ. What the messages and exit"
+    echo "codes mean is in [running.md](running.md); the README shows examples."
     for command in "" run import inspect new media sound compare; do
         echo
         echo "## toyhost${command:+ $command}"

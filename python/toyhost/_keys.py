@@ -1,5 +1,5 @@
 """Keys as a shadertoy sees them: the JavaScript keyCode that indexes the keyboard texture
-(README "Keyboard"). Accepts a keyCode, a single character, or a name."""
+(docs/window.md, "Keyboard"; docs/input.md for the texture). Accepts a keyCode, a single character, or a name."""
 
 _NAMED = {
     "backspace": 8, "tab": 9, "enter": 13, "return": 13, "shift": 16, "ctrl": 17, "control": 17,

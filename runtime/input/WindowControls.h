@@ -12,7 +12,7 @@ enum class Control { None, Help, Restart, Pause, Step, Fullscreen, Screenshot, Q
 // The control a key press means (GLFW key and modifier bits), or Control::None: the shader's key.
 Control controlForKey(int glfwKey, int glfwMods);
 
-// The help text F1 prints (also in README and --help).
+// The help text F1 prints (also in docs/window.md and --help).
 const char* controlsHelp();
 
 }  // namespace toyhost

@@ -89,7 +89,7 @@ std::string readme(const ManifestDesc& desc) {
            "toyhost run " + desc.name + " --headless --watch --out frame_%04d.png --frames 60   # again after every edit\n"
            "```\n\n"
            "## Files\n\n" + passes +
-           "- `manifest.json`: the passes and what each `iChannelN` reads (see toyhost's README, \"The manifest\")\n\n"
+           "- `manifest.json`: the passes and what each `iChannelN` reads (see toyhost's docs/manifest.md)\n\n"
            "## Inputs and controls\n\n"
            "iMouse, keys, textures: say what this shader reads and what a user can do.\n";
 }

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # `cmake --install` into a staging prefix puts every installed file in place: the programs, the
 # library with its SONAME link, the public headers (no internal ones), the CMake package, the
-# pkg-config file, the man page (one section per subcommand of `toyhost --help`) and the bash
-# completion; and the installed CLI runs from there.
+# pkg-config file, the man page (one section per subcommand of `toyhost --help`), the bash
+# completion and the README with its reference pages (docs/); and the installed CLI runs from there.
 # Usage: check_install.sh SOURCE_DIR BUILD_DIR
 set -euo pipefail
 src="$1" build="$2"
@@ -14,7 +14,8 @@ expect() { for f in "$@"; do [[ -e "$stage/$f" ]] || { echo "missing after cmake
 expect bin/toyhost bin/toyhost-compat \
   lib/libtoyhost.so lib/cmake/toyhost/toyhostConfig.cmake lib/cmake/toyhost/toyhostConfigVersion.cmake \
   lib/cmake/toyhost/toyhostTargets.cmake lib/pkgconfig/toyhost.pc \
-  share/man/man1/toyhost.1 share/bash-completion/completions/toyhost share/doc/toyhost/README.md
+  share/man/man1/toyhost.1 share/bash-completion/completions/toyhost share/doc/toyhost/README.md \
+  share/doc/toyhost/docs/cli.md share/doc/toyhost/docs/manifest.md share/doc/toyhost/docs/library.md
 for header in "$src"/include/toyhost/*.h; do expect "include/toyhost/$(basename "$header")"; done
 expect include/toyhost/Version.h
 soname="$(objdump -p "$stage/lib/libtoyhost.so" | awk '/SONAME/ {print $2}')"

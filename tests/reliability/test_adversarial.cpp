@@ -1,7 +1,7 @@
 // Adversarial runs through the CLI: signals at random moments of `run`, `sound` and `--watch`;
 // encoders and readers that stall; outputs that vanish; a closed stdout; a shader whose machine
 // code llvmpipe compiles lazily inside its first draw. Every case must end within its bound, with
-// the documented exit code (README "Exit codes"), leaving only complete files and no child
+// the documented exit code (docs/running.md, "Exit codes"), leaving only complete files and no child
 // process. Moments are chosen by what the run has done (a file written, frames on stdout, a line
 // printed), so the verdict does not depend on how fast the machine is.
 #include "GlTestSupport.h"

@@ -188,7 +188,7 @@ std::string markdown(const std::vector<ProbeResult>& results, const ProbeSetting
            << " | " << cell(notes) << " |\n";
     }
     md << "\nStand-ins: stock textures are replaced by deterministic images of the real size and channel count "
-          "(see README, Stock media); supply real files with `--media DIR` to compare against the site.\n";
+          "(see docs/manifest.md, Stock media); supply real files with `--media DIR` to compare against the site.\n";
     return md.str();
 }
 

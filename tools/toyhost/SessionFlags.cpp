@@ -61,8 +61,8 @@ void SessionFlags::define(CLI::App& command, unsigned groups) {
     }
     if (groups & Input) {
         command.add_option("--mouse", mouse_, "Press the button at pixel X,Y (origin bottom-left) on frame 0 and hold it");
-        command.add_option("--mouse-script", mouseScript_, "JSON list of timed mouse events (docs/cli.md)");
-        command.add_option("--key-script", keyScript_, "JSON list of timed key events (docs/cli.md)");
+        command.add_option("--mouse-script", mouseScript_, "JSON list of timed mouse events (see docs/input.md)");
+        command.add_option("--key-script", keyScript_, "JSON list of timed key events (see docs/input.md)");
     }
     if (groups & Media) {
         command.add_option("--media", mediaFolders_,
