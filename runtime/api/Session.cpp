@@ -152,7 +152,9 @@ Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const S
         options.width = settings.width;
         options.height = settings.height;
     }
-    if (settings.fps > 0) options.fps = settings.fps;
+    // 0 means the default; any other value is the caller's and is checked as a run's (a negative or
+    // NaN rate is refused, never replaced by 60).
+    if (settings.fps != 0) options.fps = settings.fps;
     options.startTime = settings.startTime;
     if (!settings.date.empty()) {
         Result<double> wallClock = parseWallClock(settings.date);

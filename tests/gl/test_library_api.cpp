@@ -5,6 +5,8 @@
 
 #include <GLES3/gl3.h>
 
+#include <limits>
+
 #include <toyhost/Session.h>
 #include <toyhost/Version.h>
 
@@ -253,6 +255,49 @@ TEST(LibraryApi, ErrorsAreDataNamingThePassAndLine) {
     Result<Shadertoy> notJson = Shadertoy::fromExportJson("{\"Shader\": ", "given.json");
     ASSERT_FALSE(notJson.ok());
     EXPECT_NE(notJson.error().text().find("given.json"), std::string::npos) << notJson.error().text();
+}
+
+}  // namespace
+}  // namespace toyhost::testing
+
+namespace toyhost::testing {
+namespace {
+
+// The library's settings are checked as a run's options are, and the error names the setting
+// (Diagnostic::field), not a CLI flag.
+TEST(LibraryApi, ImpossibleSettingsAreRefusedNamingTheSetting) {
+    Result<Shadertoy> probe = Shadertoy::load(sourceDir() / "shadertoys/timeline-probe");
+    ASSERT_TRUE(probe.ok()) << probe.error().text();
+    struct Case {
+        const char* setting;
+        SessionSettings settings;
+    };
+    std::vector<Case> cases;
+    SessionSettings s;
+    s.fps = -5;
+    cases.push_back({"fps", s});
+    s = {};
+    s.fps = std::numeric_limits<double>::quiet_NaN();
+    cases.push_back({"fps", s});
+    s = {};
+    s.width = -1;
+    s.height = 10;
+    cases.push_back({"size", s});
+    s = {};
+    s.startTime = std::numeric_limits<double>::infinity();
+    cases.push_back({"start_time", s});
+    s = {};
+    s.frameTimeout = -1;
+    cases.push_back({"frame_timeout", s});
+    runOnGlThread([&] {
+        for (const Case& c : cases) {
+            Result<std::unique_ptr<Session>> session = Session::createHeadless(*probe, c.settings);
+            ASSERT_FALSE(session.ok()) << c.setting;
+            EXPECT_EQ(session.error().category(), Category::Usage) << session.error().text();
+            EXPECT_EQ(session.error().first().field, c.setting) << session.error().text();
+            EXPECT_EQ(session.error().text().find("--"), std::string::npos) << session.error().text();
+        }
+    });
 }
 
 }  // namespace
