@@ -250,7 +250,7 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
         if (checkpointDue()) return saveCheckpoint();
         return okStatus();
     }
-    const bool captured = recorder_ && isCapturedFrame(frame, *o.frames, *o.captureEvery);
+    const bool captured = recorder_ && recorder_->captures(frame);
     // Nothing reads the Image pass but the driver: a run that captures renders it only on the frames
     // it captures (long simulations captured every K frames run at buffer speed). A window shows
     // it, and a run without --out renders every pass (a dry run, the render-only benchmark).
@@ -265,12 +265,9 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
 
     // Readbacks may wait for the GPU: the watchdog is told which pass it is still drawing.
     player_->publishPendingDraws();
-    if (captured) {
-        if (Status saved = recorder_->capture(*player_, frame); !saved) return saved;
-        captured_.push_back(frame);
-    } else if (recorder_) {
-        if (Status polled = recorder_->poll(); !polled) return polled;
-    }
+    if (recorder_)
+        if (Status recorded = recorder_->rendered(*player_, frame); !recorded) return recorded;
+    if (captured) captured_.push_back(frame);
     player_->publishPendingDraws();
     if (o.checkFinite) checkBuffers(frame);
     // The first frame waits for the GPU once, so that its time is real.
