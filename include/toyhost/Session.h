@@ -132,6 +132,8 @@ public:
     // each handed to the callback as soon as its read is complete (checked after every frame: a
     // frame never waits for a later one to be rendered or read), at most kRenderReadsInFlight
     // reads in flight. The reads are the rendering's own (queueRead()'s queue is not touched).
+    // Frames are submitted at most two ahead of the GPU's drawing (a GPU would otherwise queue
+    // dozens), so that frame() stays near the pictures and a stop leaves little to finish.
     struct RenderRequest {
         int frames = 0;
         int every = 1;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <deque>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -414,6 +415,26 @@ public:
     PendingReads reads;
     int rendered = 0;
     const FrameCallback* onFrame = nullptr;  // advance()'s, while it runs
+    // Frames submitted and not yet drawn, oldest first. A GPU (llvmpipe above all) takes dozens of
+    // frames before it makes the submitter wait: the counter would run that far ahead of the
+    // pictures, and a stop would leave that much drawing to finish. Two keep it busy.
+    static constexpr std::size_t kFramesAhead = 2;
+    std::deque<GlFence> drawing;
+
+    // Waits until fewer than kFramesAhead frames are being drawn (the context current).
+    Status pace() {
+        while (drawing.size() >= kFramesAhead) {
+            // The wait is for the GPU drawing: the watchdog is told which pass.
+            s.core->player().publishPendingDraws();
+            const GLenum state = glClientWaitSync(drawing.front().get(), GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000);
+            s.core->player().publishPendingDraws();
+            if (state == GL_WAIT_FAILED)
+                return Error(std::string("GL: waiting for a frame to be drawn failed: ") + glErrorName(glGetError()),
+                             Code::GlReadback);
+            if (state == GL_ALREADY_SIGNALED || state == GL_CONDITION_SATISFIED) drawing.pop_front();
+        }
+        return okStatus();
+    }
 
     int pending() const override { return static_cast<int>(reads.size()); }
     Status start(int) override {
@@ -450,9 +471,10 @@ public:
     void dropAll() override { reads.clear(); }
 
     void drop() {
-        if (reads.size() == 0 || !s.onOwnThread() || !s.current()) return;
+        if ((reads.size() == 0 && drawing.empty()) || !s.onOwnThread() || !s.current()) return;
         s.withGl([&] {
             reads.clear();
+            drawing.clear();
             return 0;
         });
     }
@@ -464,7 +486,10 @@ Session::Rendering::~Rendering() {
     if (!impl_) return;
     impl_->drop();
     // Off the session's thread its GL buffers cannot be deleted there (no context): forgotten.
-    if (!impl_->s.onOwnThread()) impl_->reads.clear();
+    if (!impl_->s.onOwnThread()) {
+        impl_->reads.clear();
+        impl_->drawing.clear();
+    }
 }
 
 Result<bool> Session::Rendering::advance(const FrameCallback& onFrame) {
@@ -479,10 +504,14 @@ Result<bool> Session::Rendering::advance(const FrameCallback& onFrame) {
     if (r.rendered < r.request.frames) {
         std::span<const InputEvent> events;
         if (r.rendered == 0) events = r.request.events;
-        done = r.session.step(events);
+        done = r.s.withGl([&] { return r.pace(); });
+        if (done) done = r.session.step(events);
         if (done) {
             const int index = r.rendered++;
-            done = r.s.withGl([&] { return r.stream.rendered(index, r); });
+            done = r.s.withGl([&] {
+                r.drawing.emplace_back(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0));
+                return r.stream.rendered(index, r);
+            });
         }
     }
     if (done && r.rendered >= r.request.frames) done = r.s.withGl([&] { return r.stream.finish(r); });
