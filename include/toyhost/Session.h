@@ -5,7 +5,10 @@
 // same pass order, uniforms, ping-pong, reload rule), behind a small header.
 //
 // Threads: a session is used from the thread that created it, with its GL context current there
-// (a headless session makes its own context current at creation and at every call). Mesa's GLSL
+// (a headless session makes its own context current at creation and at every call). A call from
+// another thread does nothing and returns a Code::Usage error saying so (restart() and
+// dropQueuedReads(), which return nothing, only do nothing; nextQueuedReadDone() says false).
+// Hand the calls to the session's thread instead (Python's sessions do). Mesa's GLSL
 // compiler recurses deeply on large shaders: create sessions on a thread with a large stack
 // (toyhost uses 1 GiB: runOnGlThread() below), or small shaders only.
 //
@@ -130,6 +133,76 @@ public:
     Result<QueuedRead> takeRead(std::span<float> out, RowOrder order = RowOrder::TopFirst);
     // Forgets every queued read not taken.
     void dropQueuedReads();
+
+    // Rendering a sequence of frames into memory through toyhost's frame stream, the one its own
+    // recordings use: `frames` frames stepped as step() steps them (`events` applied before the
+    // first), frames 0, every, 2 * every, ... and the last read back while the later frames render,
+    // each handed to the callback as soon as its read is complete (checked after every frame: a
+    // frame never waits for a later one to be rendered or read), at most kRenderReadsInFlight
+    // reads in flight. The reads are the rendering's own (queueRead()'s queue is not touched).
+    // Frames are submitted at most two ahead of the GPU's drawing (a GPU would otherwise queue
+    // dozens), so that frame() stays near the pictures and a stop leaves little to finish.
+    struct RenderRequest {
+        int frames = 0;
+        int every = 1;
+        std::string pass = "Image";  // "Image" or a buffer the shadertoy has, as read()
+        std::vector<InputEvent> events;
+    };
+    static constexpr int kRenderReadsInFlight = 3;
+    // A frame handed over: its read is complete. Copy it out with read() during the callback (the
+    // pixels are gone once it returns): the values read() of the session gives for that frame.
+    class TOYHOST_API RenderedFrame {
+    public:
+        int frame = 0;  // iFrame of the frame
+        int width = 0;
+        int height = 0;
+        // `out` must hold exactly width * height * 4 values.
+        Status read(std::span<std::uint8_t> out, RowOrder order = RowOrder::TopFirst) const;
+        Status read(std::span<float> out, RowOrder order = RowOrder::TopFirst) const;
+
+    private:
+        friend class Session;
+        const void* pixels_ = nullptr;  // the mapped read, rows bottom first
+        bool floatPixels_ = false;      // RGBA32F values, else RGBA8
+    };
+    // Given each frame handed over, in order; returning false stops the rendering (no further
+    // frame is rendered or handed over).
+    using FrameCallback = std::function<bool(const RenderedFrame&)>;
+
+    // A rendering in steps, for a loop that does other work between frames (Python's render()
+    // runs one step per job of its GL thread). Made by startRendering(); used, like the session,
+    // on the session's thread, and destroyed before the session.
+    class TOYHOST_API Rendering {
+    public:
+        ~Rendering();  // reads not handed over are dropped
+        Rendering(const Rendering&) = delete;
+        Rendering& operator=(const Rendering&) = delete;
+        // Renders the next frame (when frames are left) and hands every frame whose read is
+        // complete to `onFrame`, waiting for a read only when kRenderReadsInFlight are in flight;
+        // once every frame is rendered, waits for the reads left and hands them over. Returns
+        // whether there is more to do: false once everything was handed over, or after a stop
+        // (onFrame's false or stop()). An error ends the rendering (reads in flight are dropped).
+        Result<bool> advance(const FrameCallback& onFrame);
+        // Asks the rendering to stop before its next frame: from any thread (the one thing a
+        // rendering takes from another thread). The next advance() renders nothing and returns
+        // false; frames read but not handed over are dropped.
+        void stop();
+        int framesRendered() const;
+        int readsInFlight() const;  // frames read back and not yet handed over
+
+        class Impl;
+
+    private:
+        friend class Session;
+        explicit Rendering(std::unique_ptr<Impl> impl);
+        std::unique_ptr<Impl> impl_;
+    };
+    // A rendering of `request` (checked now: frames 0 or more, every 1 or more, a pass to read);
+    // no frame renders before its first advance().
+    Result<std::unique_ptr<Rendering>> startRendering(const RenderRequest& request);
+    // The whole rendering: returns once every frame was rendered and handed over, or onFrame
+    // returned false, or with the error that stopped it.
+    Status render(const RenderRequest& request, const FrameCallback& onFrame);
 
     // The Image output as a texture of the session's GL context (for sampling in the caller's own
     // shaders: bottom row first, as GL textures are), valid until the next step() or resize().

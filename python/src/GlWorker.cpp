@@ -17,7 +17,10 @@ GlWorker::GlWorker() : process_(static_cast<int>(::getpid())) {
 
 bool GlWorker::inOwnProcess() const { return static_cast<int>(::getpid()) == process_; }
 
-GlWorker::~GlWorker() {
+GlWorker::~GlWorker() { stop(); }
+
+void GlWorker::stop() {
+    if (!thread_.joinable()) return;
     if (!inOwnProcess()) {
         // A forked child's copy: the thread is the parent's; nothing here can stop or join it.
         thread_.detach();
@@ -31,13 +34,15 @@ GlWorker::~GlWorker() {
     thread_.join();
 }
 
-void GlWorker::post(std::function<void()> job) {
+bool GlWorker::post(std::function<void()> job) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
+        if (stopping_) return false;
         jobs_.push_back(std::move(job));
         pending_.fetch_add(1, std::memory_order_release);
     }
     wake_.notify_one();
+    return true;
 }
 
 void GlWorker::serve() {

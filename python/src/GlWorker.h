@@ -12,6 +12,7 @@
 #include <future>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <type_traits>
 
@@ -20,7 +21,11 @@ namespace toyhost::python {
 class GlWorker {
 public:
     GlWorker();
-    ~GlWorker();  // runs the jobs already handed over, then joins (in the process that made it)
+    ~GlWorker();  // stop()
+    // Runs the jobs already handed over, then ends the thread and joins it (in the process that
+    // made it): a closed session keeps no thread (nor its 1 GiB stack). Later jobs are not run.
+    // Idempotent; not from a job.
+    void stop();
     GlWorker(const GlWorker&) = delete;
     GlWorker& operator=(const GlWorker&) = delete;
 
@@ -30,13 +35,13 @@ public:
 
     // Runs `job` on the worker thread and returns its result (or rethrows what it threw). Jobs run
     // one at a time, in the order they were handed over. Must not be called from a job, nor where
-    // inOwnProcess() is false.
+    // inOwnProcess() is false; after stop() it throws std::logic_error.
     template <class Job>
     auto call(Job job) -> std::invoke_result_t<Job&> {
         using Value = std::invoke_result_t<Job&>;
         auto task = std::make_shared<std::packaged_task<Value()>>(std::move(job));
         std::future<Value> done = task->get_future();
-        post([task] { (*task)(); });
+        if (!post([task] { (*task)(); })) throw std::logic_error("the GL thread was stopped (the session is closed)");
         const auto until = std::chrono::steady_clock::now() + kSpin;
         while (done.wait_for(std::chrono::seconds(0)) != std::future_status::ready &&
                std::chrono::steady_clock::now() < until)
@@ -45,8 +50,8 @@ public:
     }
 
     // Hands `job` over without waiting for it (it runs after the jobs handed over before it). The
-    // job must not throw. Same conditions as call().
-    void post(std::function<void()> job);
+    // job must not throw. Same conditions as call(); after stop() the job is dropped (false).
+    bool post(std::function<void()> job);
 
     // How long either side looks for the other's answer (yielding the core) before sleeping on
     // it. A wake-up from sleep costs tens of microseconds on an idle virtual machine, twice per

@@ -1,4 +1,4 @@
-// RenderStream: the worker's side (one job per frame) and Python's (next, cancel).
+// RenderStream: the worker's side (one Rendering::advance per job) and Python's (next, cancel).
 #include "RenderStream.h"
 
 #include <new>
@@ -11,17 +11,46 @@ namespace toyhost::python {
 std::shared_ptr<RenderStream> RenderStream::start(GlWorker& worker, Session& session, RenderRequest request) {
     std::shared_ptr<RenderStream> stream(new RenderStream(worker, session, std::move(request)));
     std::lock_guard<std::mutex> lock(stream->mutex_);
-    if (stream->request_.frames <= 0) {
-        stream->finished_ = true;
-    } else {
-        stream->running_ = true;
-        stream->post();
-    }
+    stream->running_ = true;
+    stream->post();
     return stream;
+}
+
+RenderStream::~RenderStream() {
+    // The rendering's GL buffers go on the session's thread (jobs run there before the session is
+    // closed, and a closed worker runs nothing: then the session freed its context already).
+    if (rendering_)
+        worker_.post([rendering = std::shared_ptr<Session::Rendering>(std::move(rendering_))]() mutable {
+            rendering.reset();
+        });
 }
 
 void RenderStream::post() {
     worker_.post([self = shared_from_this()] { self->renderOne(); });
+}
+
+bool RenderStream::take(const Session::RenderedFrame& read) {
+    RenderedFrame frame;
+    frame.frame = read.frame;
+    frame.width = read.width;
+    frame.height = read.height;
+    const std::size_t values = static_cast<std::size_t>(read.width) * read.height * 4;
+    Status copied = okStatus();
+    if (request_.floats) {
+        frame.floats = std::make_unique_for_overwrite<float[]>(values);
+        copied = read.read(std::span<float>(frame.floats.get(), values), RowOrder::TopFirst);
+    } else {
+        frame.bytes = std::make_unique_for_overwrite<std::uint8_t[]>(values);
+        copied = read.read(std::span<std::uint8_t>(frame.bytes.get(), values), RowOrder::TopFirst);
+    }
+    if (!copied) {
+        takeFailed_ = copied.error();
+        return false;
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (cancelled_) return false;  // dropped, as cancel() says; the rendering stops
+    ready_.push_back(std::move(frame));
+    return true;
 }
 
 void RenderStream::renderOne() {
@@ -33,34 +62,35 @@ void RenderStream::renderOne() {
             return;
         }
     }
-    Status done = okStatus();
-    const int frames = request_.frames;
-    if (next_ < frames) {
-        std::span<const InputEvent> events;
-        if (next_ == 0) events = request_.firstEvents;
-        done = session_.step(events);
-        if (done && (next_ % request_.every == 0 || next_ == frames - 1)) {
-            Result<Session::QueuedRead> queued = session_.queueRead(request_.pass);
-            if (!queued) done = queued.error();
-        }
-        ++next_;
+    Result<bool> more = true;
+    std::size_t readyBefore = 0;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        readyBefore = ready_.size();
     }
-    // Reads that are complete are taken (without waiting); the oldest is waited for only when
-    // kInFlight wait, or when every frame was rendered: the frames just queued render meanwhile.
     try {
-        while (done && session_.queuedReads() > 0 &&
-               (next_ >= frames || session_.queuedReads() > kInFlight || session_.nextQueuedReadDone()))
-            done = takeOne();
+        if (!started_) {
+            started_ = true;
+            Result<std::unique_ptr<Session::Rendering>> made = session_.startRendering(request_.frames);
+            if (made) rendering_ = std::move(*made);
+            else more = made.error();
+        }
+        if (rendering_) {
+            more = rendering_->advance([this](const Session::RenderedFrame& frame) { return take(frame); });
+            if (more && takeFailed_) more = *takeFailed_;
+        }
     } catch (const std::bad_alloc&) {  // a frame's memory: the job must not throw
-        done = Error("render: out of memory for a frame's pixels", Code::Internal);
+        more = Error("render: out of memory for a frame's pixels", Code::Internal);
     }
-    if (!done) dropReads();
+    const int inFlight = rendering_ ? rendering_->readsInFlight() : 0;
+    if (!more || !*more) rendering_.reset();  // the end: reads not taken are dropped
 
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!done) {
-        failed_ = done.error();
+    const bool handedOver = ready_.size() > readyBefore;
+    if (!more) {
+        failed_ = more.error();
         running_ = false;
-    } else if (next_ >= frames && session_.queuedReads() == 0) {
+    } else if (!*more) {
         finished_ = true;
         running_ = false;
     } else if (cancelled_ || ready_.size() >= kReady) {
@@ -68,35 +98,17 @@ void RenderStream::renderOne() {
     } else {
         post();
     }
-    if (!running_) changed_.notify_all();  // finished, failed or paused: Python must look
-}
-
-Status RenderStream::takeOne() {
-    const std::optional<Session::QueuedRead> read = session_.nextQueuedRead();
-    if (!read) return okStatus();
-    RenderedFrame frame;
-    frame.width = read->width;
-    frame.height = read->height;
-    const std::size_t values = static_cast<std::size_t>(read->width) * read->height * 4;
-    Result<Session::QueuedRead> taken = Session::QueuedRead{};
-    if (request_.floats) {
-        frame.floats = std::make_unique_for_overwrite<float[]>(values);
-        taken = session_.takeRead(std::span<float>(frame.floats.get(), values), RowOrder::TopFirst);
-    } else {
-        frame.bytes = std::make_unique_for_overwrite<std::uint8_t[]>(values);
-        taken = session_.takeRead(std::span<std::uint8_t>(frame.bytes.get(), values), RowOrder::TopFirst);
+    // Python is woken when it must look (finished, failed, paused), when enough frames wait, when a
+    // frame waits and no other is on its way, or after a frame with nothing for it (to see Ctrl-C).
+    const bool wake = !running_ || ready_.size() >= kWakeAt || (!ready_.empty() && inFlight == 0) ||
+                      (waiting_ && !handedOver);
+    if (wake) {
+        ++wakes_;
+        changed_.notify_all();
     }
-    if (!taken) return taken.error();
-    frame.frame = taken->frame;
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!cancelled_) ready_.push_back(std::move(frame));  // else dropped, as cancel() says
-    if (ready_.size() >= kWakeAt) changed_.notify_all();
-    return okStatus();
 }
 
-void RenderStream::dropReads() { session_.dropQueuedReads(); }
-
-std::optional<RenderedFrame> RenderStream::next() {
+std::optional<RenderedFrame> RenderStream::next(const std::function<bool()>& interrupted) {
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
         if (cancelled_) return std::nullopt;
@@ -116,9 +128,18 @@ std::optional<RenderedFrame> RenderStream::next() {
             throw ToyhostError(std::move(failure));
         }
         if (finished_) return std::nullopt;
-        // Woken once kWakeAt frames are ready (or the worker stopped), not for each frame: a
-        // wake-up costs the Python thread and the renderer more than the frames' handing over.
-        changed_.wait(lock, [&] { return cancelled_ || failed_ || finished_ || !running_ || ready_.size() >= kWakeAt; });
+        const unsigned seen = wakes_;
+        waiting_ = true;
+        changed_.wait(lock, [&] {
+            return cancelled_ || failed_ || finished_ || !running_ || ready_.size() >= kWakeAt || wakes_ != seen;
+        });
+        waiting_ = false;
+        if (ready_.empty() && !cancelled_ && !failed_ && !finished_ && interrupted) {
+            lock.unlock();
+            const bool stop = interrupted();
+            lock.lock();
+            if (stop) throw Interrupted{};
+        }
     }
 }
 
@@ -129,10 +150,11 @@ void RenderStream::cancel() {
         cancelled_ = true;
         ready_.clear();
         changed_.notify_all();
-        if (finished_) return;  // nothing left queued in the session
+        if (finished_) return;  // nothing left in the session
     }
-    // After the job running now (if any): reads it queued are dropped before any later call runs.
-    worker_.post([self = shared_from_this()] { self->dropReads(); });
+    // After the job running now (if any, which stops at its next frame handed over): the
+    // rendering's reads are dropped before any later call runs.
+    worker_.post([self = shared_from_this()] { self->rendering_.reset(); });
 }
 
 }  // namespace toyhost::python

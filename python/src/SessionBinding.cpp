@@ -74,8 +74,9 @@ public:
             if (std::shared_ptr<RenderStream> alive = stream.lock()) alive->cancel();
         streams_.clear();
         // A destructor may run without the GIL held (interpreter shutdown); release only when held.
-        if (PyGILState_Check()) onGlThread([&] { session_.reset(); });
-        else worker_.call([&] { session_.reset(); });
+        // Then the thread goes too (joined: its 1 GiB stack with it), not at garbage collection.
+        if (PyGILState_Check()) withoutGil([&] { stopAfter(); });
+        else stopAfter();
         --openSessions;
     }
     bool closed() const { return !session_; }
@@ -95,7 +96,7 @@ public:
                                          bool floats) {
         Session& s = open();
         std::erase_if(streams_, [](const std::weak_ptr<RenderStream>& stream) { return stream.expired(); });
-        RenderRequest request{std::move(events), frames, every, pass, floats};
+        RenderRequest request{Session::RenderRequest{frames, every, pass, std::move(events)}, floats};
         std::shared_ptr<RenderStream> stream = RenderStream::start(worker_, s, std::move(request));
         streams_.push_back(stream);
         return stream;
@@ -164,6 +165,11 @@ public:
     std::string backend() { return ask([](Session& s) { return s.backend(); }); }
 
 private:
+    // The session freed on its thread, then the thread ended.
+    void stopAfter() {
+        worker_.call([&] { session_.reset(); });
+        worker_.stop();
+    }
     Session& open() {
         if (!session_) throw ToyhostError(Error("the session is closed", Code::Usage));
         if (!worker_.inOwnProcess())
@@ -199,8 +205,31 @@ py::object arrayOwning(int frame, int width, int height, std::unique_ptr<T[]> va
     return py::make_tuple(frame, py::array_t<T>({height, width, 4}, data, owner));
 }
 
+// Whether Python has a signal to handle (Ctrl-C: KeyboardInterrupt), its handler run (the
+// exception it raised set) with the GIL taken for the question. Only the main thread runs them.
+bool signalRaised() {
+    const PyGILState_STATE gil = PyGILState_Ensure();
+    const bool raised = PyErr_CheckSignals() != 0;
+    PyGILState_Release(gil);
+    return raised;
+}
+
+// Whether this is Python's main thread, the one its signal handlers run on (elsewhere the
+// question is not asked: a daemon thread taking the GIL while the interpreter finalizes is ended).
+bool onMainThread() {
+    static const unsigned long mainThread =
+        py::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>();
+    return PyThread_get_thread_ident() == mainThread;
+}
+
 py::object nextRendered(RenderStream& stream) {
-    std::optional<RenderedFrame> frame = withoutGil([&] { return stream.next(); });
+    std::optional<RenderedFrame> frame;
+    const std::function<bool()> interrupted = onMainThread() ? std::function<bool()>(signalRaised) : nullptr;
+    try {
+        frame = withoutGil([&] { return stream.next(interrupted); });
+    } catch (const RenderStream::Interrupted&) {
+        throw py::error_already_set();  // the handler's exception (KeyboardInterrupt)
+    }
     if (!frame) return py::none();
     if (frame->floats) return arrayOwning(frame->frame, frame->width, frame->height, std::move(frame->floats));
     return arrayOwning(frame->frame, frame->width, frame->height, std::move(frame->bytes));

@@ -117,12 +117,15 @@ class Session:
         them (as the CLI's --capture-every), each array as frame() gives it. ``mouse`` and ``keys``
         are applied before the first frame, as step() takes them, and stay.
 
-        The frames are rendered ahead of the loop, as the CLI renders ahead of its encoders: while
-        your loop handles a frame, the next ones render and are read back (at most 5 frames ahead
-        of the one yielded). So inside the loop the session is already further on (``next_frame``,
+        The frames go through the same frame stream as the CLI's recordings, rendered ahead of the
+        loop as the CLI renders ahead of its encoders: while your loop handles a frame, the next
+        ones render and are read back (at most 7 frames ahead of the one yielded). Each frame is
+        yielded as soon as its read completes (frame 0 of ``render(301, every=100)`` long before
+        frame 100 renders). So inside the loop the session is already further on (``next_frame``,
         ``frame()``, and a ``step()`` there renders after the frames already rendered), and leaving
-        the loop early leaves the session up to 5 frames past the last one yielded; frames rendered
-        but not taken are dropped."""
+        the loop early leaves the session up to 7 frames past the last one yielded; frames rendered
+        but not taken are dropped. Ctrl-C while the loop waits for a frame raises
+        KeyboardInterrupt within a frame and stops the rendering."""
         frames, every = int(frames), int(every)
         if frames < 0:
             raise UsageError(f"render: frames must be 0 or more, got {frames}")

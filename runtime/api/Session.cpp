@@ -4,10 +4,13 @@
 
 #include <algorithm>
 #include <cstring>
+#include <deque>
 #include <mutex>
 #include <optional>
+#include <thread>
 #include <type_traits>
 
+#include "capture/FrameStream.h"
 #include "gl/CurrentContext.h"
 #include "gl/GlStateGuard.h"
 #include "gl/GlThread.h"
@@ -57,6 +60,19 @@ public:
     mutable std::vector<std::uint8_t> bytes;  // readback scratch
     mutable std::vector<float> floats;
     PendingReads reads;  // queueRead() .. takeRead(); emptied with the context current
+    std::thread::id thread = std::this_thread::get_id();  // the one that created the session
+
+    // The session usable for `call` here: on its own thread (a GL context is current on one
+    // thread: from another, EGL would only say EGL_BAD_ACCESS) and its context current.
+    Status usable(std::string_view call) const {
+        if (std::this_thread::get_id() != thread)
+            return Error("a session is used on the thread that created it: " + std::string(call) +
+                             "() was called from another thread (hand the call to the session's thread, or create "
+                             "the session on the thread that uses it)",
+                         Code::Usage);
+        return current();
+    }
+    bool onOwnThread() const { return std::this_thread::get_id() == thread; }
 
     // What every call that renders does around its GL work: the context current (headless) or the
     // caller's state kept (its own context).
@@ -111,7 +127,7 @@ public:
             return Error("takeRead: the destination holds " + std::to_string(out.size()) + " values, the frame " +
                              std::to_string(values) + " (width * height * 4 of the read)",
                          Code::Usage);
-        if (Status made = current(); !made) return made.error();
+        if (Status made = usable("takeRead"); !made) return made.error();
         Status taken = withGl([&] {
             // The wait may be for the GPU still drawing: the watchdog is told which pass.
             core->publishPendingDraws();
@@ -259,7 +275,7 @@ Status Session::stepAt(double time, double timeDelta, double frameRate, std::spa
 double Session::timeOf(int n) const { return impl_->timeline->at(n).time; }
 
 Status Session::Impl::render(const FrameTime& t, std::span<const InputEvent> events) {
-    if (Status made = current(); !made) return made;
+    if (Status made = usable("step"); !made) return made;
     Status rendered = withGl([&] {
         Status drawn = core->renderFrame(t, events);
         // Submitted now, so that the GPU works on the frame while the caller goes on: a read that
@@ -284,7 +300,7 @@ Status Session::read(std::string_view name, std::span<std::uint8_t> out, RowOrde
         return Error("read: the destination holds " + std::to_string(out.size()) + " values, the frame " +
                          std::to_string(values) + " (width * height * 4)",
                      Code::Usage);
-    if (Status current = impl_->current(); !current) return current;
+    if (Status usable = impl_->usable("read"); !usable) return usable;
     impl_->withGl([&] {
         impl_->core->readRgba8(*pass, impl_->bytes);
         return 0;
@@ -301,7 +317,7 @@ Status Session::read(std::string_view name, std::span<float> out, RowOrder order
         return Error("read: the destination holds " + std::to_string(out.size()) + " values, the frame " +
                          std::to_string(values) + " (width * height * 4)",
                      Code::Usage);
-    if (Status current = impl_->current(); !current) return current;
+    if (Status usable = impl_->usable("read"); !usable) return usable;
     impl_->withGl([&] {
         impl_->core->readRgba32f(*pass, impl_->floats);
         return 0;
@@ -316,7 +332,7 @@ Result<Session::QueuedRead> Session::queueRead(std::string_view name) {
     if (queuedReads() >= kMaxQueuedReads)
         return Error("queueRead: " + std::to_string(kMaxQueuedReads) + " reads wait already: take one first (takeRead)",
                      Code::Usage);
-    if (Status current = impl_->current(); !current) return current.error();
+    if (Status usable = impl_->usable("queueRead"); !usable) return usable.error();
     const PassOutput output = impl_->core->output(*pass);
     const PendingReads::Read read{frame() - 1, output.width, output.height, output.format};
     Status started = impl_->withGl([&] { return impl_->reads.start(output.framebuffer, read); });
@@ -333,7 +349,7 @@ std::optional<Session::QueuedRead> Session::nextQueuedRead() const {
 }
 
 bool Session::nextQueuedReadDone() const {
-    if (impl_->reads.size() == 0 || !impl_->current()) return false;
+    if (impl_->reads.size() == 0 || !impl_->usable("nextQueuedReadDone")) return false;
     return impl_->withGl([&] { return impl_->reads.oldestDone(); });
 }
 
@@ -346,7 +362,7 @@ Result<Session::QueuedRead> Session::takeRead(std::span<float> out, RowOrder ord
 }
 
 void Session::dropQueuedReads() {
-    if (impl_->reads.size() == 0 || !impl_->current()) return;
+    if (impl_->reads.size() == 0 || !impl_->usable("dropQueuedReads")) return;
     impl_->withGl([&] {
         while (impl_->reads.size() > 0) (void)impl_->reads.releaseOldest();
         return 0;
@@ -357,7 +373,7 @@ unsigned int Session::imageTexture() const { return impl_->core->output(PassId::
 
 Status Session::drawImage(unsigned int framebuffer, int x, int y, int w, int h) const {
     if (w <= 0 || h <= 0) return Error("drawImage: the size must be positive", Code::Usage);
-    if (Status current = impl_->current(); !current) return current;
+    if (Status usable = impl_->usable("drawImage"); !usable) return usable;
     impl_->withGl([&] {
         const PassOutput image = impl_->core->output(PassId::Image);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
@@ -373,6 +389,7 @@ Status Session::drawImage(unsigned int framebuffer, int x, int y, int w, int h) 
 }
 
 void Session::restart() {
+    if (!impl_->usable("restart")) return;
     impl_->timeline->restart();
     impl_->withGl([&] {
         impl_->core->restart();
@@ -381,18 +398,210 @@ void Session::restart() {
 }
 
 Status Session::resize(int w, int h) {
-    if (Status current = impl_->current(); !current) return current;
+    if (Status usable = impl_->usable("resize"); !usable) return usable;
     return impl_->withGl([&] { return impl_->core->resize(w, h); });
 }
 
 Result<Reloaded> Session::reload(const Shadertoy& next) {
+    if (Status usable = impl_->usable("reload"); !usable) return usable.error();
     Result<PlayerPlan> plan = planPlayer(next.desc(), impl_->core->plan().options.media);
     ReloadOutcome outcome = impl_->withGl([&] { return impl_->core->reload({}, std::move(plan)); });
     return Reloaded{outcome.applied, outcome.structureChanged, std::move(outcome.recompiled), std::move(outcome.problems)};
 }
 
 Result<std::vector<float>> Session::renderSound(double seconds) {
+    if (Status usable = impl_->usable("renderSound"); !usable) return usable.error();
     return impl_->withGl([&] { return impl_->core->renderSound(seconds); });
+}
+
+// --- render(): the frame stream over reads of the rendering's own ---------------------------------
+
+// A rendering's reads as its FrameStream drives them: queued into pixel-pack buffers of their own,
+// handed over mapped (RenderedFrame::read converts straight from them).
+class Session::Rendering::Impl final : public FrameReads {
+public:
+    Impl(Session& session, RenderRequest request, PassId pass)
+        : session(session),
+          s(*session.impl_),
+          request(std::move(request)),
+          pass(pass),
+          stream(FrameStreamSettings{this->request.frames, this->request.every, kRenderReadsInFlight}) {}
+
+    Session& session;
+    Session::Impl& s;
+    const RenderRequest request;
+    const PassId pass;
+    FrameStream stream;
+    PendingReads reads;
+    int rendered = 0;
+    const FrameCallback* onFrame = nullptr;  // advance()'s, while it runs
+    // Frames submitted and not yet drawn, oldest first. A GPU (llvmpipe above all) takes dozens of
+    // frames before it makes the submitter wait: the counter would run that far ahead of the
+    // pictures, and a stop would leave that much drawing to finish. Two keep it busy.
+    static constexpr std::size_t kFramesAhead = 2;
+    std::deque<GlFence> drawing;
+
+    // Waits until fewer than kFramesAhead frames are being drawn (the context current).
+    Status pace() {
+        while (drawing.size() >= kFramesAhead) {
+            // The wait is for the GPU drawing: the watchdog is told which pass.
+            s.core->publishPendingDraws();
+            const GLenum state = glClientWaitSync(drawing.front().get(), GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000);
+            s.core->publishPendingDraws();
+            if (state == GL_WAIT_FAILED)
+                return Error(std::string("GL: waiting for a frame to be drawn failed: ") + glErrorName(glGetError()),
+                             Code::GlReadback);
+            if (state == GL_ALREADY_SIGNALED || state == GL_CONDITION_SATISFIED) drawing.pop_front();
+        }
+        return okStatus();
+    }
+
+    int pending() const override { return static_cast<int>(reads.size()); }
+    Status start(int) override {
+        const PassOutput output = s.core->output(pass);
+        return reads.start(output.framebuffer, {session.frame() - 1, output.width, output.height, output.format});
+    }
+    bool oldestDone() const override { return reads.oldestDone(); }
+    Status handOverOldest() override {
+        const PendingReads::Read read = reads.oldest();
+        // The wait may be for the GPU still drawing: the watchdog is told which pass.
+        s.core->publishPendingDraws();
+        Result<std::span<const std::byte>> pixels = reads.mapOldest();
+        s.core->publishPendingDraws();
+        if (!pixels) {
+            (void)reads.releaseOldest();
+            return pixels.error();
+        }
+        RenderedFrame frame;
+        frame.frame = read.frame;
+        frame.width = read.width;
+        frame.height = read.height;
+        frame.pixels_ = pixels->data();
+        frame.floatPixels_ = read.format != PixelFormat::Rgba8;
+        bool goOn = false;
+        try {
+            goOn = (*onFrame)(frame);
+        } catch (...) {
+            (void)reads.releaseOldest();  // unmapped before the caller's exception leaves
+            throw;
+        }
+        if (!goOn) stream.requestStop();
+        return reads.releaseOldest();
+    }
+    void dropAll() override { reads.clear(); }
+
+    void drop() {
+        if ((reads.size() == 0 && drawing.empty()) || !s.onOwnThread() || !s.current()) return;
+        s.withGl([&] {
+            reads.clear();
+            drawing.clear();
+            return 0;
+        });
+    }
+};
+
+Session::Rendering::Rendering(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+Session::Rendering::~Rendering() {
+    if (!impl_) return;
+    impl_->drop();
+    // Off the session's thread its GL buffers cannot be deleted there (no context): forgotten.
+    if (!impl_->s.onOwnThread()) {
+        impl_->reads.clear();
+        impl_->drawing.clear();
+    }
+}
+
+Result<bool> Session::Rendering::advance(const FrameCallback& onFrame) {
+    Impl& r = *impl_;
+    if (Status usable = r.s.usable("advance"); !usable) return usable.error();
+    if (r.stream.stopRequested()) {
+        r.drop();
+        return false;
+    }
+    r.onFrame = &onFrame;
+    Status done = okStatus();
+    if (r.rendered < r.request.frames) {
+        std::span<const InputEvent> events;
+        if (r.rendered == 0) events = r.request.events;
+        done = r.s.withGl([&] { return r.pace(); });
+        if (done) done = r.session.step(events);
+        if (done) {
+            const int index = r.rendered++;
+            done = r.s.withGl([&] {
+                r.drawing.emplace_back(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0));
+                return r.stream.rendered(index, r);
+            });
+        }
+    }
+    if (done && r.rendered >= r.request.frames) done = r.s.withGl([&] { return r.stream.finish(r); });
+    r.onFrame = nullptr;
+    if (Status limit = r.s.expired(); !limit && done) done = limit;
+    if (!done) {
+        r.drop();
+        return done.error();
+    }
+    if (r.stream.stopRequested()) {
+        r.drop();
+        return false;
+    }
+    return r.rendered < r.request.frames || r.reads.size() > 0;
+}
+
+void Session::Rendering::stop() { impl_->stream.requestStop(); }
+int Session::Rendering::framesRendered() const { return impl_->rendered; }
+int Session::Rendering::readsInFlight() const { return static_cast<int>(impl_->reads.size()); }
+
+Result<std::unique_ptr<Session::Rendering>> Session::startRendering(const RenderRequest& request) {
+    if (Status usable = impl_->usable("startRendering"); !usable) return usable.error();
+    if (request.frames < 0)
+        return Error("render: frames must be 0 or more, got " + std::to_string(request.frames), Code::Usage);
+    if (request.every < 1)
+        return Error("render: every must be 1 or more, got " + std::to_string(request.every), Code::Usage);
+    Result<PassId> pass = impl_->pass(request.pass);
+    if (!pass) return pass.error();
+    auto impl = std::make_unique<Rendering::Impl>(*this, request, *pass);
+    // The reads' buffers now, at the pass's size: a failure to allocate them shows here.
+    const PassOutput output = impl_->core->output(*pass);
+    Status reserved = impl_->withGl([&] {
+        return impl->reads.reserve(frameBytes(output.width, output.height, output.format),
+                                   static_cast<std::size_t>(kRenderReadsInFlight));
+    });
+    if (!reserved) return reserved.error();
+    return std::unique_ptr<Rendering>(new Rendering(std::move(impl)));
+}
+
+Status Session::render(const RenderRequest& request, const FrameCallback& onFrame) {
+    Result<std::unique_ptr<Rendering>> rendering = startRendering(request);
+    if (!rendering) return rendering.error();
+    for (;;) {
+        Result<bool> more = (*rendering)->advance(onFrame);
+        if (!more) return more.error();
+        if (!*more) return okStatus();
+    }
+}
+
+namespace {
+template <class T>
+Status readRendered(const void* pixels, bool floatPixels, int width, int height, std::span<T> out, RowOrder order) {
+    const std::size_t values = static_cast<std::size_t>(width) * height * 4;
+    if (!pixels) return Error("RenderedFrame::read: the frame's pixels are gone (read it during the callback)", Code::Usage);
+    if (out.size() != values)
+        return Error("RenderedFrame::read: the destination holds " + std::to_string(out.size()) + " values, the frame " +
+                         std::to_string(values) + " (width * height * 4)",
+                     Code::Usage);
+    if (floatPixels) Session::Impl::convertRows(static_cast<const float*>(pixels), out, width, height, order);
+    else Session::Impl::convertRows(static_cast<const std::uint8_t*>(pixels), out, width, height, order);
+    return okStatus();
+}
+}  // namespace
+
+Status Session::RenderedFrame::read(std::span<std::uint8_t> out, RowOrder order) const {
+    return readRendered(pixels_, floatPixels_, width, height, out, order);
+}
+
+Status Session::RenderedFrame::read(std::span<float> out, RowOrder order) const {
+    return readRendered(pixels_, floatPixels_, width, height, out, order);
 }
 
 const std::vector<Diagnostic>& Session::notices() const { return impl_->notices.kept; }

@@ -23,6 +23,7 @@ public:
 
     bool empty() const { return reads_.size() == 0; }
     bool full() const { return reads_.size() == slots_; }
+    int pending() const { return static_cast<int>(reads_.size()); }
     std::size_t frameBytes() const { return bytes_; }
     PixelFormat format() const { return format_; }
     int oldestFrame() const { return reads_.oldest().frame; }

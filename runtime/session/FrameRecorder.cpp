@@ -8,6 +8,25 @@
 
 namespace toyhost {
 
+// The recording's reads as its FrameStream drives them: the readback ring's, or none pending when
+// frames are read synchronously (Cube A, --sync-capture: start() reads and encodes at once).
+class FrameRecorder::Reads final : public FrameReads {
+public:
+    explicit Reads(FrameRecorder& recorder) : recorder_(recorder) {}
+    const Player* player = nullptr;  // the one that rendered the frame start() reads
+
+    int pending() const override { return recorder_.ring_ ? recorder_.ring_->pending() : 0; }
+    Status start(int frame) override { return recorder_.capture(*player, frame); }
+    bool oldestDone() const override { return recorder_.ring_->oldestReady(); }
+    Status handOverOldest() override { return recorder_.collectOldest(); }
+    void dropAll() override {
+        while (recorder_.ring_ && !recorder_.ring_->empty()) recorder_.ring_->dropOldest();
+    }
+
+private:
+    FrameRecorder& recorder_;
+};
+
 Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSettings& settings, const Player& player) {
     std::unique_ptr<FrameRecorder> recorder(new FrameRecorder());
     recorder->context_ = player.sharedContext();
@@ -54,6 +73,8 @@ Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSetti
         if (!ring) return ring.error();
         recorder->ring_.emplace(std::move(*ring));
     }
+    recorder->stream_.emplace(FrameStreamSettings{settings.frames, settings.captureEvery, ReadbackRing::kDefaultSlots});
+    recorder->reads_ = std::make_unique<Reads>(*recorder);
     return recorder;
 }
 
@@ -70,6 +91,8 @@ RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity)
     RecorderSettings settings;
     settings.output = *run.output;
     settings.pass = o.capturePass;
+    settings.frames = *o.frames;
+    settings.captureEvery = *o.captureEvery;
     settings.synchronous = o.syncCapture;
     settings.pngLevel = *o.pngLevel;
     settings.exr = o.exr;
@@ -137,20 +160,18 @@ Status FrameRecorder::capture(const Player& player, int frame) {
         scanFloatFrame(frame, **pixels);
         return pool_->submit(CapturedFrame{frame, width_, height_, format_, std::move(**pixels)});
     }
-    if (ring_->full())
-        if (Status collected = collectOldest(); !collected) return collected;
+    // The stream freed a slot first (its in-flight bound is the ring's size).
     {
         Stopwatch readback{readbackSeconds_};
         if (Status started = ring_->start(output.framebuffer, frame); !started) return started;
     }
     ++captured_;
-    return poll();
+    return okStatus();
 }
 
-Status FrameRecorder::poll() {
-    while (ring_ && !ring_->empty() && ring_->oldestReady())
-        if (Status collected = collectOldest(); !collected) return collected;
-    return okStatus();
+Status FrameRecorder::rendered(const Player& player, int frame) {
+    reads_->player = &player;
+    return stream_->rendered(frame, *reads_);
 }
 
 Result<std::optional<std::vector<std::byte>>> FrameRecorder::takeBuffer(std::size_t bytes) {
@@ -201,8 +222,7 @@ FrameRecorder::Abandoned FrameRecorder::abandon() {
 
 Status FrameRecorder::finish() {
     settings_.dropWhenBusy = false;  // what is still in the ring is written
-    while (ring_ && !ring_->empty())
-        if (Status collected = collectOldest(); !collected) return collected;
+    if (Status drained = stream_->finish(*reads_); !drained) return drained;
     // The encoders write the last frames and the sink closes (ffmpeg finishing a video): a stalled
     // encoder here is the watchdog's to end, as while rendering.
     if (settings_.activity) settings_.activity->begin(RunActivity::Phase::WaitingForOutput);

@@ -1,8 +1,9 @@
-// FrameRecorder: takes the frames a run captures from the Player to their output (capture/).
-// Asynchronous by default: readbacks go through a ReadbackRing (no stall on the render thread)
-// and are encoded by an EncoderPool into the sink `--out` asks for (image files, ffmpeg video,
-// raw stdout). The synchronous path (read and encode on the render thread) is kept for
-// comparison. Needs the player's GL context current for its whole life.
+// FrameRecorder: takes the frames a run captures from the Player to their output (capture/),
+// through the FrameStream every render into memory uses (which frames, reads in flight, handed
+// over as soon as read). Asynchronous by default: readbacks go through a ReadbackRing (no stall on
+// the render thread) and are encoded by an EncoderPool into the sink `--out` asks for (image
+// files, ffmpeg video, raw stdout). The synchronous path (read and encode on the render thread) is
+// kept for comparison. Needs the player's GL context current for its whole life.
 #pragma once
 
 #include <cstddef>
@@ -12,6 +13,7 @@
 #include <utility>
 
 #include "capture/EncoderPool.h"
+#include "capture/FrameStream.h"
 #include "capture/OutputPattern.h"
 #include "capture/VideoSink.h"
 #include "core/Result.h"
@@ -26,6 +28,8 @@ namespace toyhost {
 struct RecorderSettings {
     OutputPattern output;
     PassId pass = PassId::Image;
+    int frames = 0;        // the run's frames (0: no end) and its capture-every (FrameStream's rule)
+    int captureEvery = 1;
     bool synchronous = false;      // glReadPixels and encoding on the render thread
     int pngLevel = 1;
     ExrSettings exr;
@@ -52,10 +56,11 @@ public:
     // sized for the player's current canvas.
     static Result<std::unique_ptr<FrameRecorder>> create(const RecorderSettings& settings, const Player& player);
 
-    // Captures the frame the player has just rendered (its iFrame is `frame`).
-    Status capture(const Player& player, int frame);
-    // Hands readbacks that have completed to the encoders, without waiting; call once a frame.
-    Status poll();
+    // Whether frame `frame` is one the run captures (the capture-every rule).
+    bool captures(int frame) const { return stream_->captures(frame); }
+    // After the player rendered frame `frame` (every frame, captured or not): captures it when it
+    // is one to capture, and hands readbacks that have completed to the encoders without waiting.
+    Status rendered(const Player& player, int frame);
     // Waits for every readback and every encoder, then completes the output. Without a
     // successful finish(), destruction discards incomplete output.
     Status finish();
@@ -89,6 +94,9 @@ public:
     ~FrameRecorder();
 
 private:
+    class Reads;
+    // Starts capturing the frame the player has just rendered (its iFrame is `frame`).
+    Status capture(const Player& player, int frame);
     // Cube A's six faces as one strip, read synchronously (a rare capture: no readback ring).
     Status captureCube(const Player& player, int frame);
     std::vector<float> cubeFace_;
@@ -113,6 +121,8 @@ private:
     std::unique_ptr<FrameSink> sink_;    // declared before pool_: the pool's threads use it
     std::unique_ptr<EncoderPool> pool_;
     std::optional<ReadbackRing> ring_;
+    std::optional<FrameStream> stream_;
+    std::unique_ptr<Reads> reads_;  // the ring (or the synchronous reads) as the stream drives it
 };
 
 }  // namespace toyhost

@@ -38,18 +38,15 @@ Status Recording::begin(const Player& player, SessionObserver& observer) {
     return okStatus();
 }
 
-bool Recording::captures(int frame) const {
-    const SessionOptions& o = plan_.options;
-    return recorder_ && isCapturedFrame(frame, *o.frames, *o.captureEvery);
-}
+bool Recording::captures(int frame) const { return recorder_ && recorder_->captures(frame); }
 
-Status Recording::capture(const Player& player, int frame) {
-    if (Status saved = recorder_->capture(player, frame); !saved) return saved;
-    captured_.push_back(frame);
+Status Recording::rendered(const Player& player, int frame) {
+    if (!recorder_) return okStatus();
+    const bool captured = recorder_->captures(frame);
+    if (Status recorded = recorder_->rendered(player, frame); !recorded) return recorded;
+    if (captured) captured_.push_back(frame);
     return okStatus();
 }
-
-Status Recording::poll() { return recorder_ ? recorder_->poll() : okStatus(); }
 
 Status Recording::complete() { return recorder_ ? recorder_->finish() : okStatus(); }
 

@@ -35,9 +35,9 @@ public:
     bool captures(int frame) const;
     // Whether the Image pass must be drawn on frame `frame` for this recording.
     bool needsImage(int frame) const { return captures(frame) && pass_ == PassId::Image; }
-    Status capture(const Player& player, int frame);
-    // Hands completed readbacks to the encoders; once per frame that is not captured.
-    Status poll();
+    // After every rendered frame: captures it if it is captured, hands the reads that completed
+    // to the encoders (capture/FrameStream.h).
+    Status rendered(const Player& player, int frame);
     std::uint64_t bytesWritten() const { return recorder_ ? recorder_->bytesWritten() : 0; }
 
     // Waits for every readback and encoder and completes the round's output.

@@ -179,11 +179,8 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
 
     // Readbacks may wait for the GPU: the watchdog is told which pass it is still drawing.
     player_->publishPendingDraws();
-    if (captured) {
-        if (Status saved = recording_->capture(*player_, frame); !saved) return saved;
-    } else if (recording_) {
-        if (Status polled = recording_->poll(); !polled) return polled;
-    }
+    if (recording_)
+        if (Status recorded = recording_->rendered(*player_, frame); !recorded) return recorded;
     player_->publishPendingDraws();
     if (o.checkFinite) checkBuffers(frame);
     // The first frame waits for the GPU once, so that its time is real.

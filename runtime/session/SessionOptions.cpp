@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "capture/FrameStream.h"
 #include "core/AtomicFile.h"
 #include "core/ChildProcess.h"
 #include "core/Defaults.h"
@@ -20,7 +21,7 @@ namespace {
 int countCaptured(int first, int end, int frames, int every) {
     if (frames == 0) return 2;  // no end: as many as the user lets run
     int n = 0;
-    for (int f = first; f < end && n < 2; ++f) n += isCapturedFrame(f, frames, every);
+    for (int f = first; f < end && n < 2; ++f) n += FrameStream::captured(f, frames, every);
     return n;
 }
 

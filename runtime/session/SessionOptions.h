@@ -108,11 +108,6 @@ SessionOptions withDefaults(SessionOptions options);
 // always; fps and frames only for headless runs: a window runs in real time until closed).
 SessionOptions withManifestDefaults(SessionOptions options, const RunDefaults& manifest);
 
-// Frames n with n % captureEvery == 0, and the last frame.
-inline bool isCapturedFrame(int frame, int frames, int captureEvery) {
-    return frame % captureEvery == 0 || frame == frames - 1;
-}
-
 // Everything a run needs that can be checked without GL.
 struct SessionPlan {
     SessionOptions options;                    // with defaults applied
