@@ -164,7 +164,6 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     }
     if (recording_ && !recording_->begun())
         if (Status begun = recording_->begin(*player_, observer_); !begun) return begun;
-    const bool captured = recording_ && recording_->captures(frame);
     // Nothing reads the Image pass but the driver: a run that captures renders it only on the frames
     // it captures (long simulations captured every K frames run at buffer speed). A window shows
     // it, and a run without --out renders every pass (a dry run, the render-only benchmark).
