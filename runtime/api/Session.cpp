@@ -16,6 +16,7 @@
 #include "manifest/ManifestDesc.h"
 #include "render/PendingReads.h"
 #include "session/SessionCore.h"
+#include "session/WatchdogSetup.h"
 #include "timing/FrameClock.h"
 
 namespace toyhost {
@@ -55,6 +56,8 @@ public:
     mutable std::vector<std::uint8_t> bytes;  // readback scratch
     mutable std::vector<float> floats;
     PendingReads reads;  // queueRead() .. takeRead(); emptied with the context current
+    // The media settings, fixed at creation: prepareReload reads them from any thread.
+    MediaOptions media;
 
     // What every call that renders does around its GL work: the context current (headless) or the
     // caller's state kept (its own context).
@@ -109,10 +112,7 @@ public:
                          Code::Usage);
         if (Status made = current(); !made) return made.error();
         Status taken = withGl([&] {
-            // The wait may be for the GPU still drawing: the watchdog is told which pass.
-            core->player().publishPendingDraws();
             Result<std::span<const std::byte>> pixels = reads.mapOldest();
-            core->player().publishPendingDraws();
             if (pixels) {
                 if (read.format == PixelFormat::Rgba8)
                     convertRows(reinterpret_cast<const std::uint8_t*>(pixels->data()), out, read.width, read.height, order);
@@ -162,24 +162,21 @@ Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const S
     options.compileTimeout = settings.compileTimeout;
     Result<SessionPlan> plan = prepareSession(options);
     if (!plan) return plan.error();
+    impl->media = plan->options.media;
     impl->clock.emplace(*plan->options.fps, plan->options.startTime, *plan->options.wallClock);
-    if (settings.frameTimeout > 0 || settings.compileTimeout > 0) {
-        WatchdogDesc limits;
-        limits.frameLimit = settings.frameTimeout;
-        limits.compileLimit = settings.compileTimeout;
-        limits.expire = [file = shadertoy.path().string()](const Diagnostic& expired, int) {
-            std::function<void(const Diagnostic&)> handler;
-            {
-                std::lock_guard<std::mutex> lock(expiryMutex);
-                handler = expiryHandler();
-            }
-            if (!handler) return;
-            Diagnostic named = expired;
-            if (named.file.empty()) named.file = file;
-            handler(named);
-        };
-        impl->watchdog = std::make_unique<Watchdog>(limits);
-    }
+    WatchdogHooks hooks;
+    hooks.expire = [file = shadertoy.path().string()](const Diagnostic& expired, int) {
+        std::function<void(const Diagnostic&)> handler;
+        {
+            std::lock_guard<std::mutex> lock(expiryMutex);
+            handler = expiryHandler();
+        }
+        if (!handler) return;
+        Diagnostic named = expired;
+        if (named.file.empty()) named.file = file;
+        handler(named);
+    };
+    impl->watchdog = makeWatchdog(plan->options, std::move(hooks));
     if (headless) {
         // The environment chooses the EGL platform, as for every toyhost command.
         Result<EglPlatform> platform = eglPlatformFromEnvironment();
@@ -196,6 +193,7 @@ Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const S
         if (!context) return context.error();
         impl->context = *context;
     }
+    impl->reads = PendingReads(&impl->context->gpuActivity());
     Session::Impl& s = *impl;
     Result<std::unique_ptr<SessionCore>> core = s.withGl([&] {
         return SessionCore::start(std::move(*plan), s.context, s.notices, s.watchdog.get());
@@ -365,11 +363,32 @@ Status Session::resize(int w, int h) {
     return impl_->withGl([&] { return impl_->core->resize(w, h); });
 }
 
-Result<Reloaded> Session::reload(const Shadertoy& next) {
-    Result<PlayerPlan> plan = planPlayer(next.desc(), impl_->core->plan().options.media);
-    ReloadOutcome outcome = impl_->withGl([&] { return impl_->core->reload(std::move(plan)); });
+struct PreparedReload::Plan {
+    const Session::Impl* session = nullptr;  // whose media settings planned it
+    Result<PlayerPlan> plan;
+};
+
+PreparedReload::PreparedReload(std::unique_ptr<Plan> plan) : plan_(std::move(plan)) {}
+PreparedReload::~PreparedReload() = default;
+PreparedReload::PreparedReload(PreparedReload&&) noexcept = default;
+PreparedReload& PreparedReload::operator=(PreparedReload&&) noexcept = default;
+
+PreparedReload Session::prepareReload(const Shadertoy& next) const {
+    // The media settings are fixed at creation: reading them races nothing the GL thread does.
+    const MediaOptions& media = impl_->media;
+    return PreparedReload(std::make_unique<PreparedReload::Plan>(PreparedReload::Plan{impl_.get(), planPlayer(next.desc(), media)}));
+}
+
+Result<Reloaded> Session::reload(PreparedReload prepared) {
+    if (!prepared.plan_) return Error("reload: this PreparedReload was used already (or moved from)", Code::Usage);
+    if (prepared.plan_->session != impl_.get())
+        return Error("reload: the PreparedReload was made by another session's prepareReload", Code::Usage);
+    ReloadOutcome outcome = impl_->withGl([&] { return impl_->core->reload(std::move(prepared.plan_->plan)); });
+    prepared.plan_.reset();
     return Reloaded{outcome.applied, outcome.structureChanged, std::move(outcome.recompiled), std::move(outcome.problems)};
 }
+
+Result<Reloaded> Session::reload(const Shadertoy& next) { return reload(prepareReload(next)); }
 
 Result<std::vector<float>> Session::renderSound(double seconds) {
     return impl_->withGl([&] { return impl_->core->renderSound(seconds); });

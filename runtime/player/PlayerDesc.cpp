@@ -35,7 +35,13 @@ Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media) 
     std::vector<Diagnostic> notices = manifest.notices;
     notices.insert(notices.end(), images->notices().begin(), images->notices().end());
     for (Diagnostic& warning : unboundChannelWarnings(manifest)) notices.push_back(std::move(warning));
-    return PlayerPlan{std::move(manifest), std::move(graph), std::move(*images), std::move(notices)};
+    std::vector<PassSource> sources;
+    sources.reserve(manifest.passes.size());
+    for (const PassDesc& pass : manifest.passes) sources.push_back(preparePassSource(manifest, pass));
+    std::optional<PassSource> soundSource;
+    if (manifest.sound) soundSource = preparePassSource(manifest, *manifest.sound);
+    return PlayerPlan{std::move(manifest), std::move(graph), std::move(*images), std::move(notices), std::move(sources),
+                      std::move(soundSource)};
 }
 
 }  // namespace toyhost

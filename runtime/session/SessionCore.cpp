@@ -55,13 +55,17 @@ bool hasBuffers(const ManifestDesc& manifest) {
 }  // namespace
 
 SessionCore::SessionCore(SessionPlan plan, std::shared_ptr<GlContext> context, SessionObserver& observer, Watchdog* watchdog)
-    : plan_(std::move(plan)), context_(std::move(context)), observer_(observer), watchdog_(watchdog) {}
+    : plan_(std::move(plan)), context_(std::move(context)), observer_(observer), watchdog_(watchdog) {
+    // Everything that renders or waits on the context publishes there for the watchdog.
+    if (context_) context_->gpuActivity().attach(activity(), watchdog_ && watchdog_->watchesDraws());
+}
 
 SessionCore::~SessionCore() {
     // GL objects go while their context is current; the recorder's encoders stop first.
     if (context_) (void)context_->makeCurrent();
     recorder_.reset();
     player_.reset();
+    if (context_) context_->gpuActivity().attach(nullptr, false);  // the watchdog may go first
 }
 
 RunActivity* SessionCore::activity() { return watchdog_ ? &watchdog_->activity() : nullptr; }
@@ -120,8 +124,6 @@ Status SessionCore::createPlayer(PlayerPlan shadertoy) {
     desc.height = *o.height;
     desc.floatImage = o.floatImage || (plan_.output && plan_.output->format() == OutputFormat::Exr &&
                                        o.capturePass == PassId::Image);
-    desc.activity = activity();
-    desc.watchDraws = watchdog_ && watchdog_->watchesDraws();
     Result<std::unique_ptr<Player>> made = Player::create(context_, std::move(shadertoy), desc);
     if (!made) return made.error();
     player_ = std::move(*made);
@@ -182,10 +184,10 @@ Status SessionCore::prepareSoundTrack() {
 Result<std::vector<float>> SessionCore::renderSound(double seconds) {
     SoundRenderDesc desc;
     desc.seconds = seconds;
-    desc.activity = activity();
     desc.stopRequested = [this] { return stopRequested(); };
     // Once the Player runs, the shadertoy's plan is its.
     const PlayerPlan& shadertoy = player_ ? player_->plan() : plan_.shadertoy;
+    if (shadertoy.soundSource) desc.source = &*shadertoy.soundSource;
     return toyhost::renderSound(*context_, shadertoy.manifest, shadertoy.images, desc);
 }
 
@@ -263,15 +265,12 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     player_->step(time, events, renderImage);
     renderSeconds_ += secondsBetween(stepStarted, Clock::now());
 
-    // Readbacks may wait for the GPU: the watchdog is told which pass it is still drawing.
-    player_->publishPendingDraws();
     if (captured) {
         if (Status saved = recorder_->capture(*player_, frame); !saved) return saved;
         captured_.push_back(frame);
     } else if (recorder_) {
         if (Status polled = recorder_->poll(); !polled) return polled;
     }
-    player_->publishPendingDraws();
     if (o.checkFinite) checkBuffers(frame);
     // The first frame waits for the GPU once, so that its time is real.
     if (o.finishEachFrame || framesRendered_ == 0) {
@@ -452,7 +451,6 @@ Result<SessionReport> SessionCore::finishRound() {
     report_.name = name_;
     report_.frames = framesRendered_;
     if (recorder_) {
-        player_->publishPendingDraws();
         Status finished = recorder_->finish();
         // A signal during the final writes still ends the run as interrupted (exit 130/143),
         // whatever the encoders managed; an interrupted video is discarded even if it was just

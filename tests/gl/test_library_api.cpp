@@ -255,5 +255,52 @@ TEST(LibraryApi, ErrorsAreDataNamingThePassAndLine) {
     EXPECT_NE(notJson.error().text().find("given.json"), std::string::npos) << notJson.error().text();
 }
 
+// A reload planned on another thread (prepareReload) and applied on the session's GL thread: the
+// new code needs the browser-style expansion (a cpp child), and with no cpp to be found while
+// the reload is applied, it still compiles: the GL thread only compiled.
+TEST(LibraryApi, AReloadIsPlannedOffTheGlThreadAndAppliedOnIt) {
+    const fs::path dir = freshOutputDir("library-api/prepared-reload");
+    writeFile(dir / "manifest.json", R"({"passes": {"Image": {"source": "image.glsl"}}})");
+    writeFile(dir / "image.glsl", "void mainImage(out vec4 c, in vec2 f) { c = vec4(0.25, 0.0, 0.0, 1.0); }\n");
+    Result<Shadertoy> first = Shadertoy::load(dir);
+    ASSERT_TRUE(first.ok()) << first.error().text();
+    SessionSettings settings;
+    settings.width = 1;
+    settings.height = 1;
+    std::unique_ptr<Session> session;
+    runOnGlThread([&] {
+        Result<std::unique_ptr<Session>> made = Session::createHeadless(*first, settings);
+        if (made) session = std::move(*made);
+        else ADD_FAILURE() << made.error().text();
+    });
+    ASSERT_TRUE(session);
+
+    writeFile(dir / "image.glsl", "#define NEG(x) -x\nvoid mainImage(out vec4 c, in vec2 f) {\n"
+                                  "  c = vec4(NEG(-.5), 0.0, 0.0, 1.0); }\n");
+    Result<Shadertoy> second = Shadertoy::load(dir);
+    ASSERT_TRUE(second.ok()) << second.error().text();
+    PreparedReload prepared = session->prepareReload(*second);  // this thread: not the GL thread
+
+    const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+    Result<Reloaded> reloaded = Error("not applied", Code::Internal);
+    Result<Reloaded> again = Error("not applied", Code::Internal);
+    std::vector<float> pixel(4);
+    runOnGlThread([&] {
+        ::setenv("PATH", "", 1);  // no cpp while the GL thread applies the reload
+        reloaded = session->reload(std::move(prepared));
+        ::setenv("PATH", path.c_str(), 1);
+        again = session->reload(std::move(prepared));
+        if (Status stepped = session->step(); !stepped) ADD_FAILURE() << stepped.error().text();
+        if (Status read = session->read("Image", std::span<float>(pixel)); !read) ADD_FAILURE() << read.error().text();
+        session.reset();
+    });
+    ASSERT_TRUE(reloaded.ok()) << reloaded.error().text();
+    EXPECT_TRUE(reloaded->applied);
+    EXPECT_TRUE(reloaded->problems.empty());
+    EXPECT_NEAR(pixel[0], 0.5f, 1.0f / 255) << "the new code runs";
+    ASSERT_FALSE(again.ok()) << "a PreparedReload is used once";
+    EXPECT_EQ(again.error().first().code, Code::Usage);
+}
+
 }  // namespace
 }  // namespace toyhost::testing
