@@ -530,6 +530,7 @@ TEST_F(EveryInput, TheBrowserExpansionIsInThePlanBeforeGl) {
     PlayerDesc desc;
     desc.width = 1;
     desc.height = 1;
+    desc.floatImage = true;
     auto player = Player::create(context_, std::move(*plan), desc);
     ::setenv("PATH", path.c_str(), 1);
     ASSERT_TRUE(player) << player.error().text();
