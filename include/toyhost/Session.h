@@ -69,6 +69,24 @@ struct Reloaded {
     std::vector<Diagnostic> problems;  // empty: everything the shadertoy says runs now
 };
 
+// A reload planned ahead (Session::prepareReload): the new shadertoy's files read, its images
+// decoded, its videos opened and its shaders' texts prepared, off the session's GL thread; what
+// is left for reload(PreparedReload) on that thread is compiling and making textures. Move-only;
+// used once.
+class TOYHOST_API PreparedReload {
+public:
+    ~PreparedReload();
+    PreparedReload(PreparedReload&&) noexcept;
+    PreparedReload& operator=(PreparedReload&&) noexcept;
+
+    struct Plan;  // toyhost's own (not part of the stable API)
+
+private:
+    friend class Session;
+    explicit PreparedReload(std::unique_ptr<Plan> plan);
+    std::unique_ptr<Plan> plan_;
+};
+
 class TOYHOST_API Session {
 public:
     // With toyhost's own headless EGL context (no display needed). The environment variable
@@ -218,7 +236,15 @@ public:
     // Switches to `next` (the same shadertoy's files loaded again): changed code is recompiled (a
     // pass that fails keeps its last good program), a changed structure keeps the buffers that
     // still exist; iFrame and time go on.
+    // Plans on the calling thread (files, decoding, media, a preprocessor child): use the two
+    // calls below to keep that off the GL thread.
     Result<Reloaded> reload(const Shadertoy& next);
+    // The planning half of reload(), callable from any thread while the session is used on its own
+    // (it reads only settings fixed at creation); problems found here are reported by reload().
+    PreparedReload prepareReload(const Shadertoy& next) const;
+    // The applying half, on the session's thread: as reload(next), from `prepared` (made by this
+    // session's prepareReload; a moved-from or used one is a usage error).
+    Result<Reloaded> reload(PreparedReload prepared);
 
     // The Sound pass (mainSound) as the site renders it: interleaved stereo samples at 44100 Hz,
     // `seconds` long (0: the site's 180 s).

@@ -139,7 +139,10 @@ public:
 
     Reloaded reload(const Shadertoy& next) {
         Session& s = open();
-        Reloaded outcome = valueOrThrow(onGlThread([&] { return s.reload(next); }));
+        // Planned here (files, decoding, a preprocessor child) with the GIL released; the GL
+        // thread only applies it.
+        PreparedReload prepared = withoutGil([&] { return s.prepareReload(next); });
+        Reloaded outcome = valueOrThrow(onGlThread([&] { return s.reload(std::move(prepared)); }));
         width_ = s.width();
         height_ = s.height();
         return outcome;

@@ -19,6 +19,7 @@
 #include "manifest/ManifestDesc.h"
 #include "render/PendingReads.h"
 #include "session/SessionCore.h"
+#include "session/WatchdogSetup.h"
 #include "timing/FrameClock.h"
 #include "timing/Timeline.h"
 
@@ -73,6 +74,8 @@ public:
         return current();
     }
     bool onOwnThread() const { return std::this_thread::get_id() == thread; }
+    // The media settings, fixed at creation: prepareReload reads them from any thread.
+    MediaOptions media;
 
     // What every call that renders does around its GL work: the context current (headless) or the
     // caller's state kept (its own context).
@@ -129,10 +132,7 @@ public:
                          Code::Usage);
         if (Status made = usable("takeRead"); !made) return made.error();
         Status taken = withGl([&] {
-            // The wait may be for the GPU still drawing: the watchdog is told which pass.
-            core->publishPendingDraws();
             Result<std::span<const std::byte>> pixels = reads.mapOldest();
-            core->publishPendingDraws();
             if (pixels) {
                 if (read.format == PixelFormat::Rgba8)
                     convertRows(reinterpret_cast<const std::uint8_t*>(pixels->data()), out, read.width, read.height, order);
@@ -186,24 +186,21 @@ Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const S
     options.compileTimeout = settings.compileTimeout;
     Result<SessionPlan> plan = prepareSession(options);
     if (!plan) return plan.error();
+    impl->media = plan->options.media;
     impl->timeline.emplace(timelineOf(*plan));
-    if (settings.frameTimeout > 0 || settings.compileTimeout > 0) {
-        WatchdogDesc limits;
-        limits.frameLimit = settings.frameTimeout;
-        limits.compileLimit = settings.compileTimeout;
-        limits.expire = [file = shadertoy.path().string()](const Diagnostic& expired, int) {
-            std::function<void(const Diagnostic&)> handler;
-            {
-                std::lock_guard<std::mutex> lock(expiryMutex);
-                handler = expiryHandler();
-            }
-            if (!handler) return;
-            Diagnostic named = expired;
-            if (named.file.empty()) named.file = file;
-            handler(named);
-        };
-        impl->watchdog = std::make_unique<Watchdog>(limits);
-    }
+    WatchdogHooks hooks;
+    hooks.expire = [file = shadertoy.path().string()](const Diagnostic& expired, int) {
+        std::function<void(const Diagnostic&)> handler;
+        {
+            std::lock_guard<std::mutex> lock(expiryMutex);
+            handler = expiryHandler();
+        }
+        if (!handler) return;
+        Diagnostic named = expired;
+        if (named.file.empty()) named.file = file;
+        handler(named);
+    };
+    impl->watchdog = makeWatchdog(plan->options, std::move(hooks));
     if (headless) {
         // The environment chooses the EGL platform, as for every toyhost command.
         Result<EglPlatform> platform = eglPlatformFromEnvironment();
@@ -220,6 +217,7 @@ Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const S
         if (!context) return context.error();
         impl->context = *context;
     }
+    impl->reads = PendingReads(&impl->context->gpuActivity());
     Session::Impl& s = *impl;
     Result<std::unique_ptr<SessionCore>> core = s.withGl([&] {
         return SessionCore::start(std::move(*plan), s.context, s.notices, s.watchdog.get());
@@ -402,12 +400,33 @@ Status Session::resize(int w, int h) {
     return impl_->withGl([&] { return impl_->core->resize(w, h); });
 }
 
-Result<Reloaded> Session::reload(const Shadertoy& next) {
+struct PreparedReload::Plan {
+    const Session::Impl* session = nullptr;  // whose media settings planned it
+    Result<PlayerPlan> plan;
+};
+
+PreparedReload::PreparedReload(std::unique_ptr<Plan> plan) : plan_(std::move(plan)) {}
+PreparedReload::~PreparedReload() = default;
+PreparedReload::PreparedReload(PreparedReload&&) noexcept = default;
+PreparedReload& PreparedReload::operator=(PreparedReload&&) noexcept = default;
+
+PreparedReload Session::prepareReload(const Shadertoy& next) const {
+    // The media settings are fixed at creation: reading them races nothing the GL thread does.
+    const MediaOptions& media = impl_->media;
+    return PreparedReload(std::make_unique<PreparedReload::Plan>(PreparedReload::Plan{impl_.get(), planPlayer(next.desc(), media)}));
+}
+
+Result<Reloaded> Session::reload(PreparedReload prepared) {
     if (Status usable = impl_->usable("reload"); !usable) return usable.error();
-    Result<PlayerPlan> plan = planPlayer(next.desc(), impl_->core->plan().options.media);
-    ReloadOutcome outcome = impl_->withGl([&] { return impl_->core->reload({}, std::move(plan)); });
+    if (!prepared.plan_) return Error("reload: this PreparedReload was used already (or moved from)", Code::Usage);
+    if (prepared.plan_->session != impl_.get())
+        return Error("reload: the PreparedReload was made by another session's prepareReload", Code::Usage);
+    ReloadOutcome outcome = impl_->withGl([&] { return impl_->core->reload({}, std::move(prepared.plan_->plan)); });
+    prepared.plan_.reset();
     return Reloaded{outcome.applied, outcome.structureChanged, std::move(outcome.recompiled), std::move(outcome.problems)};
 }
+
+Result<Reloaded> Session::reload(const Shadertoy& next) { return reload(prepareReload(next)); }
 
 Result<std::vector<float>> Session::renderSound(double seconds) {
     if (Status usable = impl_->usable("renderSound"); !usable) return usable.error();
@@ -425,7 +444,8 @@ public:
           s(*session.impl_),
           request(std::move(request)),
           pass(pass),
-          stream(FrameStreamSettings{this->request.frames, this->request.every, kRenderReadsInFlight}) {}
+          stream(FrameStreamSettings{this->request.frames, this->request.every, kRenderReadsInFlight}),
+          reads(&s.context->gpuActivity()) {}
 
     Session& session;
     Session::Impl& s;
@@ -444,10 +464,12 @@ public:
     // Waits until fewer than kFramesAhead frames are being drawn (the context current).
     Status pace() {
         while (drawing.size() >= kFramesAhead) {
-            // The wait is for the GPU drawing: the watchdog is told which pass.
-            s.core->publishPendingDraws();
-            const GLenum state = glClientWaitSync(drawing.front().get(), GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000);
-            s.core->publishPendingDraws();
+            GLenum state;
+            {
+                // The wait is for the GPU drawing: the watchdog is told which pass.
+                GpuActivity::Wait wait(&s.context->gpuActivity());
+                state = glClientWaitSync(drawing.front().get(), GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000);
+            }
             if (state == GL_WAIT_FAILED)
                 return Error(std::string("GL: waiting for a frame to be drawn failed: ") + glErrorName(glGetError()),
                              Code::GlReadback);
@@ -464,10 +486,8 @@ public:
     bool oldestDone() const override { return reads.oldestDone(); }
     Status handOverOldest() override {
         const PendingReads::Read read = reads.oldest();
-        // The wait may be for the GPU still drawing: the watchdog is told which pass.
-        s.core->publishPendingDraws();
+        // mapOldest() tells the watchdog which pass the GPU is still drawing while it waits.
         Result<std::span<const std::byte>> pixels = reads.mapOldest();
-        s.core->publishPendingDraws();
         if (!pixels) {
             (void)reads.releaseOldest();
             return pixels.error();

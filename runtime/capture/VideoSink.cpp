@@ -128,13 +128,26 @@ Result<std::unique_ptr<VideoSink>> VideoSink::start(const fs::path& path, int wi
                                  (request.settings.preset ? ", preset " + *request.settings.preset : std::string());
     }
     sink->encoder_ = request.settings.codec.value_or(request.container == ".webm" ? "libvpx-vp9" : "libx264");
-    Result<ChildProcess> ffmpeg = ChildProcess::spawn(ffmpegArguments(request), sink->log_);
-    if (!ffmpeg) {
-        fs::remove(sink->log_, ec);
-        return inFile(path.string(), ffmpeg.error());
-    }
-    sink->ffmpeg_.emplace(std::move(*ffmpeg));
+    sink->arguments_ = ffmpegArguments(request);
+    // A missing ffmpeg fails the recording now, as the spawn would (a PATH lookup, no child).
+    if (!findExecutable(sink->arguments_.front()))
+        return inFile(path.string(), Error(sink->arguments_.front() + ": program not found in PATH", Code::Process));
     return sink;
+}
+
+bool VideoSink::launched() const {
+    std::lock_guard lock(launchMutex_);
+    return ffmpeg_.has_value();
+}
+
+Status VideoSink::launch() {
+    std::lock_guard lock(launchMutex_);
+    if (ffmpeg_) return okStatus();
+    if (cancelled_) return fileError(path_.string(), "not started: the recording was cancelled", Code::Interrupted);
+    Result<ChildProcess> ffmpeg = ChildProcess::spawn(arguments_, log_);
+    if (!ffmpeg) return inFile(path_.string(), ffmpeg.error());
+    ffmpeg_.emplace(std::move(*ffmpeg));
+    return okStatus();
 }
 
 VideoSink::~VideoSink() {
@@ -153,6 +166,7 @@ Error VideoSink::ffmpegFailed(const std::string& what) const {
 }
 
 Status VideoSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
+    if (Status launched = launch(); !launched) return launched;
     Clock::time_point at = Clock::now();
     const std::span<const std::uint8_t> bottomUp = rgba8BottomUp(frame, scratch.bytes);
     at = addEncodeTime(at);
@@ -175,6 +189,7 @@ Status VideoSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
 }
 
 Status VideoSink::close() {
+    if (Status launched = launch(); !launched) return launched;
     Result<int> exit = ffmpeg_->closeAndWait();
     if (!exit) return ffmpegFailed(exit.error().first().message);
     if (*exit != 0) return ffmpegFailed("ffmpeg failed (exit code " + std::to_string(*exit) + ")");
@@ -192,10 +207,16 @@ Status VideoSink::close() {
 }
 
 void VideoSink::cancel() {
+    std::lock_guard lock(launchMutex_);
+    cancelled_ = true;
     if (ffmpeg_) ffmpeg_->killFromAnyThread();
 }
 
 void VideoSink::discard() {
+    {
+        std::lock_guard lock(launchMutex_);
+        cancelled_ = true;
+    }
     if (ffmpeg_) ffmpeg_->kill();
     std::error_code ec;
     fs::remove(temp_, ec);

@@ -1,10 +1,13 @@
 // VideoSink: streams captured frames as raw RGBA8 into an ffmpeg process that encodes one video
 // file (.mp4/.mov/.mkv: H.264, .webm: VP9). ffmpeg writes to a hidden temporary name that is
-// renamed into place only when it exits cleanly, so the video is complete or absent. No GL needed.
+// renamed into place only when it exits cleanly, so the video is complete or absent. ffmpeg is
+// started by the first write (on an encoder thread), not by start(): the render thread that makes
+// the recording never waits for its fork/exec or start-up. No GL needed.
 #pragma once
 
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,8 +42,9 @@ std::vector<std::string> ffmpegArguments(const VideoRequest& request);
 
 class VideoSink final : public FrameSink {
 public:
-    // Starts ffmpeg for `path` (its extension picks the container). Fails when ffmpeg is not
-    // installed.
+    // Prepares the video `path` (its extension picks the container): its folder, its temporary
+    // names and ffmpeg's command line. Fails when ffmpeg is not installed. ffmpeg itself starts
+    // with the first write() (or close(), for a video without frames).
     static Result<std::unique_ptr<VideoSink>> start(const std::filesystem::path& path, int width, int height,
                                                     double fps, const VideoSettings& settings);
     ~VideoSink() override;
@@ -50,6 +54,8 @@ public:
     Status close() override;
     void discard() override;
     void cancel() override;
+    // Whether ffmpeg has been started (by a write or close).
+    bool launched() const;
     // The ffmpeg encoder in use, and with --codec auto the line saying why it was chosen.
     const std::string& encoder() const { return encoder_; }
     const std::string& autoExplanation() const { return autoExplanation_; }
@@ -57,11 +63,16 @@ public:
 private:
     VideoSink() = default;
     Error ffmpegFailed(const std::string& what) const;
+    // Starts ffmpeg unless it runs (the thread that writes; cancel() may race it).
+    Status launch();
 
     std::filesystem::path path_;
     std::filesystem::path temp_;
     std::filesystem::path log_;
+    std::vector<std::string> arguments_;  // ffmpeg's command line
+    mutable std::mutex launchMutex_;     // ffmpeg_'s creation against cancel() from another thread
     std::optional<ChildProcess> ffmpeg_;
+    bool cancelled_ = false;  // cancel() came before the launch: ffmpeg is never started
     bool registered_ = false;  // temp_ and log_ are in core/InFlight.h
     bool closed_ = false;
     std::string encoder_;

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "core/Result.h"
+#include "gl/GpuActivity.h"
 
 namespace toyhost {
 
@@ -68,6 +69,12 @@ public:
     virtual std::string describe() const = 0;
     // The on-screen surface of a window backend; null for headless contexts.
     virtual GlSurface* surface() { return nullptr; }
+    // What this context's GPU work is, for a watchdog (gl/GpuActivity.h): the one place every
+    // renderer, readback and wait on this context publishes to.
+    GpuActivity& gpuActivity() { return gpuActivity_; }
+
+private:
+    GpuActivity gpuActivity_;
 };
 
 // Checks the GL extensions Shadertoy's WebGL2 player relies on (float render targets and

@@ -20,14 +20,13 @@ Status checkSizeForGl(int width, int height) {
     return okStatus();
 }
 
-RendererDesc rendererDesc(const PlayerDesc& desc, int width, int height) {
+RendererDesc rendererDesc(GlContext& context, const PlayerDesc& desc, int width, int height) {
     RendererDesc r;
+    r.gpu = &context.gpuActivity();
     r.width = width;
     r.height = height;
     r.floatImageTarget = desc.floatImage;
     r.allocate = desc.allocate;
-    r.activity = desc.activity;
-    r.watchDraws = desc.watchDraws;
     return r;
 }
 
@@ -81,7 +80,8 @@ Result<std::unique_ptr<Player>> Player::create(std::shared_ptr<GlContext> contex
     player->desc_ = desc;
     player->plan_ = std::move(plan);
     Result<std::unique_ptr<Renderer>> renderer = Renderer::create(
-        player->plan_.manifest, player->plan_.graph, rendererDesc(desc, desc.width, desc.height), player->plan_.images);
+        player->plan_.manifest, player->plan_.graph, rendererDesc(*player->context_, desc, desc.width, desc.height), player->plan_.images,
+        player->plan_.sources);
     if (!renderer) return renderer.error();
     player->renderer_ = std::move(*renderer);
     for (const PassDesc& pass : player->plan_.manifest.passes)
@@ -201,7 +201,8 @@ ReloadReport Player::reload(PlayerPlan next) {
     if (!sameStructure) {
         report.structureChanged = true;
         Result<std::unique_ptr<Renderer>> renderer = Renderer::create(
-            next.manifest, next.graph, rendererDesc(desc_, renderer_->width(), renderer_->height()), next.images);
+            next.manifest, next.graph, rendererDesc(*context_, desc_, renderer_->width(), renderer_->height()), next.images,
+            next.sources);
         if (!renderer) {
             report.problems = renderer.error().diagnostics;
             return report;
@@ -224,7 +225,7 @@ ReloadReport Player::reload(PlayerPlan next) {
     for (std::size_t i = 0; i < next.manifest.passes.size(); ++i) {
         const PassDesc& pass = next.manifest.passes[i];
         if (pass.code == built_[i].code && next.manifest.commonCode == built_[i].common) continue;
-        Status replaced = renderer_->replaceProgram(i, next.manifest, pass);
+        Status replaced = renderer_->replaceProgram(i, next.manifest, pass, next.sources.at(i));
         if (!replaced) {
             report.problems.insert(report.problems.end(), replaced.error().diagnostics.begin(),
                                    replaced.error().diagnostics.end());

@@ -92,27 +92,17 @@ public:
 
     // Where a pass's latest output is (readback, presenting).
     PassOutput output(PassId pass) const { return renderer_->output(pass); }
-    void readRgba32f(PassId pass, std::vector<float>& out) const {
-        renderer_->publishPendingDraws();
-        renderer_->readRgba32f(pass, out);
-        renderer_->publishPendingDraws();
-    }
+    // Readbacks and finish() may wait for the GPU: the renderer tells the context's watchdog
+    // which pass it waits for (gl/GpuActivity.h).
+    void readRgba32f(PassId pass, std::vector<float>& out) const { renderer_->readRgba32f(pass, out); }
     void readRgba8(PassId pass, std::vector<std::uint8_t>& out) const { renderer_->readRgba8(pass, out); }
     // Passes that compiled only after browser-style preprocessing (notices to print).
     const std::vector<Diagnostic>& compileNotices() const { return renderer_->compileNotices(); }
     // Cube A's latest faces (see Renderer::readCubeFace); hasCube() says whether there is one.
     bool hasCube() const { return renderer_->hasCube(); }
     void readCubeFace(int face, std::vector<float>& out, int& size) const { renderer_->readCubeFace(face, out, size); }
-    // Waits for the GPU (glFinish); never needed per frame. The watchdog sees which pass it
-    // waits for.
-    void finish() {
-        renderer_->publishPendingDraws();
-        renderer_->finish();
-        renderer_->publishPendingDraws();
-    }
-    // Tells the watchdog (PlayerDesc::watchDraws) which pass the GPU is still drawing: call
-    // before and after a call that may wait for the GPU (a readback).
-    void publishPendingDraws() { renderer_->publishPendingDraws(); }
+    // Waits for the GPU (glFinish); never needed per frame.
+    void finish() { renderer_->finish(); }
 
     int width() const { return renderer_->width(); }
     int height() const { return renderer_->height(); }

@@ -1,5 +1,8 @@
 #include "player/PlayerDesc.h"
 
+#include <future>
+#include <optional>
+
 #include <string>
 
 #include "core/Defaults.h"
@@ -28,6 +31,19 @@ Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media) 
     if (manifest.commonSource) checkShaderText(manifest.commonCode, manifest.commonName, "Common", textProblems);
     for (PassDesc& pass : manifest.passes) checkShaderText(pass.code, pass.sourceName, passName(pass.id), textProblems);
     if (!textProblems.empty()) return Error(std::move(textProblems));
+    // The shader texts first, each pass whose expansion needs a cpp child on its own thread, so
+    // that those run while the media below load (a plan is made once per run or reload).
+    const bool commonMacros = manifest.commonSource && definesFunctionMacro(manifest.commonCode);
+    auto prepare = [&](const PassDesc& pass) -> std::future<PassSource> {
+        const bool child = commonMacros || definesFunctionMacro(pass.code);
+        return std::async(child ? std::launch::async : std::launch::deferred,
+                          [&manifest, &pass] { return preparePassSource(manifest, pass); });
+    };
+    std::vector<std::future<PassSource>> preparing;
+    for (const PassDesc& pass : manifest.passes) preparing.push_back(prepare(pass));
+    std::optional<std::future<PassSource>> preparingSound;
+    if (manifest.sound) preparingSound = prepare(*manifest.sound);
+    // Every child is waited for on every path out (a future from std::async waits when it goes).
     const MediaResolver resolver = makeMediaResolver(manifest, media);
     Result<ChannelMedia> images = ChannelMedia::load(manifest, resolver, media);
     if (!images) return images.error();
@@ -35,7 +51,13 @@ Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media) 
     std::vector<Diagnostic> notices = manifest.notices;
     notices.insert(notices.end(), images->notices().begin(), images->notices().end());
     for (Diagnostic& warning : unboundChannelWarnings(manifest)) notices.push_back(std::move(warning));
-    return PlayerPlan{std::move(manifest), std::move(graph), std::move(*images), std::move(notices)};
+    std::vector<PassSource> sources;
+    sources.reserve(preparing.size());
+    for (std::future<PassSource>& source : preparing) sources.push_back(source.get());
+    std::optional<PassSource> soundSource;
+    if (preparingSound) soundSource = preparingSound->get();
+    return PlayerPlan{std::move(manifest), std::move(graph), std::move(*images), std::move(notices), std::move(sources),
+                      std::move(soundSource)};
 }
 
 }  // namespace toyhost

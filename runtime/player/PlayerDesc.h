@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "core/Result.h"
-#include "core/RunActivity.h"
 #include "graph/PassGraph.h"
 #include "manifest/ManifestDesc.h"
 #include "media/ChannelMedia.h"
 #include "render/RenderTargets.h"
+#include "shader/PassSource.h"
 
 namespace toyhost {
 
@@ -23,10 +23,6 @@ struct PlayerDesc {
     int height = 0;
     // Render the Image pass into RGBA32F instead of RGBA8 (EXR capture of Image, float checks).
     bool floatImage = false;
-    // Published for a watchdog (compiling, and with watchDraws the pass being drawn); see
-    // RendererDesc::activity.
-    RunActivity* activity = nullptr;
-    bool watchDraws = false;
     // Tests make allocations fail here to check that resize is all-or-nothing; empty: real GL.
     TextureAllocator allocate;
 };
@@ -42,11 +38,16 @@ struct PlayerPlan {
     PassGraph graph;
     ChannelMedia images;
     std::vector<Diagnostic> notices;  // the manifest's notices and the stand-ins used
+    // Each pass's shader texts (manifest.passes' order), and the Sound pass's when there is one,
+    // with their browser-style expansions where they may be needed (a child process): the GL
+    // thread only compiles.
+    std::vector<PassSource> sources;
+    std::optional<PassSource> soundSource;
 };
 
-// Builds the graph, decodes every image channel and opens every video and audio source (ffprobe and
-// ffmpeg, waits of seconds for live sources: call it off the GL thread); every problem is
-// reported at once.
+// Builds the graph, prepares every pass's shader texts (cpp for the browser-style expansion),
+// decodes every image channel and opens every video and audio source (ffprobe and ffmpeg, waits
+// of seconds for live sources: call it off the GL thread); every problem is reported at once.
 Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media);
 
 }  // namespace toyhost

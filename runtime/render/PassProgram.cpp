@@ -1,9 +1,10 @@
 #include "render/PassProgram.h"
 
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "gl/ShaderProgram.h"
-#include "shader/BrowserPreprocess.h"
 #include "shader/CompileMessages.h"
 #include "shader/CompilerLog.h"
 #include "shader/ShaderAssembly.h"
@@ -42,33 +43,27 @@ UniformLocations locate(GLuint program) {
 
 }  // namespace
 
-Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassDesc& pass) {
-    ShaderInputs inputs;
-    inputs.pass = pass.id;
-    inputs.sound = pass.id == PassId::Sound;
-    for (int c = 0; c < kChannelCount; ++c) inputs.samplers[c] = pass.channels[c].samplerType;
-    inputs.common = manifest.commonSource ? &manifest.commonCode : nullptr;
-    inputs.code = pass.code;
-    const AssembledShader fragment = assembleFragmentShader(inputs);
+Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassDesc& pass, const PassSource& source) {
     ProgramBuild build;
     bool preprocessed = false;
     // The rewritten text first (WebGL's semantics); the plain text when the driver refuses it, so
     // a declaration the rewrite misread never stops a shader. The last try's messages stand: the
     // user's own text.
-    for (const std::string* text : {&fragment.text, &fragment.plainText}) {
+    const std::pair<const std::string*, const std::optional<std::string>*> tries[] = {
+        {&source.text, &source.browserText}, {&source.plainText, &source.browserPlainText}};
+    for (const auto& [text, expanded] : tries) {
         build = buildProgram(fullscreenVertexShader(), *text);
-        if (!build.ok && build.failedStage == ProgramBuild::Stage::Fragment) {
+        if (!build.ok && build.failedStage == ProgramBuild::Stage::Fragment && *expanded) {
             // Browsers preprocess the text themselves; where Mesa's preprocessor is the one that
-            // refuses it, their expansion compiles. The driver's own messages stand otherwise.
-            if (Result<std::string> expanded = preprocessLikeBrowsers(*text); expanded) {
-                ProgramBuild retry = buildProgram(fullscreenVertexShader(), *expanded);
-                if (retry.ok) {
-                    build = std::move(retry);
-                    preprocessed = true;
-                }
+            // refuses it, their expansion (prepared off the GL thread) compiles. The driver's own
+            // messages stand otherwise.
+            ProgramBuild retry = buildProgram(fullscreenVertexShader(), **expanded);
+            if (retry.ok) {
+                build = std::move(retry);
+                preprocessed = true;
             }
         }
-        if (build.ok || fragment.text == fragment.plainText) break;
+        if (build.ok || source.text == source.plainText) break;
     }
     if (!build.ok) {
         const char* name = passName(pass.id);

@@ -9,6 +9,7 @@
 #include "core/Result.h"
 #include "gl/GlObjects.h"
 #include "manifest/ManifestDesc.h"
+#include "shader/PassSource.h"
 
 namespace toyhost {
 
@@ -31,8 +32,9 @@ struct PassProgram {
     bool browserPreprocessed = false;
 };
 
-// Builds `pass` of `manifest` (Common included when the manifest has one); the Sound pass
-// (PassId::Sound) with mainSound's wrapper.
-Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassDesc& pass);
+// Builds `pass` of `manifest` from its texts prepared off the GL thread (shader/PassSource.h:
+// preparePassSource, which planPlayer runs); `manifest` and `pass` name the files in errors.
+// Only compiles: no child process runs here.
+Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassDesc& pass, const PassSource& source);
 
 }  // namespace toyhost

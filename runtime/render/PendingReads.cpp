@@ -67,6 +67,7 @@ bool PendingReads::oldestDone() const {
 
 Result<std::span<const std::byte>> PendingReads::mapOldest() {
     Pending& read = pending_.front();
+    GpuActivity::Wait wait(gpu_);
     while (read.fence) {
         // One second at a time: a large frame on a CPU renderer can take longer than any fixed
         // timeout, and GL_TIMEOUT_EXPIRED only means "not yet".

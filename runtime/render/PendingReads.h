@@ -11,6 +11,7 @@
 
 #include "core/Result.h"
 #include "gl/GlObjects.h"
+#include "gl/GpuActivity.h"
 #include "image/Image.h"
 
 namespace toyhost {
@@ -23,6 +24,10 @@ public:
         int height = 0;
         PixelFormat format = PixelFormat::Rgba8;  // the framebuffer's: the values as read
     };
+
+    // `gpu`: the context's activity (GlContext::gpuActivity()), where mapOldest() publishes the
+    // pass the GPU is still drawing while it waits; null: nothing is published.
+    explicit PendingReads(GpuActivity* gpu = nullptr) : gpu_(gpu) {}
 
     std::size_t size() const { return pending_.size(); }
     // The oldest read not yet taken. Requires size() > 0.
@@ -52,6 +57,7 @@ private:
         GlFence fence;
         bool mapped = false;
     };
+    GpuActivity* gpu_ = nullptr;
     std::deque<Pending> pending_;
     Status newBuffer(std::size_t bytes, GlBuffer& out);
 

@@ -5,9 +5,10 @@
 
 namespace toyhost {
 
-Result<ReadbackRing> ReadbackRing::create(int width, int height, PixelFormat format, int slots) {
+Result<ReadbackRing> ReadbackRing::create(int width, int height, PixelFormat format, int slots, GpuActivity* gpu) {
     if (slots < 1) return Error("readback ring: needs at least one slot", Code::CaptureReadback);
     ReadbackRing ring;
+    ring.reads_ = PendingReads(gpu);
     ring.width_ = width;
     ring.height_ = height;
     ring.format_ = format;
@@ -32,7 +33,9 @@ Status ReadbackRing::takeOldest(std::span<std::byte> out) {
     return reads_.releaseOldest();
 }
 
-void readFramebuffer(unsigned int framebuffer, int width, int height, PixelFormat format, std::span<std::byte> out) {
+void readFramebuffer(unsigned int framebuffer, int width, int height, PixelFormat format, std::span<std::byte> out,
+                     GpuActivity* gpu) {
+    GpuActivity::Wait wait(gpu);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_RGBA, format == PixelFormat::Rgba8 ? GL_UNSIGNED_BYTE : GL_FLOAT, out.data());

@@ -18,8 +18,10 @@ public:
     // Three slots: one being filled by the GPU, one waiting to be copied out, one spare so that
     // starting the next readback never waits for the copy.
     static constexpr int kDefaultSlots = 3;
-    // Makes the slots' buffers now: a failure to allocate them shows here, not mid-run.
-    static Result<ReadbackRing> create(int width, int height, PixelFormat format, int slots = kDefaultSlots);
+    // Makes the slots' buffers now: a failure to allocate them shows here, not mid-run. `gpu`:
+    // the context's activity, where a wait for a readback publishes the pass still drawing.
+    static Result<ReadbackRing> create(int width, int height, PixelFormat format, int slots = kDefaultSlots,
+                                       GpuActivity* gpu = nullptr);
 
     bool empty() const { return reads_.size() == 0; }
     bool full() const { return reads_.size() == slots_; }
@@ -50,7 +52,8 @@ private:
 };
 
 // A synchronous readback of `framebuffer` into `out` (frameBytes long), for the synchronous
-// capture path and for comparing against the ring.
-void readFramebuffer(unsigned int framebuffer, int width, int height, PixelFormat format, std::span<std::byte> out);
+// capture path and for comparing against the ring; the wait is published on `gpu` when given.
+void readFramebuffer(unsigned int framebuffer, int width, int height, PixelFormat format, std::span<std::byte> out,
+                     GpuActivity* gpu = nullptr);
 
 }  // namespace toyhost

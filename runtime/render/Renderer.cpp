@@ -29,73 +29,6 @@ struct PassRuntime {
 
 }  // namespace
 
-namespace {
-// The passes the GPU may still be drawing, each with a fence set right after its draw, oldest
-// first; the watchdog is told the oldest unfinished one before anything that may block. Nothing
-// waits for these fences: a runaway pass is named without costing a GPU round trip per pass.
-class PendingPasses {
-public:
-    ~PendingPasses() {
-        for (std::size_t i = 0; i < count_; ++i) glDeleteSync(items_[i].fence);
-    }
-    // Right before a pass's draw call: llvmpipe compiles a shader's machine code lazily inside the
-    // first draw that uses it, which can take minutes (a huge local array), so the call itself
-    // counts as drawing that pass when nothing older is pending.
-    void beforeDraw(RunActivity& activity, const char* pass, int frame) {
-        if (count_ != 0) return;
-        activity.begin(RunActivity::Phase::Drawing, pass, frame);
-        drawPublished_ = true;
-    }
-    void add(const char* pass, int frame) {
-        if (count_ == items_.size()) dropOldest();
-        items_[count_++] = {glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0), pass, frame};
-        // The pass published before its draw call keeps its start time.
-        if (drawPublished_ && count_ == 1) published_ = items_[0].fence;
-        drawPublished_ = false;
-    }
-    // Forgets the passes that have finished (asking without waiting), then publishes the oldest
-    // one still drawing, keeping its start time when it was already the one published.
-    void publish(RunActivity& activity) {
-        // The GPU finishes passes in order: when the newest is done, all are (one query, the
-        // usual case between frames); else the oldest unfinished is searched from the front.
-        if (count_ && signaled(items_[count_ - 1])) dropAll();
-        while (count_ && signaled(items_[0])) dropOldest();
-        if (!count_) {
-            published_ = nullptr;
-            activity.idle();
-            return;
-        }
-        if (items_[0].fence == published_) return;
-        published_ = items_[0].fence;
-        activity.begin(RunActivity::Phase::Drawing, items_[0].pass, items_[0].frame);
-    }
-
-    // Something else was published meanwhile (a wait for a video): publish() says it again.
-    void forgetPublished() { published_ = nullptr; }
-
-private:
-    struct Item {
-        GLsync fence = nullptr;
-        const char* pass = "";
-        int frame = 0;
-    };
-    static bool signaled(const Item& item) { return glClientWaitSync(item.fence, 0, 0) != GL_TIMEOUT_EXPIRED; }
-    void dropAll() {
-        for (std::size_t i = 0; i < count_; ++i) glDeleteSync(items_[i].fence);
-        count_ = 0;
-    }
-    void dropOldest() {
-        glDeleteSync(items_[0].fence);
-        std::move(items_.begin() + 1, items_.begin() + static_cast<std::ptrdiff_t>(count_), items_.begin());
-        --count_;
-    }
-    std::array<Item, 4 * (kBufferCount + 2)> items_{};  // about three frames of six passes
-    std::size_t count_ = 0;
-    GLsync published_ = nullptr;  // compared only, never used after its deletion
-    bool drawPublished_ = false;
-};
-}  // namespace
-
 struct Renderer::Impl {
     TextureAllocator allocate;
     GlVertexArray vertexArray = makeVertexArray();
@@ -106,16 +39,19 @@ struct Renderer::Impl {
     bool floatImage = false;
     std::vector<PassRuntime> passes;
     std::uint64_t lastStep = 0;
-    RunActivity* activity = nullptr;
-    bool watchDraws = false;
-    PendingPasses pending;  // with watchDraws
+    GpuActivity* gpu = nullptr;  // never null once created
     std::vector<Diagnostic> compileNotices;
+    // The other type's values for readRgba32f / readRgba8 (a target read as it is, then
+    // converted), kept between reads so that a read per frame allocates nothing.
+    mutable std::vector<std::uint8_t> readBytes;
+    mutable std::vector<float> readFloats;
 
     // Compiles `pass`, telling the watchdog which pass is compiling.
-    Result<PassProgram> compile(const ManifestDesc& manifest, const PassDesc& pass) {
-        if (activity) activity->begin(RunActivity::Phase::Compiling, passName(pass.id));
-        Result<PassProgram> program = compilePassProgram(manifest, pass);
-        if (activity) activity->idle();
+    Result<PassProgram> compile(const ManifestDesc& manifest, const PassDesc& pass, const PassSource& source) {
+        Result<PassProgram> program = [&] {
+            GpuActivity::Compiling compiling(*gpu, passName(pass.id));
+            return compilePassProgram(manifest, pass, source);
+        }();
         if (program && program->browserPreprocessed) {
             Diagnostic notice;
             notice.severity = Severity::Notice;
@@ -140,15 +76,23 @@ struct Renderer::Impl {
 };
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-Renderer::~Renderer() = default;
+Renderer::~Renderer() {
+    // Its draws' fences go with it (the context is current while a renderer lives).
+    if (impl_) impl_->gpu->clear();
+}
 
 Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest, const PassGraph& graph,
-                                                   const RendererDesc& desc, const ChannelMedia& images) {
+                                                   const RendererDesc& desc, const ChannelMedia& images,
+                                                   std::span<const PassSource> sources) {
     if (Status features = checkRequiredGlFeatures(); !features) return features.error();
     auto impl = std::make_unique<Impl>();
     impl->allocate = desc.allocate ? desc.allocate : TextureAllocator(createRenderTexture);
-    impl->activity = desc.activity;
-    impl->watchDraws = desc.watchDraws && desc.activity;
+    if (!desc.gpu) return Error("Renderer::create: no GpuActivity (the context's gpuActivity())", Code::Internal);
+    if (sources.size() != manifest.passes.size())
+        return Error("Renderer::create: " + std::to_string(sources.size()) + " prepared sources for " +
+                         std::to_string(manifest.passes.size()) + " passes (planPlayer prepares them)",
+                     Code::Internal);
+    impl->gpu = desc.gpu;
     const int w = desc.width, h = desc.height;
     const std::array<float, 3> canvas{float(w), float(h), 1.0f};
 
@@ -157,7 +101,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
     std::vector<Diagnostic> problems;
     std::vector<PassProgram> programs;
     for (size_t p = 0; p < graph.passes.size(); ++p) {
-        Result<PassProgram> program = impl->compile(manifest, manifest.passes[p]);
+        Result<PassProgram> program = impl->compile(manifest, manifest.passes[p], sources[p]);
         if (!program) {
             mergeCompileProblems(problems, program.error().diagnostics, manifest);
             continue;
@@ -207,7 +151,7 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
     Impl& s = *impl_;
     // Videos and audio to this frame's time, before any pass reads them. A decoder that fails
     // mid-run (a file truncated on disk) keeps its last frame; the failure was the file's.
-    if (s.inputs.updateTimed(u.time, u.frame, s.activity) && s.watchDraws) s.pending.forgetPublished();
+    if (s.inputs.updateTimed(u.time, u.frame, s.gpu->activity())) s.gpu->forgetPublished();
     glBindVertexArray(s.vertexArray.id());
     glViewport(0, 0, width_, height_);
     glDisable(GL_BLEND);
@@ -217,7 +161,7 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
         const bool isImage = pass.plan.targetBuffer < 0 && !isCube;
         if (isImage && !renderImage) continue;
         // A driver may block here while earlier passes draw: say which one.
-        if (s.watchDraws) s.pending.publish(*s.activity);
+        s.gpu->publishPending();
         if (!isCube) {
             GLuint target = isImage ? s.imageTarget.framebuffer.id()
                                     : s.buffers[pass.plan.targetBuffer]->slot(slotWritten(step)).framebuffer.id();
@@ -248,7 +192,7 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
             const int size = s.cube->size();
             glViewport(0, 0, size, size);
             glUniform4f(loc.viewport, 0.0f, 0.0f, float(size), float(size));
-            if (s.watchDraws) s.pending.beforeDraw(*s.activity, passName(pass.plan.id), u.frame);
+            s.gpu->beforeDraw(passName(pass.plan.id), u.frame);
             for (int face = 0; face < 6; ++face) {
                 glBindFramebuffer(GL_FRAMEBUFFER, s.cube->faceFramebuffer(slotWritten(step), face));
                 float corners[15] = {};
@@ -259,12 +203,12 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
             glViewport(0, 0, width_, height_);
             s.cube->generateMipmaps(slotWritten(step));
         } else {
-            if (s.watchDraws) s.pending.beforeDraw(*s.activity, passName(pass.plan.id), u.frame);
+            s.gpu->beforeDraw(passName(pass.plan.id), u.frame);
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }
         // Mipmaps of a buffer are regenerated only when some channel samples it with `mipmap`.
         if (!isImage && !isCube) s.buffers[pass.plan.targetBuffer]->generateMipmaps(slotWritten(step));
-        if (s.watchDraws) s.pending.add(passName(pass.plan.id), u.frame);
+        s.gpu->afterDraw(passName(pass.plan.id), u.frame);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     s.lastStep = step;
@@ -274,6 +218,7 @@ bool Renderer::hasBuffer(int index) const { return impl_->buffers[index].has_val
 
 void Renderer::readBufferSlot(int index, int slot, std::vector<float>& out) const {
     const RenderTexture& target = impl_->buffers[index]->slot(slot);
+    GpuActivity::Wait wait(impl_->gpu);
     out.resize(static_cast<std::size_t>(width_) * height_ * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer.id());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -288,10 +233,6 @@ void Renderer::writeBufferSlot(int index, int slot, std::span<const float> rgba)
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
     glBindTexture(GL_TEXTURE_2D, 0);
     buffer.generateMipmaps(slot);
-}
-
-void Renderer::publishPendingDraws() {
-    if (impl_->watchDraws) impl_->pending.publish(*impl_->activity);
 }
 
 void Renderer::updateKeyboard(std::span<const std::uint8_t> texels) { impl_->inputs.updateKeyboard(texels); }
@@ -331,8 +272,9 @@ void Renderer::clearBuffers() {
     if (impl_->cube) impl_->cube->clear();
 }
 
-Status Renderer::replaceProgram(std::size_t index, const ManifestDesc& manifest, const PassDesc& pass) {
-    Result<PassProgram> program = impl_->compile(manifest, pass);
+Status Renderer::replaceProgram(std::size_t index, const ManifestDesc& manifest, const PassDesc& pass,
+                                const PassSource& source) {
+    Result<PassProgram> program = impl_->compile(manifest, pass, source);
     if (!program) return program.error();
     PassRuntime& runtime = impl_->passes.at(index);
     runtime.program = std::move(*program);
@@ -356,7 +298,10 @@ void Renderer::takeBuffersFrom(Renderer& old) {
     impl_->lastStep = old.impl_->lastStep;
 }
 
-void Renderer::finish() { glFinish(); }
+void Renderer::finish() {
+    GpuActivity::Wait wait(impl_->gpu);
+    glFinish();
+}
 
 const std::vector<Diagnostic>& Renderer::compileNotices() const { return impl_->compileNotices; }
 
@@ -373,11 +318,13 @@ PassOutput Renderer::output(PassId pass) const {
 
 void Renderer::readRgba32f(PassId pass, std::vector<float>& out) const {
     const PassOutput source = output(pass);
+    GpuActivity::Wait wait(impl_->gpu);
     out.resize(static_cast<size_t>(width_) * height_ * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, source.framebuffer);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     if (source.format == PixelFormat::Rgba8) {
-        std::vector<std::uint8_t> bytes(out.size());
+        std::vector<std::uint8_t>& bytes = impl_->readBytes;
+        bytes.resize(out.size());
         glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
         for (size_t i = 0; i < bytes.size(); ++i) out[i] = bytes[i] / 255.0f;
     } else {
@@ -390,6 +337,7 @@ bool Renderer::hasCube() const { return impl_->cube.has_value(); }
 
 void Renderer::readCubeFace(int face, std::vector<float>& out, int& size) const {
     const CubeTarget& cube = *impl_->cube;
+    GpuActivity::Wait wait(impl_->gpu);
     size = cube.size();
     out.resize(static_cast<std::size_t>(size) * size * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, cube.faceFramebuffer(slotWritten(impl_->lastStep), face));
@@ -400,6 +348,7 @@ void Renderer::readCubeFace(int face, std::vector<float>& out, int& size) const 
 
 void Renderer::readCubeSlot(int slot, std::vector<float>& out, int& size) const {
     const CubeTarget& cube = *impl_->cube;
+    GpuActivity::Wait wait(impl_->gpu);
     size = cube.size();
     const std::size_t face = static_cast<std::size_t>(size) * size * 4;
     out.resize(6 * face);
@@ -426,12 +375,14 @@ void Renderer::writeCubeSlot(int slot, std::span<const float> faces) {
 
 void Renderer::readRgba8(PassId pass, std::vector<std::uint8_t>& out) const {
     const PassOutput source = output(pass);
+    GpuActivity::Wait wait(impl_->gpu);
     out.resize(static_cast<size_t>(width_) * height_ * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, source.framebuffer);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     if (source.format == PixelFormat::Rgba32f) {
         // Convert as GL does when writing float colour to a UNORM8 target.
-        std::vector<float> floats(out.size());
+        std::vector<float>& floats = impl_->readFloats;
+        floats.resize(out.size());
         glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, floats.data());
         toUnorm8(floats, out);
     } else {

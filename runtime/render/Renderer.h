@@ -15,28 +15,27 @@
 #include <glm/vec4.hpp>
 
 #include "core/Result.h"
-#include "core/RunActivity.h"
+#include "gl/GpuActivity.h"
 #include "graph/PassGraph.h"
 #include "image/Image.h"
 #include "manifest/ManifestDesc.h"
 #include "media/ChannelMedia.h"
 #include "render/RenderTargets.h"
+#include "shader/PassSource.h"
 
 namespace toyhost {
 
 struct RendererDesc {
+    // The context's published activity (GlContext::gpuActivity()): compiling publishes the pass,
+    // each draw is followed (when the context is watched), and every readback and finish() below
+    // publishes the pass the GPU is still drawing around its wait, so callers never do. Required.
+    GpuActivity* gpu = nullptr;
     int width = 0;                 // canvas size, already validated
     int height = 0;
     // The Image pass renders into RGBA8 (what the screen shows) unless its raw float output is
     // wanted (EXR capture of Image, tests).
     bool floatImageTarget = false;
     TextureAllocator allocate;     // empty: createRenderTexture
-    // For a watchdog (set by runs with a frame or compile time limit): compiling publishes the
-    // pass; with `watchDraws`, a fence follows each pass's draw and the oldest pass the GPU has
-    // not finished is published before anything that may block (publishPendingDraws), so a
-    // runaway shader can be named. Nothing waits for the fences.
-    RunActivity* activity = nullptr;
-    bool watchDraws = false;
 };
 
 // Per-frame uniform values; the caller owns the clock and the inputs.
@@ -62,17 +61,15 @@ struct PassOutput {
 
 class Renderer {
 public:
+    // `sources`: each pass's prepared texts, in manifest.passes' order (PlayerPlan::sources).
     static Result<std::unique_ptr<Renderer>> create(const ManifestDesc& manifest, const PassGraph& graph,
-                                                    const RendererDesc& desc, const ChannelMedia& images);
+                                                    const RendererDesc& desc, const ChannelMedia& images,
+                                                    std::span<const PassSource> sources);
     ~Renderer();
 
     // Runs every buffer, then Image when `renderImage`. `step` picks the ping-pong slots
     // (graph/PassGraph.h); it must go up by one per call.
     void renderFrame(const FrameUniforms& uniforms, std::uint64_t step, bool renderImage = true);
-
-    // With watchDraws: tells the watchdog which pass the GPU is still drawing (the oldest
-    // unfinished), or that it is idle. Call before and after a call that may wait for the GPU.
-    void publishPendingDraws();
 
     // New keyboard texels (256*3 bytes, row 0 first); call only when they changed.
     void updateKeyboard(std::span<const std::uint8_t> texels);
@@ -84,8 +81,10 @@ public:
     // Every buffer's both slots to zero (a restart: frame 0 starts from cleared buffers).
     void clearBuffers();
 
-    // Recompiles pass `index` (graph order) from `pass`; on failure the old program stays.
-    Status replaceProgram(std::size_t index, const ManifestDesc& manifest, const PassDesc& pass);
+    // Recompiles pass `index` (graph order) from `pass`'s prepared texts; on failure the old
+    // program stays.
+    Status replaceProgram(std::size_t index, const ManifestDesc& manifest, const PassDesc& pass,
+                          const PassSource& source);
     // For a renderer rebuilt from a changed manifest: takes the content of every buffer that
     // `old` also has (moving the textures when their layout is the same, else copying).
     void takeBuffersFrom(Renderer& old);

@@ -19,6 +19,7 @@ Result<std::vector<float>> renderSound(GlContext& context, const ManifestDesc& m
                                        const SoundRenderDesc& desc) {
     if (!manifest.sound) return Error("the shadertoy has no Sound pass (mainSound)", Code::SoundMissing);
     const PassDesc& pass = *manifest.sound;
+    if (!desc.source) return Error("renderSound: no prepared source (PlayerPlan::soundSource)", Code::Internal);
     const double seconds = desc.seconds > 0 ? desc.seconds : defaults::kSoundSeconds;
     if (Status current = context.makeCurrent(); !current) return current.error();
 
@@ -31,9 +32,11 @@ Result<std::vector<float>> renderSound(GlContext& context, const ManifestDesc& m
     Result<PassBindings> bindings = bindChannels(pass, samplers, media, textures, bind);
     if (!bindings) return bindings.error();
 
-    if (desc.activity) desc.activity->begin(RunActivity::Phase::Compiling, "Sound");
-    Result<PassProgram> program = compilePassProgram(manifest, pass);
-    if (desc.activity) desc.activity->idle();
+    GpuActivity& gpu = context.gpuActivity();
+    Result<PassProgram> program = [&] {
+        GpuActivity::Compiling compiling(gpu, "Sound");
+        return compilePassProgram(manifest, pass, *desc.source);
+    }();
     if (!program) return program.error();
 
     const int side = defaults::kSoundBlockSide;
@@ -72,10 +75,11 @@ Result<std::vector<float>> renderSound(GlContext& context, const ManifestDesc& m
         glUniform1f(u.timeOffset, static_cast<float>(static_cast<double>(first) / defaults::kSampleRate));
         glUniform1i(u.sampleOffset, static_cast<GLint>(first));
         // GL cannot be interrupted: a watchdog sees which block has been drawing for how long.
-        if (desc.activity) desc.activity->begin(RunActivity::Phase::Drawing, "Sound", blockIndex);
+        RunActivity* activity = gpu.activity();
+        if (activity) activity->begin(RunActivity::Phase::Drawing, "Sound", blockIndex);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glReadPixels(0, 0, side, side, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-        if (desc.activity) desc.activity->idle();
+        if (activity) activity->idle();
         decodeSoundBlock(pixels, block);
         const std::size_t count = std::min(perBlock, samples - first);
         stereo.insert(stereo.end(), block.begin(), block.begin() + static_cast<std::ptrdiff_t>(count * 2));

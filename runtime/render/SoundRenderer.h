@@ -9,24 +9,25 @@
 #include <vector>
 
 #include "core/Result.h"
-#include "core/RunActivity.h"
 #include "gl/GlContext.h"
 #include "manifest/ManifestDesc.h"
 #include "media/ChannelMedia.h"
+#include "shader/PassSource.h"
 
 namespace toyhost {
 
 struct SoundRenderDesc {
     double seconds = 0;  // 0: the site's 180 s (core/Defaults.h)
-    // For a watchdog: each block's draw and readback is published as Drawing pass "Sound", with
-    // the block's number as the frame, so that a runaway mainSound can be ended from outside.
-    RunActivity* activity = nullptr;
+    // The Sound pass's texts, prepared off the GL thread (PlayerPlan::soundSource). Required.
+    const PassSource* source = nullptr;
     // Asked between blocks; true stops the rendering with a Code::Interrupted error.
     std::function<bool()> stopRequested;
 };
 
 // Interleaved stereo samples (left, right, ...) of `manifest`'s Sound pass, seconds * 44100 pairs,
-// its channels from `media` (made by planPlayer). The Sound pass may read images, cubemaps and
+// its channels from `media` (made by planPlayer). For a watchdog attached to `context`
+// (GlContext::gpuActivity()), each block's draw and readback is published as Drawing pass
+// "Sound" with the block's number as the frame, so that a runaway mainSound can be ended. The Sound pass may read images, cubemaps and
 // volumes; any other channel is an error naming it.
 Result<std::vector<float>> renderSound(GlContext& context, const ManifestDesc& manifest, const ChannelMedia& media,
                                        const SoundRenderDesc& desc = {});

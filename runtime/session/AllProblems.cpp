@@ -17,12 +17,16 @@ Error withCompileProblems(const SessionOptions& options, Error failure) {
     }
     Result<ManifestDesc> manifest = loadShadertoy(options.target);
     if (!manifest) return failure;
+    // The texts first (a child process for the browser-style expansion), then GL only compiles.
+    std::vector<PassSource> sources;
+    for (const PassDesc& pass : manifest->passes) sources.push_back(preparePassSource(*manifest, pass));
     HeadlessOptions headless;
     headless.platform = options.eglPlatform;
     Result<std::shared_ptr<GlContext>> context = createHeadlessContext(headless);
     if (!context) return failure;  // the inputs' problems are still worth reporting alone
-    for (const PassDesc& pass : manifest->passes) {
-        Result<PassProgram> program = compilePassProgram(*manifest, pass);
+    for (std::size_t i = 0; i < manifest->passes.size(); ++i) {
+        const PassDesc& pass = manifest->passes[i];
+        Result<PassProgram> program = compilePassProgram(*manifest, pass, sources[i]);
         if (!program) mergeCompileProblems(failure.diagnostics, program.error().diagnostics, *manifest);
     }
     return failure;

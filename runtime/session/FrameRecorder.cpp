@@ -69,7 +69,8 @@ Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSetti
     const int growTo = settings.encoderThreads > 0 ? 0 : maxEncoderThreads();
     recorder->pool_ = std::make_unique<EncoderPool>(*recorder->sink_, threads, settings.memoryCapBytes, growTo);
     if (!settings.synchronous && settings.pass != PassId::CubeA) {
-        Result<ReadbackRing> ring = ReadbackRing::create(recorder->width_, recorder->height_, recorder->format_);
+        Result<ReadbackRing> ring = ReadbackRing::create(recorder->width_, recorder->height_, recorder->format_,
+                                                         ReadbackRing::kDefaultSlots, &recorder->context_->gpuActivity());
         if (!ring) return ring.error();
         recorder->ring_.emplace(std::move(*ring));
     }
@@ -154,7 +155,7 @@ Status FrameRecorder::capture(const Player& player, int frame) {
         }
         {
             Stopwatch readback{readbackSeconds_};
-            readFramebuffer(output.framebuffer, width_, height_, format_, **pixels);
+            readFramebuffer(output.framebuffer, width_, height_, format_, **pixels, &context_->gpuActivity());
         }
         ++captured_;
         scanFloatFrame(frame, **pixels);

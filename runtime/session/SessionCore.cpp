@@ -30,13 +30,17 @@ bool hasBuffers(const ManifestDesc& manifest) {
 }  // namespace
 
 SessionCore::SessionCore(SessionPlan plan, std::shared_ptr<GlContext> context, SessionObserver& observer, Watchdog* watchdog)
-    : plan_(std::move(plan)), context_(std::move(context)), observer_(observer), watchdog_(watchdog) {}
+    : plan_(std::move(plan)), context_(std::move(context)), observer_(observer), watchdog_(watchdog) {
+    // Everything that renders or waits on the context publishes there for the watchdog.
+    if (context_) context_->gpuActivity().attach(activity(), watchdog_ && watchdog_->watchesDraws());
+}
 
 SessionCore::~SessionCore() {
     // GL objects go while their context is current; the recorder's encoders stop first.
     if (context_) (void)context_->makeCurrent();
     recording_.reset();
     player_.reset();
+    if (context_) context_->gpuActivity().attach(nullptr, false);  // the watchdog may go first
 }
 
 RunActivity* SessionCore::activity() { return watchdog_ ? &watchdog_->activity() : nullptr; }
@@ -105,8 +109,6 @@ Status SessionCore::createPlayer(PlayerPlan shadertoy) {
     desc.height = *o.height;
     desc.floatImage = o.floatImage || (plan_.output && plan_.output->format() == OutputFormat::Exr &&
                                        o.capturePass == PassId::Image);
-    desc.activity = activity();
-    desc.watchDraws = watchdog_ && watchdog_->watchesDraws();
     Result<std::unique_ptr<Player>> made = Player::create(context_, std::move(shadertoy), desc);
     if (!made) return made.error();
     player_ = std::move(*made);
@@ -176,11 +178,8 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     player_->step(time, events, renderImage);
     renderSeconds_ += secondsBetween(stepStarted, Clock::now());
 
-    // Readbacks may wait for the GPU: the watchdog is told which pass it is still drawing.
-    player_->publishPendingDraws();
     if (recording_)
         if (Status recorded = recording_->rendered(*player_, frame); !recorded) return recorded;
-    player_->publishPendingDraws();
     if (o.checkFinite) checkBuffers(frame);
     // The first frame waits for the GPU once, so that its time is real.
     if (o.finishEachFrame || framesRendered_ == 0) {
@@ -286,7 +285,6 @@ Result<SessionReport> SessionCore::finishRound() {
     report_.name = name_;
     report_.frames = framesRendered_;
     if (recording_ && recording_->begun()) {
-        player_->publishPendingDraws();
         Status completed = recording_->complete();
         // A signal during the final writes still ends the run as interrupted (exit 130/143),
         // whatever the encoders managed; an interrupted video is discarded even if it was just

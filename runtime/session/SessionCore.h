@@ -129,7 +129,6 @@ public:
     void readRgba32f(PassId pass, std::vector<float>& out) const { player_->readRgba32f(pass, out); }
     // Waits for the GPU (the watchdog sees which pass it still draws).
     void finish() { player_->finish(); }
-    void publishPendingDraws() { player_->publishPendingDraws(); }
 
 private:
     friend struct SessionCoreAccess;  // tests: the Player itself

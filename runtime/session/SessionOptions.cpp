@@ -7,6 +7,7 @@
 #include "core/ChildProcess.h"
 #include "core/Defaults.h"
 #include "capture/SoundFile.h"
+#include "capture/VideoEncoderChoice.h"
 #include "export/LoadShadertoy.h"
 #include "session/SettingChecks.h"
 #include "timing/FrameClock.h"
@@ -253,6 +254,10 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     Result<PlayerPlan> plan = planPlayer(std::move(*manifest), o.media);
     if (!plan) return plan.error();
     run.shadertoy = std::move(*plan);
+    // --codec auto tries the hardware encoders with short ffmpeg runs; the choice is kept for the
+    // process, so made here, off the GL thread, the recorder (made on it) finds it ready.
+    if (run.output && run.output->format() == OutputFormat::Video && o.video.codec == "auto")
+        (void)chooseAutoVideoEncoder(run.output->extension());
     return run;
 }
 

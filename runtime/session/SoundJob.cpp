@@ -16,8 +16,8 @@ namespace fs = std::filesystem;
 Result<std::vector<float>> SoundJob::render(const PlayerPlan& shadertoy, double seconds) {
     SoundRenderDesc desc;
     desc.seconds = seconds;
-    desc.activity = activity_;
     desc.stopRequested = stopRequested_;
+    if (shadertoy.soundSource) desc.source = &*shadertoy.soundSource;
     return renderSound(context_, shadertoy.manifest, shadertoy.images, desc);
 }
 

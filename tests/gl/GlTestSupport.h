@@ -52,6 +52,21 @@ protected:
     static inline std::shared_ptr<GlContext> context_;
 };
 
+// A watchdog's view of the suite's context for one test: `activity` is attached (what the session
+// does with its watchdog) until the end of the scope, also when an assertion ends the test early.
+class AttachedActivity {
+public:
+    AttachedActivity(GlContext& context, RunActivity& activity, bool watchDraws = false) : context_(context) {
+        context_.gpuActivity().attach(&activity, watchDraws);
+    }
+    ~AttachedActivity() { context_.gpuActivity().attach(nullptr, false); }
+    AttachedActivity(const AttachedActivity&) = delete;
+    AttachedActivity& operator=(const AttachedActivity&) = delete;
+
+private:
+    GlContext& context_;
+};
+
 // The fixed time step of headless runs: frame n at iTime = n / fps.
 inline FrameTime fixedStep(int frame, double fps = 60.0) {
     return FrameTime{frame / fps, 1.0 / fps, fps, glm::vec4(0.0f)};

@@ -509,6 +509,39 @@ TEST_F(EveryInput, ShadersMesasPreprocessorRefusesCompileAsInBrowsers) {
     EXPECT_NE(run.output.find("undefinedThing"), std::string::npos) << run.output;
 }
 
+// The browser-style expansion runs GCC's cpp, a child process: it is prepared with the plan, off
+// the GL thread, so that creating the player (on the GL thread) only compiles. With no cpp to be
+// found once the plan is made, the shader Mesa refuses still compiles from the plan's text.
+TEST_F(EveryInput, TheBrowserExpansionIsInThePlanBeforeGl) {
+    const fs::path dir = shadertoyFolder(
+        "preprocess_planned",
+        {{"image.glsl", "#define NEG(x) -x\nvoid mainImage(out vec4 c, in vec2 f) {\n"
+                        "  float k = NEG(-.7071);\n  c = vec4(k, 0.0, 0.0, 1.0); }\n"}},
+        R"({"passes": {"Image": {"source": "image.glsl"}}})");
+    auto manifest = loadShadertoy(dir);
+    ASSERT_TRUE(manifest) << manifest.error().text();
+    auto plan = planPlayer(std::move(*manifest), MediaOptions{});
+    ASSERT_TRUE(plan) << plan.error().text();
+    ASSERT_EQ(plan->sources.size(), 1u);
+    ASSERT_TRUE(plan->sources[0].browserText) << "the expansion is made while planning";
+
+    const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+    ::setenv("PATH", "", 1);  // no cpp from here on
+    PlayerDesc desc;
+    desc.width = 1;
+    desc.height = 1;
+    desc.floatImage = true;
+    auto player = Player::create(context_, std::move(*plan), desc);
+    ::setenv("PATH", path.c_str(), 1);
+    ASSERT_TRUE(player) << player.error().text();
+    (*player)->step(fixedStep(0));
+    std::vector<float> pixels;
+    (*player)->readRgba32f(PassId::Image, pixels);
+    EXPECT_NEAR(pixels[0], 0.7071f, 1e-6);
+    ASSERT_EQ((*player)->compileNotices().size(), 1u);
+    EXPECT_EQ((*player)->compileNotices()[0].code, Code::ShaderPreprocessed);
+}
+
 TEST_F(EveryInput, AUsersOwnLowpMacroCompiles) {
     const fs::path dir = shadertoyFolder(
         "lowp_macro",

@@ -6,6 +6,8 @@
 #include <GLES3/gl3.h>
 
 #include <limits>
+#include <optional>
+#include <thread>
 
 #include <toyhost/Session.h>
 #include <toyhost/Version.h>
@@ -255,6 +257,52 @@ TEST(LibraryApi, ErrorsAreDataNamingThePassAndLine) {
     Result<Shadertoy> notJson = Shadertoy::fromExportJson("{\"Shader\": ", "given.json");
     ASSERT_FALSE(notJson.ok());
     EXPECT_NE(notJson.error().text().find("given.json"), std::string::npos) << notJson.error().text();
+}
+
+// A reload planned on another thread (prepareReload) and applied on the session's GL thread: the
+// new code needs the browser-style expansion (a cpp child), and with no cpp to be found while
+// the reload is applied, it still compiles: the GL thread only compiled.
+TEST(LibraryApi, AReloadIsPlannedOffTheGlThreadAndAppliedOnIt) {
+    const fs::path dir = freshOutputDir("library-api/prepared-reload");
+    writeFile(dir / "manifest.json", R"({"passes": {"Image": {"source": "image.glsl"}}})");
+    writeFile(dir / "image.glsl", "void mainImage(out vec4 c, in vec2 f) { c = vec4(0.25, 0.0, 0.0, 1.0); }\n");
+    Result<Shadertoy> first = Shadertoy::load(dir);
+    ASSERT_TRUE(first.ok()) << first.error().text();
+    writeFile(dir / "image.glsl", "#define NEG(x) -x\nvoid mainImage(out vec4 c, in vec2 f) {\n"
+                                  "  c = vec4(NEG(-.5), 0.0, 0.0, 1.0); }\n");
+    Result<Shadertoy> second = Shadertoy::load(dir);
+    ASSERT_TRUE(second.ok()) << second.error().text();
+    SessionSettings settings;
+    settings.width = 1;
+    settings.height = 1;
+
+    const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+    Result<Reloaded> reloaded = Error("not applied", Code::Internal);
+    Result<Reloaded> again = Error("not applied", Code::Internal);
+    std::vector<float> pixel(4);
+    runOnGlThread([&] {
+        Result<std::unique_ptr<Session>> session = Session::createHeadless(*first, settings);
+        if (!session) {
+            ADD_FAILURE() << session.error().text();
+            return;
+        }
+        // Planned on a thread of its own while the session stays on this one.
+        std::optional<PreparedReload> prepared;
+        std::thread planner([&] { prepared.emplace((*session)->prepareReload(*second)); });
+        planner.join();
+        ::setenv("PATH", "", 1);  // no cpp while the GL thread applies the reload
+        reloaded = (*session)->reload(std::move(*prepared));
+        ::setenv("PATH", path.c_str(), 1);
+        again = (*session)->reload(std::move(*prepared));
+        if (Status stepped = (*session)->step(); !stepped) ADD_FAILURE() << stepped.error().text();
+        if (Status read = (*session)->read("Image", std::span<float>(pixel)); !read) ADD_FAILURE() << read.error().text();
+    });
+    ASSERT_TRUE(reloaded.ok()) << reloaded.error().text();
+    EXPECT_TRUE(reloaded->applied);
+    EXPECT_TRUE(reloaded->problems.empty()) << (reloaded->problems.empty() ? "" : reloaded->problems[0].message);
+    EXPECT_NEAR(pixel[0], 0.5f, 1.0f / 255) << "the new code runs";
+    ASSERT_FALSE(again.ok()) << "a PreparedReload is used once";
+    EXPECT_EQ(again.error().first().code, Code::Usage);
 }
 
 }  // namespace

@@ -134,8 +134,9 @@ TEST_F(SoundRenderer, EachBlockIsPublishedAsDrawingTheSoundPass) {
     ASSERT_TRUE(plan) << plan.error().text();
     RunActivity activity;
     SoundRenderDesc desc;
+    desc.source = &*plan->soundSource;
     desc.seconds = 20;  // 4 blocks of 262144 samples
-    desc.activity = &activity;
+    const AttachedActivity attached(*context_, activity);
     // A watchdog's view, sampled from another thread while the blocks draw.
     std::atomic<bool> done{false};
     std::atomic<int> drawingSound{0}, maxBlock{-1};
@@ -165,6 +166,7 @@ TEST_F(SoundRenderer, AStopRequestEndsItBetweenBlocksAsInterrupted) {
     ASSERT_TRUE(plan) << plan.error().text();
     int asked = 0;
     SoundRenderDesc desc;  // 180 s: 31 blocks
+    desc.source = &*plan->soundSource;
     desc.stopRequested = [&] { return ++asked == 3; };
     Result<std::vector<float>> stereo = renderSound(*context_, plan->manifest, plan->images, desc);
     ASSERT_FALSE(stereo);
@@ -179,7 +181,9 @@ TEST_F(SoundRenderer, AChannelTheSoundPassCannotReadIsNamed) {
         "Sound": {"source": "sound.glsl", "channels": {"iChannel1": {"webcam": true}}}}})");
     Result<PlayerPlan> plan = soundPlan(dir);
     ASSERT_TRUE(plan) << plan.error().text();
-    Result<std::vector<float>> stereo = renderSound(*context_, plan->manifest, plan->images, {});
+    SoundRenderDesc desc;
+    desc.source = &*plan->soundSource;
+    Result<std::vector<float>> stereo = renderSound(*context_, plan->manifest, plan->images, desc);
     ASSERT_FALSE(stereo);
     EXPECT_EQ(formatDiagnostic(stereo.error().first()),
               "error: Sound / iChannel1: the Sound pass is rendered before any frame, so it cannot read a webcam channel "

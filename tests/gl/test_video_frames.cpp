@@ -161,7 +161,7 @@ TEST_F(VideoFrames, AFrameTheDecoderHasNotReachedIsWaitedForWhereAWatchdogSeesIt
     PlayerDesc desc;
     desc.width = 1;
     desc.height = 1;
-    desc.activity = &activity;
+    const AttachedActivity attached(*context_, activity);
     auto player = Player::create(context_, std::move(*plan), desc);
     ASSERT_TRUE(player) << player.error().text();
     (*player)->step(fixedStep((*player)->frame(), 30.0));  // frame 0: decoded at open

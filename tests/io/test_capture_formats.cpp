@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <limits>
+#include <unistd.h>
 
 #include "capture/FrameBytes.h"
 #include "capture/VideoEncoderChoice.h"
@@ -137,4 +140,58 @@ TEST(VideoEncoderChoice, AutoUsesAHardwareEncoderThatWorksElseSaysItFellBackToSo
     const VideoEncoderChoice again = chooseAutoVideoEncoder(".mkv");
     EXPECT_EQ(again.codec, choice.codec);
     EXPECT_EQ(chooseAutoVideoEncoder(".webm").codec, "libvpx-vp9");
+}
+
+namespace {
+// A stand-in ffmpeg that says which copy of it ran (into `marker`) and writes what it reads to its
+// output (the last argument), as ffmpeg writes the video there.
+void writeFakeFfmpeg(const std::filesystem::path& bin, const std::string& name, const std::filesystem::path& marker) {
+    const std::filesystem::path script = bin / "ffmpeg";
+    std::ofstream(script) << "#!/bin/sh\necho " << name << " > '" << marker.string()
+                          << "'\nfor last; do :; done\ncat > \"$last\"\n";
+    std::filesystem::permissions(script, std::filesystem::perms::owner_all);
+}
+}  // namespace
+
+// The recorder makes its VideoSink on the render thread: ffmpeg must not start there (fork/exec,
+// ffmpeg's start-up), but with the first frame, on the encoder thread that writes it. The copy of
+// ffmpeg installed after start() returned is the one that runs.
+TEST(VideoSink, FfmpegStartsWithTheFirstFrameNotWithTheSink) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("toyhost-videosink-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "bin");
+    const fs::path marker = dir / "which-ffmpeg-ran";
+    writeFakeFfmpeg(dir / "bin", "at-start", marker);
+    const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+    ::setenv("PATH", ((dir / "bin").string() + ":" + path).c_str(), 1);
+
+    Result<std::unique_ptr<VideoSink>> sink = VideoSink::start(dir / "out.mp4", 2, 2, 30.0, {});
+    ASSERT_TRUE(sink) << sink.error().text();
+    EXPECT_FALSE((*sink)->launched());
+    writeFakeFfmpeg(dir / "bin", "with-the-first-frame", marker);
+
+    CapturedFrame frame{0, 2, 2, PixelFormat::Rgba8, std::vector<std::byte>(2 * 2 * 4, std::byte{7})};
+    EncodeScratch scratch;
+    const Status written = (*sink)->write(frame, scratch);
+    EXPECT_TRUE((*sink)->launched());
+    const Status closed = (*sink)->close();
+    ::setenv("PATH", path.c_str(), 1);
+    ASSERT_TRUE(written) << written.error().text();
+    ASSERT_TRUE(closed) << closed.error().text();
+    std::string ran;
+    std::ifstream(marker) >> ran;
+    EXPECT_EQ(ran, "with-the-first-frame");
+    EXPECT_EQ(fs::file_size(dir / "out.mp4"), 16u) << "the frame's bytes went to the stand-in";
+    fs::remove_all(dir);
+}
+
+TEST(VideoSink, AMissingFfmpegFailsTheSinkAtOnce) {
+    const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+    ::setenv("PATH", "/nonexistent-toyhost-bin", 1);
+    Result<std::unique_ptr<VideoSink>> sink =
+        VideoSink::start(std::filesystem::temp_directory_path() / "toyhost-never.mp4", 2, 2, 30.0, {});
+    ::setenv("PATH", path.c_str(), 1);
+    ASSERT_FALSE(sink);
+    EXPECT_NE(sink.error().text().find("ffmpeg: program not found in PATH"), std::string::npos) << sink.error().text();
 }

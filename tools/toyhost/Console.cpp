@@ -110,16 +110,13 @@ void endAfterWatchdog(const Diagnostic& d, int exitCode) {
 }
 
 int runSession(const SessionOptions& options, bool quiet, const SessionRunner& driver) {
-    const SessionOptions limits = withDefaults(options);
-    WatchdogDesc desc;
-    desc.frameLimit = *limits.frameTimeout;
-    desc.compileLimit = *limits.compileTimeout;
-    desc.watchSignals = true;
-    desc.acknowledge = [](const Diagnostic& d) { say("toyhost: " + formatDiagnostic(d)); };
-    desc.expire = [](const Diagnostic& d, int exitCode) { endAfterWatchdog(d, exitCode); };
-    Watchdog watchdog(std::move(desc));
+    WatchdogHooks hooks;
+    hooks.watchSignals = true;
+    hooks.acknowledge = [](const Diagnostic& d) { say("toyhost: " + formatDiagnostic(d)); };
+    hooks.expire = [](const Diagnostic& d, int exitCode) { endAfterWatchdog(d, exitCode); };
+    const std::unique_ptr<Watchdog> watchdog = makeWatchdog(options, std::move(hooks));
     ConsoleObserver observer(quiet);
-    Result<SessionReport> report = driver(options, observer, &watchdog);
+    Result<SessionReport> report = driver(options, observer, watchdog.get());
     if (!report) return fail(report.error());
     if (!options.watch) observer.summary(*report);
     return kExitOk;

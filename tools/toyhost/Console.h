@@ -14,6 +14,7 @@
 #include "session/SessionObserver.h"
 #include "session/SessionOptions.h"
 #include "session/Watchdog.h"
+#include "session/WatchdogSetup.h"
 
 namespace toyhost::cli {
 

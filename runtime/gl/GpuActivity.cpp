@@ -1,0 +1,81 @@
+#include "gl/GpuActivity.h"
+
+#include <algorithm>
+
+#include <GLES3/gl3.h>
+
+namespace toyhost {
+
+namespace {
+GLsync sync(void* fence) { return static_cast<GLsync>(fence); }
+bool signaled(void* fence) { return glClientWaitSync(sync(fence), 0, 0) != GL_TIMEOUT_EXPIRED; }
+}  // namespace
+
+void GpuActivity::attach(RunActivity* activity, bool watchDraws) {
+    activity_ = activity;
+    watchDraws_ = watchDraws && activity;
+}
+
+GpuActivity::Compiling::Compiling(GpuActivity& gpu, const char* pass) : gpu_(gpu) {
+    if (gpu_.activity_) gpu_.activity_->begin(RunActivity::Phase::Compiling, pass);
+}
+GpuActivity::Compiling::~Compiling() {
+    if (gpu_.activity_) gpu_.activity_->idle();
+}
+
+GpuActivity::Wait::Wait(GpuActivity* gpu) : gpu_(gpu) {
+    if (gpu_) gpu_->publishPending();
+}
+GpuActivity::Wait::~Wait() {
+    if (gpu_) gpu_->publishPending();
+}
+
+void GpuActivity::beforeDraw(const char* pass, int frame) {
+    if (!watchDraws_ || count_ != 0) return;
+    activity_->begin(RunActivity::Phase::Drawing, pass, frame);
+    drawPublished_ = true;
+}
+
+void GpuActivity::afterDraw(const char* pass, int frame) {
+    if (!watchDraws_) return;
+    if (count_ == items_.size()) dropOldest();
+    items_[count_++] = {glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0), pass, frame};
+    // The pass published before its draw call keeps its start time.
+    if (drawPublished_ && count_ == 1) published_ = items_[0].fence;
+    drawPublished_ = false;
+}
+
+void GpuActivity::publishPending() {
+    if (!watchDraws_) return;
+    // The GPU finishes passes in order: when the newest is done, all are (one query, the usual
+    // case between frames); else the oldest unfinished is searched from the front.
+    if (count_ && signaled(items_[count_ - 1].fence)) dropAll();
+    while (count_ && signaled(items_[0].fence)) dropOldest();
+    if (!count_) {
+        published_ = nullptr;
+        activity_->idle();
+        return;
+    }
+    if (items_[0].fence == published_) return;
+    published_ = items_[0].fence;
+    activity_->begin(RunActivity::Phase::Drawing, items_[0].pass, items_[0].frame);
+}
+
+void GpuActivity::clear() {
+    dropAll();
+    published_ = nullptr;
+    drawPublished_ = false;
+}
+
+void GpuActivity::dropAll() {
+    for (std::size_t i = 0; i < count_; ++i) glDeleteSync(sync(items_[i].fence));
+    count_ = 0;
+}
+
+void GpuActivity::dropOldest() {
+    glDeleteSync(sync(items_[0].fence));
+    std::move(items_.begin() + 1, items_.begin() + static_cast<std::ptrdiff_t>(count_), items_.begin());
+    --count_;
+}
+
+}  // namespace toyhost
