@@ -8,6 +8,7 @@
 #include <ctime>
 #include <limits>
 
+#include "api/ShadertoyAccess.h"
 #include "core/AtomicFile.h"
 #include "core/Defaults.h"
 #include "input/InputScript.h"
@@ -32,8 +33,8 @@ std::string localNow() {
 // The run settings both get: the caller's, else A's manifest defaults, else B's, else toyhost's.
 SessionSettings commonSettings(const Shadertoy& a, const Shadertoy& b, const SessionSettings& given) {
     SessionSettings s = given;
-    const RunDefaults& da = a.desc().runDefaults;
-    const RunDefaults& db = b.desc().runDefaults;
+    const RunDefaults& da = ShadertoyAccess::desc(a).runDefaults;
+    const RunDefaults& db = ShadertoyAccess::desc(b).runDefaults;
     if (!s.width && !s.height) {
         s.width = da.width.value_or(db.width.value_or(defaults::kCanvasWidth));
         s.height = da.height.value_or(db.height.value_or(defaults::kCanvasHeight));
@@ -63,9 +64,10 @@ Result<CompareReport> compareShadertoys(const Shadertoy& a, const Shadertoy& b, 
     if (!hasPass(a, pass)) return fileError(a.path().string(), "compare: it has no pass " + pass, Code::Usage);
     if (!hasPass(b, pass)) return fileError(b.path().string(), "compare: it has no pass " + pass, Code::Usage);
     if (settings.frames < 0) return Error("compare: frames must not be negative", Code::Usage);
+    const RunDefaults& da = ShadertoyAccess::desc(a).runDefaults;
+    const RunDefaults& db = ShadertoyAccess::desc(b).runDefaults;
     const int frames = settings.frames > 0 ? settings.frames
-                                           : a.desc().runDefaults.frames.value_or(
-                                                 b.desc().runDefaults.frames.value_or(defaults::kCompareFrames));
+                                           : da.frames.value_or(db.frames.value_or(defaults::kCompareFrames));
 
     std::optional<MouseScriptPlayer> mouse;
     std::optional<KeyScriptPlayer> keys;

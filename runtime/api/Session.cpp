@@ -8,6 +8,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "api/ShadertoyAccess.h"
 #include "gl/CurrentContext.h"
 #include "gl/GlStateGuard.h"
 #include "gl/GlThread.h"
@@ -142,7 +143,7 @@ namespace {
 Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const SessionSettings& settings, bool headless) {
     auto impl = std::make_unique<Session::Impl>();
     SessionOptions options;
-    options.shadertoy = std::make_shared<const ManifestDesc>(shadertoy.desc());
+    options.shadertoy = std::make_shared<const ManifestDesc>(ShadertoyAccess::desc(shadertoy));
     options.target = shadertoy.path();
     if (settings.width || settings.height) {
         options.width = settings.width;
@@ -366,7 +367,7 @@ Status Session::resize(int w, int h) {
 }
 
 Result<Reloaded> Session::reload(const Shadertoy& next) {
-    Result<PlayerPlan> plan = planPlayer(next.desc(), impl_->core->plan().options.media);
+    Result<PlayerPlan> plan = planPlayer(ShadertoyAccess::desc(next), impl_->core->plan().options.media);
     ReloadOutcome outcome = impl_->withGl([&] { return impl_->core->reload(std::move(plan)); });
     return Reloaded{outcome.applied, outcome.structureChanged, std::move(outcome.recompiled), std::move(outcome.problems)};
 }
