@@ -14,6 +14,7 @@
 #include "capture/EncoderPool.h"
 #include "capture/OutputPattern.h"
 #include "capture/VideoSink.h"
+#include "core/Defaults.h"
 #include "core/Result.h"
 #include "image/ImageStats.h"
 #include "manifest/ManifestDesc.h"
@@ -27,12 +28,12 @@ struct RecorderSettings {
     OutputPattern output;
     PassId pass = PassId::Image;
     bool synchronous = false;      // glReadPixels and encoding on the render thread
-    int pngLevel = 1;
+    int pngLevel = defaults::kPngLevel;
     ExrSettings exr;
     int encoderThreads = 0;        // 0: defaultEncoderThreads()
-    std::size_t memoryCapBytes = std::size_t(256) << 20;
+    std::size_t memoryCapBytes = defaults::kCaptureMemoryMiB << 20;
     VideoSettings video;
-    double fps = 60;               // the video's frame rate
+    double fps = defaults::kFps;   // the video's frame rate
     int rawStreamFd = 1;           // where "--out -" writes (stdout)
     // Real-time window runs: when the encoders are behind by the memory cap, drop the frame
     // instead of making the render (UI) thread wait. Off: every frame is written (back-pressure).

@@ -12,6 +12,7 @@
 
 #include <optional>
 
+#include "core/Defaults.h"
 #include "timing/FrameTime.h"
 #include "timing/SiteFrameRate.h"
 
@@ -22,7 +23,7 @@ struct RealTimeClockOptions {
     double startTime = 0;            // iTime of the first frame (and after a restart)
     // The iTimeDelta of a frame that has no previous one (the first, and after a restart or a
     // pause) and of a frame forced while paused.
-    double nominalFps = 60;
+    double nominalFps = defaults::kFps;
 };
 
 class RealTimeClock {

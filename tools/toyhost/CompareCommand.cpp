@@ -193,6 +193,11 @@ void CompareCommand::define(CLI::App& compare) {
     const CLI::Validator wholeNumber = cli::wholeNumberOption();
     const CLI::Validator decimalNumber = cli::decimalNumberOption();
     const CLI::Validator timeoutSeconds = cli::timeoutSecondsOption();
+    char fpsDefault[32];
+    std::snprintf(fpsDefault, sizeof fpsDefault, "%g", defaults::kFps);
+    std::string fpsHelp = "Fixed time step: frame n has iTime = start + n/F (default ";
+    fpsHelp += fpsDefault;
+    fpsHelp += ")";
     compare.add_option("a", a_, "The first shadertoy (folder, manifest or Shadertoy JSON export): the reference")->required();
     compare.add_option("b", b_, "The second shadertoy, rendered with the same settings and inputs")->required();
     compare.add_option("--size", size_, "Canvas size WxH (default: A's manifest defaults, else " +
@@ -202,7 +207,7 @@ void CompareCommand::define(CLI::App& compare) {
                        "Frames to render and compare (default: A's manifest defaults, else " +
                            std::to_string(defaults::kCompareFrames) + ")")
         ->transform(wholeNumber);
-    compare.add_option("--fps", fps_, "Fixed time step: frame n has iTime = start + n/F (default 60)")->check(decimalNumber);
+    compare.add_option("--fps", fps_, fpsHelp)->check(decimalNumber);
     compare.add_option("--start-time", startTime_, "iTime of frame 0, in seconds (default 0)")->check(decimalNumber);
     compare.add_option("--date", date_, "iDate at frame 0, YYYY-MM-DDTHH:MM:SS (default: now, the same for both)");
     compare.add_option("--pass", pass_,
