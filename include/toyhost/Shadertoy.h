@@ -15,7 +15,8 @@
 
 namespace toyhost {
 
-struct ManifestDesc;  // toyhost's internal description (runtime/manifest)
+struct ManifestDesc;     // toyhost's internal description (runtime/manifest)
+struct ShadertoyAccess;  // how the runtime reaches it (runtime/api/ShadertoyAccess.h)
 
 class TOYHOST_API Shadertoy {
 public:
@@ -37,11 +38,10 @@ public:
     // Things the user should know about the loading (lenient imports), one per diagnostic.
     const std::vector<Diagnostic>& notices() const;
 
-    // toyhost's own description (not part of the stable API).
-    const ManifestDesc& desc() const { return *desc_; }
+private:
+    friend struct ShadertoyAccess;
     explicit Shadertoy(std::shared_ptr<const ManifestDesc> desc) : desc_(std::move(desc)) {}
 
-private:
     std::shared_ptr<const ManifestDesc> desc_;
 };
 

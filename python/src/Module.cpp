@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include <toyhost/Defaults.h>
 #include <toyhost/Diagnostic.h>
 #include <toyhost/Input.h>
 #include <toyhost/Shadertoy.h>
@@ -17,7 +18,6 @@
 #include "Errors.h"
 #include "Gil.h"
 #include "SessionBinding.h"
-#include "core/Defaults.h"
 
 namespace py = pybind11;
 using namespace toyhost;
@@ -117,8 +117,26 @@ PYBIND11_MODULE(_toyhost, m) {
     toyhost::python::bindSession(m);
     toyhost::python::bindCompare(m);
     m.def("version_string", [] { return std::string(versionString()); });
-    // The defaults a session uses for what the caller leaves out (core/Defaults.h, their one place).
-    m.attr("DEFAULT_WIDTH") = defaults::kCanvasWidth;
-    m.attr("DEFAULT_HEIGHT") = defaults::kCanvasHeight;
-    m.attr("DEFAULT_FPS") = defaults::kFps;
+    // The defaults a session uses for what the caller leaves out (toyhost::runDefaults), a new dict
+    // at every call so that a caller changing it changes nothing else.
+    m.def("defaults", [] {
+        const Defaults d = runDefaults();
+        py::dict out;
+        out["width"] = d.width;
+        out["height"] = d.height;
+        out["fps"] = d.fps;
+        out["min_fps"] = d.minFps;
+        out["max_fps"] = d.maxFps;
+        out["max_canvas_side"] = d.maxCanvasSide;
+        out["frames"] = d.frames;
+        out["compare_frames"] = d.compareFrames;
+        out["capture_every"] = d.captureEvery;
+        out["png_level"] = d.pngLevel;
+        out["capture_memory_mib"] = d.captureMemoryMiB;
+        out["sample_rate"] = d.sampleRate;
+        out["sound_seconds"] = d.soundSeconds;
+        out["frame_timeout"] = d.frameTimeoutSeconds;
+        out["compile_timeout"] = d.compileTimeoutSeconds;
+        return out;
+    });
 }

@@ -24,6 +24,30 @@ def require_shared(relative):
         pytest.skip(f"needs ../shared/{relative} beside the repository")
 
 
+def egl_device_platform_absence():
+    """Why this machine's EGL has no device platform, or None when it has one, asked of libEGL
+    directly (tests/support/EglDevicePlatform.h, the same rule): absent means libEGL resolves no
+    eglQueryDevicesEXT or eglGetPlatformDisplayEXT, or lists no device. Anything else (a failing
+    query, a device that does not start) is there but broken, which a test must report, not skip."""
+    import ctypes
+
+    try:
+        egl = ctypes.CDLL("libEGL.so.1")
+    except OSError:
+        return "no libEGL.so.1"
+    egl.eglGetProcAddress.restype = ctypes.c_void_p
+    egl.eglGetProcAddress.argtypes = [ctypes.c_char_p]
+    query = egl.eglGetProcAddress(b"eglQueryDevicesEXT")
+    if not query or not egl.eglGetProcAddress(b"eglGetPlatformDisplayEXT"):
+        return "libEGL has no eglQueryDevicesEXT or eglGetPlatformDisplayEXT (no EGL_EXT_platform_device)"
+    query_devices = ctypes.CFUNCTYPE(ctypes.c_uint, ctypes.c_int32, ctypes.c_void_p,
+                                     ctypes.POINTER(ctypes.c_int32))(query)
+    count = ctypes.c_int32(0)
+    if query_devices(0, None, ctypes.byref(count)) and count.value == 0:
+        return "EGL lists no device"
+    return None
+
+
 def run_cli(*args):
     """Runs the toyhost CLI; returns (exit code, stdout + stderr text)."""
     done = subprocess.run([str(TOYHOST_BIN), *map(str, args)], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,

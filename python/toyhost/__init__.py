@@ -31,8 +31,16 @@ __version__ = _toyhost.version_string()
 __all__ = [
     "load", "Session", "compare", "compare_images", "CompareReport", "FrameDifference", "Shadertoy", "Diagnostic", "InputEvent", "Reloaded", "key_code", "Error", "UsageError", "InputError",
     "ManifestError", "CompileError", "OutputError", "GlError", "StoppedError", "WatchdogError", "InternalError",
-    "__version__",
+    "defaults", "__version__",
 ]
+
+
+def defaults():
+    """toyhost's defaults as a new dict: what a Session takes for what it is not given ("width",
+    "height", "fps"), the bounds settings are checked against ("min_fps", "max_fps",
+    "max_canvas_side"), and the CLI's ("frames", "capture_every", "png_level", "capture_memory_mib",
+    "frame_timeout", "compile_timeout" in seconds, "compare_frames", "sample_rate", "sound_seconds")."""
+    return _toyhost.defaults()
 
 
 def load(path_or_json, name="export.json", folder=None):
@@ -69,7 +77,7 @@ class Session:
         width, height = (0, 0) if size is None else _size(size)
         if fps is not None and not float(fps) > 0:  # the C++ API takes 0 for "the default"
             raise UsageError(f"fps: must be more than 0, got {fps}")
-        self._fps = float(fps) if fps is not None else _toyhost.DEFAULT_FPS
+        self._fps = float(fps) if fps is not None else _toyhost.defaults()["fps"]
         self._native = _toyhost.NativeSession(
             shadertoy, width, height, float(fps or 0), float(start_time), date or "",
             [os.fspath(f) for f in media_folders],

@@ -8,6 +8,7 @@
 #include <ctime>
 #include <limits>
 
+#include "api/ShadertoyAccess.h"
 #include "core/Defaults.h"
 #include "manifest/ManifestDesc.h"
 
@@ -30,8 +31,8 @@ std::string localNow() {
 SessionSettings commonSettings(const Shadertoy& a, const Shadertoy& b, const SessionSettings& given,
                                const std::filesystem::path& mouseScript, const std::filesystem::path& keyScript) {
     SessionSettings s = given;
-    const RunDefaults& da = a.desc().runDefaults;
-    const RunDefaults& db = b.desc().runDefaults;
+    const RunDefaults& da = ShadertoyAccess::desc(a).runDefaults;
+    const RunDefaults& db = ShadertoyAccess::desc(b).runDefaults;
     if (!s.width && !s.height) {
         s.width = da.width.value_or(db.width.value_or(defaults::kCanvasWidth));
         s.height = da.height.value_or(db.height.value_or(defaults::kCanvasHeight));
@@ -57,9 +58,10 @@ Result<CompareReport> compareShadertoys(const Shadertoy& a, const Shadertoy& b, 
     if (!hasPass(a, pass)) return fileError(a.path().string(), "compare: it has no pass " + pass, Code::Usage);
     if (!hasPass(b, pass)) return fileError(b.path().string(), "compare: it has no pass " + pass, Code::Usage);
     if (settings.frames < 0) return Error("compare: frames must not be negative", Code::Usage);
+    const RunDefaults& da = ShadertoyAccess::desc(a).runDefaults;
+    const RunDefaults& db = ShadertoyAccess::desc(b).runDefaults;
     const int frames = settings.frames > 0 ? settings.frames
-                                           : a.desc().runDefaults.frames.value_or(
-                                                 b.desc().runDefaults.frames.value_or(defaults::kCompareFrames));
+                                           : da.frames.value_or(db.frames.value_or(defaults::kCompareFrames));
 
     // Both sessions step through the same fixed-step input: the scripts replayed by each, the
     // caller's extra events given to both.

@@ -10,6 +10,7 @@
 #include <thread>
 #include <type_traits>
 
+#include "api/ShadertoyAccess.h"
 #include "capture/FrameStream.h"
 #include "gl/CurrentContext.h"
 #include "gl/GlStateGuard.h"
@@ -162,7 +163,7 @@ namespace {
 Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const SessionSettings& settings, bool headless) {
     auto impl = std::make_unique<Session::Impl>();
     SessionOptions options;
-    options.shadertoy = std::make_shared<const ManifestDesc>(shadertoy.desc());
+    options.shadertoy = std::make_shared<const ManifestDesc>(ShadertoyAccess::desc(shadertoy));
     options.target = shadertoy.path();
     if (settings.width || settings.height) {
         options.width = settings.width;
@@ -413,7 +414,7 @@ PreparedReload& PreparedReload::operator=(PreparedReload&&) noexcept = default;
 PreparedReload Session::prepareReload(const Shadertoy& next) const {
     // The media settings are fixed at creation: reading them races nothing the GL thread does.
     const MediaOptions& media = impl_->media;
-    return PreparedReload(std::make_unique<PreparedReload::Plan>(PreparedReload::Plan{impl_.get(), planPlayer(next.desc(), media)}));
+    return PreparedReload(std::make_unique<PreparedReload::Plan>(PreparedReload::Plan{impl_.get(), planPlayer(ShadertoyAccess::desc(next), media)}));
 }
 
 Result<Reloaded> Session::reload(PreparedReload prepared) {

@@ -1,5 +1,6 @@
 #include <toyhost/Shadertoy.h>
 
+#include "api/ShadertoyAccess.h"
 #include "export/LoadShadertoy.h"
 #include "export/ShadertoyExport.h"
 #include "manifest/ManifestDesc.h"
@@ -9,14 +10,14 @@ namespace toyhost {
 Result<Shadertoy> Shadertoy::load(const std::filesystem::path& path) {
     Result<ManifestDesc> desc = loadShadertoy(path);
     if (!desc) return desc.error();
-    return Shadertoy(std::make_shared<const ManifestDesc>(std::move(*desc)));
+    return ShadertoyAccess::make(std::move(*desc));
 }
 
 Result<Shadertoy> Shadertoy::fromExportJson(std::string_view json, std::string name, const std::filesystem::path& folder) {
     const std::filesystem::path where = folder.empty() ? std::filesystem::current_path() / name : folder / name;
     Result<ManifestDesc> desc = parseShadertoyExport(json, where);
     if (!desc) return desc.error();
-    return Shadertoy(std::make_shared<const ManifestDesc>(std::move(*desc)));
+    return ShadertoyAccess::make(std::move(*desc));
 }
 
 const std::string& Shadertoy::name() const { return desc_->name; }

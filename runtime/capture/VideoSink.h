@@ -14,6 +14,7 @@
 
 #include "capture/FrameSink.h"
 #include "core/ChildProcess.h"
+#include "core/Defaults.h"
 
 namespace toyhost {
 
@@ -31,7 +32,7 @@ struct VideoRequest {
     std::string container;         // ".mp4", ".webm", ".mov" or ".mkv"
     int width = 0;
     int height = 0;
-    double fps = 60;
+    double fps = defaults::kFps;
     VideoSettings settings;
 };
 

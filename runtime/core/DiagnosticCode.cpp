@@ -4,7 +4,7 @@ namespace toyhost {
 
 std::string_view codeName(Code code) {
     switch (code) {
-#define TOYHOST_CODE_TEXT(name, text, category) \
+#define TOYHOST_CODE_TEXT(name, number, text, category) \
     case Code::name: return text;
         TOYHOST_DIAGNOSTIC_CODES(TOYHOST_CODE_TEXT)
 #undef TOYHOST_CODE_TEXT
@@ -14,7 +14,7 @@ std::string_view codeName(Code code) {
 
 Category categoryOf(Code code) {
     switch (code) {
-#define TOYHOST_CODE_CATEGORY(name, text, category) \
+#define TOYHOST_CODE_CATEGORY(name, number, text, category) \
     case Code::name: return Category::category;
         TOYHOST_DIAGNOSTIC_CODES(TOYHOST_CODE_CATEGORY)
 #undef TOYHOST_CODE_CATEGORY

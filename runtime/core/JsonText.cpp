@@ -19,9 +19,17 @@ struct Level {
 
 std::string pathOf(const std::vector<Level>& levels, std::size_t upTo) {
     std::string path;
+    // Appended piece by piece: `"[" + std::to_string(...)` inserts at 0, where GCC 12 warns a false
+    // -Wrestrict (GCC bug 105651).
     for (std::size_t i = 0; i < upTo; ++i) {
-        if (levels[i].array) path += "[" + std::to_string(levels[i].index) + "]";
-        else path += (path.empty() ? "" : ".") + levels[i].key;
+        if (levels[i].array) {
+            path += '[';
+            path += std::to_string(levels[i].index);
+            path += ']';
+        } else {
+            if (!path.empty()) path += '.';
+            path += levels[i].key;
+        }
     }
     return path;
 }

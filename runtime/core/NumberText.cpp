@@ -33,7 +33,16 @@ bool looksDecimal(std::string_view text) {
     return i == text.size();
 }
 
-std::string shown(std::string_view text) { return "\"" + std::string(text) + "\""; }
+// Appended in order: `"\"" + std::string(...)` inserts at 0, where GCC 12 warns a false -Wrestrict
+// (GCC bug 105651).
+std::string shown(std::string_view text) {
+    std::string quoted;
+    quoted.reserve(text.size() + 2);
+    quoted += '"';
+    quoted += text;
+    quoted += '"';
+    return quoted;
+}
 
 // "0.1" and "1000000" rather than "0.100000" and "1e+06".
 std::string trimmed(double value) {

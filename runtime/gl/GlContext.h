@@ -6,39 +6,11 @@
 #pragma once
 
 #include <string>
-#include <string_view>
 
 #include "core/Result.h"
 #include "gl/GpuActivity.h"
 
 namespace toyhost {
-
-// Asks the driver to behave as WebGL does where Mesa differs by default: browsers (ANGLE)
-// initialise uninitialised locals, globals and fragment outputs to zero, and shaders on the site
-// rely on it; Mesa does it with its driconf option glsl_zero_init, read from the environment
-// when a display initialises. Call before any EGL display or GLFW window exists. A value the
-// user set in the environment is kept.
-void requestWebGlDriverBehaviour();
-
-// While it lives, stderr goes into a pipe; when it ends, what was written there goes to stderr
-// except the driver's announcement of glsl_zero_init ("ATTENTION: default value of option
-// glsl_zero_init overridden by environment.", printed by Mesa when a display initialises), which
-// would break toyhost's one-message errors. Lines other threads write meanwhile are kept, only
-// delayed. Wrap only the calls that initialise a display.
-class DriverStartupQuiet {
-public:
-    DriverStartupQuiet();
-    ~DriverStartupQuiet();
-    DriverStartupQuiet(const DriverStartupQuiet&) = delete;
-    DriverStartupQuiet& operator=(const DriverStartupQuiet&) = delete;
-
-    // `text` without the driver's glsl_zero_init announcement lines.
-    static std::string withoutAnnouncement(std::string_view text);
-
-private:
-    int savedStderr_ = -1;
-    int pipe_ = -1;  // read end
-};
 
 class GlSurface {
 public:

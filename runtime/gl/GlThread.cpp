@@ -1,12 +1,8 @@
 #include "gl/GlThread.h"
 
-#include <cstdlib>
 #include <fcntl.h>
 #include <pthread.h>
-#include <string>
 #include <unistd.h>
-
-#include "gl/GlContext.h"
 
 namespace toyhost {
 
@@ -23,7 +19,6 @@ Result<GlProcess> prepareGlProcess() {
         }
         process.closedAtStart[fd] = true;
     }
-    requestWebGlDriverBehaviour();
     Result<EglPlatform> platform = eglPlatformFromEnvironment();
     if (!platform) return platform.error();
     process.eglPlatform = *platform;

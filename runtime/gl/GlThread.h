@@ -1,8 +1,7 @@
-// GlThread: what a program that renders with toyhost sets up once, before any other thread exists
-// (environment changes are not thread-safe): the driver hints that make Mesa behave as browsers
-// do (glsl_zero_init), the EGL platform TOYHOST_EGL_PLATFORM asks for, and standard streams that
-// are really open (a closed fd 1 would otherwise be reused by toyhost's own pipes, and raw frames
-// for stdout would go into them); then the thread every GL call runs on, with a stack large
+// GlThread: what a program that renders with toyhost sets up once, before any other thread exists:
+// the EGL platform TOYHOST_EGL_PLATFORM asks for, and standard streams that are really open (a
+// closed fd 1 would otherwise be reused by toyhost's own pipes, and raw frames for stdout would go
+// into them); then the thread every GL call runs on, with a stack large
 // enough for Mesa's recursive GLSL compiler. Every command and the compatibility runner use it.
 // No GL context needed (it makes none).
 #pragma once

@@ -69,13 +69,7 @@ Result<std::shared_ptr<EglDisplay>> shareDisplay(EGLDisplay handle, const std::s
     std::lock_guard lock(displaysMutex);
     if (auto it = displays().find(handle); it != displays().end())
         if (std::shared_ptr<EglDisplay> shared = it->second.lock()) return shared;
-    requestWebGlDriverBehaviour();
-    bool initialised = false;
-    {
-        DriverStartupQuiet quiet;
-        initialised = eglInitialize(handle, nullptr, nullptr);
-    }
-    if (!initialised) return eglFailure("Failed to initialize the " + platform + " display");
+    if (!eglInitialize(handle, nullptr, nullptr)) return eglFailure("Failed to initialize the " + platform + " display");
     auto shared = std::make_shared<EglDisplay>(handle, platform);
     displays()[handle] = shared;
     return shared;

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "core/Defaults.h"
 #include "core/Result.h"
 
 namespace toyhost {
@@ -14,7 +15,7 @@ namespace toyhost {
 inline constexpr double kMaxAudioSeconds = 30.0 * 60.0;
 
 struct AudioClip {
-    int sampleRate = 44100;
+    int sampleRate = static_cast<int>(defaults::kSampleRate);
     std::vector<float> mono;  // -1..1, down-mixed to one channel
     double seconds() const { return sampleRate > 0 ? static_cast<double>(mono.size()) / sampleRate : 0.0; }
 };
@@ -26,7 +27,7 @@ struct AudioClip {
 // WebAudio's AnalyserNode applies. Errors: Code::AudioFfmpegMissing when ffmpeg is not in PATH,
 // Code::AudioDecode when ffmpeg fails (with the last lines it printed) or finds no samples,
 // Code::AudioTooLong past kMaxAudioSeconds, the I/O error for a missing file or a folder.
-Result<AudioClip> decodeAudioFile(const std::filesystem::path& path, int sampleRate = 44100);
+Result<AudioClip> decodeAudioFile(const std::filesystem::path& path, int sampleRate = static_cast<int>(defaults::kSampleRate));
 
 
 // The out.size() samples that end at playback time `time` (seconds): sample index

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/ChildProcess.h"
+#include "core/Defaults.h"
 #include "core/Result.h"
 #include "core/TemporaryFiles.h"
 
@@ -27,7 +28,7 @@ public:
     static bool isLiveSource(const std::string& spec);
     // Starts ffmpeg and waits (up to 5 s) for the first samples; an error names the source and
     // says what ffmpeg said when it could not open it.
-    static Result<std::unique_ptr<LiveAudio>> open(const std::string& spec, int sampleRate = 44100);
+    static Result<std::unique_ptr<LiveAudio>> open(const std::string& spec, int sampleRate = static_cast<int>(defaults::kSampleRate));
     ~LiveAudio();
     LiveAudio(const LiveAudio&) = delete;
     LiveAudio& operator=(const LiveAudio&) = delete;

@@ -17,6 +17,7 @@
 
 #include "core/AtomicFile.h"
 #include "core/ChildProcess.h"
+#include "core/Defaults.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -462,7 +463,7 @@ std::int64_t triangle(std::int64_t tick, std::int64_t period, std::int64_t span)
 }  // namespace
 
 void videoStandInFrame(double seconds, Image8& out) {
-    constexpr int kWidth = kVideoStandInWidth, kHeight = kVideoStandInHeight;
+    constexpr int kWidth = defaults::kVideoStandInWidth, kHeight = defaults::kVideoStandInHeight;
     constexpr std::int64_t kTicksPerSecond = 600;
     constexpr std::int64_t kPeriod = static_cast<std::int64_t>(kVideoStandInDuration) * kTicksPerSecond;
     std::int64_t tick = std::isfinite(seconds) ? std::llround(seconds * kTicksPerSecond) % kPeriod : 0;

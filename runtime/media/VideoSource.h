@@ -120,13 +120,11 @@ private:
     std::atomic<int> starts_{0};  // read by other threads (VideoStream::decoderStarts)
 };
 
-// The stand-in for a `video` or `webcam` channel whose source is not available: 640x360, looping
-// every 10 seconds, scrolling colour bars over the top three quarters, a grey ramp scrolling the
-// other way along the bottom quarter (so a flipped upload is obvious) and a disc moving along a
-// closed path. The same bytes on every run and machine (integer arithmetic on the time rounded to
+// The stand-in for a `video` or `webcam` channel whose source is not available: 640x360
+// (defaults::kVideoStandInWidth/Height), looping every 10 seconds, scrolling colour bars over the
+// top three quarters, a grey ramp scrolling the other way along the bottom quarter (so a flipped
+// upload is obvious) and a disc moving along a closed path. The same bytes on every run and machine (integer arithmetic on the time rounded to
 // 1/600 s). Reuses `out`'s buffer: after the first call a frame costs no allocation.
-inline constexpr int kVideoStandInWidth = 640;
-inline constexpr int kVideoStandInHeight = 360;
 inline constexpr double kVideoStandInDuration = 10.0;
 void videoStandInFrame(double seconds, Image8& out);
 // iChannelTime for the stand-in at iTime `seconds` (wraps every kVideoStandInDuration).

@@ -14,6 +14,7 @@
 
 #include <glm/vec4.hpp>
 
+#include "core/Defaults.h"
 #include "core/Result.h"
 #include "gl/GpuActivity.h"
 #include "graph/PassGraph.h"
@@ -45,7 +46,7 @@ struct FrameUniforms {
     // shows frame N at frame N only with the exact time); narrowed to float only for glUniform.
     double time = 0;
     float timeDelta = 0;
-    float frameRate = 60;
+    float frameRate = static_cast<float>(defaults::kFps);
     glm::vec4 mouse{0};
     glm::vec4 date{0};
 };

@@ -16,6 +16,7 @@
 #include "capture/FrameStream.h"
 #include "capture/OutputPattern.h"
 #include "capture/VideoSink.h"
+#include "core/Defaults.h"
 #include "core/Result.h"
 #include "image/ImageStats.h"
 #include "manifest/ManifestDesc.h"
@@ -31,12 +32,12 @@ struct RecorderSettings {
     int frames = 0;        // the run's frames (0: no end) and its capture-every (FrameStream's rule)
     int captureEvery = 1;
     bool synchronous = false;      // glReadPixels and encoding on the render thread
-    int pngLevel = 1;
+    int pngLevel = defaults::kPngLevel;
     ExrSettings exr;
     int encoderThreads = 0;        // 0: defaultEncoderThreads()
-    std::size_t memoryCapBytes = std::size_t(256) << 20;
+    std::size_t memoryCapBytes = defaults::kCaptureMemoryMiB << 20;
     VideoSettings video;
-    double fps = 60;               // the video's frame rate
+    double fps = defaults::kFps;   // the video's frame rate
     int rawStreamFd = 1;           // where "--out -" writes (stdout)
     // Real-time window runs: when the encoders are behind by the memory cap, drop the frame
     // instead of making the render (UI) thread wait. Off: every frame is written (back-pressure).

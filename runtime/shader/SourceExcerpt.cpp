@@ -93,7 +93,9 @@ std::string SourceView::directiveOf(int n) const {
     while (!rest.empty() && isSpace(rest.front())) rest.remove_prefix(1);
     std::size_t end = 0;
     while (end < rest.size() && isIdentifierChar(rest[end])) ++end;
-    return std::string(rest.substr(0, end)).insert(0, "#");
+    std::string directive = "#";  // appended, not insert(0, "#"): GCC 12 warns a false -Wrestrict there
+    directive += rest.substr(0, end);
+    return directive;
 }
 
 int SourceView::previousCodeLine(int n) const {

@@ -2,32 +2,39 @@
 # Checks the runtime's layering against the module graph runtime/CMakeLists.txt declares (written
 # at configure time as "module: dep dep ..." lines): every `#include "other/..."` in a module's
 # files names the module itself or one of its declared dependencies, and the graph has no cycle,
-# so no module includes a higher one. Prints every violation.
-# Usage: check_includes.sh SOURCE_DIR MODULES_TXT
+# so no module includes a higher one. Then the runtime's users, tools/*/ and python/src: each may
+# include the public headers (<toyhost/...>) and only the runtime modules its CLIENTS_TXT line
+# declares ("tools/compat: core player ...", written from toyhost_include_rules() calls at
+# configure time); a folder without a line may include the public headers only. Prints every
+# violation.
+# Usage: check_includes.sh SOURCE_DIR MODULES_TXT [CLIENTS_TXT]
 set -euo pipefail
-src="$1" graph="$2"
+src="$1" graph="$2" clients="${3:-}"
 declare -A deps
 while IFS=: read -r module list; do
   deps[$module]="$list"
 done < "$graph"
 
-# The module an included path belongs to: the longest declared module that is a prefix of its
-# folder ("drivers/window/WindowContext.h" -> drivers/window), or its first folder when none is.
+# The module an included path belongs to, into $target: the longest declared module that is a
+# prefix of its folder ("drivers/window/WindowContext.h" -> drivers/window), or its first folder
+# when none is. No subshell: the check runs over every include of the tree, several times in tests.
 module_of() {
-  local path="$1" best="" m
+  local path="$1" m
+  target=""
   for m in "${!deps[@]}"; do
-    if [[ "$path" == "$m/"* && ${#m} -gt ${#best} ]]; then best="$m"; fi
+    if [[ "$path" == "$m/"* && ${#m} -gt ${#target} ]]; then target="$m"; fi
   done
-  [[ -n "$best" ]] && echo "$best" || echo "${path%%/*}"
+  [[ -n "$target" ]] || target="${path%%/*}"
 }
+include_re='^[[:space:]]*#[[:space:]]*include[[:space:]]*["<]([^">]+)[">]'
 
 status=0
 for module in "${!deps[@]}"; do
   allowed=" $module ${deps[$module]} "
   while IFS= read -r line; do
     file="${line%%:*}"
-    included="$(sed -E 's/.*#include "([^"]+)".*/\1/' <<<"$line")"
-    target="$(module_of "$included")"
+    [[ "${line#*:}" =~ $include_re ]] || continue
+    module_of "${BASH_REMATCH[1]}"
     if [[ "$allowed" != *" $target "* ]]; then
       echo "layering: ${file#$src/} includes $target/, which $module does not declare (declared: ${deps[$module]:- none})"
       status=1
@@ -65,5 +72,49 @@ while (( remaining > 0 )); do
   fi
 done
 
-if (( status == 0 )); then echo "layering: ${#deps[@]} modules, every include follows the declared graph"; fi
+# The runtime's users. Their folders: every tools/*/ holding C++ sources, and python/src.
+declare -A uses
+if [[ -n "$clients" ]]; then
+  while IFS=: read -r folder list; do
+    [[ -z "$folder" ]] && continue
+    uses[$folder]="$list"
+    for module in $list; do
+      if [[ -z "${deps[$module]+x}" ]]; then
+        echo "layering: $folder declares runtime module $module, which runtime/CMakeLists.txt does not"
+        status=1
+      fi
+    done
+  done < "$clients"
+fi
+client_folders=()
+while IFS= read -r dir; do client_folders+=("${dir#"$src"/}"); done < <(
+  { find "$src/tools" -mindepth 1 -maxdepth 1 -type d 2>/dev/null; [[ -d "$src/python/src" ]] && echo "$src/python/src"; } | sort)
+clients_checked=0
+for folder in "${client_folders[@]}"; do
+  files="$(find "$src/$folder" -type f \( -name '*.h' -o -name '*.hpp' -o -name '*.cpp' -o -name '*.cc' \) | sort)"
+  [[ -z "$files" ]] && continue
+  clients_checked=$((clients_checked + 1))
+  allowed=" ${uses[$folder]:-} "
+  while IFS= read -r line; do
+    [[ -z "$line" ]] && continue
+    file="${line%%:*}"
+    [[ "${line#*:}" =~ $include_re ]] || continue
+    included="${BASH_REMATCH[1]}"
+    if [[ "$included" == *runtime/* ]]; then
+      echo "layering: ${file#$src/} includes $included by its path into runtime/"
+      status=1
+      continue
+    fi
+    module_of "$included"
+    [[ -z "${deps[$target]+x}" ]] && continue  # not a runtime module: the public headers, a library, its own
+    if [[ "$allowed" != *" $target "* ]]; then
+      echo "layering: ${file#$src/} includes $target/, which $folder does not declare (declared: ${uses[$folder]:- none: public headers only})"
+      status=1
+    fi
+  done < <(xargs grep -HE '^\s*#\s*include\s*["<][^">]+/' <<<"$files" || true)
+done
+
+if (( status == 0 )); then
+  echo "layering: ${#deps[@]} modules, every include follows the declared graph; $clients_checked users of the runtime include only what they declare"
+fi
 exit $status

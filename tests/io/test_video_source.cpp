@@ -23,6 +23,7 @@
 #include "Processes.h"
 #include "TestFolder.h"
 #include "core/ChildProcess.h"
+#include "core/Defaults.h"
 #include "media/VideoSource.h"
 #include "media/VideoStream.h"
 
@@ -397,9 +398,9 @@ TEST(VideoSource, AMissingCameraIsOneErrorNamingTheDevice) {
 TEST(VideoStandIn, IsDeterministicMovesWithTimeAndLoops) {
     Image8 a, b;
     videoStandInFrame(1.25, a);
-    EXPECT_EQ(a.width, kVideoStandInWidth);
-    EXPECT_EQ(a.height, kVideoStandInHeight);
-    ASSERT_EQ(a.rgba.size(), static_cast<std::size_t>(kVideoStandInWidth) * kVideoStandInHeight * 4);
+    EXPECT_EQ(a.width, defaults::kVideoStandInWidth);
+    EXPECT_EQ(a.height, defaults::kVideoStandInHeight);
+    ASSERT_EQ(a.rgba.size(), static_cast<std::size_t>(defaults::kVideoStandInWidth) * defaults::kVideoStandInHeight * 4);
     videoStandInFrame(1.25, b);
     EXPECT_EQ(a.rgba, b.rgba);
     videoStandInFrame(1.25 + 1.0 / 30, b);
@@ -423,7 +424,7 @@ TEST(VideoStandIn, TheDiscIsClippedAtTheRightAndTopEdges) {
     // pixel of the next row (and at the top end of its path, past the last row).
     Image8 frame;
     videoStandInFrame(2.5, frame);
-    const std::size_t row = static_cast<std::size_t>(kVideoStandInWidth) * 4;
+    const std::size_t row = static_cast<std::size_t>(defaults::kVideoStandInWidth) * 4;
     const std::uint8_t* next = frame.rgba.data() + 181 * row;  // x = 0 of the row above the centre
     // The colour bars there (shifted by 160 px at 2.5 s: bar 2, cyan), not the disc's white rim.
     EXPECT_EQ(int(next[0]), 0);

@@ -2,6 +2,7 @@
 // number of lines capped; and the frame counters that pick ping-pong slots.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 #include <string_view>
 
@@ -100,7 +101,7 @@ TEST(FrameSequence, ThePreviousSlotAfterARestartIsTheLastFrameWritten) {
 TEST(DiagnosticCode, EveryCodeHasItsOwnTextAndTheCategoryDecidesTheKind) {
     std::set<std::string_view> texts;
     int count = 0;
-#define TOYHOST_CHECK_CODE(name, text, category)                                   \
+#define TOYHOST_CHECK_CODE(name, number, text, category)                           \
     ++count;                                                                        \
     EXPECT_EQ(codeName(Code::name), std::string_view(text));                        \
     EXPECT_TRUE(texts.insert(codeName(Code::name)).second) << text << " is used twice"; \
@@ -112,4 +113,58 @@ TEST(DiagnosticCode, EveryCodeHasItsOwnTextAndTheCategoryDecidesTheKind) {
     EXPECT_EQ(Error("bad option", Code::UsageSize).category(), Category::Usage);
     EXPECT_EQ(Error("stopped", Code::Interrupted).category(), Category::Interrupted);
     EXPECT_EQ(categoryName(Category::Shader), "shader");
+}
+
+// The numbers compiled into programs that use the library: written out here, not generated from
+// the list, so that renumbering a code, reusing a number or adding a code without pinning its new
+// number fails. A new code gets the next free number and a row here; a row is never changed.
+TEST(DiagnosticCode, EveryNumberIsPinnedAndNeverChanges) {
+    const std::map<std::string_view, int> pinned = {
+        {"AudioDecode", 0}, {"AudioFfmpegMissing", 1}, {"AudioLive", 2}, {"AudioSettings", 3}, {"AudioTooLong", 4},
+        {"BufferNonFinite", 5}, {"Cancelled", 6}, {"CaptureDropped", 7}, {"CaptureException", 8}, {"CaptureFfmpeg", 9},
+        {"CaptureFormat", 10}, {"CaptureReadback", 11}, {"CaptureSize", 12}, {"CaptureStopped", 13}, {"CaptureWav", 14},
+        {"ChannelUnbound", 15}, {"CheckpointFormat", 16}, {"CheckpointMismatch", 17}, {"CubemapFaceSize", 18},
+        {"CubemapLayout", 19}, {"Unclassified", 20}, {"ExportDuplicate", 21}, {"ExportJson", 22}, {"ExportMissing", 23},
+        {"ExportMissingBuffer", 24}, {"ExportShape", 25}, {"ExportType", 26}, {"ExportUnsupportedInput", 27},
+        {"ExportValue", 28}, {"GlEgl", 29}, {"GlFeature", 30}, {"GlReadback", 31}, {"GlSetup", 32}, {"GlSound", 33},
+        {"GlTexture", 34}, {"GlTextureSize", 35}, {"ImageDecode", 36}, {"ImagePngLevel", 37}, {"ImageSize", 38},
+        {"ImageTooLarge", 39}, {"InspectRegion", 40}, {"Internal", 41}, {"Interrupted", 42}, {"IoBrokenPipe", 43},
+        {"IoExists", 44}, {"IoLinkLoop", 45}, {"IoNoSpace", 46}, {"IoNotAFile", 47}, {"IoNotAFolder", 48},
+        {"IoNotFound", 49}, {"IoRead", 50}, {"IoTooLarge", 51}, {"IoWrite", 52}, {"JsonDuplicateKey", 53},
+        {"ManifestField", 54}, {"ManifestJson", 55}, {"ManifestMediaNearMiss", 56}, {"ManifestMissing", 57},
+        {"ManifestReference", 58}, {"ManifestType", 59}, {"ManifestUnknownField", 60}, {"ManifestUnknownPass", 61},
+        {"ManifestUnused", 62}, {"ManifestValue", 63}, {"MediaNotFound", 64}, {"MediaSizeMismatch", 65},
+        {"MediaSupplied", 66}, {"MediaStandIn", 67}, {"MediaUnknownStandIn", 68}, {"Process", 69}, {"ScriptEvent", 70},
+        {"ScriptJson", 71}, {"ScriptKey", 72}, {"ShaderCompile", 73}, {"ShaderLink", 74}, {"ShaderNonAscii", 75},
+        {"ShaderNul", 76}, {"ShaderPreprocess", 77}, {"ShaderPreprocessed", 78}, {"SoundChannel", 79},
+        {"SoundEncode", 80}, {"SoundFfmpegMissing", 81}, {"SoundMissing", 82}, {"SoundSkipped", 83},
+        {"StateBuffers", 84}, {"StateSize", 85}, {"Usage", 86}, {"UsageDate", 87}, {"UsageOut", 88},
+        {"UsagePasses", 89}, {"UsageResume", 90}, {"UsageSize", 91}, {"VideoDecode", 92}, {"VideoDevice", 93},
+        {"VideoNoFfmpeg", 94}, {"VideoNoFrames", 95}, {"VideoNoStream", 96}, {"VideoProbe", 97}, {"VideoRate", 98},
+        {"VideoRead", 99}, {"VideoSize", 100}, {"VideoStillImage", 101}, {"VolumeDecode", 102},
+        {"WatchdogCompile", 103}, {"WatchdogFrame", 104}, {"WatchdogInput", 105}, {"WatchdogOutput", 106},
+        {"WatchChanged", 107}, {"WindowCreate", 108}, {"WindowHelp", 109}, {"WindowInit", 110}, {"WindowReload", 111},
+        {"WindowScreenshot", 112},
+    };
+    std::set<int> numbers;
+    std::size_t listed = 0;
+#define TOYHOST_PIN_CODE(name, number, text, category)                                                        \
+    ++listed;                                                                                                 \
+    EXPECT_EQ(static_cast<int>(Code::name), number) << #name;                                                 \
+    EXPECT_TRUE(numbers.insert(static_cast<int>(Code::name)).second) << #name << "'s number is used twice";   \
+    if (auto row = pinned.find(#name); row == pinned.end())                                                   \
+        ADD_FAILURE() << #name << " has no pinned number: add its row";                                       \
+    else                                                                                                      \
+        EXPECT_EQ(static_cast<int>(Code::name), row->second) << #name << " changed its number";
+    TOYHOST_DIAGNOSTIC_CODES(TOYHOST_PIN_CODE)
+#undef TOYHOST_PIN_CODE
+    // A pinned code that is gone: its number stays retired, its row moves to a comment.
+    EXPECT_EQ(listed, pinned.size()) << "a pinned code is no longer listed";
+
+    const std::pair<Category, int> categories[] = {
+        {Category::Usage, 0}, {Category::Input, 1}, {Category::Shader, 2}, {Category::Output, 3}, {Category::Gl, 4},
+        {Category::Interrupted, 5}, {Category::Watchdog, 6}, {Category::Internal, 7}, {Category::Report, 8},
+    };
+    for (const auto& [category, number] : categories)
+        EXPECT_EQ(static_cast<int>(category), number) << categoryName(category);
 }

@@ -29,7 +29,6 @@ Status acquireGlfw() {
     std::lock_guard lock(glfwMutex);
     if (glfwUsers == 0) {
         glfwSetErrorCallback(onGlfwError);
-        requestWebGlDriverBehaviour();
         if (!glfwInit())
             return Error("cannot open a window: " + lastGlfwError +
                              (displayAvailable() ? "" : "; no $DISPLAY or $WAYLAND_DISPLAY is set: use --headless"),
@@ -55,7 +54,6 @@ GLFWwindow* openWindow(const WindowOptions& options, int creationApi) {
     glfwWindowHint(GLFW_DEPTH_BITS, 0);
     glfwWindowHint(GLFW_STENCIL_BITS, 0);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-    DriverStartupQuiet quiet;  // the window's EGL display initialises here
     return glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
 }
 
