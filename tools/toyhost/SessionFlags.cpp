@@ -119,7 +119,7 @@ Status SessionFlags::applyTo(SessionOptions& o) const {
     if (startTime_) o.startTime = *startTime_;
     if (!date_.empty()) {
         Result<double> wallClock = parseWallClock(date_);
-        if (!wallClock) return settingError("date", wallClock.error().first().message, wallClock.error().first().code);
+        if (!wallClock) return settingError("date", wallClock.error().first().message);
         o.wallClock = *wallClock;
     }
     if (Status mouse = parseMouse(o.mouse); !mouse) return mouse;
@@ -150,7 +150,7 @@ Status SessionFlags::applyTo(SessionSettings& s, std::optional<glm::vec2>& mouse
     }
     if (!date_.empty()) {
         if (Result<double> wallClock = parseWallClock(date_); !wallClock)
-            return settingError("date", wallClock.error().first().message, wallClock.error().first().code);
+            return settingError("date", wallClock.error().first().message);
         s.date = date_;
     }
     if (Status parsed = parseMouse(mouse); !parsed) return parsed;
