@@ -1,5 +1,5 @@
 """render() through the library's frame stream: a frame comes as soon as its read completes (not
-once the next captured frame rendered), Ctrl-C stops a render within a frame, and a closed
+once the next captured frame rendered), Ctrl-C stops a render within two frames, and a closed
 session leaves no thread behind. No timing: the checks wait on the session's frame counter."""
 
 import os
@@ -28,7 +28,7 @@ def test_frame_0_comes_before_frame_100_renders(ocean):
         assert [i for i, _ in frames] == [100, 200, 300]
 
 
-def test_ctrl_c_stops_a_render_within_a_frame(ocean):
+def test_ctrl_c_stops_a_render_within_two_frames(ocean):
     with toyhost.Session(ocean, size=(160, 90), date=DATE) as session:
         frames = session.render(301, every=100)
         assert next(frames)[0] == 0

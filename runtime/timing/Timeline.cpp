@@ -9,9 +9,8 @@ Timeline::Timeline(TimelineDesc desc)
       keys_(desc_.keys) {}
 
 FrameTime Timeline::at(int frame, double fraction) const {
-    if (fraction == 0) return clock_.frameTime(frame);
-    const double time = desc_.startTime + (frame + fraction) / clock_.fps();
-    return {time, clock_.timeDelta(), clock_.fps(), dateOfTime(desc_.wallClockStart, desc_.startTime, time)};
+    // (frame + 0.0) / fps is frame / fps exactly: a whole frame's time is FrameClock's.
+    return atTime(desc_.startTime + (frame + fraction) / clock_.fps(), clock_.timeDelta(), clock_.fps());
 }
 
 FrameTime Timeline::atTime(double time, double timeDelta, double frameRate) const {
