@@ -7,17 +7,31 @@
 
 namespace toyhost {
 
+Status ImageSequenceSink::makeFolderOnce(const std::filesystem::path& path) {
+    const std::filesystem::path folder = path.parent_path();
+    if (folder.empty()) return okStatus();
+    const std::lock_guard<std::mutex> lock(foldersMutex_);
+    if (folders_.contains(folder)) return okStatus();
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (ec) return fileError(folder.string(), "cannot create folder: " + ec.message(), Code::IoWrite);
+    folders_.insert(folder);
+    return okStatus();
+}
+
 Status ImageSequenceSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
     const std::filesystem::path path = pattern_.pathFor(frame.frame);
+    if (Status folder = makeFolderOnce(path); !folder) return folder;
+    constexpr ParentFolders parents = ParentFolders::MustExist;
     Status written = okStatus();
     scratch.image.encodeSeconds = scratch.image.writeSeconds = 0;  // a file refused early took none
     if (pattern_.format() == OutputFormat::Exr) {
         if (frame.format != PixelFormat::Rgba32f)
             return fileError(path.string(), "EXR capture needs a float readback", Code::CaptureFormat);
-        written = writeExr(path, frame.width, frame.height, frame.rgba32f(), &scratch.image, exr_);
+        written = writeExr(path, frame.width, frame.height, frame.rgba32f(), &scratch.image, exr_, parents);
     } else {
         written = writePng(path, frame.width, frame.height, rgba8BottomUp(frame, scratch.bytes), pngLevel_,
-                           &scratch.image);
+                           &scratch.image, parents);
     }
     encodeNanos(scratch.image.encodeSeconds);
     writeNanos(scratch.image.writeSeconds);

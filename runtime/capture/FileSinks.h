@@ -3,6 +3,10 @@
 // CPU only, no GL needed.
 #pragma once
 
+#include <filesystem>
+#include <mutex>
+#include <set>
+
 #include "capture/FrameSink.h"
 #include "capture/OutputPattern.h"
 #include "core/FileDescriptor.h"
@@ -18,9 +22,17 @@ public:
     Status write(const CapturedFrame& frame, EncodeScratch& scratch) override;
 
 private:
+    // Creates the folder of `path` the first time a frame goes there; after that the folder must
+    // still exist (one that vanishes mid-run ends the run instead of being made again with only
+    // the later frames). Frames are written in parallel: the creation is done under the lock, so
+    // no frame is written into a folder another thread has yet to make.
+    Status makeFolderOnce(const std::filesystem::path& path);
+
     OutputPattern pattern_;
     int pngLevel_;
     ExrSettings exr_;
+    std::mutex foldersMutex_;
+    std::set<std::filesystem::path> folders_;  // created (or found) for an earlier frame
 };
 
 // The raw stream format: per frame width * height * 4 bytes, RGBA8, rows top first (like image

@@ -41,9 +41,9 @@ fs::path temporarySibling(const fs::path& path) {
 }
 
 Status writeFileAtomically(const fs::path& path,
-                           const std::function<Status(const fs::path&)>& write) {
+                           const std::function<Status(const fs::path&)>& write, ParentFolders parents) {
     std::error_code ec;
-    if (path.has_parent_path()) {
+    if (path.has_parent_path() && parents == ParentFolders::Create) {
         fs::create_directories(path.parent_path(), ec);
         if (ec) return fileError(path.parent_path().string(), "cannot create folder: " + ec.message(), Code::IoWrite);
     }

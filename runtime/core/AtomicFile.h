@@ -12,10 +12,17 @@
 
 namespace toyhost {
 
+// Whether a writer creates the folders above the file (a single output) or needs them to be there
+// (the frames of a sequence after the first: a folder that vanished mid-run is an error, not
+// silently made again with part of the frames).
+enum class ParentFolders { Create, MustExist };
+
 // Calls `write(tempPath)`, which must create the file at tempPath; on success renames it to
-// `path`, on failure removes the temporary file. Parent folders are created.
+// `path`, on failure removes the temporary file. Parent folders are created unless `parents`
+// says they must exist.
 Status writeFileAtomically(const std::filesystem::path& path,
-                           const std::function<Status(const std::filesystem::path&)>& write);
+                           const std::function<Status(const std::filesystem::path&)>& write,
+                           ParentFolders parents = ParentFolders::Create);
 
 // A unique hidden name beside `path` (".name.PID.N.partial"; a name too long for that gets a
 // shortened form with a hash, so any legal output name works) for output that is renamed into

@@ -53,7 +53,7 @@ struct FileCloser {
 }  // namespace
 
 Status writePng(const fs::path& path, int width, int height, std::span<const std::uint8_t> rgba,
-                int compressionLevel, ImageScratch* scratch) {
+                int compressionLevel, ImageScratch* scratch, ParentFolders parents) {
     if (Status size = checkSize(path, width, height, rgba.size()); !size) return size;
     if (compressionLevel < 0 || compressionLevel > 9)
         return fileError(path.string(), "PNG compression level must be 0..9, got " + std::to_string(compressionLevel),
@@ -97,7 +97,7 @@ Status writePng(const fs::path& path, int width, int height, std::span<const std
         if (std::fflush(file.get()) != 0 || std::ferror(file.get())) return ioError(path, "write failed", errno);
         if (std::fclose(file.release()) != 0) return ioError(path, "write failed", errno);
         return okStatus();
-    });
+    }, parents);
 }
 
 Result<Image8> readPng(const fs::path& path) { return loadImageFile(path); }
@@ -137,7 +137,7 @@ std::string exrCompressionNames() {
 }
 
 Status writeExr(const fs::path& path, int width, int height, std::span<const float> rgba, ImageScratch* scratch,
-                ExrSettings settings) {
+                ExrSettings settings, ParentFolders parents) {
     if (Status size = checkSize(path, width, height, rgba.size()); !size) return size;
     const auto started = std::chrono::steady_clock::now();
     struct EncodeTimer {
@@ -190,7 +190,7 @@ Status writeExr(const fs::path& path, int width, int height, std::span<const flo
         out.close();  // the OutputFile above has written its offset table by now
         if (!out) return ioError(path, "write failed", errno);
         return okStatus();
-    });
+    }, parents);
 }
 
 namespace {

@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "core/AtomicFile.h"
 #include "core/Result.h"
 #include "image/Image.h"
 #include "image/PngEncoder.h"
@@ -34,8 +35,10 @@ struct ImageScratch {
 // `compressionLevel` is `--png-level`: 0 (stored) .. 9 (smallest), mapped to a row filter and a
 // deflate (the fast path or a libdeflate level) by pngSettingsForLevel (image/PngEncoder.h); the
 // default 1 favours speed when capturing frames.
+// `parents`: whether missing folders above `path` are created (core/AtomicFile.h).
 Status writePng(const std::filesystem::path& path, int width, int height, std::span<const std::uint8_t> rgba,
-                int compressionLevel = 1, ImageScratch* scratch = nullptr);
+                int compressionLevel = 1, ImageScratch* scratch = nullptr,
+                ParentFolders parents = ParentFolders::Create);
 
 // How an EXR is stored (`--exr-compression`, `--exr-half`). The default (no compression, 32-bit
 // float) is the site's own buffer export; none, rle, zips, zip and piz are lossless; pxr24 rounds
@@ -60,7 +63,8 @@ std::string exrCompressionNames();
 // it, and readers that ignore A see the same RGB.
 // With `settings` other than the default: those compression and channel types instead.
 Status writeExr(const std::filesystem::path& path, int width, int height, std::span<const float> rgba,
-                ImageScratch* scratch = nullptr, ExrSettings settings = {});
+                ImageScratch* scratch = nullptr, ExrSettings settings = {},
+                ParentFolders parents = ParentFolders::Create);
 
 // Reads any scanline or tiled EXR into RGBA float, rows bottom first (the inverse of writeExr).
 // Missing channels read as R=G=B=0, A=1 (so a site export without alpha has A=1).

@@ -12,6 +12,7 @@
 
 #include "TestFolder.h"
 #include "capture/EncoderPool.h"
+#include "capture/FileSinks.h"
 #include "core/AtomicFile.h"
 #include "core/ChildProcess.h"
 #include "core/FileDescriptor.h"
@@ -47,6 +48,30 @@ TEST(AtomicFile, AFailedRenameSaysWhyAndLeavesNoTemporaryFile) {
     EXPECT_NE(message.find(std::make_error_code(std::errc::is_a_directory).message()), std::string::npos) << message;
     EXPECT_EQ(message.find("Success"), std::string::npos) << message;
     EXPECT_EQ(folder.files(), (std::vector<std::string>{"occupied"}));
+}
+
+// An image sequence makes its folder for the first frame; a folder that then vanishes is an error
+// for the next frame, not made again to hold only the later frames (the CLI's run of it:
+// Adversarial.AnOutputFolderThatVanishesIsAnErrorWithNothingLeft).
+TEST(ImageSequenceSink, MakesItsFolderOnceAndAVanishedFolderIsAnError) {
+    TestFolder folder;
+    const fs::path out = folder.path / "deep/out";
+    Result<OutputPattern> pattern = OutputPattern::parse((out / "f_%02d.png").string());
+    ASSERT_TRUE(pattern.ok());
+    ImageSequenceSink sink(*pattern, 1);
+    EncodeScratch scratch;
+    CapturedFrame frame;
+    frame.width = frame.height = 2;
+    frame.pixels.assign(2 * 2 * 4, std::byte{200});
+    ASSERT_TRUE(sink.write(frame, scratch).ok());
+    EXPECT_TRUE(fs::is_regular_file(out / "f_00.png"));
+    fs::rename(out, folder.path / "moved");
+    frame.frame = 1;
+    Status second = sink.write(frame, scratch);
+    ASSERT_FALSE(second.ok());
+    EXPECT_NE(second.error().text().find((out / "f_01.png").string()), std::string::npos) << second.error().text();
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_TRUE(fs::is_regular_file(folder.path / "moved/f_00.png"));
 }
 
 TEST(AtomicFile, ReadingAFolderIsAnErrorNamingIt) {
