@@ -1,8 +1,13 @@
 // RenderStream: the worker's side (one Rendering::advance per job) and Python's (next, cancel).
 #include "RenderStream.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <new>
 #include <span>
+#include <utility>
 
 #include "Errors.h"
 
@@ -16,7 +21,49 @@ std::shared_ptr<RenderStream> RenderStream::start(GlWorker& worker, Session& ses
     return stream;
 }
 
+RenderStream::RenderStream(GlWorker& worker, Session& session, RenderRequest request)
+    : worker_(worker), session_(session), request_(std::move(request)) {
+    int ends[2];
+    // Without the pipe, signals are still seen between frames (the wake after each frame).
+    if (::pipe2(ends, O_NONBLOCK | O_CLOEXEC) == 0) {
+        signalRead_ = ends[0];
+        signalWrite_ = ends[1];
+    }
+}
+
+bool RenderStream::drainSignalPipe() {
+    if (signalRead_ < 0) return false;
+    bool any = false;
+    char bytes[64];
+    for (;;) {
+        const ssize_t got = ::read(signalRead_, bytes, sizeof bytes);
+        if (got > 0) {
+            signalBytes_.append(bytes, static_cast<std::size_t>(got));
+            any = true;
+        } else if (got < 0 && errno == EINTR) {
+            continue;
+        } else {
+            return any;
+        }
+    }
+}
+
+std::string RenderStream::takeSignalBytes() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    drainSignalPipe();
+    return std::exchange(signalBytes_, {});
+}
+
+void RenderStream::resume() {
+    if (!running_ && !finished_ && !failed_ && !cancelled_ && !signalled_ && ready_.size() < kReady) {
+        running_ = true;
+        post();
+    }
+}
+
 RenderStream::~RenderStream() {
+    if (signalRead_ >= 0) ::close(signalRead_);
+    if (signalWrite_ >= 0) ::close(signalWrite_);
     // The rendering's GL buffers go on the session's thread (jobs run there before the session is
     // closed, and a closed worker runs nothing: then the session freed its context already).
     if (rendering_)
@@ -56,8 +103,10 @@ bool RenderStream::take(const Session::RenderedFrame& read) {
 void RenderStream::renderOne() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        if (cancelled_) {
+        if (drainSignalPipe()) signalled_ = true;
+        if (cancelled_ || signalled_) {  // a signal: Python looks at it before another frame starts
             running_ = false;
+            ++wakes_;
             changed_.notify_all();
             return;
         }
@@ -112,13 +161,22 @@ std::optional<RenderedFrame> RenderStream::next(const std::function<bool()>& int
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
         if (cancelled_) return std::nullopt;
+        if (signalled_) {
+            bool stop = false;
+            if (interrupted) {
+                lock.unlock();
+                stop = interrupted();
+                lock.lock();
+            }
+            if (stop) throw Interrupted{};
+            signalled_ = false;  // a signal whose handler raised nothing: the rendering goes on
+            resume();
+            continue;
+        }
         if (!ready_.empty()) {
             RenderedFrame frame = std::move(ready_.front());
             ready_.pop_front();
-            if (!running_ && !finished_ && !failed_ && !cancelled_ && ready_.size() < kReady) {
-                running_ = true;
-                post();
-            }
+            resume();
             return frame;
         }
         if (failed_) {
@@ -131,10 +189,11 @@ std::optional<RenderedFrame> RenderStream::next(const std::function<bool()>& int
         const unsigned seen = wakes_;
         waiting_ = true;
         changed_.wait(lock, [&] {
-            return cancelled_ || failed_ || finished_ || !running_ || ready_.size() >= kWakeAt || wakes_ != seen;
+            return cancelled_ || failed_ || finished_ || !running_ || signalled_ || ready_.size() >= kWakeAt ||
+                   wakes_ != seen;
         });
         waiting_ = false;
-        if (ready_.empty() && !cancelled_ && !failed_ && !finished_ && interrupted) {
+        if (ready_.empty() && !signalled_ && !cancelled_ && !failed_ && !finished_ && interrupted) {
             lock.unlock();
             const bool stop = interrupted();
             lock.lock();

@@ -3,8 +3,10 @@
 // flight, each frame handed over as soon as its read completes). On the GL worker, one job per
 // frame (Rendering::advance), so that jobs of other calls run between frames; frames are read
 // straight into the memory their numpy arrays will own, and up to kReady wait for Python. Python
-// takes them in order, waiting with the GIL released and looking for Ctrl-C whenever a frame went
-// by with nothing for it. No GL of its own: the jobs use the session's.
+// takes them in order, waiting with the GIL released. While it waits, a signal (Ctrl-C) reaches the
+// stream through Python's wakeup fd (signalWakeupFd): the worker sees it before starting another
+// frame and hands the question back to Python, so the rendering stops after the frame that was
+// being rendered when the signal came. No GL of its own: the jobs use the session's.
 #pragma once
 
 #include <condition_variable>
@@ -14,6 +16,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <toyhost/Result.h>
@@ -44,7 +47,7 @@ public:
     static constexpr std::size_t kReady = 4;
     // Python, finding no frame ready, sleeps until this many are (one wake-up per kWakeAt frames
     // when every frame is read), or until a frame is ready and no other read is on its way, or a
-    // frame went by with nothing handed over (a chance to see Ctrl-C: at most one frame late).
+    // frame went by with nothing handed over.
     static constexpr std::size_t kWakeAt = 2;
 
     // What next() throws when `interrupted` said so (a Python exception, such as KeyboardInterrupt,
@@ -54,20 +57,33 @@ public:
     // `session` lives on `worker` and outlives the stream's jobs (cancel() before closing it).
     static std::shared_ptr<RenderStream> start(GlWorker& worker, Session& session, RenderRequest request);
     ~RenderStream();
+    RenderStream(const RenderStream&) = delete;
+    RenderStream& operator=(const RenderStream&) = delete;
+
+    // The write end of the stream's signal pipe (non-blocking), for Python's wakeup fd
+    // (PySignal_SetWakeupFd) while the main thread waits in next(): a signal's byte written there
+    // pauses the rendering before its next frame and wakes next(), which asks `interrupted`.
+    int signalWakeupFd() const { return signalWrite_; }
+    // The signal bytes the stream received (read by the worker, or still in the pipe), taken: the
+    // caller hands them on to the wakeup fd that was there before.
+    std::string takeSignalBytes();
 
     // The next frame, waiting for it (call without the GIL); nothing once every frame was taken.
     // Throws ToyhostError with what stopped the rendering, after the frames read before it.
     // `interrupted` (called without the stream's lock, may take the GIL) is asked whenever the
-    // wait wakes with no frame: true ends the wait (Interrupted thrown).
+    // wait wakes with no frame, and before anything else once a signal arrived through
+    // signalWakeupFd(): true ends the wait (Interrupted thrown); false after a signal lets the
+    // rendering go on.
     std::optional<RenderedFrame> next(const std::function<bool()>& interrupted = {});
     // Stops rendering after the frame being rendered; frames not taken are dropped. The session
     // stays where the rendering got (its later calls run after this). Idempotent.
     void cancel();
 
 private:
-    RenderStream(GlWorker& worker, Session& session, RenderRequest request)
-        : worker_(worker), session_(session), request_(std::move(request)) {}
+    RenderStream(GlWorker& worker, Session& session, RenderRequest request);
     void post();       // the next job
+    bool drainSignalPipe();  // under mutex_: bytes in the pipe moved to signalBytes_; true if any
+    void resume();           // under mutex_: the next job, unless running, ended or enough frames wait
     void renderOne();  // on the worker: one frame, then the next job when there is room
     bool take(const Session::RenderedFrame& frame);  // on the worker: a frame handed over, into ready_
 
@@ -88,6 +104,10 @@ private:
     bool cancelled_ = false;
     bool waiting_ = false;   // Python waits in next()
     unsigned wakes_ = 0;     // wake-ups given to a waiting next()
+    bool signalled_ = false;  // a signal arrived: no frame starts before Python looked at it
+    std::string signalBytes_;  // what the signal pipe carried, for the wakeup fd before ours
+    int signalRead_ = -1;      // the signal pipe; both ends non-blocking, closed with the stream
+    int signalWrite_ = -1;
 };
 
 }  // namespace toyhost::python

@@ -225,10 +225,53 @@ bool onMainThread() {
     return PyThread_get_thread_ident() == mainThread;
 }
 
+// While the main thread waits for a frame, Python's wakeup fd is the stream's signal pipe, so that
+// the worker sees a signal before it starts another frame; the fd that was there before (asyncio's,
+// say) comes back afterwards and gets the bytes that arrived meanwhile. With the GIL held.
+class StreamWakeupFd {
+public:
+    // signal.set_wakeup_fd (PySignal_SetWakeupFd is not exported by every Python build).
+    explicit StreamWakeupFd(RenderStream& stream) : stream_(stream), setWakeupFd_(setWakeupFd()) {
+        if (stream.signalWakeupFd() >= 0) {
+            previous_ = setWakeupFd_(stream.signalWakeupFd()).cast<int>();
+            installed_ = true;
+        }
+    }
+    ~StreamWakeupFd() {
+        if (!installed_) return;
+        const py::error_scope pending;  // a KeyboardInterrupt on its way stays set around the call
+        try {
+            setWakeupFd_(previous_);
+        } catch (py::error_already_set& e) {  // a destructor does not throw; Python says why
+            e.discard_as_unraisable("restoring the signal wakeup fd");
+        }
+        const std::string bytes = stream_.takeSignalBytes();
+        if (previous_ >= 0 && !bytes.empty()) {
+            const ssize_t written = ::write(previous_, bytes.data(), bytes.size());  // non-blocking, as Python's is
+            (void)written;  // a full or closed wakeup fd loses the wake-up, as it would in Python
+        }
+    }
+    StreamWakeupFd(const StreamWakeupFd&) = delete;
+    StreamWakeupFd& operator=(const StreamWakeupFd&) = delete;
+
+private:
+    static py::object setWakeupFd() { return py::module_::import("signal").attr("set_wakeup_fd"); }
+
+    RenderStream& stream_;
+    py::object setWakeupFd_;
+    int previous_ = -1;
+    bool installed_ = false;
+};
+
 py::object nextRendered(RenderStream& stream) {
     std::optional<RenderedFrame> frame;
-    const std::function<bool()> interrupted = onMainThread() ? std::function<bool()>(signalRaised) : nullptr;
+    const bool mainThread = onMainThread();
+    const std::function<bool()> interrupted = mainThread ? std::function<bool()>(signalRaised) : nullptr;
     try {
+        std::optional<StreamWakeupFd> wakeup;
+        if (mainThread) wakeup.emplace(stream);
+        // A signal that came before the pipe was there is seen now, not a frame later.
+        if (interrupted && signalRaised()) throw RenderStream::Interrupted{};
         frame = withoutGil([&] { return stream.next(interrupted); });
     } catch (const RenderStream::Interrupted&) {
         throw py::error_already_set();  // the handler's exception (KeyboardInterrupt)

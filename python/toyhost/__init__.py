@@ -133,7 +133,8 @@ class Session:
         ``frame()``, and a ``step()`` there renders after the frames already rendered), and leaving
         the loop early leaves the session up to 7 frames past the last one yielded; frames rendered
         but not taken are dropped. Ctrl-C while the loop waits for a frame raises
-        KeyboardInterrupt and stops the rendering within two frames of the signal."""
+        KeyboardInterrupt; the rendering stops after the frame being rendered when the signal came
+        (no frame starts after it)."""
         frames, every = int(frames), int(every)
         if frames < 0:
             raise UsageError(f"render: frames must be 0 or more, got {frames}")
