@@ -28,6 +28,14 @@ struct Defaults {
     // settings give them.
     double frameTimeoutSeconds = 0;
     double compileTimeoutSeconds = 0;
+    // Samples averaged into a frame (SessionSettings supersample, motionBlur, shutterDegrees) and
+    // their bounds.
+    int supersample = 0;
+    int motionBlur = 0;
+    double shutterDegrees = 0;
+    int maxSupersample = 0;
+    int maxMotionBlur = 0;
+    int maxSamplesPerFrame = 0;
 };
 
 // Named runDefaults, not defaults: toyhost's code keeps its constants in a namespace by that name.

@@ -57,6 +57,16 @@ struct SessionSettings {
     // frame number before the caller's own events, as a headless run does; empty: none.
     std::filesystem::path mouseScript;
     std::filesystem::path keyScript;
+    // Better pixels than the site (docs/sampling.md): the Image pass drawn supersample x
+    // supersample times with fragCoord on a regular grid inside each pixel, at motionBlur times
+    // inside the shutter interval (shutterDegrees / 360 of the frame step, opening at the frame's
+    // time), every pair drawn and the draws averaged; buffers, Cube A and Sound still run once per
+    // frame. `dither`: an 8x8 ordered dither before the average is rounded to 8 bits. 1, 1: the
+    // site's pixels, byte for byte. Absent: runDefaults()' (1, 1, 180); a value given is checked.
+    std::optional<int> supersample;
+    std::optional<int> motionBlur;
+    std::optional<double> shutterDegrees;
+    bool dither = false;
 };
 
 enum class RowOrder { TopFirst, BottomFirst };

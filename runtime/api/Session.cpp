@@ -185,6 +185,10 @@ Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const S
     if (!settings.keyScript.empty()) options.keyScript = settings.keyScript;
     options.frameTimeout = settings.frameTimeout;
     options.compileTimeout = settings.compileTimeout;
+    options.sampling.supersample = settings.supersample.value_or(defaults::kSupersample);
+    options.sampling.motionBlur = settings.motionBlur.value_or(defaults::kMotionBlurSamples);
+    options.sampling.shutterDegrees = settings.shutterDegrees.value_or(defaults::kShutterDegrees);
+    options.sampling.dither = settings.dither;
     Result<SessionPlan> plan = prepareSession(options);
     if (!plan) return plan.error();
     impl->media = plan->options.media;

@@ -15,6 +15,14 @@ inline constexpr int kPngLevel = 1;              // --png-level of captured PNG 
 inline constexpr std::size_t kCaptureMemoryMiB = 256;  // frames waiting for the encoders
 inline constexpr int kCaptureEvery = 1;
 inline constexpr int kMaxCanvasSide = 16384;     // --size limit, before asking GL for its own
+// Better pixels than the site (timing/SamplePattern.h): one sample per pixel at one instant unless
+// asked; a shutter of 180 degrees (open half the frame step) is the film convention.
+inline constexpr int kSupersample = 1;
+inline constexpr int kMotionBlurSamples = 1;
+inline constexpr double kShutterDegrees = 180.0;
+inline constexpr int kMaxSupersample = 16;         // --supersample limit (256 samples per pixel)
+inline constexpr int kMaxMotionBlurSamples = 256;  // --motion-blur limit
+inline constexpr int kMaxSamplesPerFrame = 4096;   // supersample^2 x motion-blur samples
 // `toyhost compare`'s difference images: |a - b| times this per channel (a 1-level difference is
 // dark but visible, 32 levels and more are white).
 inline constexpr int kCompareDiffGain = 8;

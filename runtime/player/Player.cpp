@@ -26,6 +26,8 @@ RendererDesc rendererDesc(GlContext& context, const PlayerDesc& desc, int width,
     r.width = width;
     r.height = height;
     r.floatImageTarget = desc.floatImage;
+    r.accumulate = !isSingleSample(desc.sampling);
+    r.dither = desc.sampling.dither;
     r.allocate = desc.allocate;
     return r;
 }
@@ -78,6 +80,7 @@ Result<std::unique_ptr<Player>> Player::create(std::shared_ptr<GlContext> contex
     std::unique_ptr<Player> player(new Player());
     player->context_ = std::move(context);
     player->desc_ = desc;
+    player->samples_ = samplePattern(desc.sampling);
     player->plan_ = std::move(plan);
     Result<std::unique_ptr<Renderer>> renderer = Renderer::create(
         player->plan_.manifest, player->plan_.graph, rendererDesc(*player->context_, desc, desc.width, desc.height), player->plan_.images,
@@ -108,7 +111,13 @@ void Player::step(const FrameTime& time, std::span<const InputEvent> events, boo
     uniforms.frameRate = static_cast<float>(time.frameRate);
     uniforms.mouse = mouse_.uniform();
     uniforms.date = time.date;
-    renderer_->renderFrame(uniforms, sequence_.step(), renderImage);
+    draws_.clear();
+    if (renderImage && samples_.size() > 1)
+        for (const SamplePoint& sample : samples_) {
+            const FrameTime at = subFrameTime(time, sample.fraction);
+            draws_.push_back({sample.offset, at.time, at.date});
+        }
+    renderer_->renderFrame(uniforms, sequence_.step(), renderImage, draws_);
     mouse_.endFrame();
     keyboard_.endFrame();  // its change is uploaded before the next frame renders
     sequence_.advance();

@@ -67,6 +67,8 @@ public:
     // Applies `events` (in order) to the mouse and keyboard, renders frame iFrame = frame() (every
     // buffer, then Image unless `renderImage` is false: nothing reads Image but the driver), then
     // ends the frame for the inputs (the click and went-down signals last one frame) and advances.
+    // With desc.sampling asking for more than one draw, Image is drawn at each sample's offset and
+    // time inside the frame (timing/SamplePattern.h) and averaged; buffers and Cube A run once.
     void step(const FrameTime& time, std::span<const InputEvent> events = {}, bool renderImage = true);
 
     int frame() const { return sequence_.frame(); }  // iFrame of the next frame
@@ -133,6 +135,8 @@ private:
     MouseState mouse_;
     KeyboardState keyboard_;
     std::uint64_t uploadedKeyboard_ = 0;
+    std::vector<SamplePoint> samples_;  // desc_.sampling's pattern (one point: the site's draw)
+    std::vector<ImageDraw> draws_;      // this frame's, kept to allocate nothing per frame
 };
 
 }  // namespace toyhost

@@ -15,6 +15,7 @@
 #include "media/ChannelMedia.h"
 #include "render/RenderTargets.h"
 #include "shader/PassSource.h"
+#include "timing/SamplePattern.h"
 
 namespace toyhost {
 
@@ -23,6 +24,9 @@ struct PlayerDesc {
     int height = 0;
     // Render the Image pass into RGBA32F instead of RGBA8 (EXR capture of Image, float checks).
     bool floatImage = false;
+    // Where and when Image is drawn in each frame (supersampling, motion blur); the default is the
+    // site's single draw at the pixel centres and the frame's time.
+    SamplingDesc sampling;
     // Tests make allocations fail here to check that resize is all-or-nothing; empty: real GL.
     TextureAllocator allocate;
 };

@@ -30,6 +30,7 @@ UniformLocations locate(GLuint program) {
     u.corners = at("unCorners");
     u.timeOffset = at("iTimeOffset");
     u.sampleOffset = at("iSampleOffset");
+    u.fragOffset = at(kFragOffsetUniform);
     for (int i = 0; i < kChannelCount; ++i) {
         const std::string ch = "iCh" + std::to_string(i);
         u.channel[i] = at("iChannel" + std::to_string(i));

@@ -22,6 +22,7 @@ struct UniformLocations {
         chLoaded{-1, -1, -1, -1};  // the Image pass's iChN struct members
     GLint viewport = -1, corners = -1;         // Cube A: unViewport, unCorners
     GLint timeOffset = -1, sampleOffset = -1;  // Sound: iTimeOffset, iSampleOffset
+    GLint fragOffset = -1;  // Image: the sample's offset of fragCoord (shader/ShaderAssembly.h)
 };
 
 struct PassProgram {

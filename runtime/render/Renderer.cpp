@@ -16,6 +16,7 @@
 #include "render/ChannelBindings.h"
 #include "render/CubeTarget.h"
 #include "render/PassProgram.h"
+#include "render/SampleAccumulator.h"
 
 namespace toyhost {
 
@@ -37,6 +38,8 @@ struct Renderer::Impl {
     std::optional<CubeTarget> cube;  // Cube A
     RenderTexture imageTarget;
     bool floatImage = false;
+    std::optional<SampleAccumulator> accumulator;  // when frames average several Image draws
+    bool dither = false;
     std::vector<PassRuntime> passes;
     std::uint64_t lastStep = 0;
     GpuActivity* gpu = nullptr;  // never null once created
@@ -125,6 +128,12 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
     Result<RenderTexture> image = impl->allocate(w, h, impl->imageFormat(), false);
     if (!image) return inPass("Image", image.error());
     impl->imageTarget = std::move(*image);
+    if (desc.accumulate) {
+        Result<SampleAccumulator> accumulator = SampleAccumulator::create(w, h, impl->allocate);
+        if (!accumulator) return inPass("Image", accumulator.error());
+        impl->accumulator = std::move(*accumulator);
+        impl->dither = desc.dither;
+    }
 
     BindOptions bind;
     bind.canvas = canvas;
@@ -147,7 +156,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
     return renderer;
 }
 
-void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool renderImage) {
+void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool renderImage,
+                           std::span<const ImageDraw> draws) {
     Impl& s = *impl_;
     // Videos and audio to this frame's time, before any pass reads them. A decoder that fails
     // mid-run (a file truncated on disk) keeps its last frame; the failure was the file's.
@@ -202,6 +212,26 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
             }
             glViewport(0, 0, width_, height_);
             s.cube->generateMipmaps(slotWritten(step));
+        } else if (isImage && draws.size() > 1 && s.accumulator) {
+            // Each draw as the site would show it, added to the float sum; then the average.
+            s.gpu->beforeDraw(passName(pass.plan.id), u.frame);
+            for (std::size_t d = 0; d < draws.size(); ++d) {
+                const ImageDraw& draw = draws[d];
+                if (d > 0) {
+                    glBindFramebuffer(GL_FRAMEBUFFER, s.imageTarget.framebuffer.id());
+                    glUseProgram(pass.program.program.id());
+                    bindTextures(pass.bindings, dynamic);
+                }
+                glUniform1f(loc.time, static_cast<float>(draw.time));
+                glUniform4f(loc.date, draw.date.x, draw.date.y, draw.date.z, draw.date.w);
+                glUniform2f(loc.fragOffset, draw.offset.x, draw.offset.y);
+                glDrawArrays(GL_TRIANGLES, 0, 3);
+                s.accumulator->add(s.imageTarget.texture.id(), d == 0);
+            }
+            glUseProgram(pass.program.program.id());
+            glUniform2f(loc.fragOffset, 0.0f, 0.0f);
+            s.accumulator->resolve(s.imageTarget.framebuffer.id(), static_cast<int>(draws.size()),
+                                   s.dither && !s.floatImage);
         } else {
             s.gpu->beforeDraw(passName(pass.plan.id), u.frame);
             glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -249,6 +279,8 @@ Status Renderer::resize(int width, int height) {
     }
     Result<RenderTexture> image = s.allocate(width, height, s.imageFormat(), false);
     if (!image) return inPass("Image", image.error());
+    if (s.accumulator)
+        if (Status sums = s.accumulator->resize(width, height, s.allocate); !sums) return inPass("Image", sums.error());
 
     for (int b = 0; b < kBufferCount; ++b)
         if (buffers[b]) {

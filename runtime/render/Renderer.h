@@ -12,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include "core/Defaults.h"
@@ -36,6 +37,11 @@ struct RendererDesc {
     // The Image pass renders into RGBA8 (what the screen shows) unless its raw float output is
     // wanted (EXR capture of Image, tests).
     bool floatImageTarget = false;
+    // Frames may draw the Image pass several times and average the draws (renderFrame's `draws`):
+    // the float sums are allocated once here. `dither`: the average is dithered before it is
+    // rounded to 8 bits (render/SampleAccumulator.h).
+    bool accumulate = false;
+    bool dither = false;
     TextureAllocator allocate;     // empty: createRenderTexture
 };
 
@@ -48,6 +54,14 @@ struct FrameUniforms {
     float timeDelta = 0;
     float frameRate = static_cast<float>(defaults::kFps);
     glm::vec4 mouse{0};
+    glm::vec4 date{0};
+};
+
+// One draw of the Image pass when a frame averages several (timing/SamplePattern.h): fragCoord's
+// offset in pixels and the iTime and iDate of that draw; the other uniforms are the frame's.
+struct ImageDraw {
+    glm::vec2 offset{0.0f};
+    double time = 0;
     glm::vec4 date{0};
 };
 
@@ -69,8 +83,11 @@ public:
     ~Renderer();
 
     // Runs every buffer, then Image when `renderImage`. `step` picks the ping-pong slots
-    // (graph/PassGraph.h); it must go up by one per call.
-    void renderFrame(const FrameUniforms& uniforms, std::uint64_t step, bool renderImage = true);
+    // (graph/PassGraph.h); it must go up by one per call. With more than one of `draws` (the
+    // renderer made with `accumulate`), Image is drawn once per draw and the Image target gets
+    // their average; buffers and Cube A still run once, with `uniforms`.
+    void renderFrame(const FrameUniforms& uniforms, std::uint64_t step, bool renderImage = true,
+                     std::span<const ImageDraw> draws = {});
 
     // New keyboard texels (256*3 bytes, row 0 first); call only when they changed.
     void updateKeyboard(std::span<const std::uint8_t> texels);

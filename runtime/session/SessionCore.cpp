@@ -76,6 +76,7 @@ Result<std::unique_ptr<SessionCore>> SessionCore::start(SessionPlan plan, std::s
     s->live_ = o.interactive;
     for (const Diagnostic& line : s->plan_.shadertoy.notices) observer.notice(line);
     s->report_.mode = o.interactive ? "in a window" : "headless";
+    s->report_.samplesPerFrame = samplesPerFrame(o.sampling);
     s->report_.context = s->context_->describe();
     s->report_.interactive = o.interactive;
     s->report_.outputAsked = o.outPattern.has_value() || o.sound.has_value();
@@ -109,6 +110,7 @@ Status SessionCore::createPlayer(PlayerPlan shadertoy) {
     desc.height = *o.height;
     desc.floatImage = o.floatImage || (plan_.output && plan_.output->format() == OutputFormat::Exr &&
                                        o.capturePass == PassId::Image);
+    desc.sampling = o.sampling;
     Result<std::unique_ptr<Player>> made = Player::create(context_, std::move(shadertoy), desc);
     if (!made) return made.error();
     player_ = std::move(*made);
@@ -142,6 +144,7 @@ Status SessionCore::beginRound() {
     fresh.interactive = report_.interactive;
     fresh.outputAsked = report_.outputAsked;
     fresh.toStdout = report_.toStdout;
+    fresh.samplesPerFrame = report_.samplesPerFrame;
     report_ = std::move(fresh);
     report_.startupSeconds = secondsBetween(startedAt_, roundStartedAt_);
     // Each round writes its own files; a window that waits for a shadertoy begins on the first frame.
@@ -197,6 +200,7 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     progress.framesDone = framesRendered_;
     progress.seconds = secondsBetween(roundStartedAt_, Clock::now());
     progress.bytesWritten = recording_ ? recording_->bytesWritten() : 0;
+    progress.samplesPerFrame = report_.samplesPerFrame;
     observer_.progress(progress);
     return okStatus();
 }

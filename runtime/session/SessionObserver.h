@@ -37,6 +37,7 @@ struct SessionReport {
     int width = 0;
     int height = 0;
     int frames = 0;          // frames rendered (not those simulated before a --frame-range)
+    int samplesPerFrame = 1; // draws of Image averaged into each frame (--supersample, --motion-blur)
     // From the start of the command to the start of the first frame (loading, decoding images,
     // the GL context, compiling), the first frame itself (GPU work included), and every later
     // frame until every output was written.

@@ -153,6 +153,11 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     if (Status start = checkStartTimeSetting(o.startTime); !start) return start.error();
     if (o.mouse)
         if (Status mouse = checkMouseSetting(o.mouse->x, o.mouse->y); !mouse) return mouse.error();
+    if (Status sampling = checkSamplingSettings(o.sampling.supersample, o.sampling.motionBlur, o.sampling.shutterDegrees);
+        !sampling)
+        return sampling.error();
+    if (o.sampling.dither && isSingleSample(o.sampling))
+        return settingError("dither", "dithers an average of samples: give supersample or motion_blur too");
     if (*o.captureEvery < 1) return usage("--capture-every must be at least 1");
     for (const auto& [name, value] : {std::pair{"frame_timeout", *o.frameTimeout}, {"compile_timeout", *o.compileTimeout}})
         if (Status limit = checkTimeoutSetting(name, value); !limit) return limit.error();

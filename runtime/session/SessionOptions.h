@@ -25,6 +25,7 @@
 #include "media/ChannelMedia.h"
 #include "player/PlayerDesc.h"
 #include "session/Checkpoint.h"
+#include "timing/SamplePattern.h"
 #include "timing/Timeline.h"
 
 namespace toyhost {
@@ -79,6 +80,9 @@ struct SessionOptions {
     bool checkFinite = false;
     // Render the Image pass into RGBA32F even without an EXR capture of it (to read its floats).
     bool floatImage = false;
+    // --supersample, --motion-blur, --shutter, --dither: Image drawn several times a frame and
+    // averaged (timing/SamplePattern.h); the default is the site's one draw.
+    SamplingDesc sampling;
     // Render only the Sound pass, to this file (no frames, no Player).
     std::optional<SoundRequest> sound;
     // Watchdog limits in seconds (0: off); defaults from core/Defaults.h, no frame limit in a

@@ -32,8 +32,9 @@ std::vector<std::string> summaryLines(const SessionReport& r) {
                         ", " + where + ": " + startup);
     } else {
         std::string line = r.name + ": " + std::to_string(r.frames) + (r.frames == 1 ? " frame" : " frames") + " at " +
-                           std::to_string(r.width) + "x" + std::to_string(r.height) + ", " + where + ": " + startup +
-                           ", first frame " + duration(r.firstFrameSeconds);
+                           std::to_string(r.width) + "x" + std::to_string(r.height) +
+                           (r.samplesPerFrame > 1 ? " (" + std::to_string(r.samplesPerFrame) + " samples each)" : "") +
+                           ", " + where + ": " + startup + ", first frame " + duration(r.firstFrameSeconds);
         if (r.frames > 1) {
             const int rest = r.frames - 1;
             const double perFrame = r.restSeconds / rest;

@@ -1,6 +1,7 @@
 #include "session/SettingChecks.h"
 
 #include <cmath>
+#include <string>
 
 #include "core/Defaults.h"
 #include "player/PlayerDesc.h"
@@ -47,6 +48,25 @@ Status checkTimeoutSetting(const std::string& setting, double seconds) {
     if (!std::isfinite(seconds) || seconds < 0 || (seconds > 0 && seconds < defaults::kMinTimeoutSeconds) ||
         seconds > defaults::kMaxTimeoutSeconds)
         return settingError(setting, "must be 0 (off) or a number of seconds from 0.1 to 1000000");
+    return okStatus();
+}
+
+Status checkSamplingSettings(int supersample, int motionBlur, double shutterDegrees) {
+    using namespace defaults;
+    if (supersample < 1 || supersample > kMaxSupersample)
+        return settingError("supersample", "must be 1 to " + std::to_string(kMaxSupersample) +
+                                               " (samples per pixel side), got " + std::to_string(supersample));
+    if (motionBlur < 1 || motionBlur > kMaxMotionBlurSamples)
+        return settingError("motion_blur", "must be 1 to " + std::to_string(kMaxMotionBlurSamples) +
+                                               " (samples per frame), got " + std::to_string(motionBlur));
+    if (!(shutterDegrees > 0 && shutterDegrees <= 360))
+        return settingError("shutter", "must be an angle more than 0 and at most 360 degrees");
+    const long long draws = static_cast<long long>(supersample) * supersample * motionBlur;
+    if (draws > kMaxSamplesPerFrame)
+        return settingError("supersample", std::to_string(supersample) + " x " + std::to_string(supersample) + " x " +
+                                               std::to_string(motionBlur) + " motion samples = " +
+                                               std::to_string(draws) + " draws a frame, more than " +
+                                               std::to_string(kMaxSamplesPerFrame));
     return okStatus();
 }
 

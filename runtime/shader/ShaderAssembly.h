@@ -35,6 +35,11 @@ struct AssembledShader {
 
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs);
 
+// The Image pass's main() calls mainImage with gl_FragCoord.xy plus this uniform (vec2, pixels):
+// zero (GL's initial value) draws the site's pixel centres exactly; supersampling and tiles set it
+// per draw. gl_FragCoord itself, read directly by a shader, is not moved.
+inline constexpr const char* kFragOffsetUniform = "toyhost_fragOffset";
+
 // The vertex shader every pass shares: one triangle that covers the viewport.
 const char* fullscreenVertexShader();
 

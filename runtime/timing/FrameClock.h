@@ -24,7 +24,9 @@ public:
     // iDate = (year, month 0-11, day 1-31, seconds since midnight with fraction).
     glm::vec4 date(int frame) const;
     // Everything the Player needs for frame n: iTime, iTimeDelta, iFrameRate = fps, iDate.
-    FrameTime frameTime(int frame) const { return {time(frame), timeDelta(), fps_, date(frame)}; }
+    FrameTime frameTime(int frame) const {
+        return {time(frame), timeDelta(), fps_, date(frame), wallClockStart_ + (time(frame) - startTime_)};
+    }
 
 private:
     double fps_;

@@ -3,6 +3,8 @@
 // Plain data; no GL needed.
 #pragma once
 
+#include <optional>
+
 #include <glm/vec4.hpp>
 
 namespace toyhost {
@@ -12,6 +14,9 @@ struct FrameTime {
     double timeDelta = 0;  // iTimeDelta
     double frameRate = 0;  // iFrameRate
     glm::vec4 date{0};     // iDate (year, month 0-11, day, seconds since midnight)
+    // The wall clock (timing/FrameClock.h's form) iDate was made from, when the clock knows it:
+    // a sample inside the frame (timing/SamplePattern.h) gets its iDate by the same rule.
+    std::optional<double> wallClock;
 };
 
 }  // namespace toyhost

@@ -35,6 +35,12 @@ std::string formatProgressLine(const RunProgress& p) {
         std::snprintf(head, sizeof head, "frame %d/%d  %.1f fps  ETA %s", p.framesDone, p.frames, fps, eta.c_str());
     }
     std::string line = head;
+    if (p.samplesPerFrame > 1) {
+        char samples[64];
+        std::snprintf(samples, sizeof samples, "  %d samples/frame (%.1f samples/s)", p.samplesPerFrame,
+                      fps * p.samplesPerFrame);
+        line += samples;
+    }
     if (p.bytesWritten > 0) line += "  " + formatBytes(p.bytesWritten) + " written";
     return line;
 }

@@ -16,6 +16,7 @@ struct RunProgress {
     int frames = 0;                        // 0: no end (a window run without --frames)
     double seconds = 0;                    // since the frame loop started
     std::uint64_t bytesWritten = 0;        // so far (encoders run behind the render loop)
+    int samplesPerFrame = 1;               // draws of Image averaged into a frame
 };
 
 std::string formatProgressLine(const RunProgress& progress);

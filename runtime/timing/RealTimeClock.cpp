@@ -35,6 +35,7 @@ FrameTime RealTimeClock::frame(double now, double wallClock) {
         t.frameRate = counter_.rate();
         ++framesSinceRestart_;
     }
+    t.wallClock = options_.wallClockStart ? *options_.wallClockStart + (t.time - options_.startTime) : wallClock;
     t.date = options_.wallClockStart ? dateOfTime(*options_.wallClockStart, options_.startTime, t.time)
                                      : dateAt(wallClock);
     lastTime_ = t.time;

@@ -14,7 +14,8 @@ FrameTime Timeline::at(int frame, double fraction) const {
 }
 
 FrameTime Timeline::atTime(double time, double timeDelta, double frameRate) const {
-    return {time, timeDelta, frameRate, dateOfTime(desc_.wallClockStart, desc_.startTime, time)};
+    return {time, timeDelta, frameRate, dateOfTime(desc_.wallClockStart, desc_.startTime, time),
+            desc_.wallClockStart + (time - desc_.startTime)};
 }
 
 void Timeline::eventsBefore(int frame, std::vector<InputEvent>& out) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gl/GlThread.h"
+#include "SamplingFlags.h"
 #include "SessionFlags.h"
 #include "session/SessionOptions.h"
 
@@ -23,6 +24,7 @@ public:
 private:
     SessionOptions options_;
     SessionFlags flags_;
+    SamplingFlags sampling_;
     std::string target_, capturePass_, codec_, frameRange_, shard_, exrCompression_, videoPreset_;
     std::optional<int> frames_, captureEvery_, pngLevel_, videoQuality_, captureMemoryMiB_, encoderThreads_;
     bool headless_ = false, window_ = false, watch_ = false, quiet_ = false;
@@ -53,6 +55,7 @@ public:
 
 private:
     SessionFlags flags_;
+    SamplingFlags sampling_;
     std::string a_, b_, pass_ = "Image", diffOut_, framesOut_;
     std::optional<int> frames_, maxDiff_;
     std::optional<double> tolerancePsnr_;

@@ -196,6 +196,7 @@ void CompareCommand::define(CLI::App& compare) {
     compare.add_option("a", a_, "The first shadertoy (folder, manifest or Shadertoy JSON export): the reference")->required();
     compare.add_option("b", b_, "The second shadertoy, rendered with the same settings and inputs")->required();
     flags_.define(compare, SessionFlags::All);
+    sampling_.define(compare);
     compare.add_option("--frames", frames_,
                        "Frames to render and compare (default: A's manifest defaults, else " +
                            std::to_string(defaults::kCompareFrames) + ")")
@@ -222,6 +223,7 @@ int CompareCommand::execute(const GlProcess&) {
     SessionSettings& s = settings.session;
     std::optional<glm::vec2> mouse;
     if (Status given = flags_.applyTo(s, mouse); !given) return trouble(given.error());
+    sampling_.applyTo(s);
     if (frames_) {
         if (Status frames = checkFramesSetting(*frames_); !frames) return trouble(frames.error());
         settings.frames = *frames_;

@@ -54,6 +54,7 @@ void RunCommand::define(CLI::App& run) {
     run.add_flag("--watch", watch_,
                  "Headless: render the frames again whenever a file of the shadertoy changes, until Ctrl-C");
     flags_.define(run, SessionFlags::All);
+    sampling_.define(run);
     run.add_option("--frames", frames_,
                    "Frames to render (default " + std::to_string(defaults::kFrames) + "; in a window: until closed)");
     run.add_option("--out", options_.outPattern,
@@ -120,6 +121,7 @@ int RunCommand::execute(const GlProcess& process) {
     SessionOptions& o = options_;
     o.target = target_;
     if (Status given = flags_.applyTo(o); !given) return fail(given.error());
+    sampling_.applyTo(o.sampling);
     o.frames = frames_;
     o.captureEvery = captureEvery_;
     o.pngLevel = pngLevel_;

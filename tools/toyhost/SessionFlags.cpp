@@ -25,6 +25,10 @@ constexpr std::pair<const char*, const char*> kFlagOfSetting[] = {
     {"mouse", "--mouse"},
     {"frame_timeout", "--frame-timeout"},
     {"compile_timeout", "--compile-timeout"},
+    {"supersample", "--supersample"},
+    {"motion_blur", "--motion-blur"},
+    {"shutter", "--shutter"},
+    {"dither", "--dither"},
 };
 
 std::string number(double value) {

@@ -1,0 +1,40 @@
+#include "SamplingFlags.h"
+
+#include <string>
+
+#include "NumberOptions.h"
+#include "core/Defaults.h"
+
+namespace toyhost::cli {
+
+void SamplingFlags::define(CLI::App& command) {
+    command.add_option("--supersample", supersample_,
+                       "Draw Image N x N times a frame with fragCoord on a grid inside each pixel and average the "
+                       "draws (anti-aliasing; buffers still run once a frame; default " +
+                           std::to_string(defaults::kSupersample) + ": the site's pixels)");
+    command.add_option("--motion-blur", motionBlur_,
+                       "Draw Image at S times inside the shutter interval after each frame's time and average them "
+                       "(buffers, iFrame and iTimeDelta stay the frame's; with --supersample every pair is drawn)");
+    command.add_option("--shutter", shutter_,
+                       "Shutter angle of --motion-blur in degrees: the interval is angle/360 of the frame step "
+                       "(default " + std::to_string(static_cast<int>(defaults::kShutterDegrees)) + ", the film convention)")
+        ->check(decimalNumberOption());
+    command.add_flag("--dither", dither_,
+                     "Add an 8x8 ordered dither to the averaged frame before it is rounded to 8 bits (smooth gradients)");
+}
+
+void SamplingFlags::applyTo(SamplingDesc& sampling) const {
+    if (supersample_) sampling.supersample = *supersample_;
+    if (motionBlur_) sampling.motionBlur = *motionBlur_;
+    if (shutter_) sampling.shutterDegrees = *shutter_;
+    sampling.dither = dither_;
+}
+
+void SamplingFlags::applyTo(SessionSettings& settings) const {
+    settings.supersample = supersample_;
+    settings.motionBlur = motionBlur_;
+    settings.shutterDegrees = shutter_;
+    settings.dither = dither_;
+}
+
+}  // namespace toyhost::cli

@@ -1,0 +1,28 @@
+// SamplingFlags: --supersample, --motion-blur, --shutter and --dither, declared once for `run`
+// and `compare` and turned into a run's sampling (timing/SamplePattern.h) or the library's
+// settings; prepareSession checks the values (session/SettingChecks.h) and its errors name the
+// setting, which withFlagNames shows as the flag.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+
+#include <toyhost/Session.h>
+
+#include "timing/SamplePattern.h"
+
+namespace toyhost::cli {
+
+class SamplingFlags {
+public:
+    void define(CLI::App& command);
+    void applyTo(SamplingDesc& sampling) const;
+    void applyTo(SessionSettings& settings) const;
+
+private:
+    std::optional<int> supersample_, motionBlur_;
+    std::optional<double> shutter_;
+    bool dither_ = false;
+};
+
+}  // namespace toyhost::cli
