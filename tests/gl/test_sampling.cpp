@@ -1,0 +1,192 @@
+// Supersampling and motion blur (timing/SamplePattern.h, render/SampleAccumulator.h) checked
+// against what they must equal: a stateless picture supersampled 4x4 equals the same picture
+// rendered 4x larger and box-averaged (the sample positions are the same); motion blur of a colour
+// linear in iTime equals its analytic average over the shutter interval; one sample is the site's
+// pixels byte for byte; buffers do not depend on the sample count; `run` and the C++ Session give
+// the same frames. Python's: python/tests/test_sampling.py.
+#include "GlTestSupport.h"
+
+#include <cmath>
+
+#include <toyhost/Session.h>
+
+#include "image/ImageWriters.h"
+
+namespace toyhost::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kProbe = sourceDir() / "shadertoys/sampling-probe";
+constexpr const char* kDate = "2024-01-01T12:00:00";
+
+// Renders `frames` frames with `settings` through the library and returns the last one's Image
+// (RGBA8, rows top first).
+std::vector<std::uint8_t> render(const fs::path& target, SessionSettings settings, int frames = 1,
+                                 const std::string& pass = "Image") {
+    Result<Shadertoy> shadertoy = Shadertoy::load(target);
+    EXPECT_TRUE(shadertoy.ok()) << shadertoy.error().text();
+    if (!shadertoy) return {};
+    if (settings.date.empty()) settings.date = kDate;
+    std::vector<std::uint8_t> pixels;
+    runOnGlThread([&] {
+        Result<std::unique_ptr<Session>> session = Session::createHeadless(*shadertoy, settings);
+        ASSERT_TRUE(session.ok()) << session.error().text();
+        pixels.resize(static_cast<std::size_t>((*session)->width()) * (*session)->height() * 4);
+        for (int n = 0; n < frames; ++n) ASSERT_TRUE((*session)->step().ok());
+        ASSERT_TRUE((*session)->read(pass, pixels).ok());
+    });
+    return pixels;
+}
+
+SessionSettings sized(int width, int height) {
+    SessionSettings s;
+    s.width = width;
+    s.height = height;
+    return s;
+}
+
+double psnr(const std::vector<double>& a, const std::vector<double>& b) {
+    double sum = 0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (i % 4 == 3) continue;  // alpha is 1 in both
+        sum += (a[i] - b[i]) * (a[i] - b[i]);
+        ++n;
+    }
+    return sum == 0 ? INFINITY : 10 * std::log10(255.0 * 255.0 / (sum / static_cast<double>(n)));
+}
+
+TEST(Sampling, Supersample4EqualsTheBoxAverageOfARender4xLarger) {
+    constexpr int w = 64, h = 36, n = 4;
+    SessionSettings small = sized(w, h);
+    small.supersample = n;
+    const std::vector<std::uint8_t> supersampled = render(kProbe, small);
+    const std::vector<std::uint8_t> large = render(kProbe, sized(w * n, h * n));
+    const std::vector<std::uint8_t> single = render(kProbe, sized(w, h));
+    ASSERT_EQ(supersampled.size(), static_cast<std::size_t>(w) * h * 4);
+    ASSERT_EQ(large.size(), supersampled.size() * n * n);
+    std::vector<double> boxed(supersampled.size()), ours(supersampled.begin(), supersampled.end()),
+        one(single.begin(), single.end());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 4; ++c) {
+                double sum = 0;
+                for (int j = 0; j < n; ++j)
+                    for (int i = 0; i < n; ++i)
+                        sum += large[((static_cast<std::size_t>(y) * n + j) * w * n + x * n + i) * 4 + c];
+                boxed[(static_cast<std::size_t>(y) * w + x) * 4 + c] = sum / (n * n);
+            }
+    const double matched = psnr(ours, boxed);
+    EXPECT_GE(matched, 45.0);
+    // The comparison can fail: the site's single sample is far from the box average (edges).
+    EXPECT_LT(psnr(one, boxed), 35.0);
+    EXPECT_GT(matched, psnr(one, boxed) + 10);
+}
+
+TEST(Sampling, MotionBlurOfAColourLinearInTimeIsItsShutterAverage) {
+    // Blue is 0.05 * iTime: over the interval [t, t + shutter/360 * dt] its average is
+    // 0.05 * (t + shutter/720 * dt).
+    for (double shutter : {180.0, 360.0, 90.0}) {
+        SessionSettings s = sized(16, 8);
+        s.fps = 2;  // dt = 0.5 s: a wide interval
+        s.startTime = 3;
+        s.motionBlur = 8;
+        s.shutterDegrees = shutter;
+        const std::vector<std::uint8_t> blurred = render(kProbe, s, 2);  // frame 1: t = 3.5
+        ASSERT_FALSE(blurred.empty());
+        const double expected = 0.05 * (3.5 + shutter / 720.0 * 0.5) * 255.0;
+        for (std::size_t i = 2; i < blurred.size(); i += 4)
+            ASSERT_LE(std::abs(blurred[i] - expected), 1.0) << "shutter " << shutter << ": blue " << int(blurred[i])
+                                                           << ", expected " << expected;
+    }
+    // Without blur the frame shows its own instant: 0.05 * 3.5 = 0.175 (44.6 of 255).
+    SessionSettings still = sized(16, 8);
+    still.fps = 2;
+    still.startTime = 3;
+    EXPECT_EQ(render(kProbe, still, 2)[2], 45);
+}
+
+TEST(Sampling, OneSampleIsTheSitesPixelsByteForByte) {
+    SessionSettings one = sized(96, 54);
+    one.supersample = 1;
+    one.motionBlur = 1;
+    one.shutterDegrees = 360;
+    const fs::path ocean = sourceDir() / "shadertoys/ocean";
+    EXPECT_EQ(render(ocean, one, 2), render(ocean, sized(96, 54), 2));
+}
+
+TEST(Sampling, BuffersDoNotDependOnTheSampleCount) {
+    // Mountains & Lakes' simulation state (Buffer A) after a few frames, with and without 2x2
+    // supersampling and motion blur of Image: identical.
+    const fs::path lakes = sourceDir() / "shadertoys/mountains-lakes";
+    SessionSettings sampled = sized(96, 54);
+    sampled.supersample = 2;
+    sampled.motionBlur = 2;
+    const std::vector<std::uint8_t> plain = render(lakes, sized(96, 54), 4, "Buffer A");
+    const std::vector<std::uint8_t> withSamples = render(lakes, sampled, 4, "Buffer A");
+    ASSERT_FALSE(plain.empty());
+    EXPECT_EQ(plain, withSamples);
+    // While the picture itself changes.
+    EXPECT_NE(render(lakes, sized(96, 54), 4), render(lakes, sampled, 4));
+}
+
+TEST(Sampling, RunAndTheCppSessionGiveTheSameFrames) {
+    const fs::path dir = freshOutputDir("sampling-surfaces");
+    const CommandResult cli = runToyhost("run " + kProbe.string() +
+                                         " --headless --size 40x24 --frames 3 --fps 4 --date " + kDate +
+                                         " --supersample 3 --motion-blur 2 --shutter 270 --dither --quiet --out " +
+                                         (dir / "f_%d.png").string());
+    ASSERT_EQ(cli.exitCode, 0) << cli.output;
+    Result<Image8> png = readPng(dir / "f_2.png");
+    ASSERT_TRUE(png.ok()) << png.error().text();
+    SessionSettings s = sized(40, 24);
+    s.fps = 4;
+    s.supersample = 3;
+    s.motionBlur = 2;
+    s.shutterDegrees = 270;
+    s.dither = true;
+    std::vector<std::uint8_t> ours = render(kProbe, s, 3);
+    ASSERT_EQ(ours.size(), png->rgba.size());
+    // Image8 is bottom row first.
+    const std::size_t row = 40 * 4;
+    for (int y = 0; y < 24; ++y)
+        ASSERT_TRUE(std::equal(ours.begin() + static_cast<std::ptrdiff_t>(y * row),
+                               ours.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
+                               png->rgba.begin() + static_cast<std::ptrdiff_t>((23 - y) * row)))
+            << "row " << y;
+    // The dither is there: without it the same frame differs.
+    s.dither = false;
+    EXPECT_NE(render(kProbe, s, 3), ours);
+}
+
+TEST(Sampling, ValuesOutOfRangeAreRefusedNamingTheSetting) {
+    Result<Shadertoy> probe = Shadertoy::load(kProbe);
+    ASSERT_TRUE(probe.ok());
+    auto refused = [&](SessionSettings s) {
+        std::string text;
+        runOnGlThread([&] {
+            Result<std::unique_ptr<Session>> session = Session::createHeadless(*probe, s);
+            if (!session) text = session.error().first().field + ": " + session.error().first().message;
+        });
+        return text;
+    };
+    SessionSettings s = sized(8, 8);
+    s.supersample = 0;
+    EXPECT_EQ(refused(s).rfind("supersample: must be 1 to 16", 0), 0u) << refused(s);
+    s.supersample = 16;
+    s.motionBlur = 17;
+    EXPECT_NE(refused(s).find("4352 draws a frame, more than 4096"), std::string::npos) << refused(s);
+    s = sized(8, 8);
+    s.shutterDegrees = 0;
+    EXPECT_EQ(refused(s).rfind("shutter:", 0), 0u) << refused(s);
+    s = sized(8, 8);
+    s.dither = true;
+    EXPECT_EQ(refused(s).rfind("dither:", 0), 0u) << refused(s);
+    const CommandResult cli = runToyhost("run " + kProbe.string() + " --headless --size 8x8 --motion-blur 0");
+    EXPECT_EQ(cli.exitCode, 2) << cli.output;
+    EXPECT_NE(cli.output.find("--motion-blur"), std::string::npos) << cli.output;
+}
+
+}  // namespace
+}  // namespace toyhost::testing
