@@ -23,6 +23,11 @@ inline constexpr double kShutterDegrees = 180.0;
 inline constexpr int kMaxSupersample = 16;         // --supersample limit (256 samples per pixel)
 inline constexpr int kMaxMotionBlurSamples = 256;  // --motion-blur limit
 inline constexpr int kMaxSamplesPerFrame = 4096;   // supersample^2 x motion-blur samples
+// A tiled still (session/TiledStill.h): tiles of this side unless --tile says, and the largest
+// canvas side it takes (PNG and EXR hold more; two bands of rows stay in memory).
+inline constexpr int kTileSide = 1024;
+inline constexpr int kMinTileSide = 16;
+inline constexpr int kMaxTiledCanvasSide = 65536;
 // `toyhost compare`'s difference images: |a - b| times this per channel (a 1-level difference is
 // dark but visible, 32 levels and more are white).
 inline constexpr int kCompareDiffGain = 8;

@@ -130,6 +130,12 @@ std::optional<ExrCompression> exrCompressionNamed(std::string_view name) {
     return std::nullopt;
 }
 
+int exrCompressionCode(ExrCompression compression) {
+    for (const ExrCompressionInfo& c : kExrCompressions)
+        if (c.value == compression) return static_cast<int>(c.imf);
+    return static_cast<int>(Imf::NO_COMPRESSION);
+}
+
 std::string exrCompressionNames() {
     std::string names;
     for (const ExrCompressionInfo& c : kExrCompressions) names += (names.empty() ? "" : ", ") + std::string(c.name);

@@ -54,6 +54,9 @@ std::string_view exrCompressionName(ExrCompression compression);
 std::optional<ExrCompression> exrCompressionNamed(std::string_view name);
 // "none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab"
 std::string exrCompressionNames();
+// OpenEXR's Imf::Compression value for `compression` (as an int: this header does not include
+// OpenEXR's).
+int exrCompressionCode(ExrCompression compression);
 
 // `rgba` holds width * height * 4 floats, rows bottom first. Writes 32-bit FLOAT channels
 // A, B, G, R (EXR keeps channels sorted by name), uncompressed, scanlines in increasing y with the

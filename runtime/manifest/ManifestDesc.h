@@ -81,6 +81,11 @@ struct ManifestDesc {
 
     const PassDesc* find(PassId id) const;
     bool hasBuffer(int index) const { return find(bufferPass(index)) != nullptr; }
+    bool hasBuffers() const {
+        for (const PassDesc& pass : passes)
+            if (isBuffer(pass.id)) return true;
+        return false;
+    }
 };
 
 }  // namespace toyhost

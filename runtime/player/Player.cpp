@@ -28,6 +28,8 @@ RendererDesc rendererDesc(GlContext& context, const PlayerDesc& desc, int width,
     r.floatImageTarget = desc.floatImage;
     r.accumulate = !isSingleSample(desc.sampling);
     r.dither = desc.sampling.dither;
+    r.resolutionWidth = desc.canvasWidth;
+    r.resolutionHeight = desc.canvasHeight;
     r.allocate = desc.allocate;
     return r;
 }
@@ -112,7 +114,7 @@ void Player::step(const FrameTime& time, std::span<const InputEvent> events, boo
     uniforms.mouse = mouse_.uniform();
     uniforms.date = time.date;
     draws_.clear();
-    if (renderImage && samples_.size() > 1)
+    if (samples_.size() > 1)  // also for a frame whose Image is drawn later, tile by tile
         for (const SamplePoint& sample : samples_) {
             const FrameTime at = subFrameTime(time, sample.fraction);
             draws_.push_back({sample.offset, at.time, at.date});

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "core/Result.h"
 #include "gl/GlContext.h"
 #include "graph/FrameSequence.h"
@@ -91,6 +93,10 @@ public:
     // counters advance. Only for shadertoys without buffers (nothing carries over between their
     // frames), to start a run at a later frame.
     void skipFrame(std::span<const InputEvent> events = {});
+
+    // A tiled still (desc.canvasWidth/Height): draws the last frame's Image again as the tile whose
+    // lower-left corner is at `origin` of the canvas (Renderer::drawImageAt).
+    void drawImageAt(glm::ivec2 origin) { renderer_->drawImageAt(glm::vec2(origin)); }
 
     // Where a pass's latest output is (readback, presenting).
     PassOutput output(PassId pass) const { return renderer_->output(pass); }

@@ -27,6 +27,10 @@ struct PlayerDesc {
     // Where and when Image is drawn in each frame (supersampling, motion blur); the default is the
     // site's single draw at the pixel centres and the frame's time.
     SamplingDesc sampling;
+    // A tiled still: the canvas (iResolution) is this size while the targets are width x height,
+    // one tile, placed with Player::drawImageAt; 0: the canvas is the targets.
+    int canvasWidth = 0;
+    int canvasHeight = 0;
     // Tests make allocations fail here to check that resize is all-or-nothing; empty: real GL.
     TextureAllocator allocate;
 };

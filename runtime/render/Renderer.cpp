@@ -40,8 +40,12 @@ struct Renderer::Impl {
     bool floatImage = false;
     std::optional<SampleAccumulator> accumulator;  // when frames average several Image draws
     bool dither = false;
-    std::vector<PassRuntime> passes;
+    glm::vec2 resolution{0.0f};   // iResolution of the canvas passes (the tiled whole, else the target)
+    glm::vec2 imageOrigin{0.0f};  // where the Image target sits in the canvas (a tile's corner)
+    FrameUniforms lastUniforms;   // the last frame's, for drawing Image again at another origin
+    std::vector<ImageDraw> lastDraws;
     std::uint64_t lastStep = 0;
+    std::vector<PassRuntime> passes;
     GpuActivity* gpu = nullptr;  // never null once created
     std::vector<Diagnostic> compileNotices;
     // The other type's values for readRgba32f / readRgba8 (a target read as it is, then
@@ -70,6 +74,59 @@ struct Renderer::Impl {
 
     GLenum imageFormat() const { return floatImage ? GL_RGBA32F : GL_RGBA8; }
 
+    // Binds `pass`'s program, its channels' textures for `step` and the frame's uniforms.
+    void usePass(PassRuntime& pass, const FrameUniforms& u, std::uint64_t step, glm::vec2 canvas) {
+        glUseProgram(pass.program.program.id());
+        const UniformLocations& loc = pass.program.uniforms;
+        glUniform3f(loc.resolution, canvas.x, canvas.y, 1.0f);
+        glUniform1f(loc.time, static_cast<float>(u.time));  // narrowed here only (FrameUniforms::time)
+        glUniform1f(loc.timeDelta, u.timeDelta);
+        glUniform1f(loc.frameRate, u.frameRate);
+        glUniform1i(loc.frame, u.frame);
+        glUniform4f(loc.mouse, u.mouse.x, u.mouse.y, u.mouse.z, u.mouse.w);
+        glUniform4f(loc.date, u.date.x, u.date.y, u.date.z, u.date.w);
+        setTimedUniforms(loc, pass.bindings);
+        std::array<GLuint, kChannelCount> dynamic{};
+        for (int c = 0; c < kChannelCount; ++c) {
+            const ChannelPlan& plan = pass.plan.channels[c];
+            if (plan.kind == ChannelKind::Buffer)
+                dynamic[c] = buffers[plan.buffer]->slot(slotRead(plan.age, step)).texture.id();
+            else if (plan.kind == ChannelKind::CubeBuffer)
+                dynamic[c] = cube->texture(slotRead(plan.age, step));
+        }
+        bindTextures(pass.bindings, dynamic);
+    }
+
+    // The Image pass into the Image target: one draw at imageOrigin, or each of `draws` (their
+    // offsets from imageOrigin, their iTime and iDate) added up and averaged.
+    void drawImage(PassRuntime& pass, const FrameUniforms& u, std::uint64_t step, std::span<const ImageDraw> draws) {
+        const UniformLocations& loc = pass.program.uniforms;
+        const char* name = passName(pass.plan.id);
+        glBindFramebuffer(GL_FRAMEBUFFER, imageTarget.framebuffer.id());
+        usePass(pass, u, step, resolution);
+        glUniform2f(loc.fragOffset, imageOrigin.x, imageOrigin.y);
+        gpu->beforeDraw(name, u.frame);
+        if (draws.size() <= 1 || !accumulator) {
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        } else {
+            // Each draw as the site would show it, added to the float sum; then the average.
+            for (std::size_t d = 0; d < draws.size(); ++d) {
+                const ImageDraw& draw = draws[d];
+                if (d > 0) {
+                    glBindFramebuffer(GL_FRAMEBUFFER, imageTarget.framebuffer.id());
+                    usePass(pass, u, step, resolution);
+                }
+                glUniform1f(loc.time, static_cast<float>(draw.time));
+                glUniform4f(loc.date, draw.date.x, draw.date.y, draw.date.z, draw.date.w);
+                glUniform2f(loc.fragOffset, imageOrigin.x + draw.offset.x, imageOrigin.y + draw.offset.y);
+                glDrawArrays(GL_TRIANGLES, 0, 3);
+                accumulator->add(imageTarget.texture.id(), d == 0);
+            }
+            accumulator->resolve(imageTarget.framebuffer.id(), static_cast<int>(draws.size()), dither && !floatImage);
+        }
+        gpu->afterDraw(name, u.frame);
+    }
+
     // The uniforms that change only when the program, the bindings or the canvas change.
     void setStaticUniforms(PassRuntime& pass) const {
         glUseProgram(pass.program.program.id());
@@ -97,7 +154,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
                      Code::Internal);
     impl->gpu = desc.gpu;
     const int w = desc.width, h = desc.height;
-    const std::array<float, 3> canvas{float(w), float(h), 1.0f};
+    impl->resolution = desc.resolutionWidth > 0 ? glm::vec2(desc.resolutionWidth, desc.resolutionHeight) : glm::vec2(w, h);
+    const std::array<float, 3> canvas{impl->resolution.x, impl->resolution.y, 1.0f};
 
     // Every program first: a shader error is reported before any large allocation, and all
     // failing passes are reported together.
@@ -166,43 +224,27 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
     glViewport(0, 0, width_, height_);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
+    s.lastUniforms = u;
+    s.lastDraws.assign(draws.begin(), draws.end());
     for (PassRuntime& pass : s.passes) {
         const bool isCube = pass.plan.targetCube;
         const bool isImage = pass.plan.targetBuffer < 0 && !isCube;
         if (isImage && !renderImage) continue;
         // A driver may block here while earlier passes draw: say which one.
         s.gpu->publishPending();
-        if (!isCube) {
-            GLuint target = isImage ? s.imageTarget.framebuffer.id()
-                                    : s.buffers[pass.plan.targetBuffer]->slot(slotWritten(step)).framebuffer.id();
-            glBindFramebuffer(GL_FRAMEBUFFER, target);
+        if (isImage) {
+            s.drawImage(pass, u, step, draws);
+            continue;
         }
-        glUseProgram(pass.program.program.id());
+        if (!isCube) glBindFramebuffer(GL_FRAMEBUFFER, s.buffers[pass.plan.targetBuffer]->slot(slotWritten(step)).framebuffer.id());
         const UniformLocations& loc = pass.program.uniforms;
-        if (isCube) glUniform3f(loc.resolution, float(s.cube->size()), float(s.cube->size()), 1.0f);
-        else glUniform3f(loc.resolution, float(width_), float(height_), 1.0f);
-        glUniform1f(loc.time, static_cast<float>(u.time));  // narrowed here only (FrameUniforms::time)
-        glUniform1f(loc.timeDelta, u.timeDelta);
-        glUniform1f(loc.frameRate, u.frameRate);
-        glUniform1i(loc.frame, u.frame);
-        glUniform4f(loc.mouse, u.mouse.x, u.mouse.y, u.mouse.z, u.mouse.w);
-        glUniform4f(loc.date, u.date.x, u.date.y, u.date.z, u.date.w);
-        setTimedUniforms(loc, pass.bindings);
-        std::array<GLuint, kChannelCount> dynamic{};
-        for (int c = 0; c < kChannelCount; ++c) {
-            const ChannelPlan& plan = pass.plan.channels[c];
-            if (plan.kind == ChannelKind::Buffer)
-                dynamic[c] = s.buffers[plan.buffer]->slot(slotRead(plan.age, step)).texture.id();
-            else if (plan.kind == ChannelKind::CubeBuffer)
-                dynamic[c] = s.cube->texture(slotRead(plan.age, step));
-        }
-        bindTextures(pass.bindings, dynamic);
+        s.usePass(pass, u, step, isCube ? glm::vec2(s.cube->size()) : s.resolution);
+        s.gpu->beforeDraw(passName(pass.plan.id), u.frame);
         if (isCube) {
             // The six faces, each with its viewport and corner directions (site: Paint_Cubemap).
             const int size = s.cube->size();
             glViewport(0, 0, size, size);
             glUniform4f(loc.viewport, 0.0f, 0.0f, float(size), float(size));
-            s.gpu->beforeDraw(passName(pass.plan.id), u.frame);
             for (int face = 0; face < 6; ++face) {
                 glBindFramebuffer(GL_FRAMEBUFFER, s.cube->faceFramebuffer(slotWritten(step), face));
                 float corners[15] = {};
@@ -212,36 +254,30 @@ void Renderer::renderFrame(const FrameUniforms& u, std::uint64_t step, bool rend
             }
             glViewport(0, 0, width_, height_);
             s.cube->generateMipmaps(slotWritten(step));
-        } else if (isImage && draws.size() > 1 && s.accumulator) {
-            // Each draw as the site would show it, added to the float sum; then the average.
-            s.gpu->beforeDraw(passName(pass.plan.id), u.frame);
-            for (std::size_t d = 0; d < draws.size(); ++d) {
-                const ImageDraw& draw = draws[d];
-                if (d > 0) {
-                    glBindFramebuffer(GL_FRAMEBUFFER, s.imageTarget.framebuffer.id());
-                    glUseProgram(pass.program.program.id());
-                    bindTextures(pass.bindings, dynamic);
-                }
-                glUniform1f(loc.time, static_cast<float>(draw.time));
-                glUniform4f(loc.date, draw.date.x, draw.date.y, draw.date.z, draw.date.w);
-                glUniform2f(loc.fragOffset, draw.offset.x, draw.offset.y);
-                glDrawArrays(GL_TRIANGLES, 0, 3);
-                s.accumulator->add(s.imageTarget.texture.id(), d == 0);
-            }
-            glUseProgram(pass.program.program.id());
-            glUniform2f(loc.fragOffset, 0.0f, 0.0f);
-            s.accumulator->resolve(s.imageTarget.framebuffer.id(), static_cast<int>(draws.size()),
-                                   s.dither && !s.floatImage);
         } else {
-            s.gpu->beforeDraw(passName(pass.plan.id), u.frame);
             glDrawArrays(GL_TRIANGLES, 0, 3);
+            // Mipmaps of a buffer are regenerated only when some channel samples it with `mipmap`.
+            s.buffers[pass.plan.targetBuffer]->generateMipmaps(slotWritten(step));
         }
-        // Mipmaps of a buffer are regenerated only when some channel samples it with `mipmap`.
-        if (!isImage && !isCube) s.buffers[pass.plan.targetBuffer]->generateMipmaps(slotWritten(step));
         s.gpu->afterDraw(passName(pass.plan.id), u.frame);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     s.lastStep = step;
+}
+
+void Renderer::drawImageAt(glm::vec2 origin) {
+    Impl& s = *impl_;
+    s.imageOrigin = origin;
+    glBindVertexArray(s.vertexArray.id());
+    glViewport(0, 0, width_, height_);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    for (PassRuntime& pass : s.passes)
+        if (pass.plan.targetBuffer < 0 && !pass.plan.targetCube) {
+            s.gpu->publishPending();
+            s.drawImage(pass, s.lastUniforms, s.lastStep, s.lastDraws);
+        }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 bool Renderer::hasBuffer(int index) const { return impl_->buffers[index].has_value(); }
@@ -290,6 +326,7 @@ Status Renderer::resize(int width, int height) {
     s.imageTarget = std::move(*image);
     width_ = width;
     height_ = height;
+    s.resolution = glm::vec2(width, height);
     for (PassRuntime& pass : s.passes) {
         for (ChannelBinding& channel : pass.bindings.channels)
             if (channel.source == ChannelSource::Buffer) channel.resolution = {float(width), float(height), 1};

@@ -42,6 +42,10 @@ struct RendererDesc {
     // rounded to 8 bits (render/SampleAccumulator.h).
     bool accumulate = false;
     bool dither = false;
+    // iResolution when the targets are a tile of a larger canvas (a tiled still: drawImageAt
+    // places them); 0: the targets' own size.
+    int resolutionWidth = 0;
+    int resolutionHeight = 0;
     TextureAllocator allocate;     // empty: createRenderTexture
 };
 
@@ -88,6 +92,11 @@ public:
     // their average; buffers and Cube A still run once, with `uniforms`.
     void renderFrame(const FrameUniforms& uniforms, std::uint64_t step, bool renderImage = true,
                      std::span<const ImageDraw> draws = {});
+
+    // Draws the last frame's Image pass again (its uniforms and draws) with the Image target's
+    // corner at `origin` of the canvas (fragCoord moved by it): a tile of a still larger than the
+    // target. The origin stays for later frames.
+    void drawImageAt(glm::vec2 origin);
 
     // New keyboard texels (256*3 bytes, row 0 first); call only when they changed.
     void updateKeyboard(std::span<const std::uint8_t> texels);

@@ -6,6 +6,7 @@
 #include "session/Checkpoint.h"
 #include "session/FiniteCheck.h"
 #include "session/Recording.h"
+#include "session/TiledStill.h"
 #include "session/SoundJob.h"
 
 namespace toyhost {
@@ -20,12 +21,6 @@ double secondsBetween(Clock::time_point from, Clock::time_point to) {
 }
 
 std::string plural(int n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); }
-
-bool hasBuffers(const ManifestDesc& manifest) {
-    for (const PassDesc& pass : manifest.passes)
-        if (isBuffer(pass.id)) return true;
-    return false;
-}
 
 }  // namespace
 
@@ -87,7 +82,8 @@ Result<std::unique_ptr<SessionCore>> SessionCore::start(SessionPlan plan, std::s
     Result<std::shared_ptr<TemporaryFiles>> track = sound.soundTrack(s->plan_, observer);
     if (!track) return track.error();
     s->soundTrack_ = std::move(*track);
-    if (s->plan_.output) s->recording_ = std::make_unique<Recording>(s->plan_, s->activity());
+    if (s->plan_.tile) s->tiled_ = std::make_unique<TiledStill>(s->plan_);
+    else if (s->plan_.output) s->recording_ = std::make_unique<Recording>(s->plan_, s->activity());
     PlayerPlan shadertoy = std::move(s->plan_.shadertoy);
     if (Status created = s->createPlayer(std::move(shadertoy)); !created) {
         // A window or --watch waits for the fix of a shadertoy that does not compile yet.
@@ -106,8 +102,13 @@ Status SessionCore::createPlayer(PlayerPlan shadertoy) {
     const SessionOptions& o = plan_.options;
     PlayerDesc desc;
     // A window's canvas is its framebuffer, except while recording (one size for the recording).
-    desc.width = *o.width;
-    desc.height = *o.height;
+    // A tiled still's targets are one tile of the canvas.
+    desc.width = plan_.tile ? TiledStill::tileSide(*o.width, plan_.tile) : *o.width;
+    desc.height = plan_.tile ? TiledStill::tileSide(*o.height, plan_.tile) : *o.height;
+    if (plan_.tile) {
+        desc.canvasWidth = *o.width;
+        desc.canvasHeight = *o.height;
+    }
     desc.floatImage = o.floatImage || (plan_.output && plan_.output->format() == OutputFormat::Exr &&
                                        o.capturePass == PassId::Image);
     desc.sampling = o.sampling;
@@ -161,7 +162,7 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     if (frame < plan_.first) {
         // Before the frame range: buffers must still run (their state carries over); a shadertoy
         // without buffers only needs its inputs and counters to advance.
-        if (hasBuffers(player_->manifest())) player_->step(time, events, /*renderImage=*/false);
+        if (player_->manifest().hasBuffers()) player_->step(time, events, /*renderImage=*/false);
         else player_->skipFrame(events);
         ++frameNumber_;
         if (checkpointDue()) return saveCheckpoint();
@@ -172,7 +173,7 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     // Nothing reads the Image pass but the driver: a run that captures renders it only on the frames
     // it captures (long simulations captured every K frames run at buffer speed). A window shows
     // it, and a run without --out renders every pass (a dry run, the render-only benchmark).
-    const bool renderImage = live_ || !recording_ || recording_->needsImage(frame);
+    const bool renderImage = !tiled_ && (live_ || !recording_ || recording_->needsImage(frame));
     if (framesRendered_ == 0) {
         roundStartedAt_ = Clock::now();
         report_.startupSeconds = secondsBetween(startedAt_, roundStartedAt_);
@@ -183,6 +184,8 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
 
     if (recording_)
         if (Status recorded = recording_->rendered(*player_, frame); !recorded) return recorded;
+    if (tiled_)
+        if (Status drawn = tiled_->render(*player_, frame); !drawn) return drawn;
     if (o.checkFinite) checkBuffers(frame);
     // The first frame waits for the GPU once, so that its time is real.
     if (o.finishEachFrame || framesRendered_ == 0) {
@@ -281,6 +284,7 @@ Error SessionCore::interrupted() {
     (void)saveCheckpoint();  // best effort: the run is ending anyway
     if (checkpointWritten_) message += "; the checkpoint " + checkpointWritten_->string() + " was written";
     if (recording_) message += recording_->abandon();
+    if (tiled_) message += tiled_->abandon();
     return Error(message, Code::Interrupted);
 }
 
@@ -300,14 +304,18 @@ Result<SessionReport> SessionCore::finishRound() {
         if (!completed) return completed.error();
         recording_->report(report_, renderSeconds_, observer_, *finite_);
     }
+    if (tiled_) {
+        if (Status completed = tiled_->complete(); !completed) return completed.error();
+        tiled_->report(report_);
+    }
     if (player_ && !o.checkFinite && framesRendered_ > 0) checkBuffers(frameNumber_ - 1);
     if (!o.interactive)
         if (Status saved = saveCheckpoint(); !saved) return saved.error();
     writer_->drain();
     if (player_) player_->finish();  // the reported time includes the GPU's work
     report_.checkpoint = checkpointWritten_;
-    report_.width = player_ ? player_->width() : *o.width;
-    report_.height = player_ ? player_->height() : *o.height;
+    report_.width = player_ && !plan_.tile ? player_->width() : *o.width;
+    report_.height = player_ && !plan_.tile ? player_->height() : *o.height;
     if (framesRendered_ > 0) {
         report_.firstFrameSeconds = secondsBetween(roundStartedAt_, firstFrameEndedAt_);
         report_.restSeconds = secondsBetween(firstFrameEndedAt_, Clock::now());

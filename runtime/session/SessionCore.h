@@ -38,6 +38,7 @@ namespace toyhost {
 
 class SessionCore;
 class Recording;
+class TiledStill;
 class BackgroundWriter;
 class FiniteCheck;
 class TemporaryFiles;
@@ -151,6 +152,7 @@ private:
     std::unique_ptr<BackgroundWriter> writer_;
     std::unique_ptr<Player> player_;
     std::unique_ptr<Recording> recording_;
+    std::unique_ptr<TiledStill> tiled_;  // a canvas drawn in tiles (instead of recording_)
     std::unique_ptr<FiniteCheck> finite_;
     std::vector<Diagnostic> problems_;
     std::vector<InputEvent> events_;

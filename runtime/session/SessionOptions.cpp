@@ -94,6 +94,32 @@ Status checkSoundRequest(const SoundRequest& sound) {
 }
 }  // namespace
 
+namespace {
+// A canvas drawn in tiles (session/TiledStill.h): up to kMaxTiledCanvasSide a side, tiles from
+// kMinTileSide to kMaxCanvasSide, and only without buffers, whose targets are the whole canvas.
+Status checkTiledSize(int width, int height, std::optional<int> tile, const ManifestDesc& manifest, bool interactive) {
+    using namespace defaults;
+    if (tile && (*tile < kMinTileSide || *tile > kMaxCanvasSide))
+        return settingError("tile", "must be " + std::to_string(kMinTileSide) + " to " + std::to_string(kMaxCanvasSide) +
+                                        " pixels, got " + std::to_string(*tile));
+    const std::string size = std::to_string(width) + "x" + std::to_string(height);
+    if (width < 1 || height < 1 || width > kMaxTiledCanvasSide || height > kMaxTiledCanvasSide)
+        return settingError("size", "canvas size " + size + " is not between 1x1 and " +
+                                        std::to_string(kMaxTiledCanvasSide) + "x" + std::to_string(kMaxTiledCanvasSide),
+                            Code::UsageSize);
+    const std::string why = tile ? "a tiled canvas (--tile)" : "canvas size " + size + " (more than " +
+                                                                   std::to_string(kMaxCanvasSide) + " a side: drawn in tiles)";
+    if (manifest.hasBuffers())
+        return settingError(tile ? "tile" : "size",
+                            why + ": this shadertoy has buffers, and a buffer is the size of the whole canvas, so it "
+                                  "cannot be drawn in tiles; at most " + std::to_string(kMaxCanvasSide) + "x" +
+                                  std::to_string(kMaxCanvasSide) + " for it",
+                            Code::UsageSize);
+    if (interactive) return settingError(tile ? "tile" : "size", why + ": a window cannot show it; run it headless", Code::UsageSize);
+    return okStatus();
+}
+}  // namespace
+
 TimelineDesc timelineOf(const SessionPlan& plan) {
     const SessionOptions& o = plan.options;
     return {o.fps.value_or(defaults::kFps), o.startTime, o.wallClock.value_or(0.0), plan.mouse, plan.keys};
@@ -134,7 +160,11 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     // A headless run's iDate is the wall clock at frame 0 unless --date (or a checkpoint) says
     // otherwise; a window shows the live date.
     if (!o.interactive && !o.wallClock) o.wallClock = localWallClockNow();
-    if (Status size = checkSizeSetting(*o.width, *o.height); !size) return size.error();
+    const bool tiled = o.tile || *o.width > defaults::kMaxCanvasSide || *o.height > defaults::kMaxCanvasSide;
+    if (Status size = tiled ? checkTiledSize(*o.width, *o.height, o.tile, *manifest, o.interactive)
+                            : checkSizeSetting(*o.width, *o.height);
+        !size)
+        return size.error();
     if (o.checkpoint) {
         std::error_code ec;
         if (fs::is_directory(*o.checkpoint, ec))
@@ -228,6 +258,13 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
                          "(Debian: apt-get install ffmpeg)",
                          Code::CaptureFfmpeg);
         run.output = std::move(*pattern);
+    }
+    if (tiled) {
+        if (run.output && run.output->format() != OutputFormat::Png && run.output->format() != OutputFormat::Exr)
+            return settingError("size", "a tiled canvas is written as PNG or EXR files, not " +
+                                            std::string(run.output->streamed() ? "a stream or video" : "this format"));
+        if (o.capturePass != PassId::Image) return settingError("size", "a tiled canvas captures the Image pass only");
+        run.tile = o.tile.value_or(defaults::kTileSide);
     }
     const bool exrAsked = o.exr.half || o.exr.compression != ExrCompression::None;
     if (exrAsked && (!run.output || run.output->format() != OutputFormat::Exr))

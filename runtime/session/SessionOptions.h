@@ -83,6 +83,10 @@ struct SessionOptions {
     // --supersample, --motion-blur, --shutter, --dither: Image drawn several times a frame and
     // averaged (timing/SamplePattern.h); the default is the site's one draw.
     SamplingDesc sampling;
+    // --tile SIDE: Image drawn in tiles of at most SIDE x SIDE (session/TiledStill.h). A canvas
+    // wider or taller than defaults::kMaxCanvasSide is tiled without it (default tile side
+    // defaults::kTileSide); only shadertoys without buffers.
+    std::optional<int> tile;
     // Render only the Sound pass, to this file (no frames, no Player).
     std::optional<SoundRequest> sound;
     // Watchdog limits in seconds (0: off); defaults from core/Defaults.h, no frame limit in a
@@ -122,6 +126,7 @@ struct SessionPlan {
     int first = 0;                         // frames [first, end) are captured (the frame range)
     int end = 0;
     std::optional<Checkpoint> resume;      // --resume: the state the run continues from
+    int tile = 0;                          // a tiled still: the tile side; 0: not tiled
 };
 
 // The run's fixed-step input (timing/Timeline.h): its clock, date and input scripts.

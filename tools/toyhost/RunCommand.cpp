@@ -98,6 +98,11 @@ void RunCommand::define(CLI::App& run) {
     run.add_option("--mic", options_.media.mic,
                    "What mic channels hear: an audio file, or live: alsa:DEVICE (alsa:default, alsa:hw:0), "
                    "pulse:DEVICE, lavfi:GRAPH (default: the spectrum the site shows without audio)");
+    run.add_option("--tile", options_.tile,
+                   "Draw Image in tiles of at most SIDE x SIDE pixels with iResolution the whole canvas, and write "
+                   "PNG/EXR band by band (stills larger than a framebuffer; a --size beyond " +
+                       std::to_string(defaults::kMaxCanvasSide) + " is tiled without it, with tiles of " +
+                       std::to_string(defaults::kTileSide) + "); shadertoys without buffers only");
     run.add_option("--checkpoint", options_.checkpoint,
                    "Write the run's full state (every buffer, iFrame, time, mouse, keys) to FILE, atomically: "
                    "every --checkpoint-every frames, when interrupted and at the end");

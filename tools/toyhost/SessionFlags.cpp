@@ -29,6 +29,7 @@ constexpr std::pair<const char*, const char*> kFlagOfSetting[] = {
     {"motion_blur", "--motion-blur"},
     {"shutter", "--shutter"},
     {"dither", "--dither"},
+    {"tile", "--tile"},
 };
 
 std::string number(double value) {
