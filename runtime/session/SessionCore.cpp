@@ -105,9 +105,9 @@ Status SessionCore::createPlayer(PlayerPlan shadertoy) {
     const SessionOptions& o = plan_.options;
     PlayerDesc desc;
     // A window's canvas is its framebuffer, except while recording (one size for the recording).
-    desc.width = *o.width;
-    desc.height = *o.height;
-    desc.floatImage = o.floatImage || (plan_.output && plan_.output->format() == OutputFormat::Exr &&
+    desc.width = *o.settings.width;
+    desc.height = *o.settings.height;
+    desc.floatImage = o.settings.floatImage || (plan_.output && plan_.output->format() == OutputFormat::Exr &&
                                        o.capturePass == PassId::Image);
     Result<std::unique_ptr<Player>> made = Player::create(context_, std::move(shadertoy), desc);
     if (!made) return made.error();
@@ -216,7 +216,7 @@ void SessionCore::checkBuffers(int frame) {
 Status SessionCore::saveCheckpoint() {
     const SessionOptions& o = plan_.options;
     if (!o.checkpoint || !player_) return okStatus();
-    auto checkpoint = std::make_shared<Checkpoint>(Checkpoint{player_->saveState(), *o.fps, o.startTime, *o.wallClock,
+    auto checkpoint = std::make_shared<Checkpoint>(Checkpoint{player_->saveState(), *o.settings.fps, o.settings.startTime, *plan_.wallClock,
                                                               player_->manifest().name, codeHash(player_->manifest()),
                                                               channelMedia(player_->manifest())});
     const fs::path path = *o.checkpoint;
@@ -302,8 +302,8 @@ Result<SessionReport> SessionCore::finishRound() {
     writer_->drain();
     if (player_) player_->finish();  // the reported time includes the GPU's work
     report_.checkpoint = checkpointWritten_;
-    report_.width = player_ ? player_->width() : *o.width;
-    report_.height = player_ ? player_->height() : *o.height;
+    report_.width = player_ ? player_->width() : *o.settings.width;
+    report_.height = player_ ? player_->height() : *o.settings.height;
     if (framesRendered_ > 0) {
         report_.firstFrameSeconds = secondsBetween(roundStartedAt_, firstFrameEndedAt_);
         report_.restSeconds = secondsBetween(firstFrameEndedAt_, Clock::now());

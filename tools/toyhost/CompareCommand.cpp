@@ -222,6 +222,11 @@ int CompareCommand::execute(const GlProcess&) {
     SessionSettings& s = settings.session;
     std::optional<glm::vec2> mouse;
     if (Status given = flags_.applyTo(s, mouse); !given) return trouble(given.error());
+    if (mouse)
+        if (Status inRange = checkMouseSetting(mouse->x, mouse->y); !inRange) return trouble(inRange.error());
+    // The commands' watchdog limits unless given (a library Session has none).
+    if (!s.frameTimeout) s.frameTimeout = defaults::kFrameTimeoutSeconds;
+    if (!s.compileTimeout) s.compileTimeout = defaults::kCompileTimeoutSeconds;
     if (frames_) {
         if (Status frames = checkFramesSetting(*frames_); !frames) return trouble(frames.error());
         settings.frames = *frames_;
