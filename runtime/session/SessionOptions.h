@@ -45,14 +45,15 @@ struct SessionOptions {
     // When the command started, for the report's start-up time; default: when prepareSession ran.
     std::optional<std::chrono::steady_clock::time_point> startedAt;
     // Canvas, clock, date, media, scripts, Image format and watchdog limits: the settings a library
-    // Session takes, as given (absent: the manifest's defaults, else core/Defaults.h).
+    // Session takes, as given. Absent: the manifest's defaults, else core/Defaults.h; in a window,
+    // no fps means real time and no frame timeout. The limits are enforced by the session's
+    // Watchdog (session/Watchdog.h), when it has one.
     SessionSettings settings;
     // Window mode: no frame count means "until the window closes" and no fps means real time.
     bool interactive = false;
     // Re-render (headless) or hot-reload (window) when a file of the shadertoy changes.
     bool watch = false;
     std::optional<int> frames;             // default defaults::kFrames (headless), no end (window)
-    // settings.fps absent: defaults::kFps headless, real time in a window.
     std::optional<std::string> outPattern;
     std::optional<int> captureEvery;       // default defaults::kCaptureEvery
     PassId capturePass = PassId::Image;
@@ -79,8 +80,6 @@ struct SessionOptions {
     bool checkFinite = false;
     // Render only the Sound pass, to this file (no frames, no Player).
     std::optional<SoundRequest> sound;
-    // settings.frameTimeout / compileTimeout absent: core/Defaults.h's, no frame limit in a window.
-    // Enforced by the session's Watchdog (session/Watchdog.h), when it has one.
 
     // Long runs (headless only). --checkpoint FILE: the full state is written to FILE (atomically)
     // every `checkpointEvery` frames, when the run is interrupted and when it ends; --resume FILE
