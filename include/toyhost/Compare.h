@@ -67,15 +67,13 @@ struct ComparedFrame {
 };
 
 struct CompareSettings {
-    // Size, fps, start time, date, media and limits, the same for both (zero means the default, as
-    // for a Session; an empty date is fixed to now once, so both see the same iDate).
+    // Size, fps, start time, date, media, input scripts and limits, the same for both (absent means
+    // the default, as for a Session; an absent date is fixed to now once, so both see the same
+    // iDate). The scripts are replayed for both.
     SessionSettings session;
     int frames = 0;                // frames rendered and compared; 0: toyhost's default run length
     std::string pass = "Image";    // "Image" or "Buffer A" .. "Buffer D"
     CompareTolerance tolerance;
-    // Input scripts (the CLI's --mouse-script / --key-script JSON files), replayed for both.
-    std::filesystem::path mouseScript;
-    std::filesystem::path keyScript;
     // More events for both, before frame `frame` (at iTime `time`), after the scripts' events.
     std::function<std::vector<InputEvent>(int frame, double time)> input;
     bool keepDiffImages = false;   // FrameDifference::diffImage for frames beyond the tolerance

@@ -11,7 +11,7 @@
 namespace toyhost {
 
 struct Defaults {
-    int width = 0;                     // canvas (iResolution), for SessionSettings width/height 0
+    int width = 0;                     // canvas (iResolution), for SessionSettings without width/height
     int height = 0;
     double fps = 0;                    // fixed time step: frame n at iTime = startTime + n / fps
     double minFps = 0;                 // the range fps may be given in

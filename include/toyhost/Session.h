@@ -34,15 +34,21 @@
 
 namespace toyhost {
 
-// How a session runs; zero or empty means the default (toyhost's own defaults).
+// How a session runs. An absent setting takes the default (the shadertoy manifest's "defaults",
+// else toyhost's own: toyhost/Defaults.h); a value given is checked, and refused with an error
+// naming the setting (Diagnostic::field "size", "fps", ...) when out of range: width = 0 is an
+// error, not the default.
 struct SessionSettings {
-    int width = 0;   // canvas (iResolution); 0: 800x450
-    int height = 0;
-    double fps = 0;  // step(): frame n at iTime = startTime + n / fps, iTimeDelta = 1 / fps; 0: 60
+    // Canvas (iResolution); give both or neither. Absent: the manifest's, else 800x450.
+    std::optional<int> width;
+    std::optional<int> height;
+    // step(): frame n at iTime = startTime + n / fps, iTimeDelta = 1 / fps. Absent: the
+    // manifest's, else 60.
+    std::optional<double> fps;
     double startTime = 0;
-    // iDate at time 0 as "YYYY-MM-DDTHH:MM:SS" (local time); empty: now. Fixed dates make runs
+    // iDate at time 0 as "YYYY-MM-DDTHH:MM:SS" (local time); absent: now. Fixed dates make runs
     // repeatable.
-    std::string date;
+    std::optional<std::string> date;
     // Real files for Shadertoy's stock media (by hash or name), else deterministic stand-ins.
     std::vector<std::filesystem::path> mediaFolders;
     std::vector<std::pair<std::string, std::filesystem::path>> mediaFiles;  // stock id or name -> file
@@ -50,13 +56,14 @@ struct SessionSettings {
     // gives Image's unclamped floats.
     bool floatImage = false;
     // Limits in seconds (0: none): a pass drawing one frame, or compiling, for longer makes the
-    // call that was running return an error once it returns (GL cannot be interrupted).
-    double frameTimeout = 0;
-    double compileTimeout = 0;
+    // call that was running return an error once it returns (GL cannot be interrupted). Absent:
+    // none for a Session; the toyhost commands' own defaults for them.
+    std::optional<double> frameTimeout;
+    std::optional<double> compileTimeout;
     // Input scripts (the CLI's --mouse-script / --key-script JSON files) that step() replays by
-    // frame number before the caller's own events, as a headless run does; empty: none.
-    std::filesystem::path mouseScript;
-    std::filesystem::path keyScript;
+    // frame number before the caller's own events, as a headless run does; absent: none.
+    std::optional<std::filesystem::path> mouseScript;
+    std::optional<std::filesystem::path> keyScript;
     // Better pixels than the site (docs/sampling.md): the Image pass drawn supersample x
     // supersample times with fragCoord on a regular grid inside each pixel, at motionBlur times
     // inside the shutter interval (shutterDegrees / 360 of the frame step, opening at the frame's

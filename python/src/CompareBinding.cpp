@@ -68,12 +68,14 @@ CompareTolerance toleranceFrom(std::optional<double> minPsnr, std::optional<int>
 void bindCompare(py::module_& m) {
     m.def(
         "compare",
-        [](const Shadertoy& a, const Shadertoy& b, int width, int height, double fps, double startTime,
-           const std::string& date, const std::vector<std::filesystem::path>& mediaFolders,
-           const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles, double frameTimeout,
-           double compileTimeout, int frames, const std::string& pass, std::optional<double> minPsnr,
-           std::optional<int> maxDiff, std::optional<std::pair<float, float>> mouse,
-           const std::filesystem::path& mouseScript, const std::filesystem::path& keyScript, bool keepDiffImages,
+        [](const Shadertoy& a, const Shadertoy& b, std::optional<int> width, std::optional<int> height,
+           std::optional<double> fps, double startTime, const std::optional<std::string>& date,
+           const std::vector<std::filesystem::path>& mediaFolders,
+           const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
+           std::optional<double> frameTimeout, std::optional<double> compileTimeout, int frames,
+           const std::string& pass, std::optional<double> minPsnr, std::optional<int> maxDiff,
+           std::optional<std::pair<float, float>> mouse, const std::optional<std::filesystem::path>& mouseScript,
+           const std::optional<std::filesystem::path>& keyScript, bool keepDiffImages,
            int diffGain, bool stopAtFirstDifference) {
             refuseAfterForkWithGlOpen();
             CompareSettings settings;
@@ -89,8 +91,8 @@ void bindCompare(py::module_& m) {
             settings.frames = frames;
             settings.pass = pass;
             settings.tolerance = toleranceFrom(minPsnr, maxDiff);
-            settings.mouseScript = mouseScript;
-            settings.keyScript = keyScript;
+            settings.session.mouseScript = mouseScript;
+            settings.session.keyScript = keyScript;
             settings.keepDiffImages = keepDiffImages;
             settings.diffGain = diffGain;
             if (mouse)  // the button pressed at (x, y) before frame 0 and held, as the CLI's --mouse

@@ -281,11 +281,14 @@ py::object nextRendered(RenderStream& stream) {
     return arrayOwning(frame->frame, frame->width, frame->height, std::move(frame->bytes));
 }
 
-SessionSettings settingsFrom(int width, int height, double fps, double startTime, const std::string& date,
+// Python's None is an absent setting (the default); every value given is checked by the session.
+SessionSettings settingsFrom(std::optional<int> width, std::optional<int> height, std::optional<double> fps,
+                             double startTime, const std::optional<std::string>& date,
                              const std::vector<std::filesystem::path>& mediaFolders,
                              const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
-                             bool floatImage, double frameTimeout, double compileTimeout,
-                             const std::filesystem::path& mouseScript, const std::filesystem::path& keyScript) {
+                             bool floatImage, std::optional<double> frameTimeout, std::optional<double> compileTimeout,
+                             const std::optional<std::filesystem::path>& mouseScript,
+                             const std::optional<std::filesystem::path>& keyScript) {
     SessionSettings settings;
     settings.width = width;
     settings.height = height;
@@ -320,11 +323,13 @@ void bindSession(py::module_& module) {
         .def("next", &nextRendered, "The next (iframe, array), or None after the last.")
         .def("cancel", &RenderStream::cancel, "Stops rendering; frames not taken are dropped.");
     py::class_<NativeSession>(module, "NativeSession")
-        .def(py::init([](const Shadertoy& shadertoy, int width, int height, double fps, double startTime,
-                         const std::string& date, const std::vector<std::filesystem::path>& mediaFolders,
+        .def(py::init([](const Shadertoy& shadertoy, std::optional<int> width, std::optional<int> height,
+                         std::optional<double> fps, double startTime, const std::optional<std::string>& date,
+                         const std::vector<std::filesystem::path>& mediaFolders,
                          const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
-                         bool floatImage, double frameTimeout, double compileTimeout,
-                         const std::filesystem::path& mouseScript, const std::filesystem::path& keyScript) {
+                         bool floatImage, std::optional<double> frameTimeout, std::optional<double> compileTimeout,
+                         const std::optional<std::filesystem::path>& mouseScript,
+                         const std::optional<std::filesystem::path>& keyScript) {
                  return std::make_unique<NativeSession>(
                      shadertoy, settingsFrom(width, height, fps, startTime, date, mediaFolders, mediaFiles,
                                              floatImage, frameTimeout, compileTimeout, mouseScript, keyScript));

@@ -82,6 +82,15 @@ def test_bad_reads_raise_usage_errors(rows):
     for fps in (0, -30, float("nan"), 1e9):
         with pytest.raises(toyhost.UsageError):
             toyhost.Session(rows, size=(4, 2), fps=fps)
+    # None is "the default"; a value given is checked by the library, which names the setting.
+    for settings, setting in (({"size": (0, 0)}, "size"), ({"fps": 0}, "fps"), ({"date": ""}, "date"),
+                              ({"frame_timeout": 0.01}, "frame_timeout")):
+        with pytest.raises(toyhost.UsageError) as raised:
+            toyhost.Session(rows, **settings)
+        assert [d.field for d in raised.value.diagnostics] == [setting], str(raised.value)
+    with toyhost.Session(rows, size=(4, 2), fps=None, date=None, frame_timeout=None, compile_timeout=None,
+                         mouse_script=None, key_script=None) as defaults:
+        defaults.step()
     session.close()
     assert session.closed
     with pytest.raises(toyhost.UsageError):

@@ -61,29 +61,28 @@ class Session:
     ``size`` is the canvas (iResolution), ``date`` iDate at time 0 ("YYYY-MM-DDTHH:MM:SS", local;
     default: now; fix it for repeatable frames), ``media_folders`` / ``media_files`` real files for
     Shadertoy's stock media (else deterministic stand-ins), ``float_image`` renders Image into 32-bit
-    floats, ``frame_timeout`` / ``compile_timeout`` are limits in seconds (0: none), ``mouse_script``
+    floats, ``frame_timeout`` / ``compile_timeout`` are limits in seconds (None or 0: none), ``mouse_script``
     / ``key_script`` are the CLI's --mouse-script / --key-script JSON files, replayed by step() and
-    render() before their own input (the same frames as the CLI with those scripts). Left out,
-    size and fps are toyhost's defaults (800x450, 60).
+    render() before their own input (the same frames as the CLI with those scripts). Left out
+    (None), size and fps are the manifest's defaults, else toyhost's (800x450, 60); a value given
+    is checked (``size=(0, 2)`` or ``fps=0`` raise UsageError naming the setting).
 
     Close it (``close()`` or ``with``) to free its GL context at once rather than at garbage
     collection."""
 
     def __init__(self, shadertoy, size=None, fps=None, start_time=0.0, date=None, media_folders=(),
-                 media_files=None, float_image=False, frame_timeout=0.0, compile_timeout=0.0, mouse_script=None,
+                 media_files=None, float_image=False, frame_timeout=None, compile_timeout=None, mouse_script=None,
                  key_script=None):
         if not isinstance(shadertoy, Shadertoy):
             shadertoy = load(shadertoy)
-        width, height = (0, 0) if size is None else _size(size)
-        if fps is not None and not float(fps) > 0:  # the C++ API takes 0 for "the default"
-            raise UsageError(f"fps: must be more than 0, got {fps}")
+        width, height = (None, None) if size is None else _size(size)
         self._fps = float(fps) if fps is not None else _toyhost.defaults()["fps"]
         self._native = _toyhost.NativeSession(
-            shadertoy, width, height, float(fps or 0), float(start_time), date or "",
+            shadertoy, width, height, self._fps if fps is not None else None, float(start_time), date,
             [os.fspath(f) for f in media_folders],
             [(str(k), os.fspath(v)) for k, v in (media_files or {}).items()],
-            bool(float_image), float(frame_timeout), float(compile_timeout),
-            os.fspath(mouse_script) if mouse_script else "", os.fspath(key_script) if key_script else "")
+            bool(float_image), _seconds(frame_timeout), _seconds(compile_timeout),
+            _path(mouse_script), _path(key_script))
         self.shadertoy = shadertoy
         self._mouse_held = False
         self._keys_held = set()
@@ -247,6 +246,14 @@ class Session:
                 raise TypeError(f"events: expected toyhost.InputEvent, got {event!r}")
             out.append(event)
         return out
+
+
+def _seconds(value):
+    return None if value is None else float(value)
+
+
+def _path(value):
+    return None if value is None else os.fspath(value)
 
 
 def _size(size):

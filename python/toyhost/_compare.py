@@ -63,8 +63,8 @@ def _frame(values):
 
 def compare(a, b, frames=None, size=None, fps=None, start_time=0.0, date=None, pass_="Image", min_psnr=None,
             max_diff=None, mouse=None, mouse_script=None, key_script=None, keep_diff_images=False, diff_gain=0,
-            stop_at_first_difference=False, media_folders=(), media_files=None, frame_timeout=0.0,
-            compile_timeout=0.0):
+            stop_at_first_difference=False, media_folders=(), media_files=None, frame_timeout=None,
+            compile_timeout=None):
     """Renders ``a`` and ``b`` (Shadertoys, or anything toyhost.load takes) headless with the same
     size, fps, start time, date and inputs, and compares ``pass_`` after every frame.
 
@@ -81,23 +81,23 @@ def compare(a, b, frames=None, size=None, fps=None, start_time=0.0, date=None, p
 
     a = a if isinstance(a, Shadertoy) else load(a)
     b = b if isinstance(b, Shadertoy) else load(b)
-    width, height = (0, 0)
+    width, height = (None, None)
     if size is not None:
         try:
             width, height = (int(v) for v in size)
         except (TypeError, ValueError):
             raise UsageError(f"size: expected (width, height), got {size!r}") from None
-    if fps is not None and not float(fps) > 0:
-        raise UsageError(f"fps: must be more than 0, got {fps}")
     if frames is not None and int(frames) < 1:
         raise UsageError(f"frames: must be 1 or more, got {frames}")
     report = _toyhost.compare(
-        a, b, width, height, float(fps or 0), float(start_time), date or "", [os.fspath(f) for f in media_folders],
-        [(str(k), os.fspath(v)) for k, v in (media_files or {}).items()], float(frame_timeout), float(compile_timeout),
+        a, b, width, height, None if fps is None else float(fps), float(start_time), date,
+        [os.fspath(f) for f in media_folders], [(str(k), os.fspath(v)) for k, v in (media_files or {}).items()],
+        None if frame_timeout is None else float(frame_timeout),
+        None if compile_timeout is None else float(compile_timeout),
         int(frames or 0), pass_,
         None if min_psnr is None else float(min_psnr), None if max_diff is None else int(max_diff),
         None if mouse is None else (float(mouse[0]), float(mouse[1])),
-        os.fspath(mouse_script) if mouse_script else "", os.fspath(key_script) if key_script else "",
+        None if mouse_script is None else os.fspath(mouse_script), None if key_script is None else os.fspath(key_script),
         bool(keep_diff_images), int(diff_gain), bool(stop_at_first_difference))
     report["frames"] = [_frame(f) for f in report["frames"]]
     return CompareReport(**report)

@@ -26,10 +26,9 @@ std::string localNow() {
     return text;
 }
 
-// The run settings both get: the caller's, else A's manifest defaults, else B's, else toyhost's;
-// the scripts of CompareSettings when the session settings name none.
-SessionSettings commonSettings(const Shadertoy& a, const Shadertoy& b, const SessionSettings& given,
-                               const std::filesystem::path& mouseScript, const std::filesystem::path& keyScript) {
+// The run settings both get: the caller's, else A's manifest defaults, else B's, else toyhost's.
+// What the caller gave is left as given, for the sessions to check.
+SessionSettings commonSettings(const Shadertoy& a, const Shadertoy& b, const SessionSettings& given) {
     SessionSettings s = given;
     const RunDefaults& da = ShadertoyAccess::desc(a).runDefaults;
     const RunDefaults& db = ShadertoyAccess::desc(b).runDefaults;
@@ -37,10 +36,8 @@ SessionSettings commonSettings(const Shadertoy& a, const Shadertoy& b, const Ses
         s.width = da.width.value_or(db.width.value_or(defaults::kCanvasWidth));
         s.height = da.height.value_or(db.height.value_or(defaults::kCanvasHeight));
     }
-    if (s.fps <= 0) s.fps = da.fps.value_or(db.fps.value_or(defaults::kFps));
-    if (s.date.empty()) s.date = localNow();
-    if (s.mouseScript.empty()) s.mouseScript = mouseScript;
-    if (s.keyScript.empty()) s.keyScript = keyScript;
+    if (!s.fps) s.fps = da.fps.value_or(db.fps.value_or(defaults::kFps));
+    if (!s.date) s.date = localNow();
     return s;
 }
 
@@ -65,7 +62,7 @@ Result<CompareReport> compareShadertoys(const Shadertoy& a, const Shadertoy& b, 
 
     // Both sessions step through the same fixed-step input: the scripts replayed by each, the
     // caller's extra events given to both.
-    const SessionSettings common = commonSettings(a, b, settings.session, settings.mouseScript, settings.keyScript);
+    const SessionSettings common = commonSettings(a, b, settings.session);
     Result<std::unique_ptr<Session>> sessionA = Session::createHeadless(a, common);
     if (!sessionA) return sessionA.error();
     Result<std::unique_ptr<Session>> sessionB = Session::createHeadless(b, common);
@@ -77,7 +74,7 @@ Result<CompareReport> compareShadertoys(const Shadertoy& a, const Shadertoy& b, 
     report.width = first.width();
     report.height = first.height();
     report.pass = pass;
-    report.fps = common.fps;
+    report.fps = *common.fps;
     report.startTime = common.startTime;
     report.minPsnr = std::numeric_limits<double>::infinity();
     const std::size_t values = static_cast<std::size_t>(report.width) * report.height * 4;

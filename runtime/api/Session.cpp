@@ -12,6 +12,7 @@
 
 #include "api/ShadertoyAccess.h"
 #include "capture/FrameStream.h"
+#include "core/Defaults.h"
 #include "gl/CurrentContext.h"
 #include "gl/GlStateGuard.h"
 #include "gl/GlThread.h"
@@ -21,7 +22,6 @@
 #include "render/PendingReads.h"
 #include "session/SessionCore.h"
 #include "session/WatchdogSetup.h"
-#include "timing/FrameClock.h"
 #include "timing/Timeline.h"
 
 namespace toyhost {
@@ -165,33 +165,15 @@ Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const S
     SessionOptions options;
     options.shadertoy = std::make_shared<const ManifestDesc>(ShadertoyAccess::desc(shadertoy));
     options.target = shadertoy.path();
-    if (settings.width || settings.height) {
-        options.width = settings.width;
-        options.height = settings.height;
-    }
-    // 0 means the default; any other value is the caller's and is checked as a run's (a negative or
-    // NaN rate is refused, never replaced by 60).
-    if (settings.fps != 0) options.fps = settings.fps;
-    options.startTime = settings.startTime;
-    if (!settings.date.empty()) {
-        Result<double> wallClock = parseWallClock(settings.date);
-        if (!wallClock) return Error("date: " + wallClock.error().first().message, Code::Usage);
-        options.wallClock = *wallClock;
-    }
-    options.media.folders = settings.mediaFolders;
-    for (const auto& [id, file] : settings.mediaFiles) options.media.files.emplace_back(id, file);
-    options.floatImage = settings.floatImage;
-    if (!settings.mouseScript.empty()) options.mouseScript = settings.mouseScript;
-    if (!settings.keyScript.empty()) options.keyScript = settings.keyScript;
-    options.frameTimeout = settings.frameTimeout;
-    options.compileTimeout = settings.compileTimeout;
-    options.sampling.supersample = settings.supersample.value_or(defaults::kSupersample);
-    options.sampling.motionBlur = settings.motionBlur.value_or(defaults::kMotionBlurSamples);
-    options.sampling.shutterDegrees = settings.shutterDegrees.value_or(defaults::kShutterDegrees);
-    options.sampling.dither = settings.dither;
+    // The caller's settings as given: prepareSession checks what was given (width 0 is refused as
+    // `run --size 0x0` is) and fills what was not, as for a run.
+    options.settings = settings;
+    // A Session has no watchdog limits unless its settings give them (the commands have theirs).
+    if (!options.settings.frameTimeout) options.settings.frameTimeout = defaults::kSessionTimeoutSeconds;
+    if (!options.settings.compileTimeout) options.settings.compileTimeout = defaults::kSessionTimeoutSeconds;
     Result<SessionPlan> plan = prepareSession(options);
     if (!plan) return plan.error();
-    impl->media = plan->options.media;
+    impl->media = plan->media;
     impl->timeline.emplace(timelineOf(*plan));
     WatchdogHooks hooks;
     hooks.expire = [file = shadertoy.path().string()](const Diagnostic& expired, int) {

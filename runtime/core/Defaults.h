@@ -63,6 +63,8 @@ inline constexpr int kSoundBlockSide = 512;
 // (--compile-timeout). 0 turns either off.
 inline constexpr double kFrameTimeoutSeconds = 60.0;
 inline constexpr double kCompileTimeoutSeconds = 120.0;
+// A library Session (toyhost/Session.h) has neither limit unless its settings give one.
+inline constexpr double kSessionTimeoutSeconds = 0.0;
 // A limit other than 0 (off) is at least 0.1 s: shorter limits measure the watchdog's own polling
 // and thread start-up rather than the shader (and were reported as "0.0 s, longer than 0.0").
 inline constexpr double kMinTimeoutSeconds = 0.1;

@@ -100,9 +100,9 @@ RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity)
     settings.encoderThreads = o.encoderThreads;
     settings.memoryCapBytes = *o.captureMemoryBytes;
     settings.video = o.video;
-    settings.fps = o.fps.value_or(defaults::kFps);
+    settings.fps = o.settings.fps.value_or(defaults::kFps);
     settings.rawStreamFd = o.rawStreamFd;
-    settings.dropWhenBusy = o.interactive && !o.fps;
+    settings.dropWhenBusy = o.interactive && !o.settings.fps;
     settings.activity = activity;
     return settings;
 }

@@ -71,7 +71,7 @@ Result<std::unique_ptr<SessionCore>> SessionCore::start(SessionPlan plan, std::s
     s->live_ = o.interactive;
     for (const Diagnostic& line : s->plan_.shadertoy.notices) observer.notice(line);
     s->report_.mode = o.interactive ? "in a window" : "headless";
-    s->report_.samplesPerFrame = samplesPerFrame(o.sampling);
+    s->report_.samplesPerFrame = samplesPerFrame(s->plan_.sampling);
     s->report_.context = s->context_->describe();
     s->report_.interactive = o.interactive;
     s->report_.outputAsked = o.outPattern.has_value() || o.sound.has_value();
@@ -103,15 +103,15 @@ Status SessionCore::createPlayer(PlayerPlan shadertoy) {
     PlayerDesc desc;
     // A window's canvas is its framebuffer, except while recording (one size for the recording).
     // A tiled still's targets are one tile of the canvas.
-    desc.width = plan_.tile ? TiledStill::tileSide(*o.width, plan_.tile) : *o.width;
-    desc.height = plan_.tile ? TiledStill::tileSide(*o.height, plan_.tile) : *o.height;
+    desc.width = plan_.tile ? TiledStill::tileSide(*o.settings.width, plan_.tile) : *o.settings.width;
+    desc.height = plan_.tile ? TiledStill::tileSide(*o.settings.height, plan_.tile) : *o.settings.height;
     if (plan_.tile) {
-        desc.canvasWidth = *o.width;
-        desc.canvasHeight = *o.height;
+        desc.canvasWidth = *o.settings.width;
+        desc.canvasHeight = *o.settings.height;
     }
-    desc.floatImage = o.floatImage || (plan_.output && plan_.output->format() == OutputFormat::Exr &&
+    desc.floatImage = o.settings.floatImage || (plan_.output && plan_.output->format() == OutputFormat::Exr &&
                                        o.capturePass == PassId::Image);
-    desc.sampling = o.sampling;
+    desc.sampling = plan_.sampling;
     Result<std::unique_ptr<Player>> made = Player::create(context_, std::move(shadertoy), desc);
     if (!made) return made.error();
     player_ = std::move(*made);
@@ -223,7 +223,7 @@ void SessionCore::checkBuffers(int frame) {
 Status SessionCore::saveCheckpoint() {
     const SessionOptions& o = plan_.options;
     if (!o.checkpoint || !player_) return okStatus();
-    auto checkpoint = std::make_shared<Checkpoint>(Checkpoint{player_->saveState(), *o.fps, o.startTime, *o.wallClock,
+    auto checkpoint = std::make_shared<Checkpoint>(Checkpoint{player_->saveState(), *o.settings.fps, o.settings.startTime, *plan_.wallClock,
                                                               player_->manifest().name, codeHash(player_->manifest()),
                                                               channelMedia(player_->manifest())});
     const fs::path path = *o.checkpoint;
@@ -314,8 +314,8 @@ Result<SessionReport> SessionCore::finishRound() {
     writer_->drain();
     if (player_) player_->finish();  // the reported time includes the GPU's work
     report_.checkpoint = checkpointWritten_;
-    report_.width = player_ && !plan_.tile ? player_->width() : *o.width;
-    report_.height = player_ && !plan_.tile ? player_->height() : *o.height;
+    report_.width = player_ && !plan_.tile ? player_->width() : *o.settings.width;
+    report_.height = player_ && !plan_.tile ? player_->height() : *o.settings.height;
     if (framesRendered_ > 0) {
         report_.firstFrameSeconds = secondsBetween(roundStartedAt_, firstFrameEndedAt_);
         report_.restSeconds = secondsBetween(firstFrameEndedAt_, Clock::now());

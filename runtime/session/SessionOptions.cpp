@@ -30,49 +30,52 @@ Error usage(std::string message) { return Error(std::move(message), Code::Usage)
 }  // namespace
 
 SessionOptions withDefaults(SessionOptions o) {
-    if (!o.width) o.width = defaults::kCanvasWidth;
-    if (!o.height) o.height = defaults::kCanvasHeight;
+    SessionSettings& s = o.settings;
+    if (!s.width) s.width = defaults::kCanvasWidth;
+    if (!s.height) s.height = defaults::kCanvasHeight;
     if (!o.frames) o.frames = o.interactive ? 0 : defaults::kFrames;
-    if (!o.fps && !o.interactive) o.fps = defaults::kFps;
+    if (!s.fps && !o.interactive) s.fps = defaults::kFps;
     if (!o.captureEvery) o.captureEvery = defaults::kCaptureEvery;
     if (!o.pngLevel) o.pngLevel = defaults::kPngLevel;
     if (!o.captureMemoryBytes) o.captureMemoryBytes = defaults::kCaptureMemoryMiB << 20;
-    if (!o.frameTimeout) o.frameTimeout = o.interactive ? 0.0 : defaults::kFrameTimeoutSeconds;
-    if (!o.compileTimeout) o.compileTimeout = defaults::kCompileTimeoutSeconds;
+    if (!s.frameTimeout) s.frameTimeout = o.interactive ? 0.0 : defaults::kFrameTimeoutSeconds;
+    if (!s.compileTimeout) s.compileTimeout = defaults::kCompileTimeoutSeconds;
     return o;
 }
 
 SessionOptions withManifestDefaults(SessionOptions o, const RunDefaults& manifest) {
-    if (!o.width && !o.height && manifest.width && manifest.height) {
-        o.width = manifest.width;
-        o.height = manifest.height;
+    SessionSettings& s = o.settings;
+    if (!s.width && !s.height && manifest.width && manifest.height) {
+        s.width = manifest.width;
+        s.height = manifest.height;
     }
     // A window runs in real time until it is closed unless the command line says otherwise.
     if (!o.interactive) {
-        if (!o.fps) o.fps = manifest.fps;
+        if (!s.fps) s.fps = manifest.fps;
         if (!o.frames) o.frames = manifest.frames;
     }
     return o;
 }
 
-// --resume: the clock and canvas come from the checkpoint unless given, and must then agree.
-Result<SessionOptions> withCheckpointSettings(SessionOptions o, const Checkpoint& c) {
+// --resume: the clock, date and canvas come from the checkpoint unless given, and must then agree.
+Result<SessionOptions> withCheckpointSettings(SessionOptions o, const Checkpoint& c, std::optional<double>& wallClock) {
+    SessionSettings& s = o.settings;
     const std::string file = o.resume->string();
     auto differs = [&](const std::string& option, const std::string& value) {
         return fileError(file, "the checkpoint was made with " + option + " " + value +
                                    "; resume with the same (or leave the option out)",
                          Code::UsageResume);
     };
-    if (o.width && (*o.width != c.state.width || *o.height != c.state.height))
+    if (s.width && (*s.width != c.state.width || *s.height != c.state.height))
         return differs("--size", std::to_string(c.state.width) + "x" + std::to_string(c.state.height));
-    if (o.fps && *o.fps != c.fps) return differs("--fps", std::to_string(c.fps));
-    if (o.startTime != 0 && o.startTime != c.startTime) return differs("--start-time", std::to_string(c.startTime));
-    if (o.wallClock && *o.wallClock != c.wallClock) return differs("--date", "(another date)");
-    o.width = c.state.width;
-    o.height = c.state.height;
-    o.fps = c.fps;
-    o.startTime = c.startTime;
-    o.wallClock = c.wallClock;
+    if (s.fps && *s.fps != c.fps) return differs("--fps", std::to_string(c.fps));
+    if (s.startTime != 0 && s.startTime != c.startTime) return differs("--start-time", std::to_string(c.startTime));
+    if (wallClock && *wallClock != c.wallClock) return differs("--date", "(another date)");
+    s.width = c.state.width;
+    s.height = c.state.height;
+    s.fps = c.fps;
+    s.startTime = c.startTime;
+    wallClock = c.wallClock;
     return o;
 }
 
@@ -121,8 +124,8 @@ Status checkTiledSize(int width, int height, std::optional<int> tile, const Mani
 }  // namespace
 
 TimelineDesc timelineOf(const SessionPlan& plan) {
-    const SessionOptions& o = plan.options;
-    return {o.fps.value_or(defaults::kFps), o.startTime, o.wallClock.value_or(0.0), plan.mouse, plan.keys};
+    const SessionSettings& s = plan.options.settings;
+    return {s.fps.value_or(defaults::kFps), s.startTime, plan.wallClock.value_or(0.0), plan.mouse, plan.keys};
 }
 
 Result<SessionPlan> prepareSession(const SessionOptions& asked) {
@@ -134,6 +137,15 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     }
     if (options.frames)
         if (Status frames = checkFramesSetting(*options.frames); !frames) return frames.error();
+    if (options.settings.width.has_value() != options.settings.height.has_value())
+        return settingError("size", "give both width and height, or neither (the default)");
+    // The date, parsed once: iDate at frame 0.
+    std::optional<double> wallClock;
+    if (options.settings.date) {
+        Result<double> parsed = parseWallClock(*options.settings.date);
+        if (!parsed) return settingError("date", parsed.error().first().message);
+        wallClock = *parsed;
+    }
     if (options.checkpointEvery && *options.checkpointEvery < 1) return usage("--checkpoint-every must be at least 1");
     if (options.checkpointEvery && !options.checkpoint) return usage("--checkpoint-every needs --checkpoint FILE");
     if (options.frameRange && options.shard) return usage("--frame-range and --shard cannot be combined");
@@ -151,18 +163,19 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     if (options.resume) {
         Result<Checkpoint> read = readCheckpoint(*options.resume);
         if (!read) return read.error();
-        Result<SessionOptions> merged = withCheckpointSettings(std::move(given), *read);
+        Result<SessionOptions> merged = withCheckpointSettings(std::move(given), *read, wallClock);
         if (!merged) return merged.error();
         given = std::move(*merged);
         resume = std::move(*read);
     }
     SessionOptions o = withDefaults(std::move(given));
+    const SessionSettings& s = o.settings;
     // A headless run's iDate is the wall clock at frame 0 unless --date (or a checkpoint) says
     // otherwise; a window shows the live date.
-    if (!o.interactive && !o.wallClock) o.wallClock = localWallClockNow();
-    const bool tiled = o.tile || *o.width > defaults::kMaxCanvasSide || *o.height > defaults::kMaxCanvasSide;
-    if (Status size = tiled ? checkTiledSize(*o.width, *o.height, o.tile, *manifest, o.interactive)
-                            : checkSizeSetting(*o.width, *o.height);
+    if (!o.interactive && !wallClock) wallClock = localWallClockNow();
+    const bool tiled = o.tile || *s.width > defaults::kMaxCanvasSide || *s.height > defaults::kMaxCanvasSide;
+    if (Status size = tiled ? checkTiledSize(*s.width, *s.height, o.tile, *manifest, o.interactive)
+                            : checkSizeSetting(*s.width, *s.height);
         !size)
         return size.error();
     if (o.checkpoint) {
@@ -170,7 +183,7 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
         if (fs::is_directory(*o.checkpoint, ec))
             return usage("--checkpoint " + o.checkpoint->string() + ": is a folder; give a file name");
     }
-    for (const fs::path& folder : o.media.folders) {
+    for (const fs::path& folder : s.mediaFolders) {
         std::error_code ec;
         if (!fs::is_directory(folder, ec))
             return fileError(folder.string(),
@@ -178,21 +191,24 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
                                                     : "media folder not found (--media or $TOYHOST_MEDIA)",
                              Code::IoNotFound);
     }
-    if (o.fps)
-        if (Status fps = checkFpsSetting(*o.fps); !fps) return fps.error();
-    if (Status start = checkStartTimeSetting(o.startTime); !start) return start.error();
+    if (s.fps)
+        if (Status fps = checkFpsSetting(*s.fps); !fps) return fps.error();
+    if (Status start = checkStartTimeSetting(s.startTime); !start) return start.error();
     if (o.mouse)
         if (Status mouse = checkMouseSetting(o.mouse->x, o.mouse->y); !mouse) return mouse.error();
-    if (Status sampling = checkSamplingSettings(o.sampling.supersample, o.sampling.motionBlur, o.sampling.shutterDegrees);
-        !sampling)
-        return sampling.error();
-    if (o.sampling.dither && isSingleSample(o.sampling))
+    const SamplingDesc sampling{s.supersample.value_or(defaults::kSupersample),
+                                s.motionBlur.value_or(defaults::kMotionBlurSamples),
+                                s.shutterDegrees.value_or(defaults::kShutterDegrees), s.dither};
+    if (Status checked = checkSamplingSettings(sampling.supersample, sampling.motionBlur, sampling.shutterDegrees);
+        !checked)
+        return checked.error();
+    if (sampling.dither && isSingleSample(sampling))
         return settingError("dither", "dithers an average of samples: give supersample or motion_blur too");
     if (*o.captureEvery < 1) return usage("--capture-every must be at least 1");
-    for (const auto& [name, value] : {std::pair{"frame_timeout", *o.frameTimeout}, {"compile_timeout", *o.compileTimeout}})
+    for (const auto& [name, value] : {std::pair{"frame_timeout", *s.frameTimeout}, {"compile_timeout", *s.compileTimeout}})
         if (Status limit = checkTimeoutSetting(name, value); !limit) return limit.error();
     if (*o.captureMemoryBytes == 0) return usage("--capture-memory must be at least 1 (MiB)");
-    if (o.mouse && o.mouseScript) return usage("--mouse and --mouse-script cannot be combined");
+    if (o.mouse && s.mouseScript) return usage("--mouse and --mouse-script cannot be combined");
     if (*o.pngLevel < 0 || *o.pngLevel > 9) return usage("--png-level must be 0..9");
     if (o.encoderThreads < 0 || o.encoderThreads > 1024) return usage("--encoder-threads must be 0 (automatic) to 1024");
     if (o.video.quality && (*o.video.quality < 0 || *o.video.quality > 63))
@@ -202,7 +218,8 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
         return usage(std::string("--capture-pass ") + passName(o.capturePass) + ": " +
                      manifest->manifestPath.string() + " has no such pass");
 
-    SessionPlan run{o, {}, std::nullopt, {}, {}, 0, *o.frames, std::nullopt};
+    SessionPlan run{o, {}, std::nullopt, {}, {}, 0, *o.frames, std::nullopt, wallClock,
+                    MediaOptions{s.mediaFiles, s.mediaFolders, o.webcam, o.mic}, sampling};
     if (o.frameRange) {
         const auto [first, end] = *o.frameRange;
         if (first < 0 || end <= first || end > *o.frames)
@@ -250,7 +267,7 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
         }
         // A video has one frame rate; a window in real time renders at whatever rate it manages,
         // so its recording would play at the wrong speed: ask for the step it should have.
-        if (pattern->format() == OutputFormat::Video && o.interactive && !o.fps)
+        if (pattern->format() == OutputFormat::Video && o.interactive && !s.fps)
             return usage("--out " + *o.outPattern + ": a video recorded from a window needs --fps (each frame then "
                          "advances iTime by exactly 1/fps, and the video plays at that rate); image files need none");
         if (pattern->format() == OutputFormat::Video && !findExecutable("ffmpeg"))
@@ -272,28 +289,28 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     if ((o.video.codec || o.video.quality || o.video.preset) && (!run.output || run.output->format() != OutputFormat::Video))
         return usage("--codec, --video-quality and --video-preset apply only to a video --out (.mp4, .webm, .mov, .mkv)");
     if (o.mouse) run.mouse = mouseHeldAt(o.mouse->x, o.mouse->y);
-    if (o.mouseScript) {
-        Result<std::string> text = readTextFile(*o.mouseScript);
+    if (s.mouseScript) {
+        Result<std::string> text = readTextFile(*s.mouseScript);
         if (!text) return text.error();
-        Result<MouseScript> script = parseMouseScript(*text, o.mouseScript->string());
+        Result<MouseScript> script = parseMouseScript(*text, s.mouseScript->string());
         if (!script) return script.error();
         run.mouse = std::move(*script);
     }
-    if (o.keyScript) {
-        Result<std::string> text = readTextFile(*o.keyScript);
+    if (s.keyScript) {
+        Result<std::string> text = readTextFile(*s.keyScript);
         if (!text) return text.error();
-        Result<KeyScript> script = parseKeyScript(*text, o.keyScript->string());
+        Result<KeyScript> script = parseKeyScript(*text, s.keyScript->string());
         if (!script) return script.error();
         run.keys = std::move(*script);
     }
-    for (const auto& [id, file] : o.media.files) {
+    for (const auto& [id, file] : s.mediaFiles) {
         if (Status regular = checkRegularFile(file); !regular) {
             Error error = regular.error();
             error.diagnostics.front().message += " (--media-file " + id + ")";
             return error;
         }
     }
-    Result<PlayerPlan> plan = planPlayer(std::move(*manifest), o.media);
+    Result<PlayerPlan> plan = planPlayer(std::move(*manifest), run.media);
     if (!plan) return plan.error();
     run.shadertoy = std::move(*plan);
     // --codec auto tries the hardware encoders with short ffmpeg runs; the choice is kept for the

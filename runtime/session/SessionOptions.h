@@ -1,6 +1,7 @@
 // SessionOptions: what a user asks of a session (`toyhost run`, `toyhost sound`, a program that
-// embeds toyhost), as plain settings whose absent fields mean "the default" (withDefaults fills
-// them from core/Defaults.h; a value the user gave, such as --frames 0, is kept so that
+// embeds toyhost): the library's own SessionSettings, embedded, plus what only the commands have
+// (frames, capture, checkpoints, shards, a window). Absent fields mean "the default" (withDefaults
+// fills them from core/Defaults.h; a value the user gave, such as --frames 0, is kept so that
 // prepareSession can refuse it), and the checks that need no GL (prepareSession: the manifest,
 // images and media, output pattern, input scripts, ffmpeg), shared by every driver. No GL needed.
 #pragma once
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <toyhost/Session.h>
 
 #include "capture/OutputPattern.h"
 #include "capture/VideoSink.h"
@@ -43,23 +45,22 @@ struct SessionOptions {
     std::shared_ptr<const ManifestDesc> shadertoy;
     // When the command started, for the report's start-up time; default: when prepareSession ran.
     std::optional<std::chrono::steady_clock::time_point> startedAt;
-    std::optional<int> width;              // default defaults::kCanvasWidth x kCanvasHeight
-    std::optional<int> height;
+    // Canvas, clock, date, media, scripts, Image format and watchdog limits: the settings a library
+    // Session takes, as given. Absent: the manifest's defaults, else core/Defaults.h; in a window,
+    // no fps means real time and no frame timeout. The limits are enforced by the session's
+    // Watchdog (session/Watchdog.h), when it has one.
+    SessionSettings settings;
     // Window mode: no frame count means "until the window closes" and no fps means real time.
     bool interactive = false;
     // Re-render (headless) or hot-reload (window) when a file of the shadertoy changes.
     bool watch = false;
     std::optional<int> frames;             // default defaults::kFrames (headless), no end (window)
-    std::optional<double> fps;             // default defaults::kFps (headless), real time (window)
-    double startTime = 0;
     std::optional<std::string> outPattern;
     std::optional<int> captureEvery;       // default defaults::kCaptureEvery
     PassId capturePass = PassId::Image;
     std::optional<glm::vec2> mouse;        // --mouse X,Y: pressed on frame 0 and held
-    std::optional<std::filesystem::path> mouseScript;
-    std::optional<std::filesystem::path> keyScript;
-    MediaOptions media;
-    std::optional<double> wallClock;       // iDate at frame 0 (FrameClock form); default: now
+    std::string webcam;                    // --webcam, --mic: MediaOptions' live sources
+    std::string mic;
     EglPlatform eglPlatform = EglPlatform::Automatic;
 
     // Capture pipeline (runtime/capture).
@@ -78,21 +79,12 @@ struct SessionOptions {
     // buffer and frame). Without it, buffers are checked at the end of the run and on captured
     // float frames.
     bool checkFinite = false;
-    // Render the Image pass into RGBA32F even without an EXR capture of it (to read its floats).
-    bool floatImage = false;
-    // --supersample, --motion-blur, --shutter, --dither: Image drawn several times a frame and
-    // averaged (timing/SamplePattern.h); the default is the site's one draw.
-    SamplingDesc sampling;
     // --tile SIDE: Image drawn in tiles of at most SIDE x SIDE (session/TiledStill.h). A canvas
     // wider or taller than defaults::kMaxCanvasSide is tiled without it (default tile side
     // defaults::kTileSide); only shadertoys without buffers.
     std::optional<int> tile;
     // Render only the Sound pass, to this file (no frames, no Player).
     std::optional<SoundRequest> sound;
-    // Watchdog limits in seconds (0: off); defaults from core/Defaults.h, no frame limit in a
-    // window. Enforced by the session's Watchdog (session/Watchdog.h), when it has one.
-    std::optional<double> frameTimeout;
-    std::optional<double> compileTimeout;
 
     // Long runs (headless only). --checkpoint FILE: the full state is written to FILE (atomically)
     // every `checkpointEvery` frames, when the run is interrupted and when it ends; --resume FILE
@@ -126,6 +118,12 @@ struct SessionPlan {
     int first = 0;                         // frames [first, end) are captured (the frame range)
     int end = 0;
     std::optional<Checkpoint> resume;      // --resume: the state the run continues from
+    // iDate at frame 0 (FrameClock form): settings.date parsed, the checkpoint's, or now (headless);
+    // absent in a window without a date: it shows the live date.
+    std::optional<double> wallClock;
+    MediaOptions media;                    // settings' media folders and files, --webcam, --mic
+    // settings' supersample, motion blur, shutter and dither with the defaults filled in.
+    SamplingDesc sampling;
     int tile = 0;                          // a tiled still: the tile side; 0: not tiled
 };
 

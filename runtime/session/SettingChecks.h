@@ -2,8 +2,9 @@
 // SessionSettings, Python's keywords), each with one message. The error names the setting in
 // Diagnostic::field ("size", "fps", "frame_timeout"), not a CLI flag: a library caller reads
 // "size: canvas size 0x0 is not between 1x1 and 16384x16384", and the CLI shows its own flag
-// there (tools/toyhost/SessionFlags.h). prepareSession runs them once for every run; a command that
-// builds settings itself (compare) runs the same ones. No GL needed.
+// there (tools/toyhost/SessionFlags.h). prepareSession runs them once for every session (a run's,
+// a library Session's, each of compare's); the CLI runs only those of its own flags (--frames,
+// --mouse) that no session sees. No GL needed.
 #pragma once
 
 #include <string>

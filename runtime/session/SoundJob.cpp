@@ -53,9 +53,9 @@ Result<std::shared_ptr<TemporaryFiles>> SoundJob::soundTrack(SessionPlan& plan, 
     const SessionOptions& o = plan.options;
     if (!plan.shadertoy.manifest.sound) return std::shared_ptr<TemporaryFiles>();
     const bool video = plan.output && plan.output->format() == OutputFormat::Video;
-    const double fps = o.fps.value_or(defaults::kFps);
-    const double end = std::min(o.startTime + *o.frames / fps, defaults::kSoundSeconds);
-    if (!video || *o.frames <= 0 || end <= o.startTime) {
+    const double fps = o.settings.fps.value_or(defaults::kFps);
+    const double end = std::min(o.settings.startTime + *o.frames / fps, defaults::kSoundSeconds);
+    if (!video || *o.frames <= 0 || end <= o.settings.startTime) {
         Diagnostic skipped;
         skipped.severity = Severity::Notice;
         skipped.code = Code::SoundSkipped;
@@ -69,7 +69,7 @@ Result<std::shared_ptr<TemporaryFiles>> SoundJob::soundTrack(SessionPlan& plan, 
     Result<std::vector<float>> stereo = render(plan.shadertoy, end);
     if (!stereo) return stereo.error();
     const std::size_t skip =
-        std::min(stereo->size(), 2 * static_cast<std::size_t>(std::llround(o.startTime * defaults::kSampleRate)));
+        std::min(stereo->size(), 2 * static_cast<std::size_t>(std::llround(o.settings.startTime * defaults::kSampleRate)));
     auto track = std::make_shared<TemporaryFiles>("soundtrack", std::initializer_list<const char*>{"wav"});
     if (!track->registerAll()) return Error("not started: toyhost is stopping", Code::Interrupted);
     auto samples = std::make_shared<std::vector<float>>(stereo->begin() + static_cast<std::ptrdiff_t>(skip), stereo->end());

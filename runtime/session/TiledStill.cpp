@@ -12,7 +12,7 @@ namespace toyhost {
 namespace fs = std::filesystem;
 
 TiledStill::TiledStill(const SessionPlan& plan)
-    : plan_(plan), width_(*plan.options.width), height_(*plan.options.height),
+    : plan_(plan), width_(*plan.options.settings.width), height_(*plan.options.settings.height),
       floats_(plan.output && plan.output->format() == OutputFormat::Exr), thread_([this] { loop(); }) {}
 
 TiledStill::~TiledStill() {

@@ -5,8 +5,8 @@ namespace toyhost {
 WatchdogDesc watchdogDesc(const SessionOptions& options, WatchdogHooks hooks) {
     const SessionOptions resolved = withDefaults(options);
     WatchdogDesc desc;
-    desc.frameLimit = *resolved.frameTimeout;
-    desc.compileLimit = *resolved.compileTimeout;
+    desc.frameLimit = *resolved.settings.frameTimeout;
+    desc.compileLimit = *resolved.settings.compileTimeout;
     desc.watchSignals = hooks.watchSignals;
     desc.acknowledge = std::move(hooks.acknowledge);
     desc.expire = std::move(hooks.expire);

@@ -1,5 +1,6 @@
 #include "timing/FrameClock.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -32,6 +33,17 @@ double localWallClockNow() {
     std::tm local{};
     localtime_r(&t, &local);
     return utc + static_cast<double>(local.tm_gmtoff);
+}
+
+std::string wallClockText(double wallClock) {
+    const double whole = std::floor(wallClock / 60.0) * 60.0;
+    std::time_t minute = static_cast<std::time_t>(whole);
+    std::tm fields{};
+    gmtime_r(&minute, &fields);
+    char text[64];
+    std::snprintf(text, sizeof text, "%04d-%02d-%02dT%02d:%02d:%09.6f", fields.tm_year + 1900, fields.tm_mon + 1,
+                  fields.tm_mday, fields.tm_hour, fields.tm_min, std::min(wallClock - whole, 59.999999));
+    return text;
 }
 
 Result<double> parseWallClock(const std::string& text) {

@@ -38,6 +38,9 @@ private:
 double localWallClockNow();
 // "YYYY-MM-DDTHH:MM:SS[.fff]" (or with a space) as the FrameClock wall-clock form.
 Result<double> parseWallClock(const std::string& text);
+// The other direction: "YYYY-MM-DDTHH:MM:SS.ffffff", which parseWallClock reads back to within a
+// microsecond (for code that holds a wall clock and hands on a date setting).
+std::string wallClockText(double wallClock);
 // iDate for a moment of that wall clock.
 glm::vec4 dateAt(double wallClock);
 // iDate at iTime `time` of a run whose iTime `startTime` was at wall clock `wallClockStart`: the one

@@ -88,9 +88,9 @@ inline std::unique_ptr<SessionCore> loadSession(const std::shared_ptr<GlContext>
                                             int width, int height, bool floatImage = false) {
     SessionOptions options;
     options.target = target;
-    options.width = width;
-    options.height = height;
-    options.floatImage = floatImage;
+    options.settings.width = width;
+    options.settings.height = height;
+    options.settings.floatImage = floatImage;
     auto plan = prepareSession(options);
     EXPECT_TRUE(plan.ok()) << plan.error().text();
     if (!plan.ok()) return nullptr;

@@ -115,7 +115,7 @@ TEST(Compare, BothGetTheSameMouseScript) {
     // from frame 2.
     EXPECT_TRUE(compareOnGlThread(fixture("base"), fixture("mouse"), small(4))->equal());
     CompareSettings settings = small(4);
-    settings.mouseScript = fixture("mouse-down.json");
+    settings.session.mouseScript = fixture("mouse-down.json");
     Result<CompareReport> scripted = compareOnGlThread(fixture("base"), fixture("mouse"), settings);
     ASSERT_TRUE(scripted.ok()) << scripted.error().text();
     ASSERT_TRUE(scripted->firstDifferingFrame);
@@ -174,7 +174,7 @@ TEST(Compare, ProblemsAreErrorsNamingTheirPlace) {
     ASSERT_FALSE(broken.ok());
     EXPECT_NE(broken.error().text().find("colour"), std::string::npos) << broken.error().text();
 
-    settings.mouseScript = fixture("no-such-script.json");
+    settings.session.mouseScript = fixture("no-such-script.json");
     Result<CompareReport> noScript = compareOnGlThread(fixture("base"), fixture("base"), settings);
     ASSERT_FALSE(noScript.ok());
     EXPECT_NE(noScript.error().text().find("no-such-script.json"), std::string::npos) << noScript.error().text();

@@ -339,6 +339,26 @@ TEST(LibraryApi, ImpossibleSettingsAreRefusedNamingTheSetting) {
     s = {};
     s.frameTimeout = -1;
     cases.push_back({"frame_timeout", s});
+    // Given values are checked, never taken for "the default": 0 is an error like any other.
+    s = {};
+    s.width = 0;
+    s.height = 0;
+    cases.push_back({"size", s});
+    s = {};
+    s.width = 16;  // without a height
+    cases.push_back({"size", s});
+    s = {};
+    s.fps = 0;
+    cases.push_back({"fps", s});
+    s = {};
+    s.date = "";
+    cases.push_back({"date", s});
+    s = {};
+    s.date = "2026-02-30";
+    cases.push_back({"date", s});
+    s = {};
+    s.compileTimeout = 0.01;
+    cases.push_back({"compile_timeout", s});
     runOnGlThread([&] {
         for (const Case& c : cases) {
             Result<std::unique_ptr<Session>> session = Session::createHeadless(*probe, c.settings);
@@ -348,6 +368,28 @@ TEST(LibraryApi, ImpossibleSettingsAreRefusedNamingTheSetting) {
             EXPECT_EQ(session.error().text().find("--"), std::string::npos) << session.error().text();
         }
     });
+}
+
+// One check, one message: width = 0 through the library is refused as `run --size 0x0` is, the CLI
+// showing its flag where the library names the setting.
+TEST(LibraryApi, AGivenZeroSizeIsRefusedAsTheClisIs) {
+    const std::filesystem::path probe = sourceDir() / "shadertoys/timeline-probe";
+    Result<Shadertoy> shadertoy = Shadertoy::load(probe);
+    ASSERT_TRUE(shadertoy.ok()) << shadertoy.error().text();
+    SessionSettings settings;
+    settings.width = 0;
+    settings.height = 0;
+    std::optional<Error> refused;
+    runOnGlThread([&] {
+        Result<std::unique_ptr<Session>> session = Session::createHeadless(*shadertoy, settings);
+        if (!session) refused = session.error();
+    });
+    ASSERT_TRUE(refused.has_value());
+    EXPECT_EQ(refused->first().field, "size");
+    EXPECT_EQ(refused->first().message, "canvas size 0x0 is not between 1x1 and 16384x16384");
+    const CommandResult cli = runToyhost("run " + probe.string() + " --headless --size 0x0 --frames 1");
+    EXPECT_EQ(cli.exitCode, 2) << cli.output;
+    EXPECT_NE(cli.output.find("--size: " + refused->first().message), std::string::npos) << cli.output;
 }
 
 }  // namespace

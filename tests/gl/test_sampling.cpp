@@ -27,7 +27,7 @@ std::vector<std::uint8_t> render(const fs::path& target, SessionSettings setting
     Result<Shadertoy> shadertoy = Shadertoy::load(target);
     EXPECT_TRUE(shadertoy.ok()) << shadertoy.error().text();
     if (!shadertoy) return {};
-    if (settings.date.empty()) settings.date = kDate;
+    if (!settings.date) settings.date = kDate;
     std::vector<std::uint8_t> pixels;
     runOnGlThread([&] {
         Result<std::unique_ptr<Session>> session = Session::createHeadless(*shadertoy, settings);

@@ -11,17 +11,17 @@ namespace {
 SessionOptions probeOptions() {
     SessionOptions options;
     options.target = sourceDir() / "shadertoys/pingpong-probe";
-    options.width = 8;
-    options.height = 8;
+    options.settings.width = 8;
+    options.settings.height = 8;
     return options;
 }
 
 TEST(SessionOptions, AbsentFieldsTakeTheDefaultsAndGivenOnesStay) {
     const SessionOptions filled = withDefaults(SessionOptions{});
-    EXPECT_EQ(*filled.width, defaults::kCanvasWidth);
-    EXPECT_EQ(*filled.height, defaults::kCanvasHeight);
+    EXPECT_EQ(*filled.settings.width, defaults::kCanvasWidth);
+    EXPECT_EQ(*filled.settings.height, defaults::kCanvasHeight);
     EXPECT_EQ(*filled.frames, defaults::kFrames);
-    EXPECT_EQ(*filled.fps, defaults::kFps);
+    EXPECT_EQ(*filled.settings.fps, defaults::kFps);
     EXPECT_EQ(*filled.captureEvery, defaults::kCaptureEvery);
     EXPECT_EQ(*filled.pngLevel, defaults::kPngLevel);
     EXPECT_EQ(*filled.captureMemoryBytes, defaults::kCaptureMemoryMiB << 20);
@@ -46,17 +46,23 @@ TEST(SessionOptions, ImpossibleValuesAreUsageErrorsBeforeAnyWork) {
     o.frames = 0;
     refused(o, "frames: must be at least 1");
     o = probeOptions();
-    o.fps = 0;
+    o.settings.fps = 0;
     refused(o, "fps: must be");
     o = probeOptions();
-    o.fps = std::numeric_limits<double>::quiet_NaN();
+    o.settings.fps = std::numeric_limits<double>::quiet_NaN();
     refused(o, "fps: must be");
     o = probeOptions();
-    o.width = 0;
+    o.settings.width = 0;
     refused(o, "size: canvas size 0x8");
     o = probeOptions();
-    o.frameTimeout = -1;
+    o.settings.frameTimeout = -1;
     refused(o, "frame_timeout: must be");
+    o = probeOptions();
+    o.settings.height.reset();
+    refused(o, "size: give both width and height");
+    o = probeOptions();
+    o.settings.date = "2024-02-30";
+    refused(o, "date: date \"2024-02-30\" is not");
     o = probeOptions();
     o.pngLevel = 10;
     refused(o, "--png-level");
@@ -69,8 +75,8 @@ TEST(SessionOptions, ImpossibleValuesAreUsageErrorsBeforeAnyWork) {
 // flag there instead (tools/toyhost/SessionFlags.h; tests/gl/test_cli_errors.cpp).
 TEST(SessionOptions, ASettingsErrorNamesTheSettingInItsField) {
     SessionOptions o = probeOptions();
-    o.width = -1;
-    o.height = 10;
+    o.settings.width = -1;
+    o.settings.height = 10;
     Result<SessionPlan> run = prepareSession(o);
     ASSERT_FALSE(run.ok());
     EXPECT_EQ(run.error().first().field, "size");
@@ -84,7 +90,7 @@ TEST(SessionOptions, PrepareDecodesTheImagesAndReportsStandIns) {
     o.target = sourceDir() / "shadertoys/uniform-probe";
     Result<SessionPlan> run = prepareSession(o);
     ASSERT_TRUE(run.ok()) << run.error().text();
-    EXPECT_EQ(*run->options.width, defaults::kCanvasWidth);
+    EXPECT_EQ(*run->options.settings.width, defaults::kCanvasWidth);
     ASSERT_FALSE(run->shadertoy.images.standIns().empty());
     EXPECT_EQ(run->shadertoy.images.standIns().front().name, "RGBA Noise Small");
 }

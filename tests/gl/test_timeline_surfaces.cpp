@@ -85,11 +85,7 @@ TEST(TimelineSurfaces, RunSessionAndCompareGiveTheSameScriptedFrames) {
     });
 
     CompareSettings compare;
-    compare.session = run.settings();
-    compare.session.mouseScript.clear();
-    compare.session.keyScript.clear();
-    compare.mouseScript = run.mouse;  // compare's own script settings reach both sessions
-    compare.keyScript = run.keys;
+    compare.session = run.settings();  // the scripts in it reach both sessions
     compare.frames = kFrames;
     int compared = 0;
     compare.onFrame = [&](const ComparedFrame& frame) {
@@ -115,7 +111,7 @@ TEST(TimelineSurfaces, ADifferentScriptGivesOtherFrames) {
     Result<Shadertoy> probe = Shadertoy::load(run.probe);
     ASSERT_TRUE(probe.ok()) << probe.error().text();
     SessionSettings settings = run.settings();
-    settings.keyScript.clear();
+    settings.keyScript.reset();
     runOnGlThread([&] {
         Result<std::unique_ptr<Session>> session = Session::createHeadless(*probe, settings);
         ASSERT_TRUE(session.ok()) << session.error().text();

@@ -58,6 +58,12 @@ TEST(FrameClock, ParseWallClockForms) {
     EXPECT_EQ(wallClock("2016-12-31T23:59:60"), wallClock("2017-01-01"));  // a leap second
 }
 
+TEST(FrameClock, WallClockTextReadsBack) {
+    EXPECT_EQ(wallClockText(wallClock("2024-02-29T23:59:59.5")), "2024-02-29T23:59:59.500000");
+    EXPECT_EQ(wallClockText(0.0), "1970-01-01T00:00:00.000000");
+    for (double t : {0.25, 946684800.0, 1709251199.999, 4102444800.123456}) EXPECT_NEAR(wallClock(wallClockText(t)), t, 1e-6);
+}
+
 TEST(FrameClock, DateFieldsForAFixedWallClock) {
     const FrameClock c(1.0, 0.0, wallClock("2024-02-29T23:59:59.5"));
     expectDate(c.date(0), 2024, 1, 29, 86399.5, "frame 0");  // February is month 1

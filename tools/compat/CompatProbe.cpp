@@ -107,12 +107,12 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
         unbindStandIns(*changed, blankIds);
         options.shadertoy = std::move(changed);
     }
-    options.width = settings.width;
-    options.height = settings.height;
+    options.settings.width = settings.width;
+    options.settings.height = settings.height;
     options.frames = 1;
-    options.media.folders = settings.mediaFolders;
+    options.settings.mediaFolders = settings.mediaFolders;
     options.eglPlatform = settings.eglPlatform;
-    options.wallClock = wallClock;
+    options.settings.date = wallClockText(wallClock);
     Result<SessionPlan> plan = prepareSession(options);
     if (!plan) {
         result.error = firstErrorLine(plan.error().text());

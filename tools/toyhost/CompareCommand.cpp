@@ -224,6 +224,11 @@ int CompareCommand::execute(const GlProcess&) {
     std::optional<glm::vec2> mouse;
     if (Status given = flags_.applyTo(s, mouse); !given) return trouble(given.error());
     sampling_.applyTo(s);
+    if (mouse)
+        if (Status inRange = checkMouseSetting(mouse->x, mouse->y); !inRange) return trouble(inRange.error());
+    // The commands' watchdog limits unless given (a library Session has none).
+    if (!s.frameTimeout) s.frameTimeout = defaults::kFrameTimeoutSeconds;
+    if (!s.compileTimeout) s.compileTimeout = defaults::kCompileTimeoutSeconds;
     if (frames_) {
         if (Status frames = checkFramesSetting(*frames_); !frames) return trouble(frames.error());
         settings.frames = *frames_;

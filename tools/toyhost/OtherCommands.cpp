@@ -153,8 +153,8 @@ int soundCommand(const SoundCommandOptions& o, const GlProcess& process) {
     options.eglPlatform = process.eglPlatform;
     options.startedAt = process.startedAt;
     // A runaway mainSound is ended like a runaway frame (each block of samples is one draw).
-    options.frameTimeout = defaults::kFrameTimeoutSeconds;
-    if (Status given = o.flags.applyTo(options); !given) return fail(given.error());
+    options.settings.frameTimeout = defaults::kFrameTimeoutSeconds;
+    if (Status given = o.flags.applyTo(options.settings, options.mouse); !given) return fail(given.error());
     if (o.out == "-" && process.closedAtStart[STDOUT_FILENO])
         return usage("--out -: stdout is closed; give it a file or a pipe (or --out music.wav)");
     if (o.out == "-" && isatty(STDOUT_FILENO))

@@ -93,9 +93,9 @@ void RunCommand::define(CLI::App& run) {
     run.add_option("--capture-pass", capturePass_,
                    "Pass to capture: Image (default), \"Buffer A\" .. \"Buffer D\" (or A..D), or \"Cube A\" (its six "
                    "faces side by side, +X -X +Y -Y +Z -Z, each 1024 wide)");
-    run.add_option("--webcam", options_.media.webcam,
+    run.add_option("--webcam", options_.webcam,
                    "What webcam channels show: a V4L2 camera (/dev/video0) or a video file (default: a moving stand-in)");
-    run.add_option("--mic", options_.media.mic,
+    run.add_option("--mic", options_.mic,
                    "What mic channels hear: an audio file, or live: alsa:DEVICE (alsa:default, alsa:hw:0), "
                    "pulse:DEVICE, lavfi:GRAPH (default: the spectrum the site shows without audio)");
     run.add_option("--tile", options_.tile,
@@ -125,8 +125,8 @@ void RunCommand::define(CLI::App& run) {
 int RunCommand::execute(const GlProcess& process) {
     SessionOptions& o = options_;
     o.target = target_;
-    if (Status given = flags_.applyTo(o); !given) return fail(given.error());
-    sampling_.applyTo(o.sampling);
+    if (Status given = flags_.applyTo(o.settings, o.mouse); !given) return fail(given.error());
+    sampling_.applyTo(o.settings);
     o.frames = frames_;
     o.captureEvery = captureEvery_;
     o.pngLevel = pngLevel_;

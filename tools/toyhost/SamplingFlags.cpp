@@ -23,13 +23,6 @@ void SamplingFlags::define(CLI::App& command) {
                      "Add an 8x8 ordered dither to the averaged frame before it is rounded to 8 bits (smooth gradients)");
 }
 
-void SamplingFlags::applyTo(SamplingDesc& sampling) const {
-    if (supersample_) sampling.supersample = *supersample_;
-    if (motionBlur_) sampling.motionBlur = *motionBlur_;
-    if (shutter_) sampling.shutterDegrees = *shutter_;
-    sampling.dither = dither_;
-}
-
 void SamplingFlags::applyTo(SessionSettings& settings) const {
     settings.supersample = supersample_;
     settings.motionBlur = motionBlur_;

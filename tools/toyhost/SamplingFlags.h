@@ -1,6 +1,6 @@
 // SamplingFlags: --supersample, --motion-blur, --shutter and --dither, declared once for `run`
-// and `compare` and turned into a run's sampling (timing/SamplePattern.h) or the library's
-// settings; prepareSession checks the values (session/SettingChecks.h) and its errors name the
+// and `compare` and turned into the settings (timing/SamplePattern.h says what they do);
+// prepareSession checks the values (session/SettingChecks.h) and its errors name the
 // setting, which withFlagNames shows as the flag.
 #pragma once
 
@@ -9,14 +9,12 @@
 
 #include <toyhost/Session.h>
 
-#include "timing/SamplePattern.h"
 
 namespace toyhost::cli {
 
 class SamplingFlags {
 public:
     void define(CLI::App& command);
-    void applyTo(SamplingDesc& sampling) const;
     void applyTo(SessionSettings& settings) const;
 
 private:

@@ -8,8 +8,6 @@
 #include "Commands.h"
 #include "NumberOptions.h"
 #include "core/Defaults.h"
-#include "session/SettingChecks.h"
-#include "timing/FrameClock.h"
 
 namespace toyhost::cli {
 
@@ -113,58 +111,23 @@ Status SessionFlags::parseMedia(std::vector<std::filesystem::path>& folders,
     return okStatus();
 }
 
-Status SessionFlags::applyTo(SessionOptions& o) const {
+Status SessionFlags::applyTo(SessionSettings& s, std::optional<glm::vec2>& mouse) const {
+    // Only what was given is set, as given: the library checks it (prepareSession, once for every
+    // session) and names the setting in its errors, which withFlagNames shows as the flag.
     if (!size_.empty()) {
         int w = 0, h = 0;
         if (!parseSize(size_, w, h)) return usageError("--size " + size_ + ": expected WxH, e.g. 800x450");
-        o.width = w;
-        o.height = h;
+        s.width = w;
+        s.height = h;
     }
-    if (fps_) o.fps = *fps_;
-    if (startTime_) o.startTime = *startTime_;
-    if (!date_.empty()) {
-        Result<double> wallClock = parseWallClock(date_);
-        if (!wallClock) return settingError("date", wallClock.error().first().message);
-        o.wallClock = *wallClock;
-    }
-    if (Status mouse = parseMouse(o.mouse); !mouse) return mouse;
-    if (!mouseScript_.empty()) o.mouseScript = mouseScript_;
-    if (!keyScript_.empty()) o.keyScript = keyScript_;
-    if (frameTimeout_) o.frameTimeout = *frameTimeout_;
-    if (compileTimeout_) o.compileTimeout = *compileTimeout_;
-    std::vector<std::pair<std::string, std::filesystem::path>> files;
-    if (Status media = parseMedia(o.media.folders, files); !media) return media;
-    for (auto& [id, file] : files) o.media.files.emplace_back(id, file);
-    return okStatus();
-}
-
-Status SessionFlags::applyTo(SessionSettings& s, std::optional<glm::vec2>& mouse) const {
-    // The library's settings take 0 for "the default": what the user gave is checked here, with
-    // the checks (and messages) prepareSession gives a run.
-    if (!size_.empty()) {
-        if (!parseSize(size_, s.width, s.height)) return usageError("--size " + size_ + ": expected WxH, e.g. 800x450");
-        if (Status size = checkSizeSetting(s.width, s.height); !size) return size;
-    }
-    if (fps_) {
-        if (Status fps = checkFpsSetting(*fps_); !fps) return fps;
-        s.fps = *fps_;
-    }
-    if (startTime_) {
-        if (Status start = checkStartTimeSetting(*startTime_); !start) return start;
-        s.startTime = *startTime_;
-    }
-    if (!date_.empty()) {
-        if (Result<double> wallClock = parseWallClock(date_); !wallClock)
-            return settingError("date", wallClock.error().first().message);
-        s.date = date_;
-    }
+    if (fps_) s.fps = *fps_;
+    if (startTime_) s.startTime = *startTime_;
+    if (!date_.empty()) s.date = date_;
     if (Status parsed = parseMouse(mouse); !parsed) return parsed;
-    if (mouse)
-        if (Status inRange = checkMouseSetting(mouse->x, mouse->y); !inRange) return inRange;
-    s.mouseScript = mouseScript_;
-    s.keyScript = keyScript_;
-    s.frameTimeout = frameTimeout_.value_or(defaults::kFrameTimeoutSeconds);
-    s.compileTimeout = compileTimeout_.value_or(defaults::kCompileTimeoutSeconds);
+    if (!mouseScript_.empty()) s.mouseScript = mouseScript_;
+    if (!keyScript_.empty()) s.keyScript = keyScript_;
+    if (frameTimeout_) s.frameTimeout = *frameTimeout_;
+    if (compileTimeout_) s.compileTimeout = *compileTimeout_;
     return parseMedia(s.mediaFolders, s.mediaFiles);
 }
 

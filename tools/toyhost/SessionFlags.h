@@ -13,7 +13,6 @@
 #include <toyhost/Session.h>
 
 #include "core/Result.h"
-#include "session/SessionOptions.h"
 
 namespace toyhost::cli {
 
@@ -22,10 +21,9 @@ public:
     enum Group : unsigned { Canvas = 1, Clock = 2, Input = 4, Media = 8, Limits = 16, All = 31 };
     // Declares the flags of `groups` on `command`.
     void define(CLI::App& command, unsigned groups);
-    // What was given, into a run's options (`run`, `sound`); prepareSession checks the values.
-    Status applyTo(SessionOptions& options) const;
-    // What was given, into the library's settings (`compare`), checked here as prepareSession checks
-    // a run's; --mouse becomes `mouse`, the point pressed on frame 0.
+    // What was given, into the library's settings (a run's SessionOptions::settings, compare's
+    // session); what was not stays absent, for the defaults. The values are checked where every
+    // session's are (prepareSession); --mouse becomes `mouse`, the point pressed on frame 0.
     Status applyTo(SessionSettings& settings, std::optional<glm::vec2>& mouse) const;
 
 private:

@@ -37,7 +37,7 @@ public:
     WindowDriver(WindowContext& window, WindowEvents& events, const SessionPlan& plan, ShadertoyWatcher& watcher,
                  SessionObserver& observer)
         : window_(window), events_(events), plan_(plan), o_(plan.options), watcher_(watcher), observer_(observer),
-          clock_(clockOptions(plan.options), monotonicNow()) {}
+          clock_(clockOptions(plan), monotonicNow()) {}
 
     bool poll(SessionCore& s) override {
         reportScreenshots();
@@ -98,9 +98,10 @@ public:
     }
 
 private:
-    static RealTimeClockOptions clockOptions(const SessionOptions& o) {
-        RealTimeClockOptions clock{o.fps, o.startTime, 1.0 / defaults::kRestartTimeDelta, std::nullopt};
-        if (o.fps || o.wallClock) clock.wallClockStart = o.wallClock.value_or(localWallClockNow());
+    static RealTimeClockOptions clockOptions(const SessionPlan& plan) {
+        const SessionSettings& s = plan.options.settings;
+        RealTimeClockOptions clock{s.fps, s.startTime, 1.0 / defaults::kRestartTimeDelta, std::nullopt};
+        if (s.fps || plan.wallClock) clock.wallClockStart = plan.wallClock.value_or(localWallClockNow());
         return clock;
     }
     static Diagnostic notice(std::string message, Code code) {
@@ -180,11 +181,11 @@ Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& 
     Result<SessionPlan> prepared = prepareSession(options);
     if (!prepared) return withCompileProblems(options, prepared.error());
     WindowOptions windowOptions;
-    windowOptions.width = *prepared->options.width;
-    windowOptions.height = *prepared->options.height;
+    windowOptions.width = *prepared->options.settings.width;
+    windowOptions.height = *prepared->options.settings.height;
     const std::string& name = prepared->shadertoy.manifest.name;
     windowOptions.title = name.empty() ? "toyhost" : name + " - toyhost";
-    ShadertoyWatcher watcher(prepared->options.target, prepared->options.media, prepared->shadertoy.manifest);
+    ShadertoyWatcher watcher(prepared->options.target, prepared->media, prepared->shadertoy.manifest);
     Result<std::shared_ptr<WindowContext>> window = WindowContext::create(windowOptions);
     if (!window) return window.error();
     (*window)->releaseCurrent();  // the GL thread makes it current
@@ -197,8 +198,8 @@ Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& 
     GlThread gl([&] {
         if (!prepared->options.outPattern) {  // the canvas is the framebuffer, in pixels
             const GlSurface::Size fb = events.framebufferSize();
-            prepared->options.width = fb.width;
-            prepared->options.height = fb.height;
+            prepared->options.settings.width = fb.width;
+            prepared->options.settings.height = fb.height;
         }
         {
             Result<std::unique_ptr<SessionCore>> session = SessionCore::start(std::move(*prepared), *window, observer, watchdog);

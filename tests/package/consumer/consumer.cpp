@@ -16,15 +16,18 @@ int main(int argc, char** argv) {
     if (argc != 5) return std::fprintf(stderr, "usage: consumer SHADERTOY WxH FRAMES OUT\n"), 2;
     if (std::strcmp(toyhost::versionString(), TOYHOST_VERSION_STRING) != 0)
         return std::fprintf(stderr, "library %s, header %s\n", toyhost::versionString(), TOYHOST_VERSION_STRING), 1;
+    int width = 0, height = 0;
+    if (std::sscanf(argv[2], "%dx%d", &width, &height) != 2) return 2;
     toyhost::SessionSettings settings;
-    if (std::sscanf(argv[2], "%dx%d", &settings.width, &settings.height) != 2) return 2;
+    settings.width = width;
+    settings.height = height;
     settings.fps = 30;
     settings.date = "2026-01-01T00:00:00";
     const int frames = std::atoi(argv[3]);
     auto shadertoy = toyhost::Shadertoy::load(argv[1]);
     if (!shadertoy) return std::fprintf(stderr, "%s\n", shadertoy.error().text().c_str()), 1;
     std::ofstream out(argv[4], std::ios::binary);
-    std::vector<std::uint8_t> rgba(std::size_t(settings.width) * settings.height * 4);
+    std::vector<std::uint8_t> rgba(std::size_t(width) * height * 4);
     int status = 0;
     toyhost::runOnGlThread([&] {
         auto session = toyhost::Session::createHeadless(*shadertoy, settings);
