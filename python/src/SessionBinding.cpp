@@ -288,7 +288,8 @@ SessionSettings settingsFrom(std::optional<int> width, std::optional<int> height
                              const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
                              bool floatImage, std::optional<double> frameTimeout, std::optional<double> compileTimeout,
                              const std::optional<std::filesystem::path>& mouseScript,
-                             const std::optional<std::filesystem::path>& keyScript) {
+                             const std::optional<std::filesystem::path>& keyScript, std::optional<int> supersample,
+                             std::optional<int> motionBlur, std::optional<double> shutter, bool dither) {
     SessionSettings settings;
     settings.width = width;
     settings.height = height;
@@ -302,6 +303,10 @@ SessionSettings settingsFrom(std::optional<int> width, std::optional<int> height
     settings.compileTimeout = compileTimeout;
     settings.mouseScript = mouseScript;
     settings.keyScript = keyScript;
+    settings.supersample = supersample;
+    settings.motionBlur = motionBlur;
+    settings.shutterDegrees = shutter;
+    settings.dither = dither;
     return settings;
 }
 
@@ -329,14 +334,17 @@ void bindSession(py::module_& module) {
                          const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
                          bool floatImage, std::optional<double> frameTimeout, std::optional<double> compileTimeout,
                          const std::optional<std::filesystem::path>& mouseScript,
-                         const std::optional<std::filesystem::path>& keyScript) {
+                         const std::optional<std::filesystem::path>& keyScript, std::optional<int> supersample,
+                         std::optional<int> motionBlur, std::optional<double> shutter, bool dither) {
                  return std::make_unique<NativeSession>(
                      shadertoy, settingsFrom(width, height, fps, startTime, date, mediaFolders, mediaFiles,
-                                             floatImage, frameTimeout, compileTimeout, mouseScript, keyScript));
+                                             floatImage, frameTimeout, compileTimeout, mouseScript, keyScript,
+                                             supersample, motionBlur, shutter, dither));
              }),
              py::arg("shadertoy"), py::arg("width"), py::arg("height"), py::arg("fps"), py::arg("start_time"),
              py::arg("date"), py::arg("media_folders"), py::arg("media_files"), py::arg("float_image"),
-             py::arg("frame_timeout"), py::arg("compile_timeout"), py::arg("mouse_script"), py::arg("key_script"))
+             py::arg("frame_timeout"), py::arg("compile_timeout"), py::arg("mouse_script"), py::arg("key_script"),
+             py::arg("supersample"), py::arg("motion_blur"), py::arg("shutter"), py::arg("dither"))
         .def("close", &NativeSession::close)
         .def_property_readonly("closed", &NativeSession::closed)
         .def("step", &NativeSession::step, py::arg("events"), py::arg("time"), py::arg("time_delta"),

@@ -67,12 +67,18 @@ class Session:
     (None), size and fps are the manifest's defaults, else toyhost's (800x450, 60); a value given
     is checked (``size=(0, 2)`` or ``fps=0`` raise UsageError naming the setting).
 
+    Better pixels than the site (docs/sampling.md): ``supersample=N`` draws Image N x N times a frame
+    with fragCoord on a grid inside each pixel, ``motion_blur=S`` at S times inside the shutter
+    interval (``shutter`` degrees of the frame step, default 180), and the draws are averaged
+    (buffers still run once a frame); ``dither=True`` dithers the average before it is rounded to 8
+    bits. The same frames as the CLI's --supersample, --motion-blur, --shutter and --dither.
+
     Close it (``close()`` or ``with``) to free its GL context at once rather than at garbage
     collection."""
 
     def __init__(self, shadertoy, size=None, fps=None, start_time=0.0, date=None, media_folders=(),
                  media_files=None, float_image=False, frame_timeout=None, compile_timeout=None, mouse_script=None,
-                 key_script=None):
+                 key_script=None, supersample=None, motion_blur=None, shutter=None, dither=False):
         if not isinstance(shadertoy, Shadertoy):
             shadertoy = load(shadertoy)
         width, height = (None, None) if size is None else _size(size)
@@ -82,7 +88,9 @@ class Session:
             [os.fspath(f) for f in media_folders],
             [(str(k), os.fspath(v)) for k, v in (media_files or {}).items()],
             bool(float_image), _seconds(frame_timeout), _seconds(compile_timeout),
-            _path(mouse_script), _path(key_script))
+            _path(mouse_script), _path(key_script), None if supersample is None else int(supersample),
+            None if motion_blur is None else int(motion_blur), None if shutter is None else float(shutter),
+            bool(dither))
         self.shadertoy = shadertoy
         self._mouse_held = False
         self._keys_held = set()
