@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The side-by-side crops of docs/sampling.md: the ocean (../shared/shadertoys/MdXyzX) at 320x180,
 # one sample per pixel against --supersample 4 (the horizon's stair steps and sparkle), and a still
-# frame against --motion-blur 8 with a 180-degree shutter (the waves moving), each crop enlarged 4x
+# frame against --motion-blur 16 with a 180-degree shutter at 6 fps (the waves moving), each crop enlarged 4x
 # without smoothing so that the pixels show. Needs a build with tools/toyhost and ffmpeg.
 #
 # usage: scripts/sampling-crops.sh BUILD_DIR [OUT_DIR (default docs/sampling)]
@@ -17,12 +17,12 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/toyhost-crops.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$out"
 
-# One frame (frame 30 at 30 fps: iTime 1.0) of the ocean with extra flags, as a PNG.
+# One frame (iTime 1.0: frame FPS at FPS frames a second) of the ocean with extra flags, as a PNG.
 still() {
-  local name=$1; shift
-  "$toyhost" run "$repo/shadertoys/ocean" --headless --quiet --size 320x180 --fps 30 --frames 31 \
-    --capture-every 30 --date 2024-01-01T12:00:00 "$@" --out "$work/${name}_%d.png"
-  mv "$work/${name}_30.png" "$work/$name.png"
+  local name=$1 fps=$2; shift 2
+  "$toyhost" run "$repo/shadertoys/ocean" --headless --quiet --size 320x180 --fps "$fps" --frames $((fps + 1)) \
+    --capture-every "$fps" --date 2024-01-01T12:00:00 "$@" --out "$work/${name}_%d.png"
+  mv "$work/${name}_$fps.png" "$work/$name.png"
 }
 # Two crops (W x H at X,Y) side by side, each enlarged 4x with nearest-neighbour scaling.
 pair() {
@@ -32,9 +32,12 @@ pair() {
     "$result"
 }
 
-still one
-still supersampled --supersample 4
-still blurred --motion-blur 8 --shutter 180
-pair one supersampled 96:54:112:40 "$out/ocean-supersample.png"
-pair one blurred 96:54:112:100 "$out/ocean-motion-blur.png"
+# Anti-aliasing at the horizon (30 fps); motion blur of the near waves at 6 fps, where a
+# 180-degree shutter is open 1/12 s (the waves move visibly in that time).
+still one 30
+still supersampled 30 --supersample 4
+still slow 6
+still blurred 6 --motion-blur 16 --shutter 180
+pair one supersampled 96:54:112:70 "$out/ocean-supersample.png"
+pair slow blurred 96:54:112:120 "$out/ocean-motion-blur.png"
 echo "sampling-crops: wrote $out/ocean-supersample.png and $out/ocean-motion-blur.png"

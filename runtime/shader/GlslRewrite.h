@@ -18,11 +18,14 @@ namespace toyhost {
 // so they compute in 32 bits as on desktop GPUs while `#ifdef lowp` stays false as in WebGL.
 // Without `zeroInit` and `rename` only the promotion is done (the text a driver gets when it
 // refuses the full rewrite).
+// With `fragCoord`, every `gl_FragCoord` of the text (directives included) is that name instead: the
+// Image pass reads a copy moved by the sample's or tile's offset (shader/ShaderAssembly.h).
 struct GlslRewriteOptions {
     bool lowp = false;
     bool mediump = false;
     bool zeroInit = true;
     bool rename = true;
+    std::string_view fragCoord;
 };
 std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions options = {});
 

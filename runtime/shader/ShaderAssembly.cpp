@@ -147,10 +147,12 @@ std::string makeHeader(const ShaderInputs& in) {
              "else shadertoy_out_color.w=-1.0;}}\n"
              "void st_assert( bool cond        ) {if(!cond)shadertoy_out_color.x=-1.0;}\n"
              "uniform vec2 " << kFragOffsetUniform << ";\n"
+             "vec4 " << kFragCoordCopy << ";\n"
              "void main( void ){"
+             << kFragCoordCopy << " = gl_FragCoord + vec4(" << kFragOffsetUniform << ", 0.0, 0.0);"
              "shadertoy_out_color = vec4(1.0,1.0,1.0,1.0);"
              "vec4 color = vec4(0.0,0.0,0.0,1.0);"
-             "mainImage( color, gl_FragCoord.xy + " << kFragOffsetUniform << " );"
+             "mainImage( color, " << kFragCoordCopy << ".xy );"
              "if(shadertoy_out_color.x<0.0) color=vec4(1.0,0.0,0.0,1.0);"
              "if(shadertoy_out_color.y<0.0) color=vec4(0.0,1.0,0.0,1.0);"
              "if(shadertoy_out_color.z<0.0) color=vec4(0.0,0.0,1.0,1.0);"
@@ -186,6 +188,7 @@ AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     // The text without it is kept for a driver that refuses the rewritten one (a declaration the
     // rewrite misread).
     GlslRewriteOptions options = promotion(inputs);
+    if (inputs.pass == PassId::Image && !inputs.sound) options.fragCoord = kFragCoordCopy;
     out.text = header + rewriteLikeWebGL(user, options);
     options.zeroInit = options.rename = false;
     out.plainText = header + rewriteLikeWebGL(user, options);

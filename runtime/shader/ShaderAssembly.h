@@ -37,8 +37,11 @@ AssembledShader assembleFragmentShader(const ShaderInputs& inputs);
 
 // The Image pass's main() calls mainImage with gl_FragCoord.xy plus this uniform (vec2, pixels):
 // zero (GL's initial value) draws the site's pixel centres exactly; supersampling and tiles set it
-// per draw. gl_FragCoord itself, read directly by a shader, is not moved.
+// per draw. The pass's own reads of gl_FragCoord are of kFragCoordCopy, gl_FragCoord moved by the
+// same offset (the rewrite renames them), so a shader that reads it directly is sampled and tiled
+// as well.
 inline constexpr const char* kFragOffsetUniform = "toyhost_fragOffset";
+inline constexpr const char* kFragCoordCopy = "toyhost_FragCoord";
 
 // The vertex shader every pass shares: one triangle that covers the viewport.
 const char* fullscreenVertexShader();

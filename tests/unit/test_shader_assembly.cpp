@@ -182,7 +182,14 @@ TEST(ShaderAssembly, MainWrapperImageForcesAlphaBuffersKeepIt) {
 
         const std::string body = header.substr(main);
         const size_t init = body.find("vec4 color = vec4(0.0,0.0,0.0,1.0);");
-        const size_t call = body.find("mainImage( color, gl_FragCoord.xy );");
+        // Image: fragCoord is gl_FragCoord moved by the sample's or tile's offset (zero: the site's).
+        const size_t call = body.find(pass == PassId::Image ? "mainImage( color, toyhost_FragCoord.xy );"
+                                                            : "mainImage( color, gl_FragCoord.xy );");
+        if (pass == PassId::Image) {
+            const size_t copy = body.find("toyhost_FragCoord = gl_FragCoord + vec4(toyhost_fragOffset, 0.0, 0.0);");
+            ASSERT_NE(copy, std::string::npos);
+            EXPECT_LT(copy, call);
+        }
         ASSERT_NE(init, std::string::npos) << passName(pass);
         ASSERT_NE(call, std::string::npos) << passName(pass);
         EXPECT_LT(init, call);
@@ -391,4 +398,22 @@ TEST(ShaderAssembly, ParseKeepsLinesWithoutLocationAndHandlesCrlf) {
               "/toys/image.glsl:1:3: error: Image: syntax error, unexpected IDENTIFIER [shader.compile]\n"
               "/toys/image.glsl: error: Image: link: not attempted [shader.compile]");
     EXPECT_EQ(parsed(""), "");
+}
+
+// The Image pass reads the moved copy wherever its code (and Common in it) says gl_FragCoord, in
+// #define bodies too; the other passes keep gl_FragCoord.
+TEST(ShaderAssembly, OnlyTheImagePassReadsTheMovedFragCoordCopy) {
+    const std::string common = "#define PIXEL gl_FragCoord.xy\nvec2 at() { return gl_FragCoord.xy; }\n";
+    for (PassId pass : {PassId::Image, PassId::BufferA}) {
+        ShaderInputs in;
+        in.pass = pass;
+        in.common = &common;
+        in.code = "void mainImage(out vec4 c, in vec2 f) { c = vec4(gl_FragCoord.xy + PIXEL + at(), 0, 1); }\n";
+        const AssembledShader shader = assembleFragmentShader(in);
+        for (const std::string* text : {&shader.text, &shader.plainText}) {
+            const std::string user = text->substr(text->find("#line 1000001"));
+            EXPECT_EQ(user.find("gl_FragCoord") == std::string::npos, pass == PassId::Image) << *text;
+            EXPECT_EQ(countMatches(user, "toyhost_FragCoord"), pass == PassId::Image ? 3 : 0) << *text;
+        }
+    }
 }
