@@ -102,15 +102,11 @@ Status SessionCore::createPlayer(PlayerPlan shadertoy) {
     const SessionOptions& o = plan_.options;
     PlayerDesc desc;
     // A window's canvas is its framebuffer, except while recording (one size for the recording).
-    // A tiled still's targets are one tile of the canvas.
-    desc.width = plan_.tile ? TiledStill::tileSide(*o.settings.width, plan_.tile) : *o.settings.width;
-    desc.height = plan_.tile ? TiledStill::tileSide(*o.settings.height, plan_.tile) : *o.settings.height;
-    if (plan_.tile) {
-        desc.canvasWidth = *o.settings.width;
-        desc.canvasHeight = *o.settings.height;
-    }
-    desc.floatImage = o.settings.floatImage || (plan_.output && plan_.output->format() == OutputFormat::Exr &&
-                                       o.capturePass == PassId::Image);
+    desc.width = *o.settings.width;
+    desc.height = *o.settings.height;
+    if (plan_.tile) TiledStill::fitPlayer(desc, plan_);  // the targets are one tile
+    desc.floatImage = o.settings.floatImage ||
+                      (plan_.output && plan_.output->format() == OutputFormat::Exr && o.capturePass == PassId::Image);
     desc.sampling = plan_.sampling;
     Result<std::unique_ptr<Player>> made = Player::create(context_, std::move(shadertoy), desc);
     if (!made) return made.error();
@@ -304,10 +300,8 @@ Result<SessionReport> SessionCore::finishRound() {
         if (!completed) return completed.error();
         recording_->report(report_, renderSeconds_, observer_, *finite_);
     }
-    if (tiled_) {
-        if (Status completed = tiled_->complete(); !completed) return completed.error();
-        tiled_->report(report_);
-    }
+    if (Status written = tiled_ ? tiled_->complete() : okStatus(); !written) return written.error();
+    if (tiled_) tiled_->report(report_);
     if (player_ && !o.checkFinite && framesRendered_ > 0) checkBuffers(frameNumber_ - 1);
     if (!o.interactive)
         if (Status saved = saveCheckpoint(); !saved) return saved.error();

@@ -35,8 +35,14 @@ public:
     TiledStill(const TiledStill&) = delete;
     TiledStill& operator=(const TiledStill&) = delete;
 
-    // The player's targets for this canvas: one tile (at most the tile side, at most the canvas).
-    static int tileSide(int canvas, int tile) { return canvas < tile ? canvas : tile; }
+    // A player for `plan`'s canvas (in `desc`) gets one tile as its targets (at most the tile
+    // side, at most the canvas) and the canvas as iResolution.
+    static void fitPlayer(PlayerDesc& desc, const SessionPlan& plan) {
+        desc.canvasWidth = desc.width;
+        desc.canvasHeight = desc.height;
+        desc.width = desc.width < plan.tile ? desc.width : plan.tile;
+        desc.height = desc.height < plan.tile ? desc.height : plan.tile;
+    }
 
     // After `player` stepped frame `frame` (without drawing Image): draws its Image tile by tile
     // and, when the frame is captured, writes its file. An error of an earlier file's writing
