@@ -160,6 +160,29 @@ TEST(Sampling, RunAndTheCppSessionGiveTheSameFrames) {
     EXPECT_NE(render(kProbe, s, 3), ours);
 }
 
+TEST(Sampling, CompareRendersBothSidesWithTheSamples) {
+    const fs::path dir = freshOutputDir("sampling-compare");
+    const std::string common = " --size 40x24 --fps 4 --date " + std::string(kDate) + " --supersample 2 --motion-blur 3";
+    const CommandResult run = runToyhost("run " + kProbe.string() + " --headless --quiet --frames 2" + common +
+                                         " --out " + (dir / "run_%d.png").string());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const CommandResult compare = runToyhost("compare " + kProbe.string() + " " + kProbe.string() + " --frames 2" +
+                                             common + " --frames-out " + (dir / "pairs").string());
+    ASSERT_EQ(compare.exitCode, 0) << compare.output;
+    Result<Image8> ran = readPng(dir / "run_1.png");
+    Result<Image8> a = readPng(dir / "pairs/a_0001.png");
+    ASSERT_TRUE(ran.ok() && a.ok()) << compare.output;
+    EXPECT_TRUE(ran->rgba == a->rgba);
+    // Without the samples compare's frame differs (the flags reached the sessions).
+    const CommandResult plain = runToyhost("compare " + kProbe.string() + " " + kProbe.string() +
+                                           " --frames 2 --size 40x24 --fps 4 --date " + kDate + " --frames-out " +
+                                           (dir / "plain").string());
+    ASSERT_EQ(plain.exitCode, 0) << plain.output;
+    Result<Image8> one = readPng(dir / "plain/a_0001.png");
+    ASSERT_TRUE(one.ok());
+    EXPECT_FALSE(one->rgba == a->rgba);
+}
+
 TEST(Sampling, ValuesOutOfRangeAreRefusedNamingTheSetting) {
     Result<Shadertoy> probe = Shadertoy::load(kProbe);
     ASSERT_TRUE(probe.ok());
