@@ -56,6 +56,11 @@ run run shadertoys/cube-probe --size 64x36 --frames 3 --out "$out/cp_%d.png"
 run run shadertoys/cube-probe --size 64x36 --frames 2 --capture-pass "Cube A" --out "$out/cube_%d.exr"
 run run shadertoys/cube-probe --size 64x36 --frames 12 --out "$out/cp.mp4"
 "$toyhost" sound shadertoys/cube-probe --seconds 7 --quiet --out "$out/cp.wav"
+# Better pixels: samples averaged on the GPU, tiles written band by band on their writer thread.
+run run shadertoys/sampling-probe --size 40x24 --frames 3 --supersample 3 --motion-blur 2 --shutter 270 --dither \
+    --out "$out/ss_%d.png"
+run run shadertoys/tile-probe --size 300x170 --tile 64 --frames 2 --out "$out/tile_%d.png"
+run run shadertoys/sampling-probe --size 300x170 --tile 128 --supersample 2 --out "$out/tile.exr"
 # A pass Mesa's preprocessor refuses, compiled after preprocessing as browsers do.
 mkdir -p "$out/pp"
 printf '#define NEG(x) -x\nvoid mainImage(out vec4 c, in vec2 f) { c = vec4(NEG(-.5)); }\n' > "$out/pp/image.glsl"
