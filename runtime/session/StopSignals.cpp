@@ -28,6 +28,10 @@ void installStopSignals() {
     action.sa_flags = SA_RESTART;
     ::sigaction(SIGINT, &action, nullptr);
     ::sigaction(SIGTERM, &action, nullptr);
+    // SIGHUP (the terminal or the ssh session went away) ends a run as SIGTERM does, unless it is
+    // ignored already: `nohup toyhost ...` keeps running.
+    struct sigaction hangup {};
+    if (::sigaction(SIGHUP, nullptr, &hangup) == 0 && hangup.sa_handler != SIG_IGN) ::sigaction(SIGHUP, &action, nullptr);
     std::signal(SIGPIPE, SIG_IGN);
 }
 
@@ -36,7 +40,12 @@ int stopSignal() { return firstSignal; }
 int stopSignalFd() { return signalPipe[0]; }
 
 const char* stopSignalName(int signal) {
-    return signal == SIGTERM ? "SIGTERM" : signal == SIGINT ? "SIGINT" : "a signal";
+    switch (signal) {
+        case SIGTERM: return "SIGTERM";
+        case SIGINT: return "SIGINT";
+        case SIGHUP: return "SIGHUP";
+        default: return "a signal";
+    }
 }
 
 }  // namespace toyhost

@@ -9,12 +9,14 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <random>
 #include <thread>
 
 #include "Processes.h"
+#include "session/Checkpoint.h"
 #include "image/ImageFile.h"
 #include "image/ImageWriters.h"
 
@@ -256,6 +258,48 @@ TEST(Adversarial, AnOutputFolderThatVanishesIsAnErrorWithNothingLeft) {
     std::ofstream(dir / "out") << "a file where the folder was\n";
     EXPECT_EQ(run.wait(30), 1) << run.log();
     EXPECT_NE(run.log().find("error"), std::string::npos) << run.log();
+}
+
+// ---- SIGHUP -------------------------------------------------------------------------------------
+
+// The terminal goes away during a video capture with checkpoints: the run ends as SIGTERM ends it
+// (exit 128 + 1), the checkpoint is written, the unfinished video and its temporary file are gone
+// (ffmpeg with them). Under nohup (SIGHUP ignored) the run goes on.
+TEST(Adversarial, SighupEndsARunAsSigtermDoesAndNohupIsHonoured) {
+    const fs::path dir = freshOutputDir("reliability/adversarial-sighup");
+    BackgroundProcess run = startToyhost({"run", (sourceDir() / "shadertoys/bench-trivial").string(), "--headless",
+                                          "--size", "64x36", "--frames", "1000000", "--checkpoint",
+                                          (dir / "state.ckpt").string(), "--checkpoint-every", "5", "--out",
+                                          (dir / "video.mp4").string()},
+                                         dir);
+    ASSERT_TRUE(within(60, [&] { return fs::exists(dir / "state.ckpt"); })) << run.log();
+    run.signal(SIGHUP);
+    EXPECT_EQ(run.wait(30), 129) << run.log();
+    EXPECT_NE(run.log().find("SIGHUP"), std::string::npos) << run.log();
+    std::vector<std::string> left;
+    for (const auto& entry : fs::directory_iterator(dir)) left.push_back(entry.path().filename().string());
+    std::sort(left.begin(), left.end());
+    EXPECT_EQ(left, (std::vector<std::string>{"log", "state.ckpt"})) << "no video, no temporary file";
+
+    // nohup: SIGHUP ignored before toyhost starts stays ignored; SIGTERM still ends the run.
+    const fs::path quiet = freshOutputDir("reliability/adversarial-nohup");
+    BackgroundProcess kept("/bin/sh",
+                           {"-c", "trap '' HUP; exec " + quoted(toyhostBinary()) + " run " +
+                                      quoted(sourceDir() / "shadertoys/bench-trivial") +
+                                      " --headless --size 64x36 --frames 1000000 --checkpoint " +
+                                      quoted(quiet / "state.ckpt") + " --checkpoint-every 5"},
+                           quiet / "log");
+    ASSERT_TRUE(within(60, [&] { return fs::exists(quiet / "state.ckpt"); })) << kept.log();
+    kept.signal(SIGHUP);
+    const Result<Checkpoint> before = readCheckpoint(quiet / "state.ckpt");
+    ASSERT_TRUE(before.ok());
+    // Still running: the checkpoint keeps moving after the SIGHUP.
+    EXPECT_TRUE(within(60, [&] {
+        const Result<Checkpoint> now = readCheckpoint(quiet / "state.ckpt");
+        return now.ok() && now->state.frame > before->state.frame + 10;
+    })) << kept.log();
+    kept.signal(SIGTERM);
+    EXPECT_EQ(kept.wait(30), 143) << kept.log();
 }
 
 // ---- a closed stdout ------------------------------------------------------------------------------

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string("toyhost ") + TOYHOST_VERSION_TEXT);
     app.require_subcommand(1);
     app.footer("Exit codes: 0 success; 1 the run failed (bad manifest, missing file, shader compile error, GL or "
-               "write error); 2 bad command-line usage; 130 / 143 interrupted by SIGINT / SIGTERM.");
+               "write error); 2 bad command-line usage; 130 / 143 / 129 interrupted by SIGINT / SIGTERM / SIGHUP.");
 
     RunCommand runCommand;
     CLI::App* run = app.add_subcommand("run", "Run a shadertoy (manifest folder or file, or a Shadertoy JSON export)");
@@ -83,7 +83,7 @@ int main(int argc, char** argv) {
     compareCommand.define(*compare);
     compare->footer("Exit codes of compare (as cmp and diff): 0 equal within the tolerance; 1 different; 2 no answer "
                     "(bad usage, a shadertoy that does not load or compile, a pass one lacks, GL or write error); 124 "
-                    "watchdog; 130 / 143 interrupted by SIGINT / SIGTERM.");
+                    "watchdog; 130 / 143 / 129 interrupted by SIGINT / SIGTERM / SIGHUP.");
 
     try {
         app.parse(argc, argv);
