@@ -264,7 +264,8 @@ public:
     Result<Reloaded> reload(PreparedReload prepared);
 
     // The Sound pass (mainSound) as the site renders it: interleaved stereo samples at 44100 Hz,
-    // `seconds` long (0: the site's 180 s).
+    // `seconds` long (0: the site's 180 s; a negative, NaN or infinite length, or more than an
+    // hour, is refused naming `seconds`).
     Result<std::vector<float>> renderSound(double seconds = 0);
 
     // Notices so far (stand-ins used, passes preprocessed as browsers do), oldest first.

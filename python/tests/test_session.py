@@ -314,3 +314,13 @@ def test_step_then_frame_gives_each_frames_own_picture_whatever_comes_between(pr
         session.step()
         session.restart()
         assert column(session.frame(), 3)[1] == 14, "restart renders nothing: the frame shown stays"
+
+
+def test_render_sound_refuses_impossible_lengths_naming_seconds():
+    cube = toyhost.load(SOURCE_DIR / "shadertoys/cube-probe")
+    with toyhost.Session(cube, size=(16, 16)) as session:
+        for seconds in (-1, float("nan"), float("inf"), 1e7):
+            with pytest.raises(toyhost.UsageError) as raised:
+                session.render_sound(seconds)
+            assert "seconds" in str(raised.value), str(raised.value)
+        assert session.render_sound(0.5).shape == (22050, 2)

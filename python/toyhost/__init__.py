@@ -162,7 +162,8 @@ class Session:
 
     def render_sound(self, seconds=0.0):
         """The Sound pass (mainSound) as the site renders it: float32 samples of shape (n, 2), stereo
-        at 44100 Hz, ``seconds`` long (0: the site's 180 s)."""
+        at 44100 Hz, ``seconds`` long (0: the site's 180 s; negative, NaN, infinite or more than an
+        hour raise UsageError naming ``seconds``)."""
         return self._native.render_sound(float(seconds))
 
     def reload(self, shadertoy=None):

@@ -82,8 +82,7 @@ Result<SessionOptions> withCheckpointSettings(SessionOptions o, const Checkpoint
 namespace {
 // `toyhost sound --out`: an audio file by its extension, "-" for WAV on stdout, or a device.
 Status checkSoundRequest(const SoundRequest& sound) {
-    if (!(sound.seconds >= 0) || sound.seconds > defaults::kMaxSoundSeconds)
-        return usage("--seconds must be more than 0 and at most " + std::to_string(int(defaults::kMaxSoundSeconds)));
+    if (Status seconds = checkSoundSecondsSetting(sound.seconds); !seconds) return seconds;
     if (Status out = checkSoundOutput(sound.out); !out) return out;
     std::error_code ec;
     if (fs::is_directory(sound.out, ec)) return usage("--out " + sound.out.string() + ": is a folder; give a file name");

@@ -35,7 +35,7 @@ namespace toyhost {
 // `toyhost sound`: the Sound pass rendered to an audio file instead of frames.
 struct SoundRequest {
     std::filesystem::path out;             // .wav, or .flac/.ogg/.opus/.mp3/.m4a through ffmpeg; "-": WAV on stdout
-    double seconds = 0;                    // 0: the site's 180 s
+    double seconds = defaults::kSoundSeconds;  // more than 0 (the site's 180 s by default)
 };
 
 struct SessionOptions {

@@ -51,6 +51,13 @@ Status checkTimeoutSetting(const std::string& setting, double seconds) {
     return okStatus();
 }
 
+Status checkSoundSecondsSetting(double seconds) {
+    if (!(seconds > 0 && seconds <= defaults::kMaxSoundSeconds))
+        return settingError("seconds", "the sound's length must be more than 0 and at most " +
+                                           std::to_string(static_cast<int>(defaults::kMaxSoundSeconds)) + " seconds");
+    return okStatus();
+}
+
 Status checkSamplingSettings(int supersample, int motionBlur, double shutterDegrees) {
     using namespace defaults;
     if (supersample < 1 || supersample > kMaxSupersample)

@@ -22,6 +22,8 @@ Status checkFpsSetting(double fps);                               // "fps"
 Status checkStartTimeSetting(double seconds);                     // "start_time"
 Status checkMouseSetting(double x, double y);                     // "mouse"
 Status checkTimeoutSetting(const std::string& setting, double seconds);  // "frame_timeout", "compile_timeout"
+// The Sound pass's length: more than 0 and at most defaults::kMaxSoundSeconds ("seconds").
+Status checkSoundSecondsSetting(double seconds);
 // Supersample 1..kMaxSupersample, motion blur 1..kMaxMotionBlurSamples, a shutter in (0, 360] and
 // at most kMaxSamplesPerFrame draws a frame: "supersample", "motion_blur", "shutter".
 Status checkSamplingSettings(int supersample, int motionBlur, double shutterDegrees);

@@ -8,12 +8,15 @@
 #include "capture/WavFile.h"
 #include "core/Defaults.h"
 #include "render/SoundRenderer.h"
+#include "session/SettingChecks.h"
 
 namespace toyhost {
 
 namespace fs = std::filesystem;
 
 Result<std::vector<float>> SoundJob::render(const PlayerPlan& shadertoy, double seconds) {
+    if (seconds == 0) seconds = defaults::kSoundSeconds;  // the API's "0: the site's 180 s"
+    if (Status length = checkSoundSecondsSetting(seconds); !length) return length.error();
     SoundRenderDesc desc;
     desc.seconds = seconds;
     desc.stopRequested = stopRequested_;
@@ -23,7 +26,7 @@ Result<std::vector<float>> SoundJob::render(const PlayerPlan& shadertoy, double 
 
 Result<SessionReport> SoundJob::writeFile(const PlayerPlan& shadertoy, const SoundRequest& request, SessionReport report) {
     using Clock = std::chrono::steady_clock;
-    const double seconds = request.seconds > 0 ? request.seconds : defaults::kSoundSeconds;
+    const double seconds = request.seconds;  // checked by prepareSession
     const Clock::time_point started = Clock::now();
     Result<std::vector<float>> stereo = render(shadertoy, seconds);
     if (!stereo) return stereo.error();

@@ -28,6 +28,7 @@ constexpr std::pair<const char*, const char*> kFlagOfSetting[] = {
     {"shutter", "--shutter"},
     {"dither", "--dither"},
     {"tile", "--tile"},
+    {"seconds", "--seconds"},
 };
 
 std::string number(double value) {
