@@ -124,10 +124,14 @@ public:
     // Renders the next frame at the fixed step (settings.fps), after applying the input scripts'
     // events due before it and then `events`, in order: the same frames as `toyhost run` with the
     // same settings. Returns once the frame is submitted (glFlush), not drawn: a read() waits for it.
+    // An event with a non-finite or out-of-range position (beyond +-1e6 pixels), or a keyCode
+    // outside 0..255, is refused naming `mouse` or `key`; nothing renders.
     Status step(std::span<const InputEvent> events = {});
     // Renders the next frame at iTime `time`, with iTimeDelta `timeDelta` and iFrameRate
     // `frameRate` (a real-time loop measures these itself); iDate follows `time`. The input
     // scripts' events of this frame number come first, as in step(). Returns once submitted.
+    // A non-finite time, a negative or non-finite timeDelta or frameRate is refused naming
+    // `time`, `time_delta` or `frame_rate`.
     Status stepAt(double time, double timeDelta, double frameRate, std::span<const InputEvent> events = {});
     int frame() const;  // iFrame of the next frame
     // The iTime step() gives frame `frame` (settings.startTime + frame / settings.fps).

@@ -324,3 +324,17 @@ def test_render_sound_refuses_impossible_lengths_naming_seconds():
                 session.render_sound(seconds)
             assert "seconds" in str(raised.value), str(raised.value)
         assert session.render_sound(0.5).shape == (22050, 2)
+
+
+def test_step_refuses_impossible_numbers_naming_them():
+    probe = toyhost.load(SOURCE_DIR / "shadertoys/uniform-probe")
+    with toyhost.Session(probe, size=(16, 16)) as session:
+        for kwargs, name in (({"time": float("nan")}, "time"), ({"time": 1.0, "time_delta": -1.0}, "time_delta"),
+                             ({"time": 1.0, "frame_rate": -1.0}, "frame_rate"), ({"mouse": (float("nan"), 0)}, "mouse"),
+                             ({"mouse": (1e40, 5)}, "mouse")):
+            with pytest.raises(toyhost.UsageError) as raised:
+                session.step(**kwargs)
+            assert name in str(raised.value), str(raised.value)
+        assert session.next_frame == 0
+        session.step(mouse=(3, 4))
+        assert session.next_frame == 1

@@ -21,6 +21,7 @@
 #include "manifest/ManifestDesc.h"
 #include "render/PendingReads.h"
 #include "session/SessionCore.h"
+#include "session/SettingChecks.h"
 #include "session/WatchdogSetup.h"
 #include "timing/Timeline.h"
 
@@ -241,7 +242,21 @@ Result<std::unique_ptr<Session>> Session::createOnCurrentContext(const Shadertoy
     return std::unique_ptr<Session>(new Session(std::move(*impl)));
 }
 
+namespace {
+// The caller's events, checked as the CLI checks --mouse and the input scripts.
+Status checkEvents(std::span<const InputEvent> events) {
+    using T = InputEvent::Type;
+    for (const InputEvent& e : events)
+        if (Status ok = checkInputEventSetting(e.type == T::MouseDown || e.type == T::MouseMove, e.x, e.y,
+                                               e.type == T::KeyDown || e.type == T::KeyUp, e.key);
+            !ok)
+            return ok;
+    return okStatus();
+}
+}  // namespace
+
 Status Session::step(std::span<const InputEvent> events) {
+    if (Status given = checkEvents(events); !given) return given;
     std::vector<InputEvent>& all = impl_->events;
     all.clear();
     const FrameTime time = impl_->timeline->next(frame(), all);
@@ -250,6 +265,8 @@ Status Session::step(std::span<const InputEvent> events) {
 }
 
 Status Session::stepAt(double time, double timeDelta, double frameRate, std::span<const InputEvent> events) {
+    if (Status clock = checkFrameClockSetting(time, timeDelta, frameRate); !clock) return clock;
+    if (Status given = checkEvents(events); !given) return given;
     std::vector<InputEvent>& all = impl_->events;
     all.clear();
     impl_->timeline->eventsBefore(frame(), all);
@@ -561,6 +578,7 @@ int Session::Rendering::readsInFlight() const { return static_cast<int>(impl_->r
 
 Result<std::unique_ptr<Session::Rendering>> Session::startRendering(const RenderRequest& request) {
     if (Status usable = impl_->usable("startRendering"); !usable) return usable.error();
+    if (Status given = checkEvents(request.events); !given) return given.error();
     if (request.frames < 0)
         return Error("render: frames must be 0 or more, got " + std::to_string(request.frames), Code::Usage);
     if (request.every < 1)

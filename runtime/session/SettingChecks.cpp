@@ -51,6 +51,24 @@ Status checkTimeoutSetting(const std::string& setting, double seconds) {
     return okStatus();
 }
 
+Status checkFrameClockSetting(double time, double timeDelta, double frameRate) {
+    if (!std::isfinite(time) || std::abs(time) > defaults::kMaxSeconds)
+        return settingError("time", "must be a number of seconds between -1e9 and 1e9");
+    if (!std::isfinite(timeDelta) || timeDelta < 0 || timeDelta > defaults::kMaxSeconds)
+        return settingError("time_delta", "must be a number of seconds, 0 or more");
+    if (!std::isfinite(frameRate) || frameRate < 0 || frameRate > defaults::kMaxFps)
+        return settingError("frame_rate", "must be 0 or a number of frames per second up to 1000000");
+    return okStatus();
+}
+
+Status checkInputEventSetting(bool mouse, double x, double y, bool key, int keyCode) {
+    if (mouse)
+        if (Status at = checkMouseSetting(x, y); !at) return at;
+    if (key && (keyCode < 0 || keyCode > 255))
+        return settingError("key", "a keyCode is 0 to 255 (the keyboard texture's columns), got " + std::to_string(keyCode));
+    return okStatus();
+}
+
 Status checkSoundSecondsSetting(double seconds) {
     if (!(seconds > 0 && seconds <= defaults::kMaxSoundSeconds))
         return settingError("seconds", "the sound's length must be more than 0 and at most " +

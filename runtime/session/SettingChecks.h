@@ -22,6 +22,13 @@ Status checkFpsSetting(double fps);                               // "fps"
 Status checkStartTimeSetting(double seconds);                     // "start_time"
 Status checkMouseSetting(double x, double y);                     // "mouse"
 Status checkTimeoutSetting(const std::string& setting, double seconds);  // "frame_timeout", "compile_timeout"
+// A frame's clock given by a caller (Session::stepAt): iTime finite within +-1e9 s ("time"),
+// iTimeDelta finite and not negative ("time_delta"), iFrameRate finite and not negative
+// ("frame_rate").
+Status checkFrameClockSetting(double time, double timeDelta, double frameRate);
+// An input event's numbers: mouse coordinates as checkMouseSetting ("mouse"), a keyCode 0..255
+// ("key").
+Status checkInputEventSetting(bool mouse, double x, double y, bool key, int keyCode);
 // The Sound pass's length: more than 0 and at most defaults::kMaxSoundSeconds ("seconds").
 Status checkSoundSecondsSetting(double seconds);
 // Supersample 1..kMaxSupersample, motion blur 1..kMaxMotionBlurSamples, a shutter in (0, 360] and
