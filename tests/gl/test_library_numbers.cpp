@@ -1,6 +1,6 @@
 // Numbers a caller hands the library's Session per frame are checked as the CLI checks its own
 // (issue 31): a NaN or infinite iTime, a negative time delta, a negative frame rate, mouse
-// coordinates that are NaN or beyond +-1e6 pixels, a keyCode outside 0..255 are refused naming
+// coordinates that are NaN or beyond +-1e6 pixels (Python turns 1e40 into an infinite float), a keyCode outside 0..255 are refused naming
 // the parameter, and nothing renders (iFrame stays); good values still render.
 #include "GlTestSupport.h"
 
@@ -30,7 +30,7 @@ TEST(LibraryNumbers, StepAndStepAtRefuseImpossibleNumbersNamingThem) {
         EXPECT_EQ(field(s.stepAt(1.0, -1, 10)), "time_delta");
         EXPECT_EQ(field(s.stepAt(1.0, 0.1, -1)), "frame_rate");
         const InputEvent nanMouse = InputEvent::mouseDown(std::nanf(""), 3);
-        const InputEvent farMouse = InputEvent::mouseMove(1e40f, 5);
+        const InputEvent farMouse = InputEvent::mouseMove(2e6f, 5);  // beyond +-1e6 pixels
         const InputEvent badKey = InputEvent::keyDown(300);
         EXPECT_EQ(field(s.step(std::span(&nanMouse, 1))), "mouse");
         EXPECT_EQ(field(s.step(std::span(&farMouse, 1))), "mouse");
