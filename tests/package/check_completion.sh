@@ -16,7 +16,9 @@ complete_line() {  # complete_line WORD...: the candidates for the last word
   _toyhost
   printf '%s\n' "${COMPREPLY[@]}"
 }
-has() { grep -qxF -- "$1"; }
+# Reads all of its input: `grep -q` stops at the first match, and the writer then dies of SIGPIPE,
+# which pipefail turned into a failed check whenever more candidates followed the match.
+has() { grep -xF -- "$1" >/dev/null; }
 
 commands=$("$toyhost" --help | sed -n '/^Subcommands:/,/^$/p' | awk 'NR > 1 && NF {print $1}')
 for command in $commands; do
