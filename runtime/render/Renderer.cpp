@@ -74,8 +74,10 @@ struct Renderer::Impl {
 
     GLenum imageFormat() const { return floatImage ? GL_RGBA32F : GL_RGBA8; }
 
-    // Binds `pass`'s program, its channels' textures for `step` and the frame's uniforms.
-    void usePass(PassRuntime& pass, const FrameUniforms& u, std::uint64_t step, glm::vec2 canvas) {
+    // Binds `pass`'s program, its channels' textures for `step` and the frame's uniforms; returns
+    // the textures of the channels that change per step (buffers, Cube A), for binding them again.
+    std::array<GLuint, kChannelCount> usePass(PassRuntime& pass, const FrameUniforms& u, std::uint64_t step,
+                                              glm::vec2 canvas) {
         glUseProgram(pass.program.program.id());
         const UniformLocations& loc = pass.program.uniforms;
         glUniform3f(loc.resolution, canvas.x, canvas.y, 1.0f);
@@ -95,6 +97,7 @@ struct Renderer::Impl {
                 dynamic[c] = cube->texture(slotRead(plan.age, step));
         }
         bindTextures(pass.bindings, dynamic);
+        return dynamic;
     }
 
     // The Image pass into the Image target: one draw at imageOrigin, or each of `draws` (their
@@ -103,7 +106,7 @@ struct Renderer::Impl {
         const UniformLocations& loc = pass.program.uniforms;
         const char* name = passName(pass.plan.id);
         glBindFramebuffer(GL_FRAMEBUFFER, imageTarget.framebuffer.id());
-        usePass(pass, u, step, resolution);
+        const std::array<GLuint, kChannelCount> dynamic = usePass(pass, u, step, resolution);
         glUniform2f(loc.fragOffset, imageOrigin.x, imageOrigin.y);
         gpu->beforeDraw(name, u.frame);
         if (draws.size() <= 1 || !accumulator) {
@@ -112,9 +115,10 @@ struct Renderer::Impl {
             // Each draw as the site would show it, added to the float sum; then the average.
             for (std::size_t d = 0; d < draws.size(); ++d) {
                 const ImageDraw& draw = draws[d];
-                if (d > 0) {
+                if (d > 0) {  // back from the accumulator's program, target and texture units
                     glBindFramebuffer(GL_FRAMEBUFFER, imageTarget.framebuffer.id());
-                    usePass(pass, u, step, resolution);
+                    glUseProgram(pass.program.program.id());
+                    bindTextures(pass.bindings, dynamic);
                 }
                 glUniform1f(loc.time, static_cast<float>(draw.time));
                 glUniform4f(loc.date, draw.date.x, draw.date.y, draw.date.z, draw.date.w);

@@ -1,6 +1,6 @@
 // Tiled stills (session/TiledStill.h): a canvas beyond one framebuffer is drawn in tiles with
 // iResolution the whole canvas and written band by band. A tiled render equals the untiled one
-// byte for byte (PNG, and EXR floats with supersampling); a 20000x11250 still of
+// byte for byte (PNG, with Cube A too, and EXR floats with supersampling); a 20000x11250 still of
 // fragCoord / iResolution has the expected values at its corners and centre while the run's
 // peak memory stays under 1 GB; shadertoys with buffers, windows and videos are refused with why.
 #include "GlTestSupport.h"
@@ -40,6 +40,15 @@ TEST(TiledStill, ATiledRenderEqualsTheUntiledOneByteForByte) {
     EXPECT_EQ(a->width, 4096);
     EXPECT_EQ(a->height, 2304);
     EXPECT_TRUE(a->rgba == b->rgba);
+    // Cube A (canvas-independent, run once a frame) with tiles: the same picture.
+    const std::string cube = "--size 300x170 --frames 3 --out ";
+    const fs::path cubeProbe = sourceDir() / "shadertoys/cube-probe";
+    ASSERT_EQ(run(cubeProbe, cube + (dir / "ct_%d.png").string() + " --tile 64").exitCode, 0);
+    ASSERT_EQ(run(cubeProbe, cube + (dir / "cu_%d.png").string()).exitCode, 0);
+    Result<Image8> ct = readPng(dir / "ct_2.png");
+    Result<Image8> cu = readPng(dir / "cu_2.png");
+    ASSERT_TRUE(ct.ok() && cu.ok());
+    EXPECT_TRUE(ct->rgba == cu->rgba);
     // Tiles that do not divide the canvas, with supersampling and motion blur, as EXR floats.
     const std::string sampled = "--size 300x170 --supersample 2 --motion-blur 2 --frames 2 --out ";
     ASSERT_EQ(run(kSampling, sampled + (dir / "t_%d.exr").string() + " --tile 64").exitCode, 0);
