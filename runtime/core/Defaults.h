@@ -73,5 +73,9 @@ inline constexpr double kMaxTimeoutSeconds = 1e6;
 // in GL (a long draw, a stalled encoder) for longer than this, toyhost removes its unfinished
 // files, stops its child processes and exits anyway.
 inline constexpr double kStopGraceSeconds = 3.0;
+// The watchdog's limits count the time the process runs: a gap of more than this between two of
+// its 50 ms ticks is a suspension (SIGSTOP, Ctrl-Z, a scheduler's suspend, a machine's sleep), and
+// does not count. Under load a thread waits for a core for tens of milliseconds, not seconds.
+inline constexpr double kSuspensionGapSeconds = 1.0;
 
 }  // namespace toyhost::defaults

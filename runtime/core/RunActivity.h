@@ -20,7 +20,8 @@ public:
         Phase phase = Phase::Idle;
         const char* pass = "";  // a pass name ("Buffer A" .. "Image", "Sound"), or "" when none
         int frame = -1;         // iFrame being drawn (or the Sound pass's block), or -1
-        double seconds = 0;     // how long the phase has lasted
+        double seconds = 0;     // how long the phase has lasted (wall time)
+        std::chrono::steady_clock::time_point since{};  // when it began
     };
 
     // `pass` must be a string that lives for the whole run (passName() returns such).
@@ -35,7 +36,8 @@ public:
 
     Snapshot snapshot() const {
         std::lock_guard lock(mutex_);
-        return {phase_, pass_, frame_, std::chrono::duration<double>(std::chrono::steady_clock::now() - since_).count()};
+        return {phase_, pass_, frame_, std::chrono::duration<double>(std::chrono::steady_clock::now() - since_).count(),
+                since_};
     }
 
 private:

@@ -25,7 +25,14 @@ Diagnostic problem(Code code, std::string message, const char* pass = "") {
 }
 }  // namespace
 
-Watchdog::Watchdog(WatchdogDesc desc) : desc_(std::move(desc)), thread_([this] { loop(); }) {}
+namespace {
+constexpr int kTickMilliseconds = 50;
+}
+
+Watchdog::Watchdog(WatchdogDesc desc)
+    : desc_(std::move(desc)),
+      pauses_(kTickMilliseconds / 1000.0, defaults::kSuspensionGapSeconds),
+      thread_([this] { loop(); }) {}
 
 Watchdog::~Watchdog() {
     done_.cancel();
@@ -87,8 +94,10 @@ void Watchdog::loop() {
     const int signalFd = desc_.watchSignals ? stopSignalFd() : -1;
     pollfd fds[2] = {{done_.pollFd(), POLLIN, 0}, {signalFd, POLLIN, 0}};
     while (true) {
-        ::poll(fds, signalFd >= 0 ? 2 : 1, 50);
+        ::poll(fds, signalFd >= 0 ? 2 : 1, kTickMilliseconds);
         if (fds[0].revents) return;
+        const Clock::time_point tick = Clock::now();
+        pauses_.tick(tick);
         if (signalFd >= 0 && (fds[1].revents & POLLIN)) {
             unsigned char received[16];
             const ssize_t n = ::read(signalFd, received, sizeof received);
@@ -97,7 +106,7 @@ void Watchdog::loop() {
         {
             std::unique_lock lock(mutex_);
             const StopState s = stop_;
-            const double since = std::chrono::duration<double>(Clock::now() - stopAt_).count();
+            const double since = pauses_.runningSeconds(stopAt_, tick);
             const bool armed = graceArmed_ && !expired_;
             lock.unlock();
             if (armed && since > desc_.graceSeconds) {
@@ -109,7 +118,8 @@ void Watchdog::loop() {
             }
         }
 
-        const RunActivity::Snapshot now = activity_.snapshot();
+        RunActivity::Snapshot now = activity_.snapshot();
+        now.seconds = pauses_.runningSeconds(now.since, Clock::now());
         const double frameLimit = desc_.frameLimit, compileLimit = desc_.compileLimit;
         if (frameLimit > 0 && now.phase == RunActivity::Phase::Drawing && now.seconds > frameLimit)
             expireWith(problem(Code::WatchdogFrame,

@@ -6,7 +6,8 @@
 // once and the session stops before its next frame; if it has not ended within the grace period,
 // or at a second signal, or when a limit passes, the run "expires": the expire callback decides
 // what that means (the CLI removes unfinished files, stops child processes and ends the process
-// with 124 or 128 + signal; a program that embeds toyhost may only record it). No GL needed.
+// with 124 or 128 + signal; a program that embeds toyhost may only record it). Every limit counts
+// the time the process ran: a suspension (SIGSTOP, Ctrl-Z) is not a runaway frame. No GL needed.
 #pragma once
 
 #include <atomic>
@@ -18,6 +19,7 @@
 #include "core/Defaults.h"
 #include "core/Diagnostic.h"
 #include "core/FileDescriptor.h"
+#include "core/PauseLedger.h"
 #include "core/RunActivity.h"
 
 namespace toyhost {
@@ -85,6 +87,7 @@ private:
     bool graceArmed_ = false;
     std::atomic<bool> stopped_{false};
     int signals_ = 0;  // watchdog thread only
+    PauseLedger pauses_;  // watchdog thread only
     std::optional<Diagnostic> expired_;
     CancelSignal done_;
     std::thread thread_;

@@ -307,6 +307,40 @@ TEST(Adversarial, SighupEndsARunAsSigtermDoesAndNohupIsHonoured) {
     EXPECT_EQ(kept.wait(30), 143) << kept.log();
 }
 
+// A run suspended (SIGSTOP, Ctrl-Z, a scheduler's suspend) for longer than --frame-timeout is not
+// a runaway frame: the watchdog counts the time the process runs, so it goes on when continued.
+TEST(Adversarial, ASuspensionLongerThanTheFrameLimitIsNotARunawayFrame) {
+    const fs::path dir = freshOutputDir("reliability/adversarial-suspend");
+    // ~0.2 s a frame at 64x36 here: whenever the stop comes, a pass is almost surely being drawn.
+    writeFile(dir / "toy/manifest.json", R"({"passes": {"Image": {"source": "image.glsl"}}})");
+    writeFile(dir / "toy/image.glsl", "void mainImage(out vec4 c, in vec2 f) {\n    float v = f.x * 0.001 + iTime;\n"
+                                      "    for (int i = 0; i < 20000; ++i) v = fract(sin(v) * 43758.5453 + f.y);\n"
+                                      "    c = vec4(v, v, v, 1.0);\n}\n");
+    BackgroundProcess run = startToyhost({"run", (dir / "toy").string(), "--headless", "--size", "64x36", "--frames",
+                                          "1000000", "--frame-timeout", "5", "--checkpoint",
+                                          (dir / "state.ckpt").string(), "--checkpoint-every", "2"},
+                                         dir);
+    ASSERT_TRUE(within(60, [&] { return fs::exists(dir / "state.ckpt"); })) << run.log();
+    run.signal(SIGSTOP);
+    // The stimulus is the length of the suspension itself: longer than the frame limit.
+    std::this_thread::sleep_for(std::chrono::seconds(8));
+    int before = -1;
+    ASSERT_TRUE(within(60, [&] {
+        const Result<Checkpoint> read = readCheckpoint(dir / "state.ckpt");
+        if (read.ok()) before = read->state.frame;
+        return read.ok();
+    })) << run.log();
+    run.signal(SIGCONT);
+    EXPECT_TRUE(within(120, [&] {
+        const Result<Checkpoint> now = readCheckpoint(dir / "state.ckpt");
+        return !run.running() || (now.ok() && now->state.frame > before + 4);
+    })) << run.log();
+    EXPECT_TRUE(run.running()) << "the run ended after the suspension\n" << run.log();
+    run.signal(SIGTERM);
+    EXPECT_EQ(run.wait(30), 143) << run.log();
+    EXPECT_EQ(run.log().find("--frame-timeout"), std::string::npos) << run.log();
+}
+
 // ---- a closed stdout ------------------------------------------------------------------------------
 
 // fd 1 closed at start is not reused for toyhost's own pipes: --out - says stdout is closed.
