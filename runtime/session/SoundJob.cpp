@@ -41,7 +41,19 @@ Result<SessionReport> SoundJob::writeFile(const PlayerPlan& shadertoy, const Sou
     if (activity_) activity_->begin(RunActivity::Phase::WaitingForOutput);
     writer_.drain();
     if (activity_) activity_->idle();
-    for (Result<fs::path>& written : writer_.takeFinished()) {
+    std::vector<Result<fs::path>> finished = writer_.takeFinished();
+    if (stopRequested_()) {
+        // A stop while the file was written ends the command as a stop during rendering does
+        // (exit 128 + signal, no file), as `run` discards a video whose last frames were being
+        // written: a file that was completed meanwhile is not kept either.
+        for (Result<fs::path>& written : finished) {
+            std::error_code ec;
+            if (written && *written != "-" && fs::is_regular_file(*written, ec)) fs::remove(*written, ec);
+        }
+        return Error("interrupted while the audio file was being written: " + out.string() + " was not kept",
+                     Code::Interrupted);
+    }
+    for (Result<fs::path>& written : finished) {
         if (!written) return written.error();
         if (*written == "-") report.toStdout = true;
         else report.files.push_back(*written);

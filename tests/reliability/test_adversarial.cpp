@@ -341,6 +341,37 @@ TEST(Adversarial, ASuspensionLongerThanTheFrameLimitIsNotARunawayFrame) {
     EXPECT_EQ(run.log().find("--frame-timeout"), std::string::npos) << run.log();
 }
 
+// SIGTERM while `toyhost sound` writes its file (rendering done, ffmpeg encoding the FLAC): the
+// command ends as a stop during rendering does, exit 143 and no file (it printed "wrote" and
+// exited 0 before).
+TEST(Adversarial, SigtermWhileTheSoundFileIsWrittenEndsWith143AndNoFile) {
+    int signalledWhileWriting = 0;
+    for (int attempt = 0; attempt < 3 && signalledWhileWriting == 0; ++attempt) {
+        const fs::path dir = freshOutputDir("reliability/adversarial-sound-write-" + std::to_string(attempt));
+        BackgroundProcess run = startToyhost(
+            {"sound", (sourceDir() / "shadertoys/cube-probe").string(), "--quiet", "--out", (dir / "s.flac").string()},
+            dir);
+        // The moment: ffmpeg is writing the hidden file beside s.flac.
+        ASSERT_TRUE(within(60, [&] {
+            for (const std::string& name : entries(dir))
+                if (name[0] == '.' && name.find("s.flac") != std::string::npos) return true;
+            return !run.running();
+        })) << run.log();
+        run.signal(SIGTERM);
+        const int code = run.wait(30);
+        SCOPED_TRACE("attempt " + std::to_string(attempt) + "\n" + run.log());
+        if (code == 0) {  // it had finished before the signal: a complete file
+            expectOnlyCompleteFiles(dir, code, 0, 1);
+            continue;
+        }
+        EXPECT_EQ(code, 143);
+        EXPECT_NE(run.log().find("was not kept"), std::string::npos);
+        EXPECT_EQ(entries(dir), std::vector<std::string>{"log"});
+        ++signalledWhileWriting;
+    }
+    EXPECT_EQ(signalledWhileWriting, 1) << "every attempt had ended before the signal";
+}
+
 // ---- a closed stdout ------------------------------------------------------------------------------
 
 // fd 1 closed at start is not reused for toyhost's own pipes: --out - says stdout is closed.
