@@ -77,5 +77,9 @@ inline constexpr double kStopGraceSeconds = 3.0;
 // its 50 ms ticks is a suspension (SIGSTOP, Ctrl-Z, a scheduler's suspend, a machine's sleep), and
 // does not count. Under load a thread waits for a core for tens of milliseconds, not seconds.
 inline constexpr double kSuspensionGapSeconds = 1.0;
+// A pass's source with bytes GL must not see (NUL, non-ASCII outside comments) lists the first this
+// many with their line and column, then says how many more there are (a binary file has millions;
+// the list of all errors printed is itself capped at 100, so every pass's count is seen).
+inline constexpr std::size_t kMaxShaderTextProblems = 20;
 
 }  // namespace toyhost::defaults

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "core/Defaults.h"
+
 namespace toyhost {
 
 namespace {
@@ -23,7 +25,16 @@ std::pair<long, std::size_t> decode(const std::string& s, std::size_t i) {
 void checkShaderText(std::string& code, const std::string& file, const std::string& pass,
                      std::vector<Diagnostic>& problems) {
     if (code.rfind("\xEF\xBB\xBF", 0) == 0) code.erase(0, 3);
+    // A binary file would give one error per byte: past the cap they are counted, and said once.
+    std::size_t listed = 0, unlisted = 0;
+    int lastLine = 1;
     auto problem = [&](int line, int column, std::string message, Code kind) {
+        if (listed == defaults::kMaxShaderTextProblems) {
+            ++unlisted;
+            lastLine = line;
+            return;
+        }
+        ++listed;
         Diagnostic d;
         d.code = kind;
         d.file = file;
@@ -70,7 +81,16 @@ void checkShaderText(std::string& code, const std::string& file, const std::stri
         }
         i += advance;
         column += 1;
-        if (problems.size() >= 100) return;
+    }
+    if (unlisted > 0) {
+        Diagnostic d;
+        d.code = Code::ShaderNonAscii;
+        d.file = file;
+        d.pass = pass;
+        d.message = "... and " + std::to_string(unlisted) + " more NUL or non-ASCII bytes up to line " +
+                    std::to_string(lastLine) + ", not listed (only the first " +
+                    std::to_string(defaults::kMaxShaderTextProblems) + " are): is this file GLSL source text?";
+        problems.push_back(std::move(d));
     }
 }
 

@@ -344,6 +344,14 @@ std::vector<Case> catalogue() {
     add({"ShaderNonAsciiOutsideComment",
          toy(kManifest, {{"toy/image.glsl", "void mainImage(out vec4 c, in vec2 p) {\n    float \xc3\xa9 = 1.0;\n    c = vec4(1.0);\n}\n"}}),
          runToy(), 1, {"@D/toy/image.glsl:2:11:", "Image", "U+00E9"}, "shader.non-ascii"});
+    // Once a defect: a binary file gave exactly 100 errors and no word that more were left out.
+    {
+        std::string binary;
+        for (int i = 0; i < 5000; ++i) binary += (i % 50 == 49) ? '\n' : static_cast<char>(0x80 + i % 100);
+        add({"ShaderBinaryBytesAreCountedPastTheCap", toy(kManifest, {{"toy/image.glsl", binary}}), runToy(), 1,
+             {"@D/toy/image.glsl:1:1:", "and 4880 more NUL or non-ASCII bytes up to line 100", "is this file GLSL"},
+             "shader.non-ascii", 21});
+    }
     add({"ShaderCompileError", toy(kManifest, {{"toy/image.glsl", "void mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0) +;\n}\n"}}),
          runToy(), 1, {"@D/toy/image.glsl:2:20:", "Image"}, "shader.compile"});
     add({"ShaderCompileErrorInBuffer",
