@@ -390,6 +390,33 @@ TEST(Adversarial, AClosedStdoutIsSaidAtOnceNotAHang) {
     EXPECT_LT(since(started), 30.0);
 }
 
+// ---- a report that cannot be written ------------------------------------------------------------
+
+// What a command prints on stdout (compare's report, the media list) is its result: a full disk or
+// a reader that went away is an error with the reason, never a silent success.
+TEST(Adversarial, AReportThatCannotBeWrittenIsAnErrorNotASuccess) {
+    const fs::path dir = freshOutputDir("reliability/adversarial-lost-report");
+    const std::string toy = quoted(sourceDir() / "shadertoys/bench-trivial");
+    const std::string compare =
+        quoted(toyhostBinary()) + " compare " + toy + " " + toy + " --frames 2 --size 32x18 --json";
+    auto full = shell(compare + " 2>" + quoted(dir / "full.log") + " >/dev/full; echo $?");
+    EXPECT_EQ(full.second, "2\n");  // compare's "no answer"
+    EXPECT_TRUE(logHas(dir / "full.log", "stdout: what this command printed was not completely written (No space left"));
+    // The reader is gone before compare has rendered its first frame.
+    auto gone = shell("{ " + compare + " 2>" + quoted(dir / "pipe.log") + "; echo $? >" + quoted(dir / "pipe.code") +
+                      "; } | true");
+    std::ifstream codeFile(dir / "pipe.code");
+    std::string code;
+    codeFile >> code;
+    EXPECT_EQ(code, "2");
+    EXPECT_TRUE(logHas(dir / "pipe.log", "(Broken pipe)"));
+    auto media = shell(quoted(toyhostBinary()) + " media 2>" + quoted(dir / "media.log") + " >/dev/full; echo $?");
+    EXPECT_EQ(media.second, "1\n");
+    EXPECT_TRUE(logHas(dir / "media.log", "not completely written"));
+    // Written in full, the same commands succeed.
+    EXPECT_EQ(shell(compare + " >/dev/null 2>&1; echo $?").second, "0\n");
+}
+
 // ---- lazily compiled machine code -----------------------------------------------------------------
 
 // llvmpipe compiles this pass's machine code inside its first draw, for minutes and gigabytes; the

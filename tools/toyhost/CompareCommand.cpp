@@ -294,7 +294,7 @@ int CompareCommand::execute(const GlProcess&) {
         printTable(r);
         std::printf("%s\n", verdict.c_str());
     }
-    std::fflush(stdout);
+    flushStdout();  // before the lines on stderr; a failure is said when the command ends
     if (json_) std::cerr << "toyhost: " << verdict << "\n";
     auto listFiles = [](const std::vector<std::string>& list, const char* what) {
         if (list.empty()) return;

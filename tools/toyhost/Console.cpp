@@ -2,7 +2,9 @@
 
 #include "SessionFlags.h"
 
+#include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <iostream>
 #include <unistd.h>
 
@@ -15,6 +17,19 @@ namespace toyhost::cli {
 void printDiagnostic(const Diagnostic& diagnostic) {
     std::cerr << formatDiagnosticWithExcerpt(diagnostic, "toyhost: ") << "\n";
 }
+
+namespace {
+int firstStdoutErrno = 0;
+}
+
+bool flushStdout() {
+    errno = 0;
+    const bool ok = std::fflush(stdout) == 0 && !std::ferror(stdout) && std::cout.good();
+    if (!ok && firstStdoutErrno == 0) firstStdoutErrno = errno;
+    return ok;
+}
+
+int stdoutWriteErrno() { return firstStdoutErrno; }
 
 void printError(const Error& error) { std::cerr << formatDiagnostics(error.diagnostics, "toyhost: ") << "\n"; }
 

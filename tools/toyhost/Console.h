@@ -23,6 +23,11 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;  // the run failed: bad manifest, shader error, GL, I/O
 inline constexpr int kExitUsage = 2;    // bad command line
 
+// Flushes stdout (a report, a list): false when writing failed; the first failure's errno is kept
+// for the check every command ends with (main.cpp), which says what was lost.
+bool flushStdout();
+int stdoutWriteErrno();
+
 void printDiagnostic(const Diagnostic& diagnostic);
 void printError(const Error& error);
 // Prints `error` and returns its exit code: 2 for usage errors, 124 when the watchdog ended the

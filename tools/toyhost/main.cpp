@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <unistd.h>
@@ -20,8 +21,32 @@
 using namespace toyhost;
 using namespace toyhost::cli;
 
+namespace {
+
+// The command's exit code, once what it printed on stdout (a report, a list, the help) has been
+// written: a full disk, a closed stdout or a reader that went away is an error, not success.
+// `lost` is the code for it (compare's 2, "no answer"; 1 elsewhere); an interruption's stays.
+int afterStdout(int code, int lost) {
+    if (flushStdout()) return code;
+    const int error = stdoutWriteErrno();
+    std::cerr << "toyhost: error: stdout: what this command printed was not completely written ("
+              << (error ? std::strerror(error) : "a write error") << ") [io.write]\n";
+    return code >= kExitWatchdog ? code : lost;
+}
+
+int commandLine(int argc, char** argv, bool& comparing);
+
+}  // namespace
 
 int main(int argc, char** argv) {
+    bool comparing = false;
+    const int code = commandLine(argc, argv, comparing);
+    return afterStdout(code, comparing ? kExitUsage : kExitFailure);
+}
+
+namespace {
+
+int commandLine(int argc, char** argv, bool& comparing) {
     // Before any thread exists: the driver hints, TOYHOST_EGL_PLATFORM, standard streams.
     const Result<GlProcess> process = prepareGlProcess();
     CLI::App app{"toyhost: run Shadertoy shaders unmodified, in a window (GLFW) or headless on EGL (no display needed)"};
@@ -109,6 +134,9 @@ int main(int argc, char** argv) {
     if (!process) return fail(process.error());
     installStopSignals();
     if (sound->parsed()) return soundCommand(soundOptions, *process);
-    if (compare->parsed()) return compareCommand.execute(*process);
+    comparing = compare->parsed();
+    if (comparing) return compareCommand.execute(*process);
     return runCommand.execute(*process);
 }
+
+}  // namespace
