@@ -212,6 +212,14 @@ std::vector<Case> catalogue() {
          "TOYHOST_EGL_PLATFORM=bogus"});
     add({"InspectRegionEmpty", toy(), "inspect '@D/img.png' --region 0,0,0,0", 2, {"--region 0,0,0,0"}, "usage", 1,
          Mount::None, "", "run '@D/toy' --size 4x4 --frames 1 --quiet --out '@D/img.png'"});
+    // Once defects: an empty argument was dropped (`--size ""` rendered 800x450), printed invisibly
+    // ("argument was not expected: ") or gave "file not found" naming nothing.
+    add({"EmptyTarget", toy(), "run '' --size 16x8", 2, {"toyhost run: argument 2 is empty (\"\")"}, "usage"});
+    add({"EmptyExtraArgument", toy(), "run '@D/toy' '' --size 16x8", 2, {"argument 3 is empty"}, "usage"});
+    add({"EmptyOptionValue", toy(), "run '@D/toy' --size '' --frames 1", 2, {"--size: the value is empty"}, "usage"});
+    add({"EmptyValueAfterEquals", toy(), "run '@D/toy' --mouse= --frames 1", 2, {"--mouse: the value after '=' is empty"},
+         "usage"});
+    add({"EmptyCompareSide", toy(), "compare '' '@D/toy'", 2, {"toyhost compare: argument 2 is empty"}, "usage"});
     add({"NewUnknownPass", {}, "new '@D/out/n' --passes a,e", 2, {"--passes", "\"e\""}, "usage"});
 
     // ---- files named on the command line: exit 1, the file named ---------------------------------

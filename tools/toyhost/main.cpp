@@ -13,6 +13,7 @@
 
 #include "Commands.h"
 #include "Console.h"
+#include "EmptyArguments.h"
 #include "core/Defaults.h"
 #include "core/NumberText.h"
 #include "gl/GlThread.h"
@@ -110,6 +111,7 @@ int commandLine(int argc, char** argv, bool& comparing) {
                     "(bad usage, a shadertoy that does not load or compile, a pass one lacks, GL or write error); 124 "
                     "watchdog; 130 / 143 / 129 interrupted by SIGINT / SIGTERM / SIGHUP.");
 
+    if (std::optional<std::string> empty = emptyArgumentProblem(app, argc, argv)) return usage(*empty);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
