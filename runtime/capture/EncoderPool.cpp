@@ -108,15 +108,17 @@ std::optional<Error> EncoderPool::firstError() const {
     return error_;
 }
 
-Result<std::vector<std::byte>> EncoderPool::acquire(std::size_t bytes) {
+Result<std::vector<std::byte>> EncoderPool::acquire(std::size_t bytes, const std::function<bool()>& stop) {
     std::optional<std::vector<std::byte>> buffer = queue_.acquire(bytes, /*wait=*/false);
     if (!buffer) {
         growIfBehind();
-        buffer = queue_.acquire(bytes);
+        buffer = queue_.acquire(bytes, /*wait=*/true, stop);
     }
     if (!buffer) {
         if (std::optional<Error> error = firstError()) return *error;
-        return Error("capture: the encoder queue was stopped", Code::CaptureStopped);
+        return Error(stop && stop() ? "capture: stopped while waiting for the encoders"
+                                    : "capture: the encoder queue was stopped",
+                     Code::CaptureStopped);
     }
     return std::move(*buffer);
 }

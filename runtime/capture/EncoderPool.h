@@ -8,6 +8,7 @@
 #include <atomic>
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -39,8 +40,9 @@ public:
     EncoderPool& operator=(const EncoderPool&) = delete;
 
     // A pixel buffer for the next frame; blocks while the queue holds its memory cap
-    // (back-pressure). Fails with the first encoder error once one happened.
-    Result<std::vector<std::byte>> acquire(std::size_t bytes);
+    // (back-pressure). Fails with the first encoder error once one happened, or when `stop`
+    // (asked while it waits) says the run is stopping (Code::CaptureStopped).
+    Result<std::vector<std::byte>> acquire(std::size_t bytes, const std::function<bool()>& stop = {});
     // As acquire(), but never waits: std::nullopt when the cap is reached right now.
     Result<std::optional<std::vector<std::byte>>> tryAcquire(std::size_t bytes);
     // Queues a frame whose pixels came from acquire(); synchronous pools write it right away.

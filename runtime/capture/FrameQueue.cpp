@@ -1,12 +1,14 @@
 #include "capture/FrameQueue.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace toyhost {
 
 FrameQueue::FrameQueue(std::size_t capBytes) : cap_(capBytes) {}
 
-std::optional<std::vector<std::byte>> FrameQueue::acquire(std::size_t bytes, bool wait) {
+std::optional<std::vector<std::byte>> FrameQueue::acquire(std::size_t bytes, bool wait,
+                                                          const std::function<bool()>& cancelled) {
     std::unique_lock lock(mutex_);
     for (;;) {
         if (aborted_) return std::nullopt;
@@ -30,8 +32,10 @@ std::optional<std::vector<std::byte>> FrameQueue::acquire(std::size_t bytes, boo
         }
         if (!wait) return std::nullopt;
         ++blockedProducers_;
-        bufferFreed_.wait(lock);
+        if (cancelled) bufferFreed_.wait_for(lock, std::chrono::milliseconds(50));
+        else bufferFreed_.wait(lock);
         --blockedProducers_;
+        if (cancelled && cancelled()) return std::nullopt;
     }
 }
 

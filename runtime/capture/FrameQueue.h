@@ -8,6 +8,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <vector>
@@ -24,8 +25,9 @@ public:
 
     // A buffer of exactly `bytes` bytes, recycled when one is free. Blocks while taking it would
     // pass the cap (or, with `wait` false, returns std::nullopt at once). std::nullopt once the
-    // queue was aborted.
-    std::optional<std::vector<std::byte>> acquire(std::size_t bytes, bool wait = true);
+    // queue was aborted, or when `cancelled` (asked every 50 ms while blocked) says so.
+    std::optional<std::vector<std::byte>> acquire(std::size_t bytes, bool wait = true,
+                                                  const std::function<bool()>& cancelled = {});
     // Hands a frame (whose buffer came from acquire) to the consumers. Never blocks.
     void push(CapturedFrame frame);
     // The oldest frame; blocks until there is one. std::nullopt when closed and drained, or aborted.

@@ -14,7 +14,9 @@ class RunActivity {
 public:
     // WaitingForInput: a frame waits for a video's decoder (media/VideoStream.h), which has not
     // decoded the frame it shows yet; `pass` names the first pass that reads the video.
-    enum class Phase { Idle, Compiling, Drawing, WaitingForOutput, WaitingForInput };
+    // Abandoning: after a stop, the encoders finish the frame each is writing (queued frames are
+    // dropped); CPU work of toyhost's own that ends, unlike a draw GL cannot interrupt.
+    enum class Phase { Idle, Compiling, Drawing, WaitingForOutput, WaitingForInput, Abandoning };
 
     struct Snapshot {
         Phase phase = Phase::Idle;

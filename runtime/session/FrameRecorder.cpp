@@ -87,7 +87,7 @@ FrameRecorder::~FrameRecorder() {
     ring_.reset();
 }
 
-RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity) {
+RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity, std::function<bool()> stopRequested) {
     const SessionOptions& o = run.options;
     RecorderSettings settings;
     settings.output = *run.output;
@@ -104,6 +104,7 @@ RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity)
     settings.rawStreamFd = o.rawStreamFd;
     settings.dropWhenBusy = o.interactive && !o.settings.fps;
     settings.activity = activity;
+    settings.stopRequested = std::move(stopRequested);
     return settings;
 }
 
@@ -182,7 +183,7 @@ Result<std::optional<std::vector<std::byte>>> FrameRecorder::takeBuffer(std::siz
     // Blocks while the encoders hold the memory cap: back-pressure reaches the render loop here.
     if (settings_.activity) settings_.activity->begin(RunActivity::Phase::WaitingForOutput);
     Stopwatch waiting{waitSeconds_};
-    Result<std::vector<std::byte>> buffer = pool_->acquire(bytes);
+    Result<std::vector<std::byte>> buffer = pool_->acquire(bytes, settings_.stopRequested);
     if (settings_.activity) settings_.activity->idle();
     if (!buffer) return buffer.error();
     return std::optional<std::vector<std::byte>>(std::move(*buffer));
@@ -216,7 +217,9 @@ Status FrameRecorder::dropped(int frame) {
 }
 
 FrameRecorder::Abandoned FrameRecorder::abandon() {
+    if (settings_.activity) settings_.activity->begin(RunActivity::Phase::Abandoning);
     pool_->abandon();
+    if (settings_.activity) settings_.activity->idle();
     const int written = pool_->framesWritten();
     return {written, captured_ - written - static_cast<int>(droppedFrames_.size())};
 }

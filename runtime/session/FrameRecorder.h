@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -44,12 +45,17 @@ struct RecorderSettings {
     bool dropWhenBusy = false;
     // Published while the render thread waits for the encoders (a stalled ffmpeg shows here).
     RunActivity* activity = nullptr;
+    // Asked while the render thread waits for the encoders: a stop ends the wait at once (a
+    // PNG at --png-level 9 of a large frame takes seconds), so only the frames being encoded
+    // are finished and the stop is not taken for a stuck render.
+    std::function<bool()> stopRequested;
 };
 
 // The recorder settings a run asks for: its output, pass, PNG level, encoders, memory cap, video
 // settings and frame rate (the default rate when a window runs in real time, which then also
 // drops frames rather than wait for the encoders).
-RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity = nullptr);
+RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity = nullptr,
+                                  std::function<bool()> stopRequested = {});
 
 class FrameRecorder {
 public:

@@ -22,14 +22,15 @@ Diagnostic notice(std::string message, Code code) {
 
 }  // namespace
 
-Recording::Recording(const SessionPlan& plan, RunActivity* activity)
-    : plan_(plan), activity_(activity), pass_(plan.options.capturePass) {}
+Recording::Recording(const SessionPlan& plan, RunActivity* activity, std::function<bool()> stopRequested)
+    : plan_(plan), activity_(activity), stopRequested_(std::move(stopRequested)), pass_(plan.options.capturePass) {}
 
 Recording::~Recording() = default;
 
 Status Recording::begin(const Player& player, SessionObserver& observer) {
     if (recorder_) return okStatus();
-    Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(recorderSettings(plan_, activity_), player);
+    Result<std::unique_ptr<FrameRecorder>> created = FrameRecorder::create(
+        recorderSettings(plan_, activity_, stopRequested_), player);
     if (!created) return created.error();
     recorder_ = std::move(*created);
     captured_.clear();

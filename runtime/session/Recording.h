@@ -7,6 +7,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,7 +25,8 @@ class FiniteCheck;
 class Recording {
 public:
     // A recording of `plan`'s output (plan.output must be set).
-    Recording(const SessionPlan& plan, RunActivity* activity);
+    // `stopRequested`: asked while the render thread waits for the encoders (RecorderSettings).
+    Recording(const SessionPlan& plan, RunActivity* activity, std::function<bool()> stopRequested = {});
     ~Recording();
 
     // Starts a round's recorder for `player`'s canvas (ffmpeg for a video); a notice says which
@@ -54,6 +56,7 @@ public:
 private:
     const SessionPlan& plan_;
     RunActivity* activity_;
+    std::function<bool()> stopRequested_;
     PassId pass_;
     std::unique_ptr<FrameRecorder> recorder_;
     std::vector<int> captured_;  // frame numbers captured this round

@@ -83,7 +83,9 @@ Result<std::unique_ptr<SessionCore>> SessionCore::start(SessionPlan plan, std::s
     if (!track) return track.error();
     s->soundTrack_ = std::move(*track);
     if (s->plan_.tile) s->tiled_ = std::make_unique<TiledStill>(s->plan_);
-    else if (s->plan_.output) s->recording_ = std::make_unique<Recording>(s->plan_, s->activity());
+    else if (s->plan_.output) s->recording_ = std::make_unique<Recording>(s->plan_, s->activity(), [core = s.get()] {
+            return core->stopRequested() && !core->quitRequested();
+        });
     PlayerPlan shadertoy = std::move(s->plan_.shadertoy);
     if (Status created = s->createPlayer(std::move(shadertoy)); !created) {
         // A window or --watch waits for the fix of a shadertoy that does not compile yet.
@@ -339,7 +341,12 @@ Result<SessionReport> SessionCore::run(SessionDriver& driver) {
             driver.idle(*this);
             continue;
         }
-        if (Status rendered = renderFrame(*time, events_); !rendered) return rendered.error();
+        if (Status rendered = renderFrame(*time, events_); !rendered) {
+            // A stop that ended a wait for the encoders is the stop, not a capture failure.
+            if (rendered.error().first().code == Code::CaptureStopped && stopRequested() && !quitRequested())
+                return interrupted();
+            return rendered.error();
+        }
         driver.present(*this);
     }
     return finishRound();

@@ -103,8 +103,13 @@ void Watchdog::loop() {
             const ssize_t n = ::read(signalFd, received, sizeof received);
             for (ssize_t i = 0; i < n; ++i) acknowledgeSignal(received[i]);
         }
+        // A frame an encoder finishes after a stop is not a stuck render: the grace period starts
+        // again when it is done (the frame limit still bounds it, and a second signal still ends
+        // the run at once).
+        const bool finishingFrames = activity_.snapshot().phase == RunActivity::Phase::Abandoning;
         {
             std::unique_lock lock(mutex_);
+            if (finishingFrames && graceArmed_) stopAt_ = tick;
             const StopState s = stop_;
             const double since = pauses_.runningSeconds(stopAt_, tick);
             const bool armed = graceArmed_ && !expired_;
@@ -136,7 +141,9 @@ void Watchdog::loop() {
                                    ": the run is ended (a stalled ffmpeg or camera?)",
                                now.pass),
                        kExitWatchdog);
-        else if (frameLimit > 0 && now.phase == RunActivity::Phase::WaitingForOutput && now.seconds > frameLimit)
+        else if (frameLimit > 0 &&
+                 (now.phase == RunActivity::Phase::WaitingForOutput || now.phase == RunActivity::Phase::Abandoning) &&
+                 now.seconds > frameLimit)
             expireWith(problem(Code::WatchdogOutput,
                                "the encoders have taken no frame for " + seconds(now.seconds) +
                                    " s, longer than --frame-timeout " + seconds(frameLimit) +

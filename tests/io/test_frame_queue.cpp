@@ -160,6 +160,22 @@ TEST(FrameQueue, AbortWakesBlockedProducersAndConsumers) {
     EXPECT_EQ(woken, 2);
 }
 
+TEST(FrameQueue, AProducerWaitingForMemoryLeavesWhenItsStopIsAsked) {
+    FrameQueue queue(kFrameBytes);
+    auto held = queue.acquire(kFrameBytes);
+    std::atomic<bool> stop{false};
+    std::atomic<int> result{-1};  // 1: got a buffer, 0: left without one
+    std::thread producer([&] { result = queue.acquire(kFrameBytes, true, [&] { return stop.load(); }).has_value(); });
+    ASSERT_TRUE(eventually([&] { return queue.blockedProducers() == 1; }));
+    EXPECT_EQ(result, -1);  // still waiting: nothing freed, no stop
+    stop = true;
+    producer.join();
+    EXPECT_EQ(result, 0);
+    // The queue itself was not aborted: a buffer freed later is acquired as before.
+    queue.recycle(std::move(*held));
+    EXPECT_TRUE(queue.acquire(kFrameBytes, false).has_value());
+}
+
 TEST(EncoderPool, OrderedSinkGetsEveryFrameInOrderThroughASlowWriter) {
     RecordingSink sink(/*ordered=*/true, std::chrono::milliseconds(3));
     const std::size_t cap = 4 * kFrameBytes;

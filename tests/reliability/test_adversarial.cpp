@@ -390,6 +390,34 @@ TEST(Adversarial, AClosedStdoutIsSaidAtOnceNotAHang) {
     EXPECT_LT(since(started), 30.0);
 }
 
+// A stop while the encoders are slow (PNG level 9 of a large frame takes seconds, longer than the
+// grace period): the frame being encoded is finished, queued ones are dropped and counted, and
+// the message says so. It said "the render thread did not stop within 3 s (GL cannot be
+// interrupted)" and counted nothing.
+TEST(Adversarial, AStopDuringSlowEncodingCountsWhatWasWrittenAndBlamesNoGl) {
+    const fs::path dir = freshOutputDir("reliability/adversarial-slow-encoder");
+    // Smooth stripes with low-bit noise: libdeflate's strongest level searches long on them.
+    writeFile(dir / "toy/manifest.json", R"({"passes": {"Image": {"source": "image.glsl"}}})");
+    writeFile(dir / "toy/image.glsl",
+              "void mainImage(out vec4 c, in vec2 f) {\n"
+              "    uvec2 u = uvec2(f) * uvec2(1664525u, 1013904223u) + uint(iFrame) * 2654435761u;\n"
+              "    uint h = (u.x ^ (u.y >> 3)) * 2246822519u;\n    h ^= h >> 15;\n"
+              "    float n = float(h & 3u) / 255.0;\n"
+              "    c = vec4(fract(f.x / 97.0) + n, fract(f.y / 53.0), fract((f.x + f.y) / 211.0) + n, 1.0);\n}\n");
+    BackgroundProcess run = startToyhost({"run", (dir / "toy").string(), "--headless", "--size", "2560x1440",
+                                          "--frames", "400", "--png-level", "9", "--encoder-threads", "1", "--out",
+                                          (dir / "out/f_%04d.png").string()},
+                                         dir);
+    ASSERT_TRUE(within(120, [&] { return fs::exists(dir / "out/f_0000.png") || !run.running(); })) << run.log();
+    run.signal(SIGINT);  // the encoder is now on frame 1, seconds of work
+    EXPECT_EQ(run.wait(120), 130) << run.log();
+    EXPECT_EQ(run.log().find("did not stop within"), std::string::npos) << run.log();
+    EXPECT_NE(run.log().find("files written"), std::string::npos) << run.log();
+    EXPECT_NE(run.log().find("not written (dropped)"), std::string::npos) << run.log();
+    expectOnlyCompleteFiles(dir / "out", 130, 0, 1);
+    EXPECT_GE(entries(dir / "out").size(), 2u) << "the frame being encoded at the stop was finished";
+}
+
 // ---- a report that cannot be written ------------------------------------------------------------
 
 // What a command prints on stdout (compare's report, the media list) is its result: a full disk or
