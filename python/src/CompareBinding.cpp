@@ -6,7 +6,11 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <atomic>
 #include <cstdint>
+#include <poll.h>
+#include <thread>
+#include <unistd.h>
 #include <optional>
 #include <span>
 #include <string>
@@ -17,6 +21,7 @@
 #include "Errors.h"
 #include "Gil.h"
 #include "SessionBinding.h"
+#include "Signals.h"
 
 namespace py = pybind11;
 
@@ -39,6 +44,54 @@ py::object imageOrNone(const std::vector<std::uint8_t>& rgba, int width, int hei
     py::array_t<std::uint8_t> out({py::ssize_t(height), py::ssize_t(width), py::ssize_t(4)});
     std::copy(rgba.begin(), rgba.end(), out.mutable_data());
     return out;
+}
+
+// Runs the comparison on a GL thread. On Python's main thread the wait is woken by a signal
+// (Ctrl-C): its handler runs at once, and when it raises (KeyboardInterrupt) the comparison stops
+// after the frame being compared and the exception propagates; a handler that raises nothing lets
+// it go on. Elsewhere the wait is plain.
+Result<CompareReport> runComparison(const Shadertoy& a, const Shadertoy& b, CompareSettings settings) {
+    std::atomic<bool> cancel{false};
+    const std::function<bool(const ComparedFrame&)> onFrame = std::move(settings.onFrame);
+    settings.onFrame = [&cancel, onFrame](const ComparedFrame& compared) {
+        if (cancel.load()) return false;
+        return onFrame ? onFrame(compared) : true;
+    };
+    auto compare = [&] {
+        Result<CompareReport> result = Error("compare: not run", Code::Internal);
+        runOnGlThread([&] { result = compareShadertoys(a, b, settings); });
+        return result;
+    };
+    if (!onMainThread()) return withoutGil(compare);
+
+    SignalPipe signals;
+    SignalPipe done;  // written once the comparison has returned
+    WakeupFdGuard wakeup(signals.writeFd(), [&signals] { return signals.take(); });
+    if (signalRaised()) throw py::error_already_set();  // a signal before the pipe was there
+    Result<CompareReport> result = Error("compare: not run", Code::Internal);
+    std::thread worker([&] {
+        try {
+            result = compare();
+        } catch (const std::exception& e) {  // escaping a thread would end the process
+            result = Error(std::string("compare: ") + e.what(), Code::Internal);
+        }
+        const char byte = 1;
+        const ssize_t written = ::write(done.writeFd(), &byte, 1);
+        (void)written;  // a pipe of its own, empty: one byte always fits
+    });
+    bool raised = false;
+    while (true) {
+        pollfd fds[2] = {{done.readFd(), POLLIN, 0}, {signals.readFd(), POLLIN, 0}};
+        withoutGil([&] { ::poll(fds, 2, -1); });
+        if (fds[0].revents) break;
+        if ((fds[1].revents & POLLIN) && signals.drain() && !raised && PyErr_CheckSignals() != 0) {
+            raised = true;  // the handler's exception is set; the comparison stops at its next frame
+            cancel.store(true);
+        }
+    }
+    withoutGil([&] { worker.join(); });
+    if (raised) throw py::error_already_set();
+    return result;
 }
 
 py::dict differenceAsDict(const FrameDifference& d, int width, int height) {
@@ -102,11 +155,7 @@ void bindCompare(py::module_& m) {
                 };
             if (stopAtFirstDifference)
                 settings.onFrame = [](const ComparedFrame& compared) { return compared.difference.withinTolerance; };
-            CompareReport report = valueOrThrow(withoutGil([&] {
-                Result<CompareReport> result = Error("compare: not run", Code::Internal);
-                runOnGlThread([&] { result = compareShadertoys(a, b, settings); });
-                return result;
-            }));
+            CompareReport report = valueOrThrow(runComparison(a, b, std::move(settings)));
             py::dict out;
             out["width"] = report.width;
             out["height"] = report.height;

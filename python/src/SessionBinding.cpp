@@ -21,6 +21,7 @@
 #include "Gil.h"
 #include "GlWorker.h"
 #include "RenderStream.h"
+#include "Signals.h"
 
 namespace py = pybind11;
 
@@ -208,68 +209,15 @@ py::object arrayOwning(int frame, int width, int height, std::unique_ptr<T[]> va
     return py::make_tuple(frame, py::array_t<T>({height, width, 4}, data, owner));
 }
 
-// Whether Python has a signal to handle (Ctrl-C: KeyboardInterrupt), its handler run (the
-// exception it raised set) with the GIL taken for the question. Only the main thread runs them.
-bool signalRaised() {
-    const PyGILState_STATE gil = PyGILState_Ensure();
-    const bool raised = PyErr_CheckSignals() != 0;
-    PyGILState_Release(gil);
-    return raised;
-}
-
-// Whether this is Python's main thread, the one its signal handlers run on (elsewhere the
-// question is not asked: a daemon thread taking the GIL while the interpreter finalizes is ended).
-bool onMainThread() {
-    static const unsigned long mainThread =
-        py::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>();
-    return PyThread_get_thread_ident() == mainThread;
-}
-
-// While the main thread waits for a frame, Python's wakeup fd is the stream's signal pipe, so that
-// the worker sees a signal before it starts another frame; the fd that was there before (asyncio's,
-// say) comes back afterwards and gets the bytes that arrived meanwhile. With the GIL held.
-class StreamWakeupFd {
-public:
-    // signal.set_wakeup_fd (PySignal_SetWakeupFd is not exported by every Python build).
-    explicit StreamWakeupFd(RenderStream& stream) : stream_(stream), setWakeupFd_(setWakeupFd()) {
-        if (stream.signalWakeupFd() >= 0) {
-            previous_ = setWakeupFd_(stream.signalWakeupFd()).cast<int>();
-            installed_ = true;
-        }
-    }
-    ~StreamWakeupFd() {
-        if (!installed_) return;
-        const py::error_scope pending;  // a KeyboardInterrupt on its way stays set around the call
-        try {
-            setWakeupFd_(previous_);
-        } catch (py::error_already_set& e) {  // a destructor does not throw; Python says why
-            e.discard_as_unraisable("restoring the signal wakeup fd");
-        }
-        const std::string bytes = stream_.takeSignalBytes();
-        if (previous_ >= 0 && !bytes.empty()) {
-            const ssize_t written = ::write(previous_, bytes.data(), bytes.size());  // non-blocking, as Python's is
-            (void)written;  // a full or closed wakeup fd loses the wake-up, as it would in Python
-        }
-    }
-    StreamWakeupFd(const StreamWakeupFd&) = delete;
-    StreamWakeupFd& operator=(const StreamWakeupFd&) = delete;
-
-private:
-    static py::object setWakeupFd() { return py::module_::import("signal").attr("set_wakeup_fd"); }
-
-    RenderStream& stream_;
-    py::object setWakeupFd_;
-    int previous_ = -1;
-    bool installed_ = false;
-};
-
 py::object nextRendered(RenderStream& stream) {
     std::optional<RenderedFrame> frame;
     const bool mainThread = onMainThread();
     const std::function<bool()> interrupted = mainThread ? std::function<bool()>(signalRaised) : nullptr;
     try {
-        std::optional<StreamWakeupFd> wakeup;
-        if (mainThread) wakeup.emplace(stream);
+        // The stream's own pipe is the wakeup fd while the main thread waits for a frame, so that
+        // the worker sees a signal before it starts another frame.
+        std::optional<WakeupFdGuard> wakeup;
+        if (mainThread) wakeup.emplace(stream.signalWakeupFd(), [&stream] { return stream.takeSignalBytes(); });
         // A signal that came before the pipe was there is seen now, not a frame later.
         if (interrupted && signalRaised()) throw RenderStream::Interrupted{};
         frame = withoutGil([&] { return stream.next(interrupted); });

@@ -19,6 +19,7 @@ import os
 # which would otherwise land on whatever first makes an array (a frame, in a timed loop).
 import numpy
 
+from . import _args as args
 from . import _toyhost
 from ._compare import CompareReport, FrameDifference, compare, compare_images
 from ._errors import (CompileError, Error, GlError, InputError, InternalError, ManifestError, OutputError,
@@ -81,16 +82,18 @@ class Session:
                  key_script=None, supersample=None, motion_blur=None, shutter=None, dither=False):
         if not isinstance(shadertoy, Shadertoy):
             shadertoy = load(shadertoy)
-        width, height = (None, None) if size is None else _size(size)
-        self._fps = float(fps) if fps is not None else _toyhost.defaults()["fps"]
+        width, height = (None, None) if size is None else args.size("size", size)
+        fps = args.optional(args.real, "fps", fps)
+        self._fps = fps if fps is not None else _toyhost.defaults()["fps"]
         self._native = _toyhost.NativeSession(
-            shadertoy, width, height, self._fps if fps is not None else None, float(start_time), date,
-            [os.fspath(f) for f in media_folders],
-            [(str(k), os.fspath(v)) for k, v in (media_files or {}).items()],
-            bool(float_image), _seconds(frame_timeout), _seconds(compile_timeout),
-            _path(mouse_script), _path(key_script), None if supersample is None else int(supersample),
-            None if motion_blur is None else int(motion_blur), None if shutter is None else float(shutter),
-            bool(dither))
+            shadertoy, width, height, fps, args.real("start_time", start_time), args.optional(args.text, "date", date),
+            args.paths("media_folders", media_folders), args.named_paths("media_files", media_files or {}),
+            args.flag("float_image", float_image), args.optional(args.real, "frame_timeout", frame_timeout),
+            args.optional(args.real, "compile_timeout", compile_timeout),
+            args.optional(args.path, "mouse_script", mouse_script), args.optional(args.path, "key_script", key_script),
+            args.optional(args.integer, "supersample", supersample),
+            args.optional(args.integer, "motion_blur", motion_blur), args.optional(args.real, "shutter", shutter),
+            args.flag("dither", dither))
         self.shadertoy = shadertoy
         self._mouse_held = False
         self._keys_held = set()
@@ -108,9 +111,9 @@ class Session:
         all): presses and releases follow from the difference. ``events``: further InputEvents,
         applied after those. ``time``: iTime of this frame instead of the fixed step, with
         iTimeDelta ``time_delta`` (default 1/fps) and iFrameRate ``frame_rate`` (default fps)."""
-        return self._native.step(self._events(mouse, keys, events), None if time is None else float(time),
-                                 1.0 / self._fps if time_delta is None else float(time_delta),
-                                 self._fps if frame_rate is None else float(frame_rate))
+        return self._native.step(self._events(mouse, keys, events), args.optional(args.real, "time", time),
+                                 1.0 / self._fps if time_delta is None else args.real("time_delta", time_delta),
+                                 self._fps if frame_rate is None else args.real("frame_rate", frame_rate))
 
     def frame(self, pass_="Image", dtype="uint8", out=None):
         """The latest output of a pass ("Image", "Buffer A".."Buffer D") as a numpy array of shape
@@ -119,6 +122,7 @@ class Session:
         / 255 unless the session has float_image). ``out``: an array of that shape and type to read
         into instead of a new one (C-contiguous, writeable), returned."""
         dtype = _dtype_name(dtype)
+        pass_ = args.text("pass_", pass_)
         if out is not None:
             if not isinstance(out, numpy.ndarray):
                 raise UsageError(f"out: expected a numpy array, got {type(out).__name__}")
@@ -142,11 +146,9 @@ class Session:
         but not taken are dropped. Ctrl-C while the loop waits for a frame raises
         KeyboardInterrupt; the rendering stops after the frame being rendered when the signal came
         (no frame starts after it)."""
-        frames, every = int(frames), int(every)
-        if frames < 0:
-            raise UsageError(f"render: frames must be 0 or more, got {frames}")
-        if every < 1:
-            raise UsageError(f"render: every must be 1 or more, got {every}")
+        frames = args.integer("frames", frames, minimum=0)
+        every = args.integer("every", every, minimum=1)
+        pass_ = args.text("pass_", pass_)
         readable = [p for p in self.shadertoy.passes if p == "Image" or p.startswith("Buffer ")]
         if pass_ not in readable:  # said before any frame renders
             raise UsageError(f'render: no pass "{pass_}" to read (this shadertoy has {", ".join(readable)})')
@@ -164,7 +166,7 @@ class Session:
         """The Sound pass (mainSound) as the site renders it: float32 samples of shape (n, 2), stereo
         at 44100 Hz, ``seconds`` long (0: the site's 180 s; negative, NaN, infinite or more than an
         hour raise UsageError naming ``seconds``)."""
-        return self._native.render_sound(float(seconds))
+        return self._native.render_sound(args.real("seconds", seconds, finite=False))
 
     def reload(self, shadertoy=None):
         """Switches to the shadertoy's files as they are now (`shadertoy`: loaded anew from this
@@ -187,7 +189,7 @@ class Session:
 
     def resize(self, size):
         """A new canvas size; buffers keep their content bottom-left, iFrame goes on."""
-        self._native.resize(*_size(size))
+        self._native.resize(*args.size("size", size))
 
     # --- state -----------------------------------------------------------------------------------
 
@@ -242,7 +244,9 @@ class Session:
                 out.append(InputEvent.mouse_up())
             self._mouse_held = False
         elif mouse is not None:
-            x, y = mouse
+            if mouse is True:
+                raise args.usage("mouse", "expected (x, y), False or None, got True")
+            x, y = args.point("mouse", mouse)
             out.append(InputEvent.mouse_move(x, y) if self._mouse_held else InputEvent.mouse_down(x, y))
             self._mouse_held = True
         if keys is not None:
@@ -255,22 +259,6 @@ class Session:
                 raise TypeError(f"events: expected toyhost.InputEvent, got {event!r}")
             out.append(event)
         return out
-
-
-def _seconds(value):
-    return None if value is None else float(value)
-
-
-def _path(value):
-    return None if value is None else os.fspath(value)
-
-
-def _size(size):
-    try:
-        width, height = size
-        return int(width), int(height)
-    except (TypeError, ValueError):
-        raise UsageError(f"size: expected (width, height), got {size!r}") from None
 
 
 def _dtype_name(dtype):

@@ -4,12 +4,12 @@ compare_images for two frames already in numpy. For ports ("does my port still m
 original?") and for scoring generated shader code against a reference."""
 
 import math
-import os
 from dataclasses import dataclass, field
 from typing import List, Optional
 
 import numpy
 
+from . import _args as args
 from . import _toyhost
 
 
@@ -77,28 +77,21 @@ def compare(a, b, frames=None, size=None, fps=None, start_time=0.0, date=None, p
     ``stop_at_first_difference`` ends the run there. ``media_folders``, ``media_files``,
     ``frame_timeout`` and ``compile_timeout`` are a Session's, for both. Returns a CompareReport; problems (a shadertoy
     that does not compile, a pass one of them lacks) raise toyhost errors naming the file."""
-    from . import Shadertoy, UsageError, load
+    from . import Shadertoy, load
 
     a = a if isinstance(a, Shadertoy) else load(a)
     b = b if isinstance(b, Shadertoy) else load(b)
-    width, height = (None, None)
-    if size is not None:
-        try:
-            width, height = (int(v) for v in size)
-        except (TypeError, ValueError):
-            raise UsageError(f"size: expected (width, height), got {size!r}") from None
-    if frames is not None and int(frames) < 1:
-        raise UsageError(f"frames: must be 1 or more, got {frames}")
+    width, height = (None, None) if size is None else args.size("size", size)
+    frames = args.optional(args.integer, "frames", frames, minimum=1)
     report = _toyhost.compare(
-        a, b, width, height, None if fps is None else float(fps), float(start_time), date,
-        [os.fspath(f) for f in media_folders], [(str(k), os.fspath(v)) for k, v in (media_files or {}).items()],
-        None if frame_timeout is None else float(frame_timeout),
-        None if compile_timeout is None else float(compile_timeout),
-        int(frames or 0), pass_,
-        None if min_psnr is None else float(min_psnr), None if max_diff is None else int(max_diff),
-        None if mouse is None else (float(mouse[0]), float(mouse[1])),
-        None if mouse_script is None else os.fspath(mouse_script), None if key_script is None else os.fspath(key_script),
-        bool(keep_diff_images), int(diff_gain), bool(stop_at_first_difference))
+        a, b, width, height, args.optional(args.real, "fps", fps), args.real("start_time", start_time),
+        args.optional(args.text, "date", date), args.paths("media_folders", media_folders),
+        args.named_paths("media_files", media_files or {}), args.optional(args.real, "frame_timeout", frame_timeout),
+        args.optional(args.real, "compile_timeout", compile_timeout), frames or 0, args.text("pass_", pass_),
+        args.optional(args.real, "min_psnr", min_psnr, finite=False), args.optional(args.integer, "max_diff", max_diff),
+        args.optional(args.point, "mouse", mouse), args.optional(args.path, "mouse_script", mouse_script),
+        args.optional(args.path, "key_script", key_script), args.flag("keep_diff_images", keep_diff_images),
+        args.integer("diff_gain", diff_gain), args.flag("stop_at_first_difference", stop_at_first_difference))
     report["frames"] = [_frame(f) for f in report["frames"]]
     return CompareReport(**report)
 
@@ -110,6 +103,7 @@ def compare_images(a, b, channels=3, min_psnr=None, max_diff=None, diff_image=Fa
     difference image."""
     first = numpy.ascontiguousarray(a)
     second = numpy.ascontiguousarray(b)
-    return _frame(_toyhost.compare_images(first, second, int(channels), None if min_psnr is None else float(min_psnr),
-                                          None if max_diff is None else int(max_diff), bool(diff_image),
-                                          int(diff_gain)))
+    return _frame(_toyhost.compare_images(first, second, args.integer("channels", channels),
+                                          args.optional(args.real, "min_psnr", min_psnr, finite=False),
+                                          args.optional(args.integer, "max_diff", max_diff),
+                                          args.flag("diff_image", diff_image), args.integer("diff_gain", diff_gain)))

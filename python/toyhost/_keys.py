@@ -1,6 +1,10 @@
 """Keys as a shadertoy sees them: the JavaScript keyCode that indexes the keyboard texture
 (docs/window.md, "Keyboard"; docs/input.md for the texture). Accepts a keyCode, a single character, or a name."""
 
+import numbers
+
+from ._args import usage
+
 _NAMED = {
     "backspace": 8, "tab": 9, "enter": 13, "return": 13, "shift": 16, "ctrl": 17, "control": 17,
     "alt": 18, "pause": 19, "escape": 27, "esc": 27, "space": 32, "pageup": 33, "pagedown": 34,
@@ -18,10 +22,11 @@ def key_code(key):
     """The keyCode for ``key``: an int (taken as it is), one character ('a' and 'A' are 65) or a
     name ('Space', 'Left', 'F5', 'KP0'...)."""
     if isinstance(key, bool):
-        raise TypeError(f"key: expected a keyCode, a character or a name, got {key!r}")
-    if isinstance(key, int):
+        raise usage("key", f"expected a keyCode, a character or a name, got {key!r}")
+    if isinstance(key, numbers.Integral):
+        key = int(key)
         if not 0 <= key <= 255:
-            raise ValueError(f"key: keyCode {key} is outside 0..255 (the keyboard texture's width)")
+            raise usage("key", f"keyCode {key} is outside 0..255 (the keyboard texture's width)")
         return key
     if isinstance(key, str):
         if len(key) == 1:
@@ -31,6 +36,6 @@ def key_code(key):
                 return _PUNCTUATION[key]
         elif key.lower() in _NAMED:
             return _NAMED[key.lower()]
-        raise ValueError(f"key: unknown key {key!r} (a keyCode, a letter or digit, punctuation, or a name "
+        raise usage("key", f"unknown key {key!r} (a keyCode, a letter or digit, punctuation, or a name "
                          f"such as {', '.join(sorted(_NAMED)[:6])}...)")
-    raise TypeError(f"key: expected a keyCode, a character or a name, got {key!r}")
+    raise usage("key", f"expected a keyCode, a character or a name, got {key!r}")

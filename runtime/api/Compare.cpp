@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "api/ShadertoyAccess.h"
+#include "compare/CompareChecks.h"
 #include "core/Defaults.h"
 #include "manifest/ManifestDesc.h"
 
@@ -55,6 +56,7 @@ Result<CompareReport> compareShadertoys(const Shadertoy& a, const Shadertoy& b, 
     if (!hasPass(a, pass)) return fileError(a.path().string(), "compare: it has no pass " + pass, Code::Usage);
     if (!hasPass(b, pass)) return fileError(b.path().string(), "compare: it has no pass " + pass, Code::Usage);
     if (settings.frames < 0) return Error("compare: frames must not be negative", Code::Usage);
+    if (Status checked = checkCompareTolerance(settings.tolerance, settings.diffGain); !checked) return checked.error();
     const RunDefaults& da = ShadertoyAccess::desc(a).runDefaults;
     const RunDefaults& db = ShadertoyAccess::desc(b).runDefaults;
     const int frames = settings.frames > 0 ? settings.frames

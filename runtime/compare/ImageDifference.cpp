@@ -6,17 +6,49 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <string>
 
+#include "compare/CompareChecks.h"
 #include "core/Defaults.h"
 
 namespace toyhost {
 
+namespace {
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+Error settingError(const char* setting, std::string message) {
+    Error error(std::string(setting) + ": " + message, Code::Usage);
+    error.diagnostics.front().field = setting;
+    return error;
+}
+}  // namespace
+
+Status checkCompareTolerance(const CompareTolerance& tolerance, int diffGain) {
+    // +infinity is a tolerance (only identical frames are equal); NaN compares false with
+    // everything and would make every frame differ.
+    if (tolerance.minPsnr && (std::isnan(*tolerance.minPsnr) || *tolerance.minPsnr <= 0))
+        return settingError("min_psnr", "must be more than 0 dB (infinity: identical only), not " +
+                                            number(*tolerance.minPsnr));
+    if (tolerance.maxDiff && (*tolerance.maxDiff < 0 || *tolerance.maxDiff > 255))
+        return settingError("max_diff", "must be between 0 and 255 levels, not " + std::to_string(*tolerance.maxDiff));
+    if (diffGain < 0 || diffGain > 255)
+        return settingError("diff_gain", "must be between 0 (toyhost's default, " +
+                                             std::to_string(defaults::kCompareDiffGain) + ") and 255, not " +
+                                             std::to_string(diffGain));
+    return okStatus();
+}
+
 Result<FrameDifference> compareImages(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b, int width,
                                       int height, int channels, const CompareTolerance& tolerance,
                                       std::vector<std::uint8_t>* diffImage, int diffGain) {
+    if (Status checked = checkCompareTolerance(tolerance, diffGain); !checked) return checked.error();
     if (channels != 3 && channels != 4)
         return Error("compareImages: channels must be 3 (RGB) or 4 (RGBA), not " + std::to_string(channels),
                      Code::Usage);

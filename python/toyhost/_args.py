@@ -1,0 +1,105 @@
+"""The Python module's argument checks: every value a caller passes goes through one of these
+before it reaches the native layer, and a value that cannot be meant (a string for a number, NaN,
+320.7 pixels, a number past what C++ holds, a folder given as a string where a list is expected)
+raises UsageError naming the parameter, instead of pybind11's "incompatible function arguments"
+or a silent conversion. Ranges that the CLI checks too (a size of 0, a negative fps) are checked
+once, natively, with the CLI's words."""
+
+import math
+import numbers
+import os
+
+from ._errors import UsageError
+
+INT_MIN, INT_MAX = -2**31, 2**31 - 1
+
+
+def usage(name, message):
+    error = UsageError(f"{name}: {message}")
+    error.field = name
+    return error
+
+
+def integer(name, value, minimum=INT_MIN, maximum=INT_MAX):
+    """A whole number (an int, or a float with no fraction) within [minimum, maximum]."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise usage(name, f"expected a whole number, got {value!r}")
+    if not isinstance(value, numbers.Integral):
+        if not math.isfinite(value) or not float(value).is_integer():
+            raise usage(name, f"expected a whole number, got {value!r}")
+    value = int(value)
+    if not minimum <= value <= maximum:
+        raise usage(name, f"{value} is out of range ({minimum}..{maximum})")
+    return value
+
+
+def real(name, value, finite=True):
+    """A number (not a string, not a bool); NaN and infinities refused unless finite is False,
+    for parameters whose native check says what they mean."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise usage(name, f"expected a number, got {value!r}")
+    value = float(value)
+    if finite and not math.isfinite(value):
+        raise usage(name, f"expected a finite number, got {value}")
+    return value
+
+
+def flag(name, value):
+    if isinstance(value, (bool, numbers.Integral)) and value in (0, 1):
+        return bool(value)
+    if hasattr(value, "dtype") and getattr(value, "shape", None) == () and value in (0, 1):  # numpy.bool_
+        return bool(value)
+    raise usage(name, f"expected True or False, got {value!r}")
+
+
+def pair(name, value, convert, what):
+    """Two values as `convert` takes them: (x, y), (width, height)."""
+    if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
+        raise usage(name, f"expected {what}, got {value!r}")
+    items = tuple(value)
+    if len(items) != 2:
+        raise usage(name, f"expected {what}, got {value!r}")
+    return convert(name, items[0]), convert(name, items[1])
+
+
+def size(name, value):
+    return pair(name, value, integer, "(width, height)")
+
+
+def point(name, value):
+    return pair(name, value, real, "(x, y)")
+
+
+def text(name, value):
+    if not isinstance(value, str):
+        raise usage(name, f"expected a string, got {value!r}")
+    return value
+
+
+def path(name, value):
+    try:
+        return os.fspath(value)
+    except TypeError:
+        raise usage(name, f"expected a path, got {value!r}") from None
+
+
+def paths(name, value):
+    """One path or a list of them (a lone string is one folder, not its characters)."""
+    if isinstance(value, (str, bytes, os.PathLike)):
+        return [path(name, value)]
+    try:
+        items = list(value)
+    except TypeError:
+        raise usage(name, f"expected a path or a list of paths, got {value!r}") from None
+    return [path(name, item) for item in items]
+
+
+def named_paths(name, value):
+    """{stock name or id: path}."""
+    if not hasattr(value, "items"):
+        raise usage(name, f"expected a dict of name: path, got {value!r}")
+    return [(text(name, key), path(name, item)) for key, item in value.items()]
+
+
+def optional(convert, name, value, *args, **kwargs):
+    return None if value is None else convert(name, value, *args, **kwargs)
