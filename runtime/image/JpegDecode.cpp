@@ -53,6 +53,7 @@ struct Job {
     int maxSide;
     Image8* out;
     bool tooLarge;
+    std::uint64_t blocks;  // 8x8 blocks over all components, when the file is too small for them
 };
 
 // Adobe's CMYK JPEGs store inverted values; as Chromium: R = C*K/255 (truncated), alpha 255.
@@ -89,6 +90,23 @@ bool decodeInto(Job& job) {
         job.tooLarge = true;
         jpeg_destroy_decompress(&job.info);
         return false;
+    }
+    // Huffman coding spends at least one bit on every 8x8 block of every component: a baseline
+    // scan codes each block's DC difference and AC run with codes of 1 to 16 bits, and a
+    // progressive file's first DC scan of a component codes each block's DC difference (only AC
+    // scans can skip runs of blocks with one symbol, EOBRUN). A file with fewer bits than blocks
+    // cannot hold the picture its header declares; libjpeg would fill the missing blocks with grey
+    // after allocating the whole picture (2 KB declaring 16000x16000: 1 GB and seconds of work).
+    // Arithmetic coding can spend far less than a bit on a block, so it has no such bound.
+    if (!job.info.arith_code) {
+        std::uint64_t blocks = 0;
+        for (int c = 0; c < job.info.num_components; ++c)
+            blocks += std::uint64_t(job.info.comp_info[c].width_in_blocks) * job.info.comp_info[c].height_in_blocks;
+        if (std::uint64_t(job.size) * 8 < blocks) {
+            job.blocks = blocks;
+            jpeg_destroy_decompress(&job.info);
+            return false;
+        }
     }
     const bool cmyk = job.info.jpeg_color_space == JCS_CMYK || job.info.jpeg_color_space == JCS_YCCK;
     job.info.out_color_space = cmyk ? JCS_CMYK : JCS_EXT_RGBA;
@@ -135,6 +153,14 @@ Result<Image8> decodeJpeg(std::span<const unsigned char> bytes, int maxSide, con
     job.out = &image;
     if (decodeInto(job)) return image;
     if (job.tooLarge) return imageTooLarge(name, image.width, image.height, maxSide);
+    if (job.blocks)
+        return fileError(name,
+                         "cannot decode image: the JPEG declares " + std::to_string(image.width) + "x" +
+                             std::to_string(image.height) + ", " + std::to_string(job.blocks) +
+                             " blocks of 8x8 over its components, which take at least " +
+                             std::to_string((job.blocks + 7) / 8) + " bytes of coded data, but the file has " +
+                             std::to_string(bytes.size()) + " bytes (a truncated or inconsistent file?)",
+                         Code::ImageDecode);
     if (job.errors.endedEarly)
         return fileError(name, "cannot decode image: the JPEG data ends before the image does (a truncated file?)",
                          Code::ImageDecode);

@@ -3,7 +3,8 @@
 // IDCT (JDCT_ISLOW), fancy upsampling, block smoothing of progressive scans, grey expanded to
 // R=G=B, alpha 255, Adobe (inverted) CMYK/YCCK turned into RGB as R = C*K/255. Corrupt data that
 // libjpeg can decode past is decoded as the browser shows it; a file that ends before its image
-// data does is refused. No GL, no file I/O.
+// data does is refused, and so is a Huffman-coded file with fewer bits than its header declares
+// 8x8 blocks (refused before anything is allocated). No GL, no file I/O.
 #pragma once
 
 #include <span>

@@ -101,6 +101,22 @@ void mainImage(out vec4 c, in vec2 p) {
 
 using Files = std::vector<std::pair<std::string, std::string>>;
 
+// A grey JPEG declaring width x height whose data codes `codedBlocks` 8x8 blocks as tightly as
+// Huffman coding can (1-bit codes for DC difference 0 and end of block), then `emptyScans` empty
+// AC scans (progressive when there are any: each one makes libjpeg visit every block again).
+std::string greyJpeg(int width, int height, std::size_t codedBlocks, int emptyScans = 0) {
+    std::string b = "\xFF\xD8\xFF\xDB"s + '\0' + char(67) + '\0' + std::string(64, '\1');
+    const char sof = emptyScans ? '\xC2' : '\xC0';
+    b += "\xFF"s + sof + '\0' + char(11) + char(8) + char(height >> 8) + char(height & 255) + char(width >> 8) +
+         char(width & 255) + char(1) + char(1) + char(0x11) + '\0';
+    for (char table : {'\x00', '\x10'}) b += "\xFF\xC4"s + '\0' + char(20) + table + char(1) + std::string(16, '\0');
+    const std::string dcScan = "\xFF\xDA"s + '\0' + char(8) + char(1) + char(1) + '\0' + '\0' + char(emptyScans ? 0 : 63) + '\0';
+    b += dcScan + std::string(emptyScans ? (codedBlocks + 7) / 8 : (codedBlocks * 2 + 7) / 8, '\0');
+    for (int i = 0; i < emptyScans; ++i) b += "\xFF\xDA"s + '\0' + char(8) + char(1) + char(1) + '\0' + char(1) + char(63) + '\0';
+    return b + "\xFF\xD9";
+}
+
+
 // toy/manifest.json (the given text) and toy/image.glsl, then `extra` (which may replace them).
 Files toy(const std::string& manifest = kManifest, Files extra = {}) {
     Files files{{"toy/manifest.json", manifest}, {"toy/image.glsl", kImage}};
@@ -306,6 +322,12 @@ std::vector<Case> catalogue() {
     add({"TextureNotAnImage",
          toy(manifestWithChannel(R"({"texture": "bad.png"})"), {{"toy/bad.png", "\x13\x37 not an image at all \x00\xff\xfe"s}}),
          runToy(), 1, {"@D/toy/bad.png", "Image / iChannel0", "decode"}, "image.decode"});
+    // A few hundred bytes declaring 16000x16000 (once decoded into 1 GB, 3.7 GB with its mip levels
+    // and texture, for 9 s): refused from the header as too small for its blocks.
+    add({"TextureJpegDeclaringMoreThanItHolds",
+         toy(manifestWithChannel(R"({"texture": "claims.jpg"})"), {{"toy/claims.jpg", greyJpeg(16000, 16000, 64)}}),
+         runToy(), 1, {"@D/toy/claims.jpg", "Image / iChannel0", "16000x16000", "4000000 blocks", "500000 bytes"},
+         "image.decode"});
     add({"KeyboardWithFilter", toy(manifestWithChannel(R"({"keyboard": true, "filter": "linear"})")), runToy(), 1,
          {kManifestPath, "passes.\"Image\".channels.iChannel0", "\"filter\""}, "manifest.value"});
     add({"VflipOnBuffer", toy(manifestWithBufferA(R"({"buffer": "A", "vflip": true})")), runToy(), 1,
