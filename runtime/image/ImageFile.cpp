@@ -4,7 +4,6 @@
 #include <string_view>
 
 #include "core/AtomicFile.h"
-#include "core/Defaults.h"
 #include "image/JpegDecode.h"
 #include "image/PngDecode.h"
 
@@ -12,9 +11,6 @@ namespace toyhost {
 namespace fs = std::filesystem;
 
 namespace {
-// The largest side a texture may have: toyhost's canvas limit.
-constexpr int kMaxImageSide = defaults::kMaxCanvasSide;
-
 // Every PNG chunk fits in the file: a chunk that claims more than the file holds is named as such
 // (the decoder before libpng allocated a chunk's declared length before reading it: a 41-byte
 // file asked for gigabytes, a fuzz finding).
@@ -48,10 +44,10 @@ Result<Image8> loadImageFile(const fs::path& path) {
     if (!png && !jpeg) return fileError(path.string(), "cannot decode image: not a PNG or JPEG file", Code::ImageDecode);
     if (jpeg)
         return decodeJpeg(std::span(reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size()),
-                          kMaxImageSide, path.string());
+                          DecodeLimits{}, path.string());
     if (!pngChunksFit(*bytes))
         return fileError(path.string(), "cannot decode image: a PNG chunk is longer than the file", Code::ImageDecode);
-    return decodePng(std::span(reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size()), kMaxImageSide,
+    return decodePng(std::span(reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size()), DecodeLimits{},
                      path.string());
 }
 

@@ -1,5 +1,6 @@
 #include "image/JpegDecode.h"
 
+#include <chrono>
 #include <csetjmp>
 #include <cstddef>
 #include <cstdint>
@@ -42,19 +43,40 @@ void onMessage(j_common_ptr info, int level) {
     if (level < 0 && info->err->msg_code == JWRN_JPEG_EOF) reinterpret_cast<Errors*>(info->err)->endedEarly = true;
 }
 
+using Clock = std::chrono::steady_clock;
+
+// Why the progress monitor stopped the decode.
+enum class Stopped { No, Scans, Time };
+
 // Everything decodeInto() touches lives here, outside its frame, so that nothing it needs after a
 // longjmp is an automatic variable changed since setjmp, and no C++ object with a destructor is
 // jumped over.
 struct Job {
     jpeg_decompress_struct info;
     Errors errors;
+    jpeg_progress_mgr progress;
     const unsigned char* data;
     unsigned long size;
-    int maxSide;
+    DecodeLimits limits;
+    Clock::time_point deadline;
+    Stopped stopped;
+    int stoppedInScan;
     Image8* out;
     bool tooLarge;
     std::uint64_t blocks;  // 8x8 blocks over all components, when the file is too small for them
 };
+
+// libjpeg calls this before each row of blocks it reads from a scan (a progressive file's scans
+// are all read inside jpeg_start_decompress) and before each row it outputs: the one place a long
+// decode can be stopped. It leaves the way error_exit does.
+void onProgress(j_common_ptr common) {
+    Job& job = *static_cast<Job*>(common->client_data);
+    if (job.info.input_scan_number > job.limits.maxScans) job.stopped = Stopped::Scans;
+    else if (Clock::now() >= job.deadline) job.stopped = Stopped::Time;
+    else return;
+    job.stoppedInScan = job.info.input_scan_number;
+    std::longjmp(job.errors.jump, 1);
+}
 
 // Adobe's CMYK JPEGs store inverted values; as Chromium: R = C*K/255 (truncated), alpha 255.
 void cmykToRgba(std::uint8_t* row, std::size_t pixels) {
@@ -80,13 +102,16 @@ bool decodeInto(Job& job) {
         return false;
     }
     jpeg_create_decompress(&job.info);
+    job.info.client_data = &job;
+    job.progress.progress_monitor = onProgress;
+    job.info.progress = &job.progress;
     job.info.mem->max_memory_to_use = kMaxWorkingMemory;
     jpeg_mem_src(&job.info, job.data, job.size);
     jpeg_read_header(&job.info, TRUE);
     job.out->width = static_cast<int>(job.info.image_width);
     job.out->height = static_cast<int>(job.info.image_height);
-    if (job.info.image_width > static_cast<JDIMENSION>(job.maxSide) ||
-        job.info.image_height > static_cast<JDIMENSION>(job.maxSide)) {
+    if (job.info.image_width > static_cast<JDIMENSION>(job.limits.maxSide) ||
+        job.info.image_height > static_cast<JDIMENSION>(job.limits.maxSide)) {
         job.tooLarge = true;
         jpeg_destroy_decompress(&job.info);
         return false;
@@ -144,15 +169,26 @@ bool decodeInto(Job& job) {
 
 }  // namespace
 
-Result<Image8> decodeJpeg(std::span<const unsigned char> bytes, int maxSide, const std::string& name) {
+Result<Image8> decodeJpeg(std::span<const unsigned char> bytes, const DecodeLimits& limits, const std::string& name) {
     Image8 image;
     Job job{};
     job.data = bytes.data();
     job.size = static_cast<unsigned long>(bytes.size());
-    job.maxSide = maxSide;
+    job.limits = limits;
+    job.deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.maxSeconds));
     job.out = &image;
     if (decodeInto(job)) return image;
-    if (job.tooLarge) return imageTooLarge(name, image.width, image.height, maxSide);
+    if (job.tooLarge) return imageTooLarge(name, image.width, image.height, limits.maxSide);
+    if (job.stopped == Stopped::Scans)
+        return fileError(name,
+                         "cannot decode image: the JPEG has more than " + std::to_string(limits.maxScans) +
+                             " scans (encoders write about 10; each scan makes the decoder pass over the picture "
+                             "again, so that many only slow it down)",
+                         Code::ImageDecode);
+    if (job.stopped == Stopped::Time)
+        return decodeTooSlow(name, limits,
+                             "in scan " + std::to_string(job.stoppedInScan) + " of a " +
+                                 std::to_string(image.width) + "x" + std::to_string(image.height) + " JPEG");
     if (job.blocks)
         return fileError(name,
                          "cannot decode image: the JPEG declares " + std::to_string(image.width) + "x" +

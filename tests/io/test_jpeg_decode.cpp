@@ -15,6 +15,7 @@
 
 #include "TestFolder.h"
 #include "image/ImageFile.h"
+#include "image/JpegDecode.h"
 
 using namespace toyhost;
 namespace fs = std::filesystem;
@@ -99,6 +100,23 @@ std::vector<std::uint8_t> tightGreyJpeg(int width, int height, std::size_t coded
     append(bytes, {0xFF, 0xC4, 0, 20, 0x10, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x00});  // AC: "0" = EOB
     append(bytes, {0xFF, 0xDA, 0, 8, 1, 1, 0x00, 0, 63, 0});
     bytes.insert(bytes.end(), (codedBlocks * 2 + 7) / 8, 0);
+    append(bytes, {0xFF, 0xD9});
+    return bytes;
+}
+
+// A grey progressive JPEG: a first DC scan coding every block with a 1-bit code (DC difference 0),
+// then `emptyScans` AC scans without data, each of which libjpeg still walks block by block.
+std::vector<std::uint8_t> greyJpegWithEmptyScans(int side, int emptyScans) {
+    std::vector<std::uint8_t> bytes;
+    append(bytes, {0xFF, 0xD8, 0xFF, 0xDB, 0, 67, 0});
+    bytes.insert(bytes.end(), 64, 1);
+    append(bytes, {0xFF, 0xC2, 0, 11, 8, side >> 8, side & 255, side >> 8, side & 255, 1, 1, 0x11, 0});
+    append(bytes, {0xFF, 0xC4, 0, 20, 0x00, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x00});
+    append(bytes, {0xFF, 0xC4, 0, 20, 0x10, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x00});
+    append(bytes, {0xFF, 0xDA, 0, 8, 1, 1, 0x00, 0, 0, 0});
+    const std::size_t blocks = std::size_t((side + 7) / 8) * std::size_t((side + 7) / 8);
+    bytes.insert(bytes.end(), (blocks + 7) / 8, 0);
+    for (int i = 0; i < emptyScans; ++i) append(bytes, {0xFF, 0xDA, 0, 8, 1, 1, 0x00, 1, 63, 0});
     append(bytes, {0xFF, 0xD9});
     return bytes;
 }
@@ -287,5 +305,44 @@ TEST(JpegDecode, A2KBFileDeclaring16000x16000IsRefusedBeforeAllocating) {
         EXPECT_EQ(image.error().first().code, Code::ImageDecode);
         EXPECT_NE(image.error().text().find("declares 16000x16000, 6000000 blocks"), std::string::npos)
             << image.error().text();
+    }
+}
+
+// Every scan of a progressive JPEG makes the decoder pass over the picture again, and a scan can be
+// a dozen bytes: 330 KB of 20000 scans kept libjpeg busy for minutes. 500 scans (the limit) decode;
+// one more is refused as soon as the decoder reaches it, naming the file.
+TEST(JpegDecode, AProgressiveJpegOfMoreScansThanTheLimitIsRefused) {
+    TempFolder folder;
+    ASSERT_EQ(DecodeLimits{}.maxScans, 500);
+    const Result<Image8> atLimit = loadImageFile(writeFile(folder.path / "500.jpg", greyJpegWithEmptyScans(64, 499)));
+    ASSERT_TRUE(atLimit.ok()) << atLimit.error().text();
+    EXPECT_EQ(pixelFromTop(*atLimit, 10, 10)[0], 128);
+
+    const fs::path file = writeFile(folder.path / "bomb.jpg", greyJpegWithEmptyScans(2048, 20000));
+    const Result<Image8> image = loadImageFile(file);
+    ASSERT_FALSE(image.ok());
+    EXPECT_EQ(image.error().first().code, Code::ImageDecode);
+    EXPECT_NE(image.error().text().find(file.string()), std::string::npos) << image.error().text();
+    EXPECT_NE(image.error().text().find("more than 500 scans"), std::string::npos) << image.error().text();
+}
+
+// Decoding stops when it outlasts the time limit (a file of slow scans under the scan limit, an
+// arithmetic-coded bomb): with no time at all, even a small image is refused, naming the file and
+// where it stopped; with the default limit it decodes.
+TEST(JpegDecode, ADecodeThatOutlastsItsTimeLimitIsStopped) {
+    std::vector<std::uint8_t> rgb(32 * 32 * 3, 77);
+    for (bool progressive : {false, true}) {
+        SCOPED_TRACE(progressive ? "progressive" : "baseline");
+        const std::vector<std::uint8_t> bytes = encodeJpeg(32, 32, rgb, {JCS_RGB, progressive, true});
+        DecodeLimits none;
+        none.maxSeconds = 0;
+        const Result<Image8> stopped = decodeJpeg(bytes, none, "slow.jpg");
+        ASSERT_FALSE(stopped.ok());
+        EXPECT_EQ(stopped.error().first().code, Code::ImageDecode);
+        EXPECT_EQ(stopped.error().first().file, "slow.jpg");
+        EXPECT_NE(stopped.error().text().find("longer than the 0 s one image may take (stopped in scan 1 of a 32x32 JPEG)"),
+                  std::string::npos)
+            << stopped.error().text();
+        EXPECT_TRUE(decodeJpeg(bytes, DecodeLimits{}, "slow.jpg").ok());
     }
 }

@@ -328,6 +328,11 @@ std::vector<Case> catalogue() {
          toy(manifestWithChannel(R"({"texture": "claims.jpg"})"), {{"toy/claims.jpg", greyJpeg(16000, 16000, 64)}}),
          runToy(), 1, {"@D/toy/claims.jpg", "Image / iChannel0", "16000x16000", "4000000 blocks", "500000 bytes"},
          "image.decode"});
+    // Every scan of a progressive JPEG is a pass over the picture: 330 KB of 20000 scans decoded for
+    // minutes. More than 500 scans are refused when the decoder reaches the 501st.
+    add({"TextureJpegOfTooManyScans",
+         toy(manifestWithChannel(R"({"texture": "scans.jpg"})"), {{"toy/scans.jpg", greyJpeg(2048, 2048, 65536, 1000)}}),
+         runToy(), 1, {"@D/toy/scans.jpg", "Image / iChannel0", "more than 500 scans"}, "image.decode"});
     add({"KeyboardWithFilter", toy(manifestWithChannel(R"({"keyboard": true, "filter": "linear"})")), runToy(), 1,
          {kManifestPath, "passes.\"Image\".channels.iChannel0", "\"filter\""}, "manifest.value"});
     add({"VflipOnBuffer", toy(manifestWithBufferA(R"({"buffer": "A", "vflip": true})")), runToy(), 1,
