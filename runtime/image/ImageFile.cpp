@@ -1,11 +1,13 @@
 #include "image/ImageFile.h"
 
+#include <new>
 #include <string>
 #include <string_view>
 
 #include "core/AtomicFile.h"
 #include "image/JpegDecode.h"
 #include "image/PngDecode.h"
+#include "image/PixelMemory.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -33,7 +35,13 @@ bool startsWith(const std::string& data, std::string_view magic) { return data.c
 Result<Image8> loadImageFile(const fs::path& path) {
     if (Status regular = checkRegularFile(path); !regular) return regular.error();
     // Stock and user textures are at most a few MiB; the limit keeps a huge file from filling memory.
-    Result<std::string> bytes = readTextFile(path, std::size_t(256) << 20);
+    Result<std::string> bytes = Error("unread");
+    try {
+        bytes = readTextFile(path, std::size_t(256) << 20);
+    } catch (const std::bad_alloc&) {
+        std::error_code ec;
+        return notEnoughMemory(path.string(), "reading the file", memoryText(std::filesystem::file_size(path, ec)));
+    }
     if (!bytes) return bytes.error();
     // Shadertoy's textures are PNG and JPEG, decoded by libpng and libjpeg-turbo, the decoders
     // browsers have used. (stb_image, used before, read past its tables, shifted by negative

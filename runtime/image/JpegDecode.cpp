@@ -10,6 +10,7 @@
 #include <jpeglib.h>
 
 #include "image/DecodeLimits.h"
+#include "image/PixelMemory.h"
 
 namespace toyhost {
 
@@ -61,6 +62,7 @@ struct Job {
     Clock::time_point deadline;
     Stopped stopped;
     int stoppedInScan;
+    bool outOfMemory;  // the decoded picture could not be allocated
     Image8* out;
     bool tooLarge;
     std::uint64_t blocks;  // 8x8 blocks over all components, when the file is too small for them
@@ -146,7 +148,11 @@ bool decodeInto(Job& job) {
     const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
     job.out->width = width;
     job.out->height = height;
-    job.out->rgba.resize(rowBytes * static_cast<std::size_t>(height));
+    if (!tryResize(job.out->rgba, rowBytes * static_cast<std::size_t>(height))) {
+        job.outOfMemory = true;
+        jpeg_destroy_decompress(&job.info);
+        return false;
+    }
     while (job.info.output_scanline < job.info.output_height) {
         // Files store the top row first; Image8 keeps the bottom row first.
         const std::size_t y = static_cast<std::size_t>(height) - 1 - job.info.output_scanline;
@@ -200,9 +206,15 @@ Result<Image8> decodeJpeg(std::span<const unsigned char> bytes, const DecodeLimi
     if (job.errors.endedEarly)
         return fileError(name, "cannot decode image: the JPEG data ends before the image does (a truncated file?)",
                          Code::ImageDecode);
+    if (job.outOfMemory)
+        return notEnoughMemory(name, "decoding the JPEG", pictureMemoryText(image.width, image.height));
+    if (job.errors.code == JERR_OUT_OF_MEMORY)
+        return notEnoughMemory(name, "decoding the JPEG",
+                               "more working memory than toyhost could get (its header declares " +
+                                   std::to_string(image.width) + "x" + std::to_string(image.height) + ")");
     // Over the working-memory cap libjpeg asks for a backing store (temporary files), which it
     // does not have: say what that means.
-    if (job.errors.code == JERR_NO_BACKING_STORE || job.errors.code == JERR_OUT_OF_MEMORY)
+    if (job.errors.code == JERR_NO_BACKING_STORE)
         return fileError(name,
                          "cannot decode image: decoding it needs more than " + std::to_string(kMaxWorkingMemory >> 20) +
                              " MiB of working memory (its header declares " + std::to_string(image.width) + "x" +

@@ -5,11 +5,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <new>
 #include <vector>
 
 #include <png.h>
 
 #include "image/DecodeLimits.h"
+#include "image/PixelMemory.h"
 
 namespace toyhost {
 
@@ -37,6 +39,7 @@ struct Job {
     bool tooLarge;
     bool tooShort;
     bool tooSlow;
+    bool outOfMemory;  // the decoded picture could not be allocated
 };
 
 void onError(png_structp png, png_const_charp message) {
@@ -110,8 +113,17 @@ bool decodeInto(Job& job) {
     const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
     if (png_get_rowbytes(job.png, job.info) != rowBytes) png_error(job.png, "unexpected row layout after conversion");
 
-    job.out->rgba.resize(rowBytes * height);
-    job.rows->resize(height);
+    bool allocated = tryResize(job.out->rgba, rowBytes * height);
+    try {
+        if (allocated) job.rows->resize(height);
+    } catch (const std::bad_alloc&) {
+        allocated = false;
+    }
+    if (!allocated) {
+        job.outOfMemory = true;
+        png_destroy_read_struct(&job.png, &job.info, nullptr);
+        return false;
+    }
     for (png_uint_32 y = 0; y < height; ++y)  // files store the top row first; Image8 the bottom first
         (*job.rows)[y] = job.out->rgba.data() + static_cast<std::size_t>(height - 1 - y) * rowBytes;
     png_read_image(job.png, job.rows->data());
@@ -136,6 +148,7 @@ Result<Image8> decodePng(std::span<const unsigned char> bytes, const DecodeLimit
     job.rows = &rows;
     if (decodeInto(job)) return image;
     if (job.tooLarge) return imageTooLarge(name, image.width, image.height, limits.maxSide);
+    if (job.outOfMemory) return notEnoughMemory(name, "decoding the PNG", pictureMemoryText(image.width, image.height));
     if (job.tooSlow)
         return decodeTooSlow(name, limits, "in a " + std::to_string(image.width) + "x" + std::to_string(image.height) + " PNG");
     if (job.tooShort)
@@ -143,6 +156,11 @@ Result<Image8> decodePng(std::span<const unsigned char> bytes, const DecodeLimit
                          "cannot decode image: the PNG declares " + std::to_string(image.width) + "x" +
                              std::to_string(image.height) + " but the file is too small to hold it (a truncated file?)",
                          Code::ImageDecode);
+    // libpng's own allocations ("Out of memory", "Insufficient memory") fail with a message only.
+    if (std::strstr(job.message, "memory"))
+        return notEnoughMemory(name, "decoding the PNG",
+                               "more memory than toyhost could get (" + std::string(job.message) + ", " +
+                                   std::to_string(image.width) + "x" + std::to_string(image.height) + ")");
     return fileError(name, std::string("cannot decode image: ") + job.message, Code::ImageDecode);
 }
 

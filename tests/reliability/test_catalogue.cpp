@@ -12,6 +12,7 @@
 // executable with --gtest_filter for it, and the case left out of gtest_discover_tests with
 // TEST_FILTER), so that it fails until fixed and its fix shows as a failure to remove the mark.
 #include "GlTestSupport.h"
+#include "UniformPng.h"
 
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -684,6 +685,38 @@ TEST(CatalogueCrash, HugeShaderDoesNotCrashToyhost) {
     EXPECT_TRUE(clean) << "command: toyhost " << arguments << "\nexit code " << result.exitCode << ", " << errors
                        << " error lines\n" << result.output;
     if (result.exitCode != 0) EXPECT_TRUE(holdsNoFile(dir / "out") || !fs::exists(dir / "out"));
+}
+
+}  // namespace
+}  // namespace toyhost::testing
+
+namespace toyhost::testing {
+namespace {
+
+// A valid 16384x16384 PNG (1 GiB decoded) under `ulimit -v 2097152` aborted the CLI with an
+// uncaught std::bad_alloc (exit 134): it is one error naming the file and what it needed.
+TEST(CatalogueMemory, AHugeTextureUnderALowMemoryLimitIsAnErrorNotAnAbort) {
+    const fs::path dir = freshOutputDir("catalogue/HugeTextureLowMemory");
+    fs::create_directories(dir / "toy");
+    std::ofstream(dir / "toy" / "manifest.json") << manifestWithChannel(R"({"texture": "huge.png"})");
+    std::ofstream(dir / "toy" / "image.glsl") << kImage;
+    ASSERT_TRUE(writeUniformPng(dir / "toy" / "huge.png", 16384, 16384, {40, 90, 200, 255}));
+    const rlimit noCore{0, 0};
+    ::setrlimit(RLIMIT_CORE, &noCore);  // an abort must not leave a core file
+    const std::string command = "ulimit -v 2097152; MESA_SHADER_CACHE_DISABLE=true '" + toyhostBinary().string() + "' run '" +
+                                dir.string() + "/toy' --size 16x8 --frames 1 --quiet --out '" + dir.string() +
+                                "/out/f_%04d.png' 2>&1; echo \"exit $?\"";
+    std::ofstream(dir / "run.sh") << command << "\n";
+    const std::string output =
+        runCommand("/usr/bin/env", "-u DISPLAY -u WAYLAND_DISPLAY bash '" + (dir / "run.sh").string() + "'").output;
+    EXPECT_NE(output.find("exit 1\n"), std::string::npos) << output;
+    const std::vector<std::string> errors = errorLines(output);
+    ASSERT_EQ(errors.size(), 1u) << output;
+    EXPECT_NE(errors[0].find((dir / "toy" / "huge.png").string()), std::string::npos) << output;
+    EXPECT_NE(errors[0].find("not enough memory"), std::string::npos) << output;
+    EXPECT_NE(errors[0].find("1.0 GiB for 16384x16384 RGBA"), std::string::npos) << output;
+    EXPECT_NE(errors[0].find("[image.too-large]"), std::string::npos) << output;
+    EXPECT_TRUE(holdsNoFile(dir / "out") || !fs::exists(dir / "out"));
 }
 
 }  // namespace
