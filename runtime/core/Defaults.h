@@ -54,6 +54,18 @@ inline constexpr int kVolumeStandInSize = 32;
 // wait in the queue, and no more than this many bytes of them (one 4K frame is 33 MB).
 inline constexpr int kVideoAheadFrames = 3;
 inline constexpr std::size_t kVideoAheadBytes = std::size_t(96) << 20;
+// Validating a manifest collects this many problems, then stops looking ("stopped after 50
+// problems"): a file of millions of bad entries costs no more than parsing it (4 million bad "media"
+// entries took 210 s and 5.5 GB). Below the 100 lines the CLI prints, so the note shows too.
+inline constexpr std::size_t kMaxManifestProblems = 50;
+// Decoding one image file (image/DecodeLimits.h). A progressive JPEG makes the decoder pass over
+// every block of a component once per scan, and a scan can be a dozen bytes: a 330 KB file of
+// 20000 scans kept libjpeg busy for minutes. Encoders write 10 scans (libjpeg's progression) to a
+// few dozen; 500 is the limit libjpeg-turbo's own fuzz targets set (TJPARAM_SCANLIMIT, djpeg
+// -maxscans). Whatever else makes a decode slow, it stops after kImageDecodeSeconds: far beyond
+// the few seconds the largest texture (16384x16384) takes.
+inline constexpr int kMaxJpegScans = 500;
+inline constexpr double kImageDecodeSeconds = 30.0;
 // The Sound pass: the site renders 180 s, in blocks of 512x512 samples.
 inline constexpr double kSoundSeconds = 180.0;
 inline constexpr double kMaxSoundSeconds = 3600.0;  // `toyhost sound --seconds` limit

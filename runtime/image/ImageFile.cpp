@@ -1,20 +1,18 @@
 #include "image/ImageFile.h"
 
+#include <new>
 #include <string>
 #include <string_view>
 
 #include "core/AtomicFile.h"
-#include "core/Defaults.h"
 #include "image/JpegDecode.h"
 #include "image/PngDecode.h"
+#include "image/PixelMemory.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
 
 namespace {
-// The largest side a texture may have: toyhost's canvas limit.
-constexpr int kMaxImageSide = defaults::kMaxCanvasSide;
-
 // Every PNG chunk fits in the file: a chunk that claims more than the file holds is named as such
 // (the decoder before libpng allocated a chunk's declared length before reading it: a 41-byte
 // file asked for gigabytes, a fuzz finding).
@@ -37,7 +35,13 @@ bool startsWith(const std::string& data, std::string_view magic) { return data.c
 Result<Image8> loadImageFile(const fs::path& path) {
     if (Status regular = checkRegularFile(path); !regular) return regular.error();
     // Stock and user textures are at most a few MiB; the limit keeps a huge file from filling memory.
-    Result<std::string> bytes = readTextFile(path, std::size_t(256) << 20);
+    Result<std::string> bytes = Error("unread");
+    try {
+        bytes = readTextFile(path, std::size_t(256) << 20);
+    } catch (const std::bad_alloc&) {
+        std::error_code ec;
+        return notEnoughMemory(path.string(), "reading the file", memoryText(std::filesystem::file_size(path, ec)));
+    }
     if (!bytes) return bytes.error();
     // Shadertoy's textures are PNG and JPEG, decoded by libpng and libjpeg-turbo, the decoders
     // browsers have used. (stb_image, used before, read past its tables, shifted by negative
@@ -48,10 +52,10 @@ Result<Image8> loadImageFile(const fs::path& path) {
     if (!png && !jpeg) return fileError(path.string(), "cannot decode image: not a PNG or JPEG file", Code::ImageDecode);
     if (jpeg)
         return decodeJpeg(std::span(reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size()),
-                          kMaxImageSide, path.string());
+                          DecodeLimits{}, path.string());
     if (!pngChunksFit(*bytes))
         return fileError(path.string(), "cannot decode image: a PNG chunk is longer than the file", Code::ImageDecode);
-    return decodePng(std::span(reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size()), kMaxImageSide,
+    return decodePng(std::span(reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size()), DecodeLimits{},
                      path.string());
 }
 

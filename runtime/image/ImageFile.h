@@ -12,6 +12,7 @@ namespace toyhost {
 // Decodes `path` to RGBA8, rows bottom first, as the Shadertoy player uploads images: grey
 // becomes R=G=B=grey, a missing alpha becomes 255, no premultiplication, no colour-space or gamma
 // conversion, 16-bit channels reduced to 8 bits. Errors name the path and the decoder's reason.
+// The default DecodeLimits (image/DecodeLimits.h) apply: texture size, JPEG scans, decode time.
 Result<Image8> loadImageFile(const std::filesystem::path& path);
 
 }  // namespace toyhost

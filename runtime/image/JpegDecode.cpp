@@ -1,5 +1,6 @@
 #include "image/JpegDecode.h"
 
+#include <chrono>
 #include <csetjmp>
 #include <cstddef>
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <jpeglib.h>
 
 #include "image/DecodeLimits.h"
+#include "image/PixelMemory.h"
 
 namespace toyhost {
 
@@ -42,18 +44,41 @@ void onMessage(j_common_ptr info, int level) {
     if (level < 0 && info->err->msg_code == JWRN_JPEG_EOF) reinterpret_cast<Errors*>(info->err)->endedEarly = true;
 }
 
+using Clock = std::chrono::steady_clock;
+
+// Why the progress monitor stopped the decode.
+enum class Stopped { No, Scans, Time };
+
 // Everything decodeInto() touches lives here, outside its frame, so that nothing it needs after a
 // longjmp is an automatic variable changed since setjmp, and no C++ object with a destructor is
 // jumped over.
 struct Job {
     jpeg_decompress_struct info;
     Errors errors;
+    jpeg_progress_mgr progress;
     const unsigned char* data;
     unsigned long size;
-    int maxSide;
+    DecodeLimits limits;
+    Clock::time_point deadline;
+    Stopped stopped;
+    int stoppedInScan;
+    bool outOfMemory;  // the decoded picture could not be allocated
     Image8* out;
     bool tooLarge;
+    std::uint64_t blocks;  // 8x8 blocks over all components, when the file is too small for them
 };
+
+// libjpeg calls this before each row of blocks it reads from a scan (a progressive file's scans
+// are all read inside jpeg_start_decompress) and before each row it outputs: the one place a long
+// decode can be stopped. It leaves the way error_exit does.
+void onProgress(j_common_ptr common) {
+    Job& job = *static_cast<Job*>(common->client_data);
+    if (job.info.input_scan_number > job.limits.maxScans) job.stopped = Stopped::Scans;
+    else if (Clock::now() >= job.deadline) job.stopped = Stopped::Time;
+    else return;
+    job.stoppedInScan = job.info.input_scan_number;
+    std::longjmp(job.errors.jump, 1);
+}
 
 // Adobe's CMYK JPEGs store inverted values; as Chromium: R = C*K/255 (truncated), alpha 255.
 void cmykToRgba(std::uint8_t* row, std::size_t pixels) {
@@ -79,16 +104,36 @@ bool decodeInto(Job& job) {
         return false;
     }
     jpeg_create_decompress(&job.info);
+    job.info.client_data = &job;
+    job.progress.progress_monitor = onProgress;
+    job.info.progress = &job.progress;
     job.info.mem->max_memory_to_use = kMaxWorkingMemory;
     jpeg_mem_src(&job.info, job.data, job.size);
     jpeg_read_header(&job.info, TRUE);
     job.out->width = static_cast<int>(job.info.image_width);
     job.out->height = static_cast<int>(job.info.image_height);
-    if (job.info.image_width > static_cast<JDIMENSION>(job.maxSide) ||
-        job.info.image_height > static_cast<JDIMENSION>(job.maxSide)) {
+    if (job.info.image_width > static_cast<JDIMENSION>(job.limits.maxSide) ||
+        job.info.image_height > static_cast<JDIMENSION>(job.limits.maxSide)) {
         job.tooLarge = true;
         jpeg_destroy_decompress(&job.info);
         return false;
+    }
+    // Huffman coding spends at least one bit on every 8x8 block of every component: a baseline
+    // scan codes each block's DC difference and AC run with codes of 1 to 16 bits, and a
+    // progressive file's first DC scan of a component codes each block's DC difference (only AC
+    // scans can skip runs of blocks with one symbol, EOBRUN). A file with fewer bits than blocks
+    // cannot hold the picture its header declares; libjpeg would fill the missing blocks with grey
+    // after allocating the whole picture (2 KB declaring 16000x16000: 1 GB and seconds of work).
+    // Arithmetic coding can spend far less than a bit on a block, so it has no such bound.
+    if (!job.info.arith_code) {
+        std::uint64_t blocks = 0;
+        for (int c = 0; c < job.info.num_components; ++c)
+            blocks += std::uint64_t(job.info.comp_info[c].width_in_blocks) * job.info.comp_info[c].height_in_blocks;
+        if (std::uint64_t(job.size) * 8 < blocks) {
+            job.blocks = blocks;
+            jpeg_destroy_decompress(&job.info);
+            return false;
+        }
     }
     const bool cmyk = job.info.jpeg_color_space == JCS_CMYK || job.info.jpeg_color_space == JCS_YCCK;
     job.info.out_color_space = cmyk ? JCS_CMYK : JCS_EXT_RGBA;
@@ -103,7 +148,11 @@ bool decodeInto(Job& job) {
     const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
     job.out->width = width;
     job.out->height = height;
-    job.out->rgba.resize(rowBytes * static_cast<std::size_t>(height));
+    if (!tryResize(job.out->rgba, rowBytes * static_cast<std::size_t>(height))) {
+        job.outOfMemory = true;
+        jpeg_destroy_decompress(&job.info);
+        return false;
+    }
     while (job.info.output_scanline < job.info.output_height) {
         // Files store the top row first; Image8 keeps the bottom row first.
         const std::size_t y = static_cast<std::size_t>(height) - 1 - job.info.output_scanline;
@@ -126,21 +175,46 @@ bool decodeInto(Job& job) {
 
 }  // namespace
 
-Result<Image8> decodeJpeg(std::span<const unsigned char> bytes, int maxSide, const std::string& name) {
+Result<Image8> decodeJpeg(std::span<const unsigned char> bytes, const DecodeLimits& limits, const std::string& name) {
     Image8 image;
     Job job{};
     job.data = bytes.data();
     job.size = static_cast<unsigned long>(bytes.size());
-    job.maxSide = maxSide;
+    job.limits = limits;
+    job.deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.maxSeconds));
     job.out = &image;
     if (decodeInto(job)) return image;
-    if (job.tooLarge) return imageTooLarge(name, image.width, image.height, maxSide);
+    if (job.tooLarge) return imageTooLarge(name, image.width, image.height, limits.maxSide);
+    if (job.stopped == Stopped::Scans)
+        return fileError(name,
+                         "cannot decode image: the JPEG has more than " + std::to_string(limits.maxScans) +
+                             " scans (encoders write about 10; each scan makes the decoder pass over the picture "
+                             "again, so that many only slow it down)",
+                         Code::ImageDecode);
+    if (job.stopped == Stopped::Time)
+        return decodeTooSlow(name, limits,
+                             "in scan " + std::to_string(job.stoppedInScan) + " of a " +
+                                 std::to_string(image.width) + "x" + std::to_string(image.height) + " JPEG");
+    if (job.blocks)
+        return fileError(name,
+                         "cannot decode image: the JPEG declares " + std::to_string(image.width) + "x" +
+                             std::to_string(image.height) + ", " + std::to_string(job.blocks) +
+                             " blocks of 8x8 over its components, which take at least " +
+                             std::to_string((job.blocks + 7) / 8) + " bytes of coded data, but the file has " +
+                             std::to_string(bytes.size()) + " bytes (a truncated or inconsistent file?)",
+                         Code::ImageDecode);
     if (job.errors.endedEarly)
         return fileError(name, "cannot decode image: the JPEG data ends before the image does (a truncated file?)",
                          Code::ImageDecode);
+    if (job.outOfMemory)
+        return notEnoughMemory(name, "decoding the JPEG", pictureMemoryText(image.width, image.height));
+    if (job.errors.code == JERR_OUT_OF_MEMORY)
+        return notEnoughMemory(name, "decoding the JPEG",
+                               "more working memory than toyhost could get (its header declares " +
+                                   std::to_string(image.width) + "x" + std::to_string(image.height) + ")");
     // Over the working-memory cap libjpeg asks for a backing store (temporary files), which it
     // does not have: say what that means.
-    if (job.errors.code == JERR_NO_BACKING_STORE || job.errors.code == JERR_OUT_OF_MEMORY)
+    if (job.errors.code == JERR_NO_BACKING_STORE)
         return fileError(name,
                          "cannot decode image: decoding it needs more than " + std::to_string(kMaxWorkingMemory >> 20) +
                              " MiB of working memory (its header declares " + std::to_string(image.width) + "x" +

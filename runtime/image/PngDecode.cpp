@@ -1,14 +1,17 @@
 #include "image/PngDecode.h"
 
+#include <chrono>
 #include <csetjmp>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <new>
 #include <vector>
 
 #include <png.h>
 
 #include "image/DecodeLimits.h"
+#include "image/PixelMemory.h"
 
 namespace toyhost {
 
@@ -28,12 +31,15 @@ struct Job {
     const unsigned char* data;
     std::size_t size;
     std::size_t at;  // read position in data
-    int maxSide;
+    DecodeLimits limits;
+    std::chrono::steady_clock::time_point deadline;
     Image8* out;
     std::vector<png_bytep>* rows;
     char message[256];
     bool tooLarge;
     bool tooShort;
+    bool tooSlow;
+    bool outOfMemory;  // the decoded picture could not be allocated
 };
 
 void onError(png_structp png, png_const_charp message) {
@@ -49,6 +55,14 @@ void onRead(png_structp png, png_bytep out, png_size_t length) {
     if (length > job->size - job->at) png_error(png, "the PNG data ends before the image does (a truncated file?)");
     std::memcpy(out, job->data + job->at, length);
     job->at += length;
+}
+
+// Called after each row libpng decodes: the place a decode that outlasts its time is stopped.
+void onRow(png_structp png, png_uint_32, int) {
+    auto* job = static_cast<Job*>(png_get_error_ptr(png));
+    if (std::chrono::steady_clock::now() < job->deadline) return;
+    job->tooSlow = true;
+    png_error(png, "too slow");
 }
 
 // Returns false with job.message set (or tooLarge / tooShort) when the file cannot be decoded.
@@ -74,7 +88,7 @@ bool decodeInto(Job& job) {
     const png_uint_32 height = png_get_image_height(job.png, job.info);
     job.out->width = static_cast<int>(width);
     job.out->height = static_cast<int>(height);
-    if (width > static_cast<png_uint_32>(job.maxSide) || height > static_cast<png_uint_32>(job.maxSide)) {
+    if (width > static_cast<png_uint_32>(job.limits.maxSide) || height > static_cast<png_uint_32>(job.limits.maxSide)) {
         job.tooLarge = true;
         png_destroy_read_struct(&job.png, &job.info, nullptr);
         return false;
@@ -94,12 +108,22 @@ bool decodeInto(Job& job) {
     png_set_gray_to_rgb(job.png);
     png_set_add_alpha(job.png, 0xFF, PNG_FILLER_AFTER);  // only where there is no alpha yet
     png_set_interlace_handling(job.png);
+    png_set_read_status_fn(job.png, onRow);
     png_read_update_info(job.png, job.info);
     const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
     if (png_get_rowbytes(job.png, job.info) != rowBytes) png_error(job.png, "unexpected row layout after conversion");
 
-    job.out->rgba.resize(rowBytes * height);
-    job.rows->resize(height);
+    bool allocated = tryResize(job.out->rgba, rowBytes * height);
+    try {
+        if (allocated) job.rows->resize(height);
+    } catch (const std::bad_alloc&) {
+        allocated = false;
+    }
+    if (!allocated) {
+        job.outOfMemory = true;
+        png_destroy_read_struct(&job.png, &job.info, nullptr);
+        return false;
+    }
     for (png_uint_32 y = 0; y < height; ++y)  // files store the top row first; Image8 the bottom first
         (*job.rows)[y] = job.out->rgba.data() + static_cast<std::size_t>(height - 1 - y) * rowBytes;
     png_read_image(job.png, job.rows->data());
@@ -111,22 +135,32 @@ bool decodeInto(Job& job) {
 
 }  // namespace
 
-Result<Image8> decodePng(std::span<const unsigned char> bytes, int maxSide, const std::string& name) {
+Result<Image8> decodePng(std::span<const unsigned char> bytes, const DecodeLimits& limits, const std::string& name) {
     Image8 image;
     std::vector<png_bytep> rows;
     Job job{};
     job.data = bytes.data();
     job.size = bytes.size();
-    job.maxSide = maxSide;
+    job.limits = limits;
+    job.deadline = std::chrono::steady_clock::now() +
+                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(limits.maxSeconds));
     job.out = &image;
     job.rows = &rows;
     if (decodeInto(job)) return image;
-    if (job.tooLarge) return imageTooLarge(name, image.width, image.height, maxSide);
+    if (job.tooLarge) return imageTooLarge(name, image.width, image.height, limits.maxSide);
+    if (job.outOfMemory) return notEnoughMemory(name, "decoding the PNG", pictureMemoryText(image.width, image.height));
+    if (job.tooSlow)
+        return decodeTooSlow(name, limits, "in a " + std::to_string(image.width) + "x" + std::to_string(image.height) + " PNG");
     if (job.tooShort)
         return fileError(name,
                          "cannot decode image: the PNG declares " + std::to_string(image.width) + "x" +
                              std::to_string(image.height) + " but the file is too small to hold it (a truncated file?)",
                          Code::ImageDecode);
+    // libpng's own allocations ("Out of memory", "Insufficient memory") fail with a message only.
+    if (std::strstr(job.message, "memory"))
+        return notEnoughMemory(name, "decoding the PNG",
+                               "more memory than toyhost could get (" + std::string(job.message) + ", " +
+                                   std::to_string(image.width) + "x" + std::to_string(image.height) + ")");
     return fileError(name, std::string("cannot decode image: ") + job.message, Code::ImageDecode);
 }
 

@@ -10,12 +10,14 @@
 #include <string>
 
 #include "core/Result.h"
+#include "image/DecodeLimits.h"
 #include "image/Image.h"
 
 namespace toyhost {
 
 // Decodes `bytes` (a whole PNG file) to RGBA8, rows bottom first. `name` is the file the bytes
-// came from (errors name it); a side longer than `maxSide` is refused from the header.
-Result<Image8> decodePng(std::span<const unsigned char> bytes, int maxSide, const std::string& name);
+// came from (errors name it); a side longer than `limits.maxSide` is refused from the header, and
+// the decode stops when it takes longer than `limits.maxSeconds`.
+Result<Image8> decodePng(std::span<const unsigned char> bytes, const DecodeLimits& limits, const std::string& name);
 
 }  // namespace toyhost

@@ -25,17 +25,32 @@ namespace {
 
 constexpr long long kMaxSide = defaults::kMaxCanvasSide;
 
-// Collects every problem with its location so the user sees them all in one run.
+// Collects the problems with their locations so the user sees them together in one run, up to
+// defaults::kMaxManifestProblems: then the loops over the manifest stop (full()), and the error ends
+// with a note saying so (how many more there are is not known: they were not looked for).
 class Problems {
 public:
     explicit Problems(std::string file) : file_(std::move(file)) {}
     // `field` is the JSON path; `pass`/`channel` are set when the problem is about one.
     void add(const std::string& field, const std::string& message, Code code = Code::ManifestValue,
              std::optional<PassId> pass = std::nullopt, int channel = -1) {
+        if (full()) return;
         diagnostics_.push_back(fieldDiagnostic(file_, field, message, code, pass, channel));
     }
     bool empty() const { return diagnostics_.empty(); }
-    Error toError() const { return Error(diagnostics_); }
+    bool full() const { return diagnostics_.size() >= defaults::kMaxManifestProblems; }
+    Error toError() const {
+        std::vector<Diagnostic> all = diagnostics_;
+        if (full()) {
+            Diagnostic note;
+            note.severity = Severity::Notice;
+            note.file = file_;
+            note.message = "stopped after " + std::to_string(all.size()) +
+                           " problems; the rest of the manifest was not checked (fix these and run again)";
+            all.push_back(std::move(note));
+        }
+        return Error(std::move(all));
+    }
 
 private:
     std::string file_;
@@ -48,6 +63,7 @@ void rejectUnknownFields(const json& object, const std::set<std::string>& known,
                          const std::string& where, Problems& problems) {
     const std::vector<std::string> candidates(known.begin(), known.end());
     for (const auto& [key, _] : object.items()) {
+        if (problems.full()) return;
         if (known.count(key)) continue;
         std::string list;
         for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
@@ -210,6 +226,7 @@ private:
             return;
         }
         for (const auto& [id, file] : it->items()) {
+            if (problems_.full()) return;
             const std::string where = "media." + quote(id);
             if (!file.is_string()) {
                 problems_.add(where, "must be a file path string, not " + describeJsonValue(file), Code::ManifestType);
@@ -226,9 +243,11 @@ private:
     // A key may be a stock id or the user's own media id (channels may then name it), so only a
     // key that is neither a stock id nor used by any channel is an error (most likely a typo).
     void checkMediaOverridesUsed() {
-        for (const auto& [id, file] : desc_.mediaOverrides)
+        for (const auto& [id, file] : desc_.mediaOverrides) {
+            if (problems_.full()) return;
             if (!findStockMedia(id) && !mediaRefs_.count(id))
                 problems_.add("media." + quote(id), "not a stock media id, and no channel uses it", Code::ManifestUnused);
+        }
     }
 
     void readPasses(const json& root) {
@@ -239,6 +258,7 @@ private:
             return;
         }
         for (const auto& [name, body] : it->items()) {
+            if (problems_.full()) return;
             const std::string where = "passes." + quote(name);
             const bool sound = name == "Sound";
             std::optional<PassId> id = sound ? std::optional<PassId>(PassId::Sound) : passFromName(name);
@@ -255,6 +275,7 @@ private:
             }
             readPass(*id, body, where, sound);
         }
+        if (problems_.full()) return;
         // A misspelt "Image" was reported with its suggestion already: once is enough.
         bool imageMisspelt = false;
         for (const auto& [name, body] : it->items())
@@ -307,6 +328,7 @@ private:
             return;
         }
         for (const auto& [key, value] : channels.items()) {
+            if (problems_.full()) return;
             int index = -1;
             if (key.size() == 9 && key.rfind("iChannel", 0) == 0 && key[8] >= '0' && key[8] <= '3')
                 index = key[8] - '0';
@@ -341,6 +363,7 @@ private:
         std::set<std::string> known(sourceKeys.begin(), sourceKeys.end());
         known.insert({"filter", "wrap", "vflip", "kind"});
         rejectUnknownFields(value, known, where, problems_);
+        if (problems_.full()) return;
         int sources = 0;
         for (const std::string& key : sourceKeys) sources += value.contains(key);
         // {"bufer": "A"} was reported as a near miss of "buffer": do not also say a source is missing.

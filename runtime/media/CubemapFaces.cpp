@@ -8,6 +8,7 @@
 
 #include "core/AtomicFile.h"
 #include "image/ImageFile.h"
+#include "image/PixelMemory.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -246,7 +247,8 @@ Result<CubeFaces8> cubemapFromCross(const Image8& image) {
         Image8& out = cube.faces[face];
         out.width = n;
         out.height = n;
-        out.rgba.resize(frameBytes(n, n, PixelFormat::Rgba8));
+        if (!tryResize(out.rgba, frameBytes(n, n, PixelFormat::Rgba8)))
+            return notEnoughMemory("", "cutting the cubemap image into faces", pictureMemoryText(n, n, 6, "faces"));
         // Rows are bottom first: the square in row `cell.row` from the top starts at this Image8 row.
         const int bottomRow = (squaresDown - 1 - cell.row) * n;
         const std::uint8_t* source = image.rgba.data() + static_cast<std::size_t>(cell.column) * faceRowBytes;

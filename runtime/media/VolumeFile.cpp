@@ -1,9 +1,11 @@
 #include "media/VolumeFile.h"
 
 #include <algorithm>
+#include <new>
 #include <string>
 
 #include "core/AtomicFile.h"
+#include "image/PixelMemory.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -29,7 +31,13 @@ Result<Volume8> readVolumeFile(const fs::path& path) {
     const std::string name = path.string();
     auto bad = [&](const std::string& message) { return fileError(name, "cannot read volume: " + message, Code::VolumeDecode); };
     if (Status regular = checkRegularFile(path, "volume"); !regular) return regular.error();
-    Result<std::string> bytes = readTextFile(path, kMaxVolumeBytes + kVolumeHeaderBytes);
+    Result<std::string> bytes = Error("unread");
+    try {
+        bytes = readTextFile(path, kMaxVolumeBytes + kVolumeHeaderBytes);
+    } catch (const std::bad_alloc&) {
+        std::error_code ec;
+        return notEnoughMemory(name, "reading the volume", memoryText(fs::file_size(path, ec)));
+    }
     if (!bytes) return bytes.error();
     const std::string& data = *bytes;
     if (data.size() < kVolumeHeaderBytes)
@@ -69,8 +77,9 @@ Result<Volume8> readVolumeFile(const fs::path& path) {
     volume.depth = static_cast<int>(sizes[2]);
     volume.channels = static_cast<int>(channels);
     volume.floats = format == 10;
-    volume.voxels.assign(reinterpret_cast<const std::uint8_t*>(data.data()) + kVolumeHeaderBytes,
-                         reinterpret_cast<const std::uint8_t*>(data.data()) + data.size());
+    if (!tryResize(volume.voxels, data.size() - kVolumeHeaderBytes))
+        return notEnoughMemory(name, "the volume's voxels", memoryText(data.size() - kVolumeHeaderBytes) + " (" + declared + ")");
+    std::copy(data.begin() + kVolumeHeaderBytes, data.end(), reinterpret_cast<char*>(volume.voxels.data()));
     return volume;
 }
 

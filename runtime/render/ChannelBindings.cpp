@@ -1,11 +1,31 @@
 #include "render/ChannelBindings.h"
 
+#include <new>
 #include <string>
 
 #include "core/Defaults.h"
 #include "gl/GlContext.h"
+#include "image/PixelMemory.h"
 
 namespace toyhost {
+
+namespace {
+
+// Uploads a picture through `textures`. The CPU copies an upload makes (the mip levels, a flipped
+// copy) can fail for memory: then an error saying what the picture needed, never std::bad_alloc
+// out of the renderer.
+Result<GLuint> uploadPicture(InputTextures& textures, const InputTextures::Key& key,
+                             const std::function<InputTexture()>& upload, const ChannelDesc& channel,
+                             const std::string& needs) {
+    try {
+        return textures.picture(key, upload).texture.id();
+    } catch (const std::bad_alloc&) {
+        return notEnoughMemory(channel.media.empty() ? channel.file.string() : channel.media,
+                               "uploading it with its mip levels", needs);
+    }
+}
+
+}  // namespace
 
 GLuint InputTextures::keyboard() {
     if (!keyboard_) keyboard_.emplace();
@@ -82,14 +102,20 @@ Result<PassBindings> bindChannels(const PassDesc& pass, const std::array<Sampler
                                             "(GL_MAX_TEXTURE_SIZE " + std::to_string(limit) + ")",
                                         Code::GlTextureSize),
                                   c);
-                binding.texture = textures.picture(key, [&] { return uploadImage(*pixels, sampler); }).texture.id();
+                Result<GLuint> texture = uploadPicture(textures, key, [&] { return uploadImage(*pixels, sampler); }, channel,
+                                                       pictureMemoryText(pixels->width, pixels->height));
+                if (!texture) return inPass(name, texture.error(), c);
+                binding.texture = *texture;
                 binding.resolution = {float(pixels->width), float(pixels->height), 1};
                 break;
             }
             case ChannelSource::Cubemap: {
                 const CubeFaces8* faces = media.findCubemap(channel);
                 if (!faces) return missing("cubemap");
-                binding.texture = textures.picture(key, [&] { return uploadCubemap(*faces, sampler); }).texture.id();
+                Result<GLuint> texture = uploadPicture(textures, key, [&] { return uploadCubemap(*faces, sampler); }, channel,
+                                                       pictureMemoryText(faces->size, faces->size, 6, "faces"));
+                if (!texture) return inPass(name, texture.error(), c);
+                binding.texture = *texture;
                 // The site leaves iChannelResolution at 0 for a cubemap input (only Cube A gets a
                 // size): effect.js Paint_Image sets no resolution for it.
                 binding.resolution = {0, 0, 0};
@@ -98,7 +124,12 @@ Result<PassBindings> bindChannels(const PassDesc& pass, const std::array<Sampler
             case ChannelSource::Volume: {
                 const Volume8* volume = media.findVolume(channel);
                 if (!volume) return missing("volume");
-                binding.texture = textures.picture(key, [&] { return uploadVolume(*volume, sampler); }).texture.id();
+                Result<GLuint> texture =
+                    uploadPicture(textures, key, [&] { return uploadVolume(*volume, sampler); }, channel,
+                                  memoryText(volume->voxels.size()) + " of voxels (" + std::to_string(volume->width) + "x" +
+                                      std::to_string(volume->height) + "x" + std::to_string(volume->depth) + ")");
+                if (!texture) return inPass(name, texture.error(), c);
+                binding.texture = *texture;
                 binding.resolution = {float(volume->width), float(volume->height), float(volume->depth)};
                 break;
             }

@@ -15,6 +15,7 @@
 
 #include "TestFolder.h"
 #include "image/ImageFile.h"
+#include "image/JpegDecode.h"
 
 using namespace toyhost;
 namespace fs = std::filesystem;
@@ -81,6 +82,43 @@ void setDeclaredSize(std::vector<std::uint8_t>& file, int width, int height) {
     file[at + 1] = static_cast<std::uint8_t>(height & 255);
     file[at + 2] = static_cast<std::uint8_t>(width >> 8);
     file[at + 3] = static_cast<std::uint8_t>(width & 255);
+}
+
+void append(std::vector<std::uint8_t>& bytes, std::initializer_list<int> values) {
+    for (int v : values) bytes.push_back(static_cast<std::uint8_t>(v));
+}
+
+// A grey baseline JPEG coded as tightly as Huffman coding allows: one symbol in each table (DC
+// difference 0, AC end of block), each a 1-bit code, so a block costs 2 bits. The scan holds
+// `codedBlocks` blocks (zero bits: mid-grey); libjpeg decodes any blocks past them as the same grey.
+std::vector<std::uint8_t> tightGreyJpeg(int width, int height, std::size_t codedBlocks) {
+    std::vector<std::uint8_t> bytes;
+    append(bytes, {0xFF, 0xD8, 0xFF, 0xDB, 0, 67, 0});  // SOI, DQT: table 0 of 8-bit ones
+    bytes.insert(bytes.end(), 64, 1);
+    append(bytes, {0xFF, 0xC0, 0, 11, 8, height >> 8, height & 255, width >> 8, width & 255, 1, 1, 0x11, 0});
+    append(bytes, {0xFF, 0xC4, 0, 20, 0x00, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x00});  // DC: "0" = 0
+    append(bytes, {0xFF, 0xC4, 0, 20, 0x10, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x00});  // AC: "0" = EOB
+    append(bytes, {0xFF, 0xDA, 0, 8, 1, 1, 0x00, 0, 63, 0});
+    bytes.insert(bytes.end(), (codedBlocks * 2 + 7) / 8, 0);
+    append(bytes, {0xFF, 0xD9});
+    return bytes;
+}
+
+// A grey progressive JPEG: a first DC scan coding every block with a 1-bit code (DC difference 0),
+// then `emptyScans` AC scans without data, each of which libjpeg still walks block by block.
+std::vector<std::uint8_t> greyJpegWithEmptyScans(int side, int emptyScans) {
+    std::vector<std::uint8_t> bytes;
+    append(bytes, {0xFF, 0xD8, 0xFF, 0xDB, 0, 67, 0});
+    bytes.insert(bytes.end(), 64, 1);
+    append(bytes, {0xFF, 0xC2, 0, 11, 8, side >> 8, side & 255, side >> 8, side & 255, 1, 1, 0x11, 0});
+    append(bytes, {0xFF, 0xC4, 0, 20, 0x00, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x00});
+    append(bytes, {0xFF, 0xC4, 0, 20, 0x10, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x00});
+    append(bytes, {0xFF, 0xDA, 0, 8, 1, 1, 0x00, 0, 0, 0});
+    const std::size_t blocks = std::size_t((side + 7) / 8) * std::size_t((side + 7) / 8);
+    bytes.insert(bytes.end(), (blocks + 7) / 8, 0);
+    for (int i = 0; i < emptyScans; ++i) append(bytes, {0xFF, 0xDA, 0, 8, 1, 1, 0x00, 1, 63, 0});
+    append(bytes, {0xFF, 0xD9});
+    return bytes;
 }
 
 // Pixel (x, y) of a decoded image, y counted from the TOP row as in the file.
@@ -211,16 +249,100 @@ TEST(JpegDecode, ASideOverTheTextureLimitIsRefusedFromTheHeader) {
     EXPECT_NE(image.error().text().find("20000x8"), std::string::npos) << image.error().text();
 }
 
-// A few hundred bytes can declare a 16000x16000 progressive JPEG, whose DCT coefficients alone
-// need 1.5 GB: libjpeg's working memory is capped, so the file is refused instead of filling memory.
+// A 16000x16000 progressive JPEG's DCT coefficients alone need 1.5 GB: libjpeg's working memory is
+// capped, so the file is refused instead of filling memory. (Comment segments make the file large
+// enough for the blocks it declares, which a smaller file is refused for before this.)
 TEST(JpegDecode, AHugeDeclaredProgressiveImageIsRefusedNotAllocated) {
     TempFolder folder;
     std::vector<std::uint8_t> bytes = encodeJpeg(16, 16, std::vector<std::uint8_t>(16 * 16 * 3, 60), {JCS_RGB, true, false});
     setDeclaredSize(bytes, 16000, 16000);
+    std::vector<std::uint8_t> comment{0xFF, 0xFE, 0xFF, 0xFF};
+    comment.resize(2 + 0xFFFF, ' ');
+    for (int i = 0; i < 24; ++i) bytes.insert(bytes.begin() + 2, comment.begin(), comment.end());
     const Result<Image8> image = loadImageFile(writeFile(folder.path / "huge.jpg", bytes));
     ASSERT_FALSE(image.ok());
     EXPECT_EQ(image.error().first().code, Code::ImageDecode);
     EXPECT_NE(image.error().text().find("needs more than 512 MiB of working memory"), std::string::npos)
         << image.error().text();
     EXPECT_NE(image.error().text().find("16000x16000"), std::string::npos) << image.error().text();
+}
+
+// Huffman coding spends at least a bit on every 8x8 block: a file with fewer bits than the blocks
+// its header declares cannot hold its picture. The most tightly coded file (2 bits a block)
+// decodes; the same data declaring four times the blocks is refused from the header, naming the
+// file and the sizes (libjpeg alone fills the rest with grey, after allocating the whole picture).
+TEST(JpegDecode, AFileWithFewerBitsThanItsDeclaredBlocksIsRefusedFromTheHeader) {
+    TempFolder folder;
+    const Result<Image8> tight = loadImageFile(writeFile(folder.path / "tight.jpg", tightGreyJpeg(1024, 1024, 128 * 128)));
+    ASSERT_TRUE(tight.ok()) << tight.error().text();
+    EXPECT_EQ(tight->width, 1024);
+    EXPECT_EQ(pixelFromTop(*tight, 1000, 1000)[0], 128);
+
+    const fs::path file = writeFile(folder.path / "claims-more.jpg", tightGreyJpeg(2048, 2048, 128 * 128));
+    const Result<Image8> image = loadImageFile(file);
+    ASSERT_FALSE(image.ok()) << "decoded " << image->width << "x" << image->height;
+    EXPECT_EQ(image.error().first().code, Code::ImageDecode);
+    const std::string text = image.error().text();
+    EXPECT_NE(text.find(file.string()), std::string::npos) << text;
+    EXPECT_NE(text.find("2048x2048"), std::string::npos) << text;
+    EXPECT_NE(text.find("65536 blocks"), std::string::npos) << text;
+    EXPECT_NE(text.find("at least 8192 bytes"), std::string::npos) << text;
+    EXPECT_NE(text.find("the file has " + std::to_string(fs::file_size(file)) + " bytes"), std::string::npos) << text;
+}
+
+// The report's case: a couple of kilobytes of colour JPEG (64x48 of data) whose header claims
+// 16000x16000 was decoded into a 1 GB picture. It is refused before anything is allocated.
+TEST(JpegDecode, A2KBFileDeclaring16000x16000IsRefusedBeforeAllocating) {
+    TempFolder folder;
+    std::vector<std::uint8_t> rgb;
+    for (int i = 0; i < 64 * 48; ++i) rgb.insert(rgb.end(), {static_cast<std::uint8_t>(i * 7), static_cast<std::uint8_t>(i), 90});
+    for (bool progressive : {false, true}) {
+        SCOPED_TRACE(progressive ? "progressive" : "baseline");
+        std::vector<std::uint8_t> bytes = encodeJpeg(64, 48, rgb, {JCS_RGB, progressive, true});
+        setDeclaredSize(bytes, 16000, 16000);
+        const Result<Image8> image = loadImageFile(writeFile(folder.path / "claims-16000.jpg", bytes));
+        ASSERT_FALSE(image.ok());
+        EXPECT_EQ(image.error().first().code, Code::ImageDecode);
+        EXPECT_NE(image.error().text().find("declares 16000x16000, 6000000 blocks"), std::string::npos)
+            << image.error().text();
+    }
+}
+
+// Every scan of a progressive JPEG makes the decoder pass over the picture again, and a scan can be
+// a dozen bytes: 330 KB of 20000 scans kept libjpeg busy for minutes. 500 scans (the limit) decode;
+// one more is refused as soon as the decoder reaches it, naming the file.
+TEST(JpegDecode, AProgressiveJpegOfMoreScansThanTheLimitIsRefused) {
+    TempFolder folder;
+    ASSERT_EQ(DecodeLimits{}.maxScans, 500);
+    const Result<Image8> atLimit = loadImageFile(writeFile(folder.path / "500.jpg", greyJpegWithEmptyScans(64, 499)));
+    ASSERT_TRUE(atLimit.ok()) << atLimit.error().text();
+    EXPECT_EQ(pixelFromTop(*atLimit, 10, 10)[0], 128);
+
+    const fs::path file = writeFile(folder.path / "bomb.jpg", greyJpegWithEmptyScans(2048, 20000));
+    const Result<Image8> image = loadImageFile(file);
+    ASSERT_FALSE(image.ok());
+    EXPECT_EQ(image.error().first().code, Code::ImageDecode);
+    EXPECT_NE(image.error().text().find(file.string()), std::string::npos) << image.error().text();
+    EXPECT_NE(image.error().text().find("more than 500 scans"), std::string::npos) << image.error().text();
+}
+
+// Decoding stops when it outlasts the time limit (a file of slow scans under the scan limit, an
+// arithmetic-coded bomb): with no time at all, even a small image is refused, naming the file and
+// where it stopped; with the default limit it decodes.
+TEST(JpegDecode, ADecodeThatOutlastsItsTimeLimitIsStopped) {
+    std::vector<std::uint8_t> rgb(32 * 32 * 3, 77);
+    for (bool progressive : {false, true}) {
+        SCOPED_TRACE(progressive ? "progressive" : "baseline");
+        const std::vector<std::uint8_t> bytes = encodeJpeg(32, 32, rgb, {JCS_RGB, progressive, true});
+        DecodeLimits none;
+        none.maxSeconds = 0;
+        const Result<Image8> stopped = decodeJpeg(bytes, none, "slow.jpg");
+        ASSERT_FALSE(stopped.ok());
+        EXPECT_EQ(stopped.error().first().code, Code::ImageDecode);
+        EXPECT_EQ(stopped.error().first().file, "slow.jpg");
+        EXPECT_NE(stopped.error().text().find("longer than the 0 s one image may take (stopped in scan 1 of a 32x32 JPEG)"),
+                  std::string::npos)
+            << stopped.error().text();
+        EXPECT_TRUE(decodeJpeg(bytes, DecodeLimits{}, "slow.jpg").ok());
+    }
 }

@@ -16,6 +16,7 @@
 
 #include "TestFolder.h"
 #include "image/ImageFile.h"
+#include "image/PngDecode.h"
 
 using namespace toyhost;
 namespace fs = std::filesystem;
@@ -195,4 +196,22 @@ TEST(PngDecode, AFileMissingOnlyItsEndChunkDecodes) {
     const Result<Image8> image = loadImageFile(folder.path / "no-iend.png");
     ASSERT_TRUE(image.ok()) << image.error().text();
     EXPECT_EQ(pixel(*image, 3, 3), (std::vector<int>{9, 9, 9, 255}));
+}
+
+// A PNG decode stops too when it outlasts the time limit (checked after every row): with no time at
+// all a small image is refused, naming the file; with the default limit it decodes.
+TEST(PngDecode, ADecodeThatOutlastsItsTimeLimitIsStopped) {
+    TempFolder folder;
+    const fs::path file = folder.path / "grey.png";
+    writePngFile(file, 8, 4, std::vector<std::vector<png_byte>>(4, std::vector<png_byte>(8 * 3, 90)), {});
+    const std::vector<std::uint8_t> bytes = readBytes(file);
+    DecodeLimits none;
+    none.maxSeconds = 0;
+    const Result<Image8> stopped = decodePng(bytes, none, file.string());
+    ASSERT_FALSE(stopped.ok());
+    EXPECT_EQ(stopped.error().first().code, Code::ImageDecode);
+    EXPECT_EQ(stopped.error().first().file, file.string());
+    EXPECT_NE(stopped.error().text().find("longer than the 0 s one image may take (stopped in a 8x4 PNG)"), std::string::npos)
+        << stopped.error().text();
+    EXPECT_TRUE(decodePng(bytes, DecodeLimits{}, file.string()).ok());
 }

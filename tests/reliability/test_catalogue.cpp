@@ -12,6 +12,7 @@
 // executable with --gtest_filter for it, and the case left out of gtest_discover_tests with
 // TEST_FILTER), so that it fails until fixed and its fix shows as a failure to remove the mark.
 #include "GlTestSupport.h"
+#include "UniformPng.h"
 
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -100,6 +101,22 @@ void mainImage(out vec4 c, in vec2 p) {
 )";
 
 using Files = std::vector<std::pair<std::string, std::string>>;
+
+// A grey JPEG declaring width x height whose data codes `codedBlocks` 8x8 blocks as tightly as
+// Huffman coding can (1-bit codes for DC difference 0 and end of block), then `emptyScans` empty
+// AC scans (progressive when there are any: each one makes libjpeg visit every block again).
+std::string greyJpeg(int width, int height, std::size_t codedBlocks, int emptyScans = 0) {
+    std::string b = "\xFF\xD8\xFF\xDB"s + '\0' + char(67) + '\0' + std::string(64, '\1');
+    const char sof = emptyScans ? '\xC2' : '\xC0';
+    b += "\xFF"s + sof + '\0' + char(11) + char(8) + char(height >> 8) + char(height & 255) + char(width >> 8) +
+         char(width & 255) + char(1) + char(1) + char(0x11) + '\0';
+    for (char table : {'\x00', '\x10'}) b += "\xFF\xC4"s + '\0' + char(20) + table + char(1) + std::string(16, '\0');
+    const std::string dcScan = "\xFF\xDA"s + '\0' + char(8) + char(1) + char(1) + '\0' + '\0' + char(emptyScans ? 0 : 63) + '\0';
+    b += dcScan + std::string(emptyScans ? (codedBlocks + 7) / 8 : (codedBlocks * 2 + 7) / 8, '\0');
+    for (int i = 0; i < emptyScans; ++i) b += "\xFF\xDA"s + '\0' + char(8) + char(1) + char(1) + '\0' + char(1) + char(63) + '\0';
+    return b + "\xFF\xD9";
+}
+
 
 // toy/manifest.json (the given text) and toy/image.glsl, then `extra` (which may replace them).
 Files toy(const std::string& manifest = kManifest, Files extra = {}) {
@@ -314,6 +331,17 @@ std::vector<Case> catalogue() {
     add({"TextureNotAnImage",
          toy(manifestWithChannel(R"({"texture": "bad.png"})"), {{"toy/bad.png", "\x13\x37 not an image at all \x00\xff\xfe"s}}),
          runToy(), 1, {"@D/toy/bad.png", "Image / iChannel0", "decode"}, "image.decode"});
+    // A few hundred bytes declaring 16000x16000 (once decoded into 1 GB, 3.7 GB with its mip levels
+    // and texture, for 9 s): refused from the header as too small for its blocks.
+    add({"TextureJpegDeclaringMoreThanItHolds",
+         toy(manifestWithChannel(R"({"texture": "claims.jpg"})"), {{"toy/claims.jpg", greyJpeg(16000, 16000, 64)}}),
+         runToy(), 1, {"@D/toy/claims.jpg", "Image / iChannel0", "16000x16000", "4000000 blocks", "500000 bytes"},
+         "image.decode"});
+    // Every scan of a progressive JPEG is a pass over the picture: 330 KB of 20000 scans decoded for
+    // minutes. More than 500 scans are refused when the decoder reaches the 501st.
+    add({"TextureJpegOfTooManyScans",
+         toy(manifestWithChannel(R"({"texture": "scans.jpg"})"), {{"toy/scans.jpg", greyJpeg(2048, 2048, 65536, 1000)}}),
+         runToy(), 1, {"@D/toy/scans.jpg", "Image / iChannel0", "more than 500 scans"}, "image.decode"});
     add({"KeyboardWithFilter", toy(manifestWithChannel(R"({"keyboard": true, "filter": "linear"})")), runToy(), 1,
          {kManifestPath, "passes.\"Image\".channels.iChannel0", "\"filter\""}, "manifest.value"});
     add({"VflipOnBuffer", toy(manifestWithBufferA(R"({"buffer": "A", "vflip": true})")), runToy(), 1,
@@ -673,6 +701,38 @@ TEST(CatalogueCrash, HugeShaderDoesNotCrashToyhost) {
     EXPECT_TRUE(clean) << "command: toyhost " << arguments << "\nexit code " << result.exitCode << ", " << errors
                        << " error lines\n" << result.output;
     if (result.exitCode != 0) EXPECT_TRUE(holdsNoFile(dir / "out") || !fs::exists(dir / "out"));
+}
+
+}  // namespace
+}  // namespace toyhost::testing
+
+namespace toyhost::testing {
+namespace {
+
+// A valid 16384x16384 PNG (1 GiB decoded) under `ulimit -v 2097152` aborted the CLI with an
+// uncaught std::bad_alloc (exit 134): it is one error naming the file and what it needed.
+TEST(CatalogueMemory, AHugeTextureUnderALowMemoryLimitIsAnErrorNotAnAbort) {
+    const fs::path dir = freshOutputDir("catalogue/HugeTextureLowMemory");
+    fs::create_directories(dir / "toy");
+    std::ofstream(dir / "toy" / "manifest.json") << manifestWithChannel(R"({"texture": "huge.png"})");
+    std::ofstream(dir / "toy" / "image.glsl") << kImage;
+    ASSERT_TRUE(writeUniformPng(dir / "toy" / "huge.png", 16384, 16384, {40, 90, 200, 255}));
+    const rlimit noCore{0, 0};
+    ::setrlimit(RLIMIT_CORE, &noCore);  // an abort must not leave a core file
+    const std::string command = "ulimit -v 2097152; MESA_SHADER_CACHE_DISABLE=true '" + toyhostBinary().string() + "' run '" +
+                                dir.string() + "/toy' --size 16x8 --frames 1 --quiet --out '" + dir.string() +
+                                "/out/f_%04d.png' 2>&1; echo \"exit $?\"";
+    std::ofstream(dir / "run.sh") << command << "\n";
+    const std::string output =
+        runCommand("/usr/bin/env", "-u DISPLAY -u WAYLAND_DISPLAY bash '" + (dir / "run.sh").string() + "'").output;
+    EXPECT_NE(output.find("exit 1\n"), std::string::npos) << output;
+    const std::vector<std::string> errors = errorLines(output);
+    ASSERT_EQ(errors.size(), 1u) << output;
+    EXPECT_NE(errors[0].find((dir / "toy" / "huge.png").string()), std::string::npos) << output;
+    EXPECT_NE(errors[0].find("not enough memory"), std::string::npos) << output;
+    EXPECT_NE(errors[0].find("1.0 GiB for 16384x16384 RGBA"), std::string::npos) << output;
+    EXPECT_NE(errors[0].find("[image.too-large]"), std::string::npos) << output;
+    EXPECT_TRUE(holdsNoFile(dir / "out") || !fs::exists(dir / "out"));
 }
 
 }  // namespace
