@@ -111,6 +111,10 @@ class Session:
         all): presses and releases follow from the difference. ``events``: further InputEvents,
         applied after those. ``time``: iTime of this frame instead of the fixed step, with
         iTimeDelta ``time_delta`` (default 1/fps) and iFrameRate ``frame_rate`` (default fps)."""
+        if time is None:  # the fixed step sets both; a value given alone would be silently ignored
+            for name, value in (("time_delta", time_delta), ("frame_rate", frame_rate)):
+                if value is not None:
+                    raise args.usage(name, "is given with time=... only (the fixed step sets it otherwise)")
         return self._native.step(self._events(mouse, keys, events), args.optional(args.real, "time", time),
                                  1.0 / self._fps if time_delta is None else args.real("time_delta", time_delta),
                                  self._fps if frame_rate is None else args.real("frame_rate", frame_rate))
@@ -256,7 +260,7 @@ class Session:
             self._keys_held = held
         for event in events:
             if not isinstance(event, InputEvent):
-                raise TypeError(f"events: expected toyhost.InputEvent, got {event!r}")
+                raise args.usage("events", f"expected toyhost.InputEvent, got {event!r}")
             out.append(event)
         return out
 

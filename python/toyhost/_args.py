@@ -15,8 +15,11 @@ INT_MIN, INT_MAX = -2**31, 2**31 - 1
 
 
 def usage(name, message):
-    error = UsageError(f"{name}: {message}")
+    """A UsageError naming the parameter, in the form of the native layer's ("error: size: ...
+    [usage]"), with ``field`` and ``message`` set as theirs are."""
+    error = UsageError(f"error: {name}: {message} [usage]")
     error.field = name
+    error.message = message
     return error
 
 
@@ -29,6 +32,8 @@ def integer(name, value, minimum=INT_MIN, maximum=INT_MAX):
             raise usage(name, f"expected a whole number, got {value!r}")
     value = int(value)
     if not minimum <= value <= maximum:
+        if (minimum, maximum) == (INT_MIN, INT_MAX):
+            raise usage(name, f"{value} is beyond what a 32-bit integer holds")
         raise usage(name, f"{value} is out of range ({minimum}..{maximum})")
     return value
 

@@ -24,7 +24,7 @@ std::string number(double value) {
 }
 
 Error settingError(const char* setting, std::string message) {
-    Error error(std::string(setting) + ": " + message, Code::Usage);
+    Error error(std::move(message), Code::Usage);
     error.diagnostics.front().field = setting;
     return error;
 }

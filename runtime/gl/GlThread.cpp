@@ -4,6 +4,8 @@
 #include <pthread.h>
 #include <unistd.h>
 
+#include <utility>
+
 namespace toyhost {
 
 Result<GlProcess> prepareGlProcess() {
@@ -29,21 +31,35 @@ GlThread::GlThread(std::function<void()> job) : job_(std::move(job)) {
     pthread_attr_t attributes;
     pthread_attr_init(&attributes);
     pthread_attr_setstacksize(&attributes, kGlThreadStackBytes);
-    auto run = [](void* data) -> void* {
-        (*static_cast<std::function<void()>*>(data))();
+    auto start = [](void* self) -> void* {
+        static_cast<GlThread*>(self)->run();
         return nullptr;
     };
-    started_ = pthread_create(&thread_, &attributes, run, &job_) == 0;
+    started_ = pthread_create(&thread_, &attributes, start, this) == 0;
     pthread_attr_destroy(&attributes);
 }
 
-GlThread::~GlThread() { join(); }
+GlThread::~GlThread() {
+    try {
+        join();
+    } catch (...) {  // a destructor does not throw: the job's failure was for join() to give
+    }
+}
+
+void GlThread::run() {
+    try {
+        job_();
+    } catch (...) {
+        failure_ = std::current_exception();
+    }
+}
 
 void GlThread::join() {
     if (joined_) return;
     joined_ = true;
     if (started_) pthread_join(thread_, nullptr);
-    else job_();
+    else run();
+    if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
 }
 
 void runOnGlThread(const std::function<void()>& job) {

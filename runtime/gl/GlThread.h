@@ -8,6 +8,7 @@
 
 #include <array>
 #include <chrono>
+#include <exception>
 #include <functional>
 #include <pthread.h>
 
@@ -44,10 +45,15 @@ public:
     ~GlThread();  // joins
     GlThread(const GlThread&) = delete;
     GlThread& operator=(const GlThread&) = delete;
+    // Waits for the job; an exception it threw (bad_alloc) is thrown again here, on the caller's
+    // thread, instead of ending the process from the GL thread.
     void join();
 
 private:
+    void run();
+
     std::function<void()> job_;
+    std::exception_ptr failure_;
     pthread_t thread_{};
     bool started_ = false;
     bool joined_ = false;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <new>
 #include <string>
 #include <unistd.h>
 
@@ -41,8 +42,16 @@ int commandLine(int argc, char** argv, bool& comparing);
 
 int main(int argc, char** argv) {
     bool comparing = false;
-    const int code = commandLine(argc, argv, comparing);
-    return afterStdout(code, comparing ? kExitUsage : kExitFailure);
+    try {
+        const int code = commandLine(argc, argv, comparing);
+        return afterStdout(code, comparing ? kExitUsage : kExitFailure);
+    } catch (const std::bad_alloc&) {
+        // The last resort: the library turns the allocations it can foresee (images, sound,
+        // frames) into errors naming their size; one it could not is still a message, not an abort.
+        std::cerr << "toyhost: error: out of memory (a larger canvas, image or --capture-memory than this "
+                     "machine or its ulimit allows?) [internal]\n";
+        return kExitFailure;
+    }
 }
 
 namespace {
