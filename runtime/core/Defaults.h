@@ -62,7 +62,8 @@ inline constexpr std::size_t kMaxManifestProblems = 50;
 // every block of a component once per scan, and a scan can be a dozen bytes: a 330 KB file of
 // 20000 scans kept libjpeg busy for minutes. Encoders write 10 scans (libjpeg's progression) to a
 // few dozen; 500 is the limit libjpeg-turbo's own fuzz targets set (TJPARAM_SCANLIMIT, djpeg
-// -maxscans). Whatever else makes a decode slow, it stops after kImageDecodeSeconds: far beyond
+// -maxscans). Whatever else makes a decode slow, it stops after kImageDecodeSeconds of the decoding thread's
+// CPU time (waiting for a core on a loaded machine or a suspension does not count): far beyond
 // the few seconds the largest texture (16384x16384) takes.
 inline constexpr int kMaxJpegScans = 500;
 inline constexpr double kImageDecodeSeconds = 30.0;

@@ -13,7 +13,7 @@ namespace toyhost {
 struct DecodeLimits {
     int maxSide = defaults::kMaxCanvasSide;
     int maxScans = defaults::kMaxJpegScans;            // progressive JPEG scans
-    double maxSeconds = defaults::kImageDecodeSeconds;  // wall-clock time for one image
+    double maxSeconds = defaults::kImageDecodeSeconds;  // CPU time of the decoding thread for one image
 };
 
 // "30 s" (whole seconds when whole, else one decimal).
@@ -27,7 +27,7 @@ inline std::string secondsText(double seconds) {
 // The error for a decode stopped after `limits.maxSeconds`, naming `file`.
 inline Error decodeTooSlow(const std::string& file, const DecodeLimits& limits, const std::string& where) {
     return fileError(file,
-                     "cannot decode image: decoding it takes longer than the " + secondsText(limits.maxSeconds) +
+                     "cannot decode image: decoding it takes longer than the " + secondsText(limits.maxSeconds) + " of CPU time" +
                          " one image may take (stopped " + where + ")",
                      Code::ImageDecode);
 }

@@ -9,6 +9,7 @@
 #include <jerror.h>
 #include <jpeglib.h>
 
+#include "core/ThreadCpuClock.h"
 #include "image/DecodeLimits.h"
 #include "image/PixelMemory.h"
 
@@ -44,7 +45,8 @@ void onMessage(j_common_ptr info, int level) {
     if (level < 0 && info->err->msg_code == JWRN_JPEG_EOF) reinterpret_cast<Errors*>(info->err)->endedEarly = true;
 }
 
-using Clock = std::chrono::steady_clock;
+// The decode's own CPU time: a loaded machine or a suspension does not make a real image too slow.
+using Clock = ThreadCpuClock;
 
 // Why the progress monitor stopped the decode.
 enum class Stopped { No, Scans, Time };

@@ -10,6 +10,7 @@
 
 #include <png.h>
 
+#include "core/ThreadCpuClock.h"
 #include "image/DecodeLimits.h"
 #include "image/PixelMemory.h"
 
@@ -32,7 +33,7 @@ struct Job {
     std::size_t size;
     std::size_t at;  // read position in data
     DecodeLimits limits;
-    std::chrono::steady_clock::time_point deadline;
+    ThreadCpuClock::time_point deadline;
     Image8* out;
     std::vector<png_bytep>* rows;
     char message[256];
@@ -60,7 +61,7 @@ void onRead(png_structp png, png_bytep out, png_size_t length) {
 // Called after each row libpng decodes: the place a decode that outlasts its time is stopped.
 void onRow(png_structp png, png_uint_32, int) {
     auto* job = static_cast<Job*>(png_get_error_ptr(png));
-    if (std::chrono::steady_clock::now() < job->deadline) return;
+    if (ThreadCpuClock::now() < job->deadline) return;
     job->tooSlow = true;
     png_error(png, "too slow");
 }
@@ -142,8 +143,8 @@ Result<Image8> decodePng(std::span<const unsigned char> bytes, const DecodeLimit
     job.data = bytes.data();
     job.size = bytes.size();
     job.limits = limits;
-    job.deadline = std::chrono::steady_clock::now() +
-                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(limits.maxSeconds));
+    job.deadline = ThreadCpuClock::now() +
+                   std::chrono::duration_cast<ThreadCpuClock::duration>(std::chrono::duration<double>(limits.maxSeconds));
     job.out = &image;
     job.rows = &rows;
     if (decodeInto(job)) return image;

@@ -340,7 +340,7 @@ TEST(JpegDecode, ADecodeThatOutlastsItsTimeLimitIsStopped) {
         ASSERT_FALSE(stopped.ok());
         EXPECT_EQ(stopped.error().first().code, Code::ImageDecode);
         EXPECT_EQ(stopped.error().first().file, "slow.jpg");
-        EXPECT_NE(stopped.error().text().find("longer than the 0 s one image may take (stopped in scan 1 of a 32x32 JPEG)"),
+        EXPECT_NE(stopped.error().text().find("longer than the 0 s of CPU time one image may take (stopped in scan 1 of a 32x32 JPEG)"),
                   std::string::npos)
             << stopped.error().text();
         EXPECT_TRUE(decodeJpeg(bytes, DecodeLimits{}, "slow.jpg").ok());

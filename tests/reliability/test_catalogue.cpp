@@ -236,6 +236,11 @@ std::vector<Case> catalogue() {
     add({"EmptyOptionValue", toy(), "run '@D/toy' --size '' --frames 1", 2, {"--size: the value is empty"}, "usage"});
     add({"EmptyValueAfterEquals", toy(), "run '@D/toy' --mouse= --frames 1", 2, {"--mouse: the value after '=' is empty"},
          "usage"});
+    // Once a defect (issue 27): an unknown command said "A subcommand is required".
+    add({"UnknownCommand", toy(), "farm plan '@D/toy'", 2, {"unknown command \"farm\"", "known: run,"}, "usage"});
+    add({"MisspelledCommand", toy(), "rnu '@D/toy'", 2, {"unknown command \"rnu\"", "did you mean \"run\""}, "usage"});
+    add({"ShadertoyGivenAsCommand", toy(), "'@D/toy' --frames 1", 2, {"to run that shadertoy, toyhost run @D/toy"},
+         "usage"});
     add({"EmptyCompareSide", toy(), "compare '' '@D/toy'", 2, {"toyhost compare: argument 2 is empty"}, "usage"});
     add({"NewUnknownPass", {}, "new '@D/out/n' --passes a,e", 2, {"--passes", "\"e\""}, "usage"});
 

@@ -14,7 +14,7 @@
 
 #include "Commands.h"
 #include "Console.h"
-#include "EmptyArguments.h"
+#include "ArgumentChecks.h"
 #include "core/Defaults.h"
 #include "core/NumberText.h"
 #include "gl/GlThread.h"
@@ -121,6 +121,7 @@ int commandLine(int argc, char** argv, bool& comparing) {
                     "watchdog; 130 / 143 / 129 interrupted by SIGINT / SIGTERM / SIGHUP.");
 
     if (std::optional<std::string> empty = emptyArgumentProblem(app, argc, argv)) return usage(*empty);
+    if (std::optional<std::string> unknown = unknownCommandProblem(app, argc, argv)) return usage(*unknown);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

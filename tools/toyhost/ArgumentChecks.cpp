@@ -1,6 +1,11 @@
-#include "EmptyArguments.h"
+#include "ArgumentChecks.h"
 
 #include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <vector>
+
+#include "core/Suggest.h"
 
 namespace toyhost::cli {
 
@@ -31,6 +36,22 @@ std::optional<std::string> emptyArgumentProblem(CLI::App& app, int argc, char** 
                " is empty (\"\"): a path, an option or a value cannot be empty (an unset shell variable?)";
     }
     return std::nullopt;
+}
+
+std::optional<std::string> unknownCommandProblem(CLI::App& app, int argc, char** argv) {
+    if (argc < 2 || argv[1][0] == '-' || argv[1][0] == '\0') return std::nullopt;  // options, or said above
+    const std::string typed = argv[1];
+    std::vector<std::string> known;
+    for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+        if (sub->check_name(typed)) return std::nullopt;
+        known.push_back(sub->get_name());
+    }
+    std::string list;
+    for (const std::string& name : known) list += (list.empty() ? "" : ", ") + name;
+    std::error_code ec;
+    if (std::filesystem::exists(typed, ec))  // `toyhost myshader/`: what was meant is plain
+        return "unknown command \"" + typed + "\": to run that shadertoy, toyhost run " + typed + " (commands: " + list + ")";
+    return "unknown command \"" + typed + "\"" + didYouMean(typed, known) + " (known: " + list + "; toyhost --help)";
 }
 
 }  // namespace toyhost::cli
