@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "core/DivisionOverflowTrap.h"
+
 namespace toyhost {
 
 namespace {
@@ -21,7 +23,10 @@ GlShader compile(GLenum stage, const std::string& text, std::string& log) {
     GlShader shader(glCreateShader(stage));
     const char* source = text.c_str();
     glShaderSource(shader.id(), 1, &source, nullptr);
-    glCompileShader(shader.id());
+    {
+        const DivisionOverflowTrap folding;  // INT_MIN / -1 in a constant expression (Mesa folds with idiv)
+        glCompileShader(shader.id());
+    }
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
     if (!ok) {
@@ -48,7 +53,10 @@ ProgramBuild buildProgram(const std::string& vertexText, const std::string& frag
     GlProgram program(glCreateProgram());
     glAttachShader(program.id(), vertex.id());
     glAttachShader(program.id(), fragment.id());
-    glLinkProgram(program.id());
+    {
+        const DivisionOverflowTrap folding;  // linking folds constants again
+        glLinkProgram(program.id());
+    }
     GLint ok = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
     if (!ok) {

@@ -1,0 +1,67 @@
+// No shader can crash toyhost through Mesa's constant folder: every integer constant edge compiles
+// and renders (issue 30). INT_MIN / -1 and INT_MIN % -1 in a constant expression ended the process
+// with SIGFPE (Mesa 22.3 folds with the host's idiv); browsers compile them and ANGLE folds them to
+// the two's-complement INT_MIN and 0, which toyhost now gives too (core/DivisionOverflowTrap.h).
+// Division and remainder by 0 and shifts by 32 or more are undefined in GLSL ES: they must compile
+// and render, whatever value they give.
+#include "GlTestSupport.h"
+
+#include <toyhost/Session.h>
+
+#include <vector>
+
+namespace toyhost::testing {
+namespace {
+
+struct Edge {
+    const char* expression;  // a constant int expression
+    int expectedTopByte;     // (k >> 24) & 255 when GLSL defines it (or ANGLE does), else -1
+    int expectedLowByte;     // k & 255, likewise
+};
+
+TEST(IntegerConstants, EveryEdgeCompilesAndRendersAndTheOverflowWrapsAsInTheBrowser) {
+    const std::vector<Edge> edges = {
+        {"(-2147483647 - 1) / -1", 0x80, 0},
+        {"int(0x80000000u) / -1", 0x80, 0},
+        {"(-2147483647 - 1) % -1", 0, 0},
+        {"int(0x80000000u) % -1", 0, 0},
+        {"(-2147483647 - 1) / 1", 0x80, 0},
+        {"7 / -1", 0xFF, 0xF9},
+        {"1 / 0", -1, -1},
+        {"1 % 0", -1, -1},
+        {"0 / 0", -1, -1},
+        {"(-2147483647 - 1) / 0", -1, -1},
+        {"1 << 32", -1, -1},
+        {"1 << 33", -1, -1},
+        {"-1 >> 40", -1, -1},
+        {"int(1u << 31) / -1", 0x80, 0},
+    };
+    const std::filesystem::path root = freshOutputDir("gl/integer-constants");
+    int index = 0;
+    for (const Edge& edge : edges) {
+        SCOPED_TRACE(edge.expression);
+        const std::filesystem::path dir = root / std::to_string(index++);
+        writeFile(dir / "manifest.json", R"({"passes": {"Image": {"source": "image.glsl"}}})");
+        writeFile(dir / "image.glsl", std::string("const int K = ") + edge.expression +
+                                          ";\nvoid mainImage(out vec4 o, in vec2 f) {\n"
+                                          "    o = vec4(float((K >> 24) & 255) / 255.0, float(K & 255) / 255.0, 0.25, 1.0);\n}\n");
+        Result<Shadertoy> toy = Shadertoy::load(dir);
+        ASSERT_TRUE(toy.ok()) << toy.error().text();
+        runOnGlThread([&] {
+            SessionSettings settings;
+            settings.width = 4;
+            settings.height = 4;
+            Result<std::unique_ptr<Session>> made = Session::createHeadless(*toy, settings);
+            ASSERT_TRUE(made.ok()) << made.error().text();
+            ASSERT_TRUE((*made)->step().ok());
+            std::vector<std::uint8_t> pixels(4 * 4 * 4);
+            ASSERT_TRUE((*made)->read("Image", pixels).ok());
+            EXPECT_EQ(pixels[2], 64);
+            if (edge.expectedTopByte >= 0) EXPECT_EQ(pixels[0], edge.expectedTopByte);
+            if (edge.expectedLowByte >= 0) EXPECT_EQ(pixels[1], edge.expectedLowByte);
+        });
+    }
+}
+
+}  // namespace
+}  // namespace toyhost::testing
