@@ -94,5 +94,8 @@ inline constexpr double kSuspensionGapSeconds = 1.0;
 // many with their line and column, then says how many more there are (a binary file has millions;
 // the list of all errors printed is itself capped at 100, so every pass's count is seen).
 inline constexpr std::size_t kMaxShaderTextProblems = 20;
+// A JSON file's keys that appear twice in one object: the first this many are listed with their
+// place, then one line counts the rest.
+inline constexpr std::size_t kMaxListedDuplicateKeys = 20;
 
 }  // namespace toyhost::defaults

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "core/Defaults.h"
+
 namespace toyhost {
 
 using nlohmann::json;
@@ -38,6 +40,7 @@ std::string pathOf(const std::vector<Level>& levels, std::size_t upTo) {
 Result<json> parseJsonStrictly(std::string_view text, const std::string& file, Code code) {
     std::vector<Level> levels;
     std::vector<Diagnostic> duplicates;
+    std::size_t unlisted = 0;  // duplicates past the first kMaxListedDuplicateKeys: counted, said once
     auto elementStarts = [&] {
         if (!levels.empty() && levels.back().array) ++levels.back().index;
     };
@@ -58,7 +61,10 @@ Result<json> parseJsonStrictly(std::string_view text, const std::string& file, C
             case json::parse_event_t::key: {
                 Level& level = levels.back();
                 level.key = parsed.get<std::string>();
-                if (!level.keys.insert(level.key).second && duplicates.size() < 100) {
+                if (level.keys.insert(level.key).second) break;
+                if (duplicates.size() == defaults::kMaxListedDuplicateKeys) {
+                    ++unlisted;
+                } else {
                     Diagnostic d;
                     d.code = Code::JsonDuplicateKey;
                     d.file = file;
@@ -84,6 +90,13 @@ Result<json> parseJsonStrictly(std::string_view text, const std::string& file, C
         if (e.id == 406 && !levels.empty()) d.field = pathOf(levels, levels.size());
         d.message = std::string("invalid JSON: ") + e.what();
         return Error(std::move(d));
+    }
+    if (unlisted > 0) {
+        Diagnostic d;
+        d.code = Code::JsonDuplicateKey;
+        d.file = file;
+        d.message = "... and " + std::to_string(unlisted) + " more keys that appear more than once, not listed";
+        duplicates.push_back(std::move(d));
     }
     if (!duplicates.empty()) return Error(std::move(duplicates));
     return document;
