@@ -23,7 +23,11 @@ configure "$asan" "-fsanitize=address,undefined -fno-sanitize-recover=undefined"
 cmake --build "$asan" -j"$jobs" --target toyhost toyhost_unit_tests toyhost_io_tests
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 ASAN_OPTIONS="detect_leaks=1:abort_on_error=1" "$asan/tests/toyhost_unit_tests" --gtest_brief=1
-ASAN_OPTIONS="detect_leaks=1:abort_on_error=1" "$asan/tests/toyhost_io_tests" --gtest_brief=1
+# ImageMemory.* lower RLIMIT_AS in a child and expect std::bad_alloc; under ASan that limit meets the
+# sanitizer's own shadow reservation and its allocator reports "out of memory" instead of throwing,
+# so they cannot mean the same thing here. They run in every normal build (./scripts/test.sh).
+ASAN_OPTIONS="detect_leaks=1:abort_on_error=1" "$asan/tests/toyhost_io_tests" --gtest_brief=1 \
+    --gtest_filter='-ImageMemory.*'
 # The GL paths through the sanitized CLI (compiling the GL test executable too would double this
 # step's time): buffers and feedback, input scripts, every capture kind, checkpoint and resume,
 # import, a starter, errors. Mesa's llvmpipe keeps allocations for the life of the process, so no
@@ -65,6 +69,11 @@ run run shadertoys/sampling-probe --size 300x170 --tile 128 --supersample 2 --ou
 mkdir -p "$out/pp"
 printf '#define NEG(x) -x\nvoid mainImage(out vec4 c, in vec2 f) { c = vec4(NEG(-.5)); }\n' > "$out/pp/image.glsl"
 printf '{"passes": {"Image": {"source": "image.glsl"}}}' > "$out/pp/manifest.json"
+run run "$out/pp" --size 8x8
+# INT_MIN / -1 and % -1 in constant expressions: Mesa's folder traps, toyhost's division trap
+# (core/DivisionOverflowTrap.h) completes them, with ASan's own SIGFPE handler put back after.
+printf 'const int K = int(0x80000000u) / -1;\nconst int R = (-2147483647 - 1) %% -1;\nvoid mainImage(out vec4 c, in vec2 f) { c = vec4(float(K & 255) + float(R)); }\n' \
+    > "$out/pp/image.glsl"
 run run "$out/pp" --size 8x8
 for id in 7dyfzW ds3BW7 fd3yW8 Dd2SWh; do  # video, music, mic, stock cubemap (wild corpus)
     if [ -f "../shared/corpus/wild/$id.json" ]; then run run "../shared/corpus/wild/$id.json" --size 48x27 --frames 3; fi
