@@ -123,14 +123,17 @@ TEST(ImageMemory, CubeFacesTooLargeForTheMemoryLeftAreAnErrorWithTheSize) {
         << answer;
 }
 
-// A 256^3 one-channel volume file (16 MiB of voxels) with 8 MiB to spare.
+// A 512x512x256 one-channel volume file (64 MiB of voxels) with 8 MiB to spare. Large next to what
+// the earlier tests of this process leave freed but mapped (a 256^3 volume, 16 MiB, fitted in that
+// once in a full run and was decoded).
 TEST(ImageMemory, AVolumeTooLargeForTheMemoryLeftIsAnErrorNamingTheFile) {
     TempFolder folder;
     const fs::path file = folder.path / "large.bin";
     Volume8 volume;
-    volume.width = volume.height = volume.depth = 256;
+    volume.width = volume.height = 512;
+    volume.depth = 256;
     volume.channels = 1;
-    volume.voxels.assign(std::size_t(256) * 256 * 256, 7);
+    volume.voxels.assign(std::size_t(512) * 512 * 256, 7);
     const std::vector<std::uint8_t> bytes = encodeVolumeFile(volume);
     std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
     volume.voxels = {};
