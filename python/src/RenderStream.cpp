@@ -1,10 +1,6 @@
 // RenderStream: the worker's side (one Rendering::advance per job) and Python's (next, cancel).
 #include "RenderStream.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <new>
 #include <span>
 #include <utility>
@@ -22,36 +18,11 @@ std::shared_ptr<RenderStream> RenderStream::start(GlWorker& worker, Session& ses
 }
 
 RenderStream::RenderStream(GlWorker& worker, Session& session, RenderRequest request)
-    : worker_(worker), session_(session), request_(std::move(request)) {
-    int ends[2];
-    // Without the pipe, signals are still seen between frames (the wake after each frame).
-    if (::pipe2(ends, O_NONBLOCK | O_CLOEXEC) == 0) {
-        signalRead_ = ends[0];
-        signalWrite_ = ends[1];
-    }
-}
-
-bool RenderStream::drainSignalPipe() {
-    if (signalRead_ < 0) return false;
-    bool any = false;
-    char bytes[64];
-    for (;;) {
-        const ssize_t got = ::read(signalRead_, bytes, sizeof bytes);
-        if (got > 0) {
-            signalBytes_.append(bytes, static_cast<std::size_t>(got));
-            any = true;
-        } else if (got < 0 && errno == EINTR) {
-            continue;
-        } else {
-            return any;
-        }
-    }
-}
+    : worker_(worker), session_(session), request_(std::move(request)) {}
 
 std::string RenderStream::takeSignalBytes() {
     std::lock_guard<std::mutex> lock(mutex_);
-    drainSignalPipe();
-    return std::exchange(signalBytes_, {});
+    return signals_.take();
 }
 
 void RenderStream::resume() {
@@ -62,8 +33,6 @@ void RenderStream::resume() {
 }
 
 RenderStream::~RenderStream() {
-    if (signalRead_ >= 0) ::close(signalRead_);
-    if (signalWrite_ >= 0) ::close(signalWrite_);
     // The rendering's GL buffers go on the session's thread (jobs run there before the session is
     // closed, and a closed worker runs nothing: then the session freed its context already).
     if (rendering_)
@@ -103,7 +72,7 @@ bool RenderStream::take(const Session::RenderedFrame& read) {
 void RenderStream::renderOne() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        if (drainSignalPipe()) signalled_ = true;
+        if (signals_.drain()) signalled_ = true;
         if (cancelled_ || signalled_) {  // a signal: Python looks at it before another frame starts
             running_ = false;
             ++wakes_;

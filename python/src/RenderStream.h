@@ -23,6 +23,7 @@
 #include <toyhost/Session.h>
 
 #include "GlWorker.h"
+#include "Signals.h"
 
 namespace toyhost::python {
 
@@ -63,7 +64,7 @@ public:
     // The write end of the stream's signal pipe (non-blocking), for Python's wakeup fd
     // (PySignal_SetWakeupFd) while the main thread waits in next(): a signal's byte written there
     // pauses the rendering before its next frame and wakes next(), which asks `interrupted`.
-    int signalWakeupFd() const { return signalWrite_; }
+    int signalWakeupFd() const { return signals_.writeFd(); }
     // The signal bytes the stream received (read by the worker, or still in the pipe), taken: the
     // caller hands them on to the wakeup fd that was there before.
     std::string takeSignalBytes();
@@ -82,7 +83,6 @@ public:
 private:
     RenderStream(GlWorker& worker, Session& session, RenderRequest request);
     void post();       // the next job
-    bool drainSignalPipe();  // under mutex_: bytes in the pipe moved to signalBytes_; true if any
     void resume();           // under mutex_: the next job, unless running, ended or enough frames wait
     void renderOne();  // on the worker: one frame, then the next job when there is room
     bool take(const Session::RenderedFrame& frame);  // on the worker: a frame handed over, into ready_
@@ -105,9 +105,9 @@ private:
     bool waiting_ = false;   // Python waits in next()
     unsigned wakes_ = 0;     // wake-ups given to a waiting next()
     bool signalled_ = false;  // a signal arrived: no frame starts before Python looked at it
-    std::string signalBytes_;  // what the signal pipe carried, for the wakeup fd before ours
-    int signalRead_ = -1;      // the signal pipe; both ends non-blocking, closed with the stream
-    int signalWrite_ = -1;
+    // The signal pipe (without it, signals are still seen between frames: the wake after each
+    // frame); what it carried is kept for the wakeup fd before ours.
+    SignalPipe signals_;
 };
 
 }  // namespace toyhost::python

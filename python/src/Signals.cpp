@@ -1,5 +1,6 @@
 #include "Signals.h"
 
+#include <cerrno>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -39,12 +40,15 @@ bool SignalPipe::drain() {
     if (read_ < 0) return false;
     bool any = false;
     char bytes[64];
-    ssize_t got;
-    while ((got = ::read(read_, bytes, sizeof bytes)) > 0) {
-        bytes_.append(bytes, static_cast<std::size_t>(got));
-        any = true;
+    for (;;) {
+        const ssize_t got = ::read(read_, bytes, sizeof bytes);
+        if (got > 0) {
+            bytes_.append(bytes, static_cast<std::size_t>(got));
+            any = true;
+        } else if (!(got < 0 && errno == EINTR)) {
+            return any;
+        }
     }
-    return any;
 }
 
 std::string SignalPipe::take() {

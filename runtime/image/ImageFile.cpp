@@ -40,7 +40,7 @@ Result<Image8> loadImageFile(const fs::path& path) {
         bytes = readTextFile(path, std::size_t(256) << 20);
     } catch (const std::bad_alloc&) {
         std::error_code ec;
-        return notEnoughMemory(path.string(), "reading the file", memoryText(std::filesystem::file_size(path, ec)));
+        return notEnoughMemory(path.string(), "reading the file", formatBytes(std::filesystem::file_size(path, ec)));
     }
     if (!bytes) return bytes.error();
     // Shadertoy's textures are PNG and JPEG, decoded by libpng and libjpeg-turbo, the decoders

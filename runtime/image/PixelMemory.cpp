@@ -1,6 +1,5 @@
 #include "image/PixelMemory.h"
 
-#include <cstdio>
 #include <new>
 #include <stdexcept>
 
@@ -17,19 +16,10 @@ bool tryResize(std::vector<std::uint8_t>& buffer, std::size_t bytes) noexcept {
     return false;
 }
 
-std::string memoryText(std::uint64_t bytes) {
-    char text[32];
-    if (bytes < 1024) std::snprintf(text, sizeof text, "%llu B", static_cast<unsigned long long>(bytes));
-    else if (bytes < (1ull << 20)) std::snprintf(text, sizeof text, "%.1f KiB", bytes / 1024.0);
-    else if (bytes < (1ull << 30)) std::snprintf(text, sizeof text, "%.1f MiB", bytes / 1048576.0);
-    else std::snprintf(text, sizeof text, "%.1f GiB", bytes / 1073741824.0);
-    return text;
-}
-
 std::string pictureMemoryText(int width, int height, int count, const std::string& of) {
     const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * 4 * std::uint64_t(count);
     const std::string size = std::to_string(width) + "x" + std::to_string(height) + " RGBA";
-    return memoryText(bytes) + " for " + (count > 1 ? std::to_string(count) + " " + of + " of " : "") + size;
+    return formatBytes(bytes) + " for " + (count > 1 ? std::to_string(count) + " " + of + " of " : "") + size;
 }
 
 Error notEnoughMemory(const std::string& file, const std::string& what, const std::string& needs) {

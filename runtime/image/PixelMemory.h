@@ -1,5 +1,5 @@
 // PixelMemory: image-sized buffers for inputs allocated without letting std::bad_alloc escape, and
-// the error that says how much a picture asked for ("needs 1.0 GiB for 16384x16384 RGBA"). No GL.
+// the error that says how much a picture asked for ("needs 1.00 GiB for 16384x16384 RGBA"). No GL.
 #pragma once
 
 #include <cstddef>
@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/ByteText.h"
 #include "core/Result.h"
 
 namespace toyhost {
@@ -14,10 +15,7 @@ namespace toyhost {
 // Sizes `buffer` to `bytes`; false (the buffer left empty) when that memory cannot be had.
 bool tryResize(std::vector<std::uint8_t>& buffer, std::size_t bytes) noexcept;
 
-// "812 B", "12.0 KiB", "256.0 MiB", "1.0 GiB".
-std::string memoryText(std::uint64_t bytes);
-
-// "1.0 GiB for 16384x16384 RGBA" (`count` pictures: "1.5 GiB for 6 faces of 8192x8192 RGBA").
+// "1.00 GiB for 16384x16384 RGBA" (`count` pictures: "1.50 GiB for 6 faces of 8192x8192 RGBA").
 std::string pictureMemoryText(int width, int height, int count = 1, const std::string& of = "");
 
 // The error for a buffer of an input that could not be allocated: "not enough memory: WHAT needs

@@ -36,7 +36,7 @@ Result<Volume8> readVolumeFile(const fs::path& path) {
         bytes = readTextFile(path, kMaxVolumeBytes + kVolumeHeaderBytes);
     } catch (const std::bad_alloc&) {
         std::error_code ec;
-        return notEnoughMemory(name, "reading the volume", memoryText(fs::file_size(path, ec)));
+        return notEnoughMemory(name, "reading the volume", formatBytes(fs::file_size(path, ec)));
     }
     if (!bytes) return bytes.error();
     const std::string& data = *bytes;
@@ -78,7 +78,7 @@ Result<Volume8> readVolumeFile(const fs::path& path) {
     volume.channels = static_cast<int>(channels);
     volume.floats = format == 10;
     if (!tryResize(volume.voxels, data.size() - kVolumeHeaderBytes))
-        return notEnoughMemory(name, "the volume's voxels", memoryText(data.size() - kVolumeHeaderBytes) + " (" + declared + ")");
+        return notEnoughMemory(name, "the volume's voxels", formatBytes(data.size() - kVolumeHeaderBytes) + " (" + declared + ")");
     std::copy(data.begin() + kVolumeHeaderBytes, data.end(), reinterpret_cast<char*>(volume.voxels.data()));
     return volume;
 }

@@ -126,7 +126,7 @@ Result<PassBindings> bindChannels(const PassDesc& pass, const std::array<Sampler
                 if (!volume) return missing("volume");
                 Result<GLuint> texture =
                     uploadPicture(textures, key, [&] { return uploadVolume(*volume, sampler); }, channel,
-                                  memoryText(volume->voxels.size()) + " of voxels (" + std::to_string(volume->width) + "x" +
+                                  formatBytes(volume->voxels.size()) + " of voxels (" + std::to_string(volume->width) + "x" +
                                       std::to_string(volume->height) + "x" + std::to_string(volume->depth) + ")");
                 if (!texture) return inPass(name, texture.error(), c);
                 binding.texture = *texture;

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "core/ByteText.h"  // formatBytes, for the byte counts of progress lines
+
 
 namespace toyhost {
 
@@ -34,8 +36,6 @@ struct WindowTitle {
 };
 std::string formatWindowTitle(const WindowTitle& title);
 
-// "812 B", "3.4 KiB", "12.4 MiB", "1.20 GiB".
-std::string formatBytes(std::uint64_t bytes);
 
 // "0:07", "12:34", "1:02:03"; rounds to whole seconds.
 std::string formatDuration(double seconds);

@@ -735,7 +735,7 @@ TEST(CatalogueMemory, AHugeTextureUnderALowMemoryLimitIsAnErrorNotAnAbort) {
     ASSERT_EQ(errors.size(), 1u) << output;
     EXPECT_NE(errors[0].find((dir / "toy" / "huge.png").string()), std::string::npos) << output;
     EXPECT_NE(errors[0].find("not enough memory"), std::string::npos) << output;
-    EXPECT_NE(errors[0].find("1.0 GiB for 16384x16384 RGBA"), std::string::npos) << output;
+    EXPECT_NE(errors[0].find("1.00 GiB for 16384x16384 RGBA"), std::string::npos) << output;
     EXPECT_NE(errors[0].find("[image.too-large]"), std::string::npos) << output;
     EXPECT_TRUE(holdsNoFile(dir / "out") || !fs::exists(dir / "out"));
 }
