@@ -109,7 +109,7 @@ int commandLine(int argc, char** argv, bool& comparing) {
     sound->add_option("--seconds", soundOptions.seconds, "Length, as the site's 180 s by default")
         ->default_val(defaults::kSoundSeconds)
         ->check(CLI::Validator([](std::string& text) { return decimalNumberProblem(text); }, ""));
-    soundOptions.flags.define(*sound, cli::SessionFlags::Media | cli::SessionFlags::Limits);
+    soundOptions.flags.define(*sound, cli::SessionFlags::Media | cli::SessionFlags::Limits | cli::SessionFlags::Shader);
     sound->add_flag("--quiet", soundOptions.quiet, "Hide notices (stand-ins)");
 
     CompareCommand compareCommand;
