@@ -90,6 +90,7 @@ std::string runShardScript(const PlanRequest& r) {
         s << "elif ((index > 0)); then\n"
           << "  start=(--resume \"$job/checkpoints/start-$index.ckpt\")\n";
     s << "fi\n"
+      << "echo \"run-shard.sh: shard $index, frames $first-$((end - 1)): ${start[*]}\" >&2\n"
       << shellQuoted(r.toyhost) << " run " << shellQuoted(r.target)
       << " --headless --quiet --frames \"$end\" \"${start[@]}\" --checkpoint \"$own\" \"${options[@]}\" \\\n"
       << "  --out \"$job/frames/\"" << shellQuoted(r.frameName) << " &\n"
