@@ -81,8 +81,11 @@ std::string runShardScript(const PlanRequest& r) {
       << "options=(" << joinQuoted(r.runOptions) << ")\n"
       << "own=\"$job/checkpoints/shard-$index.ckpt\"\n"
       << "mkdir -p \"$job/frames\" \"$job/checkpoints\" \"$job/exit\"\n"
+      << "# `again`: render the whole shard anew (frames lost or damaged after it finished).\n"
+      << "if [ \"${2:-}\" = again ]; then rm -f \"$own\"; fi\n"
       << "# A checkpoint holds the next frame to render: resuming from it without a range renders\n"
-      << "# from there to --frames, the shard's end.\n"
+      << "# from there to --frames, the shard's end. The shard's own one is left by an attempt that\n"
+      << "# was stopped (a time limit, preemption: SIGTERM) or by one that finished.\n"
       << "start=(--frame-range \"$first:$end\")\n"
       << "if [ -s \"$own\" ]; then\n"
       << "  start=(--resume \"$own\")\n";
@@ -91,18 +94,11 @@ std::string runShardScript(const PlanRequest& r) {
           << "  start=(--resume \"$job/checkpoints/start-$index.ckpt\")\n";
     s << "fi\n"
       << "echo \"run-shard.sh: shard $index, frames $first-$((end - 1)): ${start[*]}\" >&2\n"
-      << shellQuoted(r.toyhost) << " run " << shellQuoted(r.target)
+      << "# exec: toyhost itself receives the scheduler's SIGTERM (a wrapper that forwarded it would\n"
+      << "# deliver a second one where the scheduler signals every process, which stops at once).\n"
+      << "exec " << shellQuoted(r.toyhost) << " run " << shellQuoted(r.target)
       << " --headless --quiet --frames \"$end\" \"${start[@]}\" --checkpoint \"$own\" \"${options[@]}\" \\\n"
-      << "  --out \"$job/frames/\"" << shellQuoted(r.frameName) << " &\n"
-      << "child=$!\n"
-      << "# A scheduler's SIGTERM (time limit, preemption) reaches toyhost, which writes the checkpoint.\n"
-      << "trap 'kill -TERM \"$child\" 2>/dev/null' TERM INT\n"
-      << "wait \"$child\"; code=$?\n"
-      << "while kill -0 \"$child\" 2>/dev/null; do wait \"$child\"; code=$?; done\n"
-      << "# A finished shard keeps no checkpoint: running it again renders it again (a lost frame).\n"
-      << "if [ \"$code\" -eq 0 ]; then rm -f \"$own\"; fi\n"
-      << "echo \"$code\" > \"$job/exit/shard-$index\"\n"
-      << "exit \"$code\"\n";
+      << "  --out \"$job/frames/\"" << shellQuoted(r.frameName) << "\n";
     return s.str();
 }
 
@@ -150,13 +146,16 @@ std::string slurmArray(const PlanRequest& r) {
       << "# One array task per shard. At its time limit Slurm sends SIGTERM: toyhost writes the shard's\n"
       << "# checkpoint and exits 143, and the task asks to be requeued; the next attempt resumes.\n"
       << "job=" << shellQuoted(r.jobDir) << "\n"
-      << "\"$job/run-shard.sh\" \"$SLURM_ARRAY_TASK_ID\" &\n"
+      << "task=$SLURM_ARRAY_TASK_ID\n"
+      << "# Slurm signals every process of the task, toyhost included: this shell only outlives it.\n"
+      << "trap 'true' TERM\n"
+      << "\"$job/run-shard.sh\" \"$task\" \"$@\" &\n"
       << "child=$!\n"
-      << "trap 'kill -TERM \"$child\" 2>/dev/null' TERM\n"
       << "wait \"$child\"; code=$?\n"
       << "while kill -0 \"$child\" 2>/dev/null; do wait \"$child\"; code=$?; done\n"
-      << "if [ \"$code\" -eq 143 ] && [ -s \"$job/checkpoints/shard-$SLURM_ARRAY_TASK_ID.ckpt\" ]; then\n"
-      << "  scontrol requeue \"${SLURM_ARRAY_JOB_ID}_${SLURM_ARRAY_TASK_ID}\"\n"
+      << "echo \"$code\" > \"$job/exit/shard-$task\"\n"
+      << "if [ \"$code\" -eq 143 ] && [ -s \"$job/checkpoints/shard-$task.ckpt\" ]; then\n"
+      << "  scontrol requeue \"${SLURM_ARRAY_JOB_ID}_${task}\"\n"
       << "fi\n"
       << "exit \"$code\"\n";
     return s.str();
@@ -226,9 +225,10 @@ std::string parallelScript(const PlanRequest& r) {
       << "# Every shard on this machine (or add -S hosts to GNU parallel), written by `toyhost farm plan`.\n"
       << "set -eu\n"
       << "job=" << shellQuoted(r.jobDir) << "\n";
+    s << "mkdir -p \"$job/logs\"\n";
     if (r.stateful) s << "\"$job/checkpoints.sh\"\n";
     s << "parallel --will-cite --halt now,fail=1 -j " << (r.parallelism > 0 ? r.parallelism : r.shards)
-      << " \"$job/run-shard.sh\" {} ::: $(seq 0 " << r.shards - 1 << ")\n";
+      << " --joblog \"$job/logs/parallel.log\" \"$job/run-shard.sh\" {} ::: $(seq 0 " << r.shards - 1 << ")\n";
     return s.str();
 }
 
@@ -284,8 +284,8 @@ Result<std::vector<PlanFile>> planFarm(const PlanRequest& r) {
         files.push_back({"submit.sh", slurmSubmit(c), true});
         break;
     case Scheduler::Kubernetes:
-        files.push_back({"job.yaml", k8sJob(c, "toyhost-render", true, dir + "/run-shard.sh \"$JOB_COMPLETION_INDEX\""), false});
-        if (c.stateful) files.push_back({"checkpoints.yaml", k8sJob(c, "toyhost-checkpoints", false, dir + "/checkpoints.sh"), false});
+        files.push_back({"job.yaml", k8sJob(c, "toyhost-render", true, "exec " + dir + "/run-shard.sh \"$JOB_COMPLETION_INDEX\""), false});
+        if (c.stateful) files.push_back({"checkpoints.yaml", k8sJob(c, "toyhost-checkpoints", false, "exec " + dir + "/checkpoints.sh"), false});
         files.push_back({"submit.sh", k8sSubmit(c), true});
         break;
     case Scheduler::Parallel:
