@@ -38,7 +38,30 @@ std::filesystem::path FrameLayout::frameFile(int frame) const {
     return frameDir / name;
 }
 
+bool FrameLayout::captured(int frame, FrameSpan span) const {
+    if (frame % captureEvery == 0) return true;
+    return frame == (lastOfEachShard ? span.end : frames) - 1;
+}
+
 namespace {
+
+// --capture-every K (or --capture-every=K) among run options; 1 when absent or unreadable (the
+// plan checked them with toyhost run's own parser).
+int captureEveryOption(const std::vector<std::string>& options) {
+    for (std::size_t i = 0; i < options.size(); ++i) {
+        std::string value;
+        if (options[i] == "--capture-every" && i + 1 < options.size()) value = options[i + 1];
+        else if (options[i].rfind("--capture-every=", 0) == 0) value = options[i].substr(16);
+        else continue;
+        try {
+            const int every = std::stoi(value);
+            return every >= 1 ? every : 1;
+        } catch (const std::exception&) {
+            return 1;
+        }
+    }
+    return 1;
+}
 
 // One %d or %0Nd and nothing else printf would read.
 bool onePlaceholder(const std::string& pattern) {
@@ -67,6 +90,8 @@ Result<FrameLayout> layoutFromPlan(const std::string& json, const std::filesyste
         return fileError(where, "frames, shards or frameName out of range", Code::Usage);
     layout.frameDir = jobDir / "frames";
     layout.exitDir = jobDir / "exit";
+    layout.captureEvery = captureEveryOption(layout.runOptions);
+    layout.lastOfEachShard = true;
     return layout;
 }
 

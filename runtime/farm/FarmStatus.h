@@ -44,8 +44,14 @@ struct FrameLayout {
     int frames = 0;
     int shards = 1;
     std::vector<std::string> runOptions;
-    std::filesystem::path exitDir;  // run-shard.sh's exit codes; empty: none recorded
+    std::filesystem::path exitDir;  // the shards' exit codes (job.sbatch writes them); empty: none
+    // --capture-every K among the run options: frames n % K == 0 are written, and the last one of
+    // each run, which for a planned shard (run with --frames at its end) is the shard's last.
+    int captureEvery = 1;
+    bool lastOfEachShard = false;
     std::filesystem::path frameFile(int frame) const;
+    // Whether `frame` of the shard `span` is written at all.
+    bool captured(int frame, FrameSpan span) const;
 };
 
 // farm.json's text (from planFarm) into the layout of the job folder `jobDir`.

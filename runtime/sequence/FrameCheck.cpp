@@ -73,6 +73,7 @@ farm::FarmStatus checkFarm(const farm::FrameLayout& layout) {
         shard.index = i;
         shard.span = farm::shardSpan(layout.frames, layout.shards, i);
         for (int frame = shard.span.first; frame < shard.span.end; ++frame) {
+            if (!layout.captured(frame, shard.span)) continue;
             std::string reason;
             const farm::FrameState state = checkFrameFile(layout.frameFile(frame), reason);
             if (state == farm::FrameState::Ok)

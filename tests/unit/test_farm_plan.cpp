@@ -189,3 +189,28 @@ TEST(FarmStatus, FramePatternsListsAndExitCodes) {
     EXPECT_FALSE(status.complete());
     EXPECT_EQ(status.badFrames(), (std::vector<int>{4, 5}));
 }
+
+TEST(FarmStatus, CaptureEveryCountsTheFramesEachShardWrites) {
+    PlanRequest r = request(Scheduler::Slurm, false);
+    r.runOptions = {"--capture-every", "4"};
+    auto files = planFarm(r);
+    ASSERT_TRUE(files);
+    auto layout = layoutFromPlan(fileNamed(*files, "farm.json")->text, "/j");
+    ASSERT_TRUE(layout);
+    EXPECT_EQ(layout->captureEvery, 4);
+    // Shards of 10 frames: 0-2, 3-5, 6-9. Each shard runs with --frames at its end, so its last
+    // frame is written too, besides frames 0, 4 and 8.
+    std::vector<int> written;
+    for (int i = 0; i < 3; ++i) {
+        const FrameSpan span = shardSpan(10, 3, i);
+        for (int f = span.first; f < span.end; ++f)
+            if (layout->captured(f, span)) written.push_back(f);
+    }
+    EXPECT_EQ(written, (std::vector<int>{0, 2, 4, 5, 8, 9}));
+
+    FrameLayout plain;
+    plain.frames = 10;
+    plain.captureEvery = 4;
+    EXPECT_TRUE(plain.captured(9, {6, 10}));
+    EXPECT_FALSE(plain.captured(5, {3, 6}));
+}

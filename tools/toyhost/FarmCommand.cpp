@@ -209,10 +209,11 @@ int FarmCommand::status() {
     Result<farm::FrameLayout> layout = layoutOf(dir_, checkFrames_, checkShards_, pattern_);
     if (!layout) return fail(layout.error());
     const farm::FarmStatus state = checkFarm(*layout);
-    int good = 0;
+    int good = 0, expected = 0;
     for (const farm::ShardStatus& shard : state.shards) {
         good += shard.good;
-        const int count = shard.span.end - shard.span.first;
+        const int count = shard.good + static_cast<int>(shard.problems.size());
+        expected += count;
         std::cout << "shard " << shard.index << " (frames " << shard.span.first << "-" << shard.span.end - 1
                   << "): " << shard.good << "/" << count << " ok";
         for (farm::FrameState kind : {farm::FrameState::Missing, farm::FrameState::Truncated, farm::FrameState::Undecodable}) {
@@ -229,7 +230,7 @@ int FarmCommand::status() {
                 std::cout << "  " << layout->frameFile(p.frame).string() << ": " << farm::frameStateName(p.state)
                           << ": " << p.reason << "\n";
     }
-    std::cout << good << "/" << layout->frames << " frames ok";
+    std::cout << good << "/" << expected << " frames ok";
     if (!state.complete()) std::cout << "; to render again: " << farm::frameList(state.badFrames());
     std::cout << "\n";
     return state.complete() ? kExitOk : kExitFailure;
@@ -244,7 +245,9 @@ int FarmCommand::join() {
                               " are missing or damaged (toyhost farm status " + dir_ + " says which and why)",
                           Code::IoNotFound));
     std::vector<fs::path> frames;
-    for (int frame = 0; frame < layout->frames; ++frame) frames.push_back(layout->frameFile(frame));
+    for (const farm::ShardStatus& shard : state.shards)
+        for (int frame = shard.span.first; frame < shard.span.end; ++frame)
+            if (layout->captured(frame, shard.span)) frames.push_back(layout->frameFile(frame));
     VideoSettings settings;
     if (!codec_.empty()) settings.codec = codec_;
     if (!videoPreset_.empty()) settings.preset = videoPreset_;
