@@ -266,7 +266,8 @@ Result<std::vector<PlanFile>> planFarm(const PlanRequest& r) {
         return Error("--frame-name " + r.frameName + ": expected a file name with a frame number placeholder (f_%06d.png)",
                      Code::Usage);
     if (std::optional<std::string> owned = ownedOption(r.runOptions))
-        return Error(*owned + ": the plan sets it for every shard (use --frames and --shards of farm plan)", Code::Usage);
+        return Error(*owned + ": farm plan sets it for every shard (from its --frames, --shards, --job and --frame-name)",
+                     Code::Usage);
 
     // One shard has no boundary to checkpoint: the chain is only for stateful runs of several.
     PlanRequest c = r;

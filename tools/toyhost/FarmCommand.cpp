@@ -11,6 +11,7 @@
 
 #include "Commands.h"
 #include "Console.h"
+#include "NumberOptions.h"
 #include "core/Defaults.h"
 #include "export/LoadShadertoy.h"
 #include "farm/FarmPlan.h"
@@ -146,6 +147,15 @@ void FarmCommand::define(CLI::App& app) {
     join_->add_option("--codec", codec_, "Video encoder (ffmpeg name), as run --codec");
     join_->add_option("--video-preset", videoPreset_, "ffmpeg -preset, as run --video-preset");
     join_->add_option("--video-quality", videoQuality_, "Constant rate factor, as run --video-quality");
+
+    // Numbers as text first, as every toyhost command takes them (0x10 or 010 are not numbers here).
+    const CLI::Validator wholeNumber = wholeNumberOption();
+    for (const char* name : {"--frames", "--shards", "--cpus-per-task", "--parallelism"})
+        plan_->get_option(name)->transform(wholeNumber);
+    for (const char* name : {"--frames", "--shards"}) status_->get_option(name)->transform(wholeNumber);
+    join_->get_option("--frames")->transform(wholeNumber);
+    join_->get_option("--video-quality")->transform(wholeNumber);
+    join_->get_option("--fps")->transform(decimalNumberOption());
 }
 
 int FarmCommand::execute() {
