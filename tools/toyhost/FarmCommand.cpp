@@ -120,7 +120,7 @@ void FarmCommand::define(CLI::App& app) {
                       "Job folder on storage every node shares: the plan's files, frames/, checkpoints/, exit/, logs/")
         ->required();
     plan_->add_option("--frame-name", frameName_, "File name of the frames in JOB/frames (default f_%06d.png; .exr for floats)");
-    plan_->add_option("--toyhost", toyhost_, "The toyhost program as the nodes find it (default: this one's path)");
+    plan_->add_option("--toyhost", toyhost_, "The toyhost program as the nodes find it (default: this one's path; k8s: toyhost, the image's)");
     plan_->add_option("--time", time_, "Slurm: sbatch --time of each task (at the limit a task checkpoints and is requeued)");
     plan_->add_option("--cpus-per-task", cpusPerTask_, "Slurm --cpus-per-task; Kubernetes cpu request")
         ->check(CLI::Range(1, 4096));
@@ -173,7 +173,10 @@ int FarmCommand::plan() {
 
     farm::PlanRequest request;
     request.scheduler = *farm::schedulerNamed(scheduler_);
-    request.toyhost = toyhost_.empty() ? thisProgram() : toyhost_;
+    // Pods run the image's toyhost (packaging/Containerfile installs it on PATH); other nodes
+    // share this machine's installation.
+    if (!toyhost_.empty()) request.toyhost = toyhost_;
+    else request.toyhost = request.scheduler == farm::Scheduler::Kubernetes ? "toyhost" : thisProgram();
     request.target = fs::absolute(target_).lexically_normal().string();
     request.jobDir = fs::absolute(job_).lexically_normal().string();
     if (request.jobDir.size() > 1 && request.jobDir.back() == '/') request.jobDir.pop_back();
