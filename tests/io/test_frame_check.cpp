@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "TestFolder.h"
+#include "capture/WavFile.h"
 #include "image/ImageWriters.h"
 #include "sequence/FrameCheck.h"
 #include "sequence/JoinFrames.h"
@@ -21,6 +22,17 @@ std::vector<std::uint8_t> picture(int w, int h, int seed) {
     std::vector<std::uint8_t> rgba(static_cast<std::size_t>(w) * h * 4);
     for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = static_cast<std::uint8_t>(i * 7 + seed * 31);
     return rgba;
+}
+
+// The first line ffprobe prints for `arguments` on `file`.
+std::string probe(const std::string& arguments, const fs::path& file) {
+    std::FILE* pipe = popen(("ffprobe -v error " + arguments + " '" + file.string() + "'").c_str(), "r");
+    if (!pipe) return "";
+    char line[256] = {};
+    std::string all;
+    while (std::fgets(line, sizeof line, pipe)) all += line;
+    pclose(pipe);
+    return all;
 }
 
 std::string bytesOf(const fs::path& file) {
@@ -100,4 +112,19 @@ TEST(JoinFrames, EncodesTheSequenceAndRefusesMixedSizes) {
     ASSERT_FALSE(mixed);
     EXPECT_NE(mixed.error().text().find("f_3.png"), std::string::npos);
     EXPECT_FALSE(fs::exists(dir.path / "mixed.mp4"));
+}
+
+TEST(JoinFrames, MuxesTheSoundTrack) {
+    toyhost::testing::TestFolder dir;
+    std::vector<fs::path> frames;
+    for (int f = 0; f < 3; ++f) {
+        frames.push_back(dir.path / ("f_" + std::to_string(f) + ".png"));
+        ASSERT_TRUE(writePng(frames.back(), 16, 8, picture(16, 8, f)));
+    }
+    std::vector<float> stereo(2 * 4410, 0.25f);  // 0.1 s at 44100 Hz
+    ASSERT_TRUE(writeWav16(dir.path / "track.wav", stereo, 44100));
+    VideoSettings settings;
+    settings.audio = dir.path / "track.wav";
+    ASSERT_TRUE(joinFrames(frames, dir.path / "movie.mp4", 30, settings));
+    EXPECT_EQ(probe("-show_entries stream=codec_type -of csv=p=0", dir.path / "movie.mp4"), "video\naudio\n");
 }
