@@ -5,10 +5,23 @@
 
 cluster_pids=()
 
-# A free TCP port on localhost (the kernel picks it; nothing else takes it before slurmctld does
-# in practice, and a taken port makes the start fail with the reason, not hang).
-free_port() {
-  /usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'
+# Two free TCP ports on localhost, distinct (the kernel picks them; a port taken again before the
+# daemons bind it makes the start fail with the reason, not hang).
+free_ports() {
+  /usr/bin/python3 -c '
+import socket
+held = [socket.socket() for _ in range(2)]
+for s in held: s.bind(("127.0.0.1", 0))
+print(" ".join(str(s.getsockname()[1]) for s in held))'
+}
+
+# Starts a daemon in the background, recorded for stop_cluster. setpriv --pdeathsig: should this
+# script itself be killed outright (SIGKILL, as by a test timeout), the kernel sends the daemon
+# SIGTERM, so no daemon outlives the test.
+start_daemon() {
+  local log=$1; shift
+  setpriv --pdeathsig TERM "$@" >"$log" 2>&1 &
+  cluster_pids+=($!)
 }
 
 # Polls `condition` (a command) until it succeeds or `seconds` pass; returns its last status.
@@ -28,18 +41,16 @@ start_cluster() {
   local cpus host port_ctld port_d
   cpus=$(nproc)
   host=$(hostname -s)
-  port_ctld=$(free_port)
-  port_d=$(free_port)
+  read -r port_ctld port_d < <(free_ports)
   mkdir -p "$dir/munge" "$dir/state" "$dir/spool" "$dir/log"
   chmod 711 "$dir/munge"
-  for tool in munged slurmctld slurmd sbatch squeue scontrol; do
+  for tool in munged slurmctld slurmd sbatch squeue scontrol setpriv; do
     command -v "$tool" >/dev/null || { echo "cluster: $tool is not installed (scripts/install-deps.sh installs slurm-wlm and munge)"; return 1; }
   done
   head -c 1024 /dev/urandom > "$dir/munge/munge.key"
   chmod 400 "$dir/munge/munge.key"
-  munged --force --socket="$dir/munge/socket" --key-file="$dir/munge/munge.key" \
-    --pid-file="$dir/munge/munged.pid" --seed-file="$dir/munge/seed" --log-file="$dir/log/munged.log" --foreground >"$dir/log/munged.out" 2>&1 &
-  cluster_pids+=($!)
+  start_daemon "$dir/log/munged.out" munged --force --socket="$dir/munge/socket" --key-file="$dir/munge/munge.key" \
+    --pid-file="$dir/munge/munged.pid" --seed-file="$dir/munge/seed" --log-file="$dir/log/munged.log" --foreground
   if ! wait_until 20 test -S "$dir/munge/socket"; then
     echo "cluster: munged did not start:"; cat "$dir/log/munged.log"; return 1
   fi
@@ -79,10 +90,8 @@ NodeName=$host NodeAddr=127.0.0.1 CPUs=$cpus State=UNKNOWN
 PartitionName=farm Nodes=$host Default=YES MaxTime=INFINITE State=UP
 CONF
   export SLURM_CONF=$dir/slurm.conf
-  slurmctld -D -i -f "$dir/slurm.conf" >"$dir/log/slurmctld.out" 2>&1 &
-  cluster_pids+=($!)
-  slurmd -D -f "$dir/slurm.conf" -N "$host" >"$dir/log/slurmd.out" 2>&1 &
-  cluster_pids+=($!)
+  start_daemon "$dir/log/slurmctld.out" slurmctld -D -i -f "$dir/slurm.conf"
+  start_daemon "$dir/log/slurmd.out" slurmd -D -f "$dir/slurm.conf" -N "$host"
   if ! wait_until 60 node_idle "$host"; then
     echo "cluster: the node did not come up (sinfo: $(sinfo -h -N -o '%N %T %E' 2>&1))"
     for log in slurmctld.out slurmctld.log slurmd.out slurmd.log; do
