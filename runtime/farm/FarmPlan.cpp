@@ -3,6 +3,7 @@
 #include "farm/FarmPlan.h"
 
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 
 namespace toyhost::farm {
@@ -246,6 +247,12 @@ FrameSpan shardSpan(int frames, int shards, int index) {
             static_cast<int>(static_cast<long long>(frames) * (index + 1) / shards)};
 }
 
+std::optional<std::string> frameNameProblem(const std::string& name) {
+    static const std::regex shape(R"(^[^%/]*%(0[1-9][0-9]?)?d[^%/]*\.(png|exr)$)");
+    if (std::regex_match(name, shape)) return std::nullopt;
+    return "expected a file name with one frame number placeholder, ending in .png or .exr (f_%06d.png)";
+}
+
 std::string shellQuoted(const std::string& text) {
     const bool plain = !text.empty() && text.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
                                                                 "0123456789_-+=./:,@%") == std::string::npos;
@@ -262,9 +269,8 @@ Result<std::vector<PlanFile>> planFarm(const PlanRequest& r) {
                      Code::Usage);
     if (r.jobDir.empty() || r.jobDir.front() != '/')
         return Error("the job folder must be an absolute path (every node finds it there): " + r.jobDir, Code::Usage);
-    if (r.frameName.find('/') != std::string::npos || r.frameName.find('%') == std::string::npos)
-        return Error("--frame-name " + r.frameName + ": expected a file name with a frame number placeholder (f_%06d.png)",
-                     Code::Usage);
+    if (std::optional<std::string> problem = frameNameProblem(r.frameName))
+        return Error("--frame-name " + r.frameName + ": " + *problem, Code::Usage);
     if (std::optional<std::string> owned = ownedOption(r.runOptions))
         return Error(*owned + ": farm plan sets it for every shard (from its --frames, --shards, --job and --frame-name)",
                      Code::Usage);

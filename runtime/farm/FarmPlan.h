@@ -52,6 +52,10 @@ struct PlanFile {
 // submit.sh; job.yaml (+ checkpoints.yaml) and submit.sh; or parallel.sh.
 Result<std::vector<PlanFile>> planFarm(const PlanRequest& request);
 
+// Why `name` cannot be the frames' file name, or nothing: one %d or %0Nd, no other %, no folder,
+// .png or .exr (what `toyhost run --out` numbers by iFrame).
+std::optional<std::string> frameNameProblem(const std::string& name);
+
 // `text` as one word for sh/bash: unchanged when it is plain, else in single quotes.
 std::string shellQuoted(const std::string& text);
 

@@ -63,12 +63,6 @@ int captureEveryOption(const std::vector<std::string>& options) {
     return 1;
 }
 
-// One %d or %0Nd and nothing else printf would read.
-bool onePlaceholder(const std::string& pattern) {
-    static const std::regex shape(R"(^[^%]*%(0[1-9][0-9]?)?d[^%]*$)");
-    return std::regex_match(pattern, shape);
-}
-
 }  // namespace
 
 Result<FrameLayout> layoutFromPlan(const std::string& json, const std::filesystem::path& jobDir) {
@@ -86,7 +80,7 @@ Result<FrameLayout> layoutFromPlan(const std::string& json, const std::filesyste
         return fileError(where, "expected \"frames\", \"shards\" and \"frameName\" as `toyhost farm plan` writes them",
                          Code::Usage);
     }
-    if (layout.frames < 1 || layout.shards < 1 || layout.shards > layout.frames || !onePlaceholder(layout.frameName))
+    if (layout.frames < 1 || layout.shards < 1 || layout.shards > layout.frames || frameNameProblem(layout.frameName))
         return fileError(where, "frames, shards or frameName out of range", Code::Usage);
     layout.frameDir = jobDir / "frames";
     layout.exitDir = jobDir / "exit";

@@ -146,6 +146,13 @@ TEST(FarmPlan, RefusesWhatItCannotPlan) {
     EXPECT_FALSE(planFarm(r));
 }
 
+TEST(FarmPlan, FrameNamesHoldOneNumberAndAnImageExtension) {
+    EXPECT_FALSE(frameNameProblem("f_%06d.png"));
+    EXPECT_FALSE(frameNameProblem("%d.exr"));
+    for (const char* bad : {"f.png", "f_%s.png", "f_%d_%d.png", "sub/f_%04d.png", "f_%04d.mp4", "f_%04d.png%n"})
+        EXPECT_TRUE(frameNameProblem(bad)) << bad;
+}
+
 TEST(FarmPlan, SchedulerNamesAndShellQuoting) {
     EXPECT_EQ(schedulerNamed("slurm"), Scheduler::Slurm);
     EXPECT_EQ(schedulerNamed("k8s"), Scheduler::Kubernetes);

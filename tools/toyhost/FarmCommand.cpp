@@ -73,6 +73,8 @@ Result<farm::FrameLayout> layoutOf(const fs::path& dir, std::optional<int> frame
     layout.frames = *frames;
     layout.shards = shards.value_or(1);
     if (!pattern.empty()) {
+        if (std::optional<std::string> problem = farm::frameNameProblem(pattern))
+            return Error("--pattern " + pattern + ": " + *problem, Code::Usage);
         layout.frameName = pattern;
     } else {
         std::vector<std::string> names;
