@@ -6,6 +6,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <sstream>
 
 namespace toyhost::farm {
 
@@ -84,6 +85,7 @@ Result<FrameLayout> layoutFromPlan(const std::string& json, const std::filesyste
         return fileError(where, "frames, shards or frameName out of range", Code::Usage);
     layout.frameDir = jobDir / "frames";
     layout.exitDir = jobDir / "exit";
+    layout.joblog = jobDir / "logs/parallel.log";
     layout.captureEvery = captureEveryOption(layout.runOptions);
     layout.lastOfEachShard = true;
     return layout;
@@ -127,6 +129,21 @@ std::string frameList(const std::vector<int>& frames) {
         i = j + 1;
     }
     return text;
+}
+
+std::map<int, int> exitCodesFromJoblog(const std::string& joblog) {
+    // Seq Host Starttime JobRuntime Send Receive Exitval Signal Command, tab-separated.
+    static const std::regex line(R"(^[0-9]+\t[^\t]*\t[^\t]*\t[^\t]*\t[^\t]*\t[^\t]*\t(-?[0-9]+)\t([0-9]+)\t.*run-shard\.sh ([0-9]+)\s*$)");
+    std::map<int, int> codes;
+    std::istringstream in(joblog);
+    std::string text;
+    while (std::getline(in, text)) {
+        std::smatch m;
+        if (!std::regex_match(text, m, line)) continue;
+        const int signal = std::stoi(m[2].str());
+        codes[std::stoi(m[3].str())] = signal ? 128 + signal : std::stoi(m[1].str());
+    }
+    return codes;
 }
 
 std::string exitMeaning(int code) {

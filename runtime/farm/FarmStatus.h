@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +46,7 @@ struct FrameLayout {
     int shards = 1;
     std::vector<std::string> runOptions;
     std::filesystem::path exitDir;  // the shards' exit codes (job.sbatch writes them); empty: none
+    std::filesystem::path joblog;   // GNU parallel's job log (parallel.sh); empty: none
     // --capture-every K among the run options: frames n % K == 0 are written, and the last one of
     // each run, which for a planned shard (run with --frames at its end) is the shard's last.
     int captureEvery = 1;
@@ -64,6 +66,10 @@ Result<std::string> framePatternOf(const std::vector<std::string>& names);
 
 // "3, 7-9, 12": ascending frame numbers, runs shortened.
 std::string frameList(const std::vector<int>& frames);
+
+// Shard -> exit code from GNU parallel's --joblog text (parallel.sh writes logs/parallel.log): the
+// last line of each `run-shard.sh INDEX`; a signal as 128 + its number, as a shell reports it.
+std::map<int, int> exitCodesFromJoblog(const std::string& joblog);
 
 // What an exit code of `toyhost run` means ("stopped by SIGTERM", "the watchdog", ...).
 std::string exitMeaning(int code);

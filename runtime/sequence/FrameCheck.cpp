@@ -5,6 +5,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <vector>
 
 #include "image/ImageWriters.h"
@@ -68,6 +69,11 @@ farm::FrameState checkFrameFile(const fs::path& file, std::string& reason) {
 
 farm::FarmStatus checkFarm(const farm::FrameLayout& layout) {
     farm::FarmStatus status;
+    std::map<int, int> joblogCodes;
+    if (!layout.joblog.empty()) {
+        std::ifstream in(layout.joblog);
+        if (in) joblogCodes = farm::exitCodesFromJoblog(std::string((std::istreambuf_iterator<char>(in)), {}));
+    }
     for (int i = 0; i < layout.shards; ++i) {
         farm::ShardStatus shard;
         shard.index = i;
@@ -86,6 +92,8 @@ farm::FarmStatus checkFarm(const farm::FrameLayout& layout) {
             int code = 0;
             if (in >> code) shard.exitCode = code;
         }
+        if (!shard.exitCode)
+            if (auto found = joblogCodes.find(i); found != joblogCodes.end()) shard.exitCode = found->second;
         status.shards.push_back(std::move(shard));
     }
     return status;

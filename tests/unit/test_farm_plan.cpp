@@ -221,3 +221,15 @@ TEST(FarmStatus, CaptureEveryCountsTheFramesEachShardWrites) {
     EXPECT_TRUE(plain.captured(9, {6, 10}));
     EXPECT_FALSE(plain.captured(5, {3, 6}));
 }
+
+TEST(FarmStatus, ExitCodesComeFromGnuParallelsJoblog) {
+    const std::string joblog =
+        "Seq\tHost\tStarttime\tJobRuntime\tSend\tReceive\tExitval\tSignal\tCommand\n"
+        "1\t:\t1795829646.958\t     1.067\t0\t0\t0\t0\t/j/run-shard.sh 0\n"
+        "2\t:\t1795829646.960\t     0.500\t0\t0\t0\t15\t/j/run-shard.sh 1\n"
+        "3\t:\t1795829647.059\t     1.063\t0\t0\t1\t0\t/j/run-shard.sh 2\n"
+        "4\t:\t1795829650.000\t     1.000\t0\t0\t0\t0\t/j/run-shard.sh 2\n";
+    const std::map<int, int> codes = exitCodesFromJoblog(joblog);
+    EXPECT_EQ(codes, (std::map<int, int>{{0, 0}, {1, 143}, {2, 0}}));  // the last attempt counts
+    EXPECT_TRUE(exitCodesFromJoblog("not a joblog\n").empty());
+}
