@@ -20,6 +20,7 @@ packages=(
   python3 python3-numpy groff-base                       # man page and completion generators, package tests
   dpkg-dev file                                          # cpack -G DEB: dpkg-shlibdeps computes Depends
   python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
+  jupyter-nbconvert python3-ipykernel                    # the notebook test (python/tests/test_notebook.py)
 )
 
 # `install-deps.sh fuzz` adds what the libFuzzer targets need (tests/fuzz): clang and its

@@ -21,6 +21,7 @@ import numpy
 
 from . import _args as args
 from . import _code
+from . import _notebook
 from . import _toyhost
 from ._compare import CompareReport, FrameDifference, compare, compare_images
 from ._errors import (CompileError, Error, GlError, InputError, InternalError, ManifestError, OutputError,
@@ -115,6 +116,7 @@ class Session:
             args.optional(args.integer, "motion_blur", motion_blur), args.optional(args.real, "shutter", shutter),
             args.flag("dither", dither), args.defines("defines", defines))
         self.shadertoy = shadertoy
+        self._drawn = False  # frame() has nothing to show before the first step (restart keeps the picture)
         self._mouse_held = False
         self._keys_held = set()
 
@@ -135,18 +137,23 @@ class Session:
             for name, value in (("time_delta", time_delta), ("frame_rate", frame_rate)):
                 if value is not None:
                     raise args.usage(name, "is given with time=... only (the fixed step sets it otherwise)")
-        return self._native.step(self._events(mouse, keys, events), args.optional(args.real, "time", time),
-                                 1.0 / self._fps if time_delta is None else args.real("time_delta", time_delta),
-                                 self._fps if frame_rate is None else args.real("frame_rate", frame_rate))
+        iframe = self._native.step(self._events(mouse, keys, events), args.optional(args.real, "time", time),
+                                   1.0 / self._fps if time_delta is None else args.real("time_delta", time_delta),
+                                   self._fps if frame_rate is None else args.real("frame_rate", frame_rate))
+        self._drawn = True
+        return iframe
 
     def frame(self, pass_="Image", dtype="uint8", out=None):
         """The latest output of a pass ("Image", "Buffer A".."Buffer D") as a numpy array of shape
         (height, width, 4), RGBA, top row first. ``uint8``: what the screen shows (a buffer's floats
         clamped and rounded); ``float32``: a buffer's floats as they are (Image's are its 8-bit levels
         / 255 unless the session has float_image). ``out``: an array of that shape and type to read
-        into instead of a new one (C-contiguous, writeable), returned."""
+        into instead of a new one (C-contiguous, writeable), returned. Before the first step() or
+        render() there is no frame: UsageError."""
         dtype = _dtype_name(dtype)
         pass_ = args.text("pass_", pass_)
+        if not self._drawn:
+            raise UsageError("error: no frame has been rendered yet: call step() or render() first [usage]")
         if out is not None:
             if not isinstance(out, numpy.ndarray):
                 raise UsageError(f"out: expected a numpy array, got {type(out).__name__}")
@@ -180,6 +187,7 @@ class Session:
                                      _dtype_name(dtype) == "float32")
         try:
             while (item := stream.next()) is not None:
+                self._drawn = True
                 yield item
             if self.closed:
                 raise UsageError("the session was closed while render() ran")
@@ -214,6 +222,27 @@ class Session:
     def resize(self, size):
         """A new canvas size; buffers keep their content bottom-left, iFrame goes on."""
         self._native.resize(*args.size("size", size))
+
+    # --- notebooks -------------------------------------------------------------------------------
+
+    def show(self, frames=60, every=1, mouse=None, keys=None, strip=False, scale=1):
+        """Renders ``frames`` frames (as render(), keeping every ``every``-th) and returns an
+        Animation that Jupyter plays inline: an animated PNG at the session's fps / every, looping,
+        or with ``strip=True`` the frames side by side as one still. ``scale`` enlarges it on screen
+        (pixels stay sharp). ``mouse`` / ``keys`` as render() takes them. The session goes on from
+        where it is, as after render()."""
+        every = args.integer("every", every)
+        scale = args.integer("scale", scale)
+        if scale < 1 or scale > 16:
+            raise args.usage("scale", f"must be 1..16, got {scale}")
+        taken = list(self.render(frames, every=every, mouse=mouse, keys=keys))
+        return _notebook.Animation(taken, self._fps / max(1, every), strip=args.flag("strip", strip), scale=scale)
+
+    def _repr_png_(self):
+        """Jupyter's inline picture: the latest Image frame; none before the first step."""
+        if self.closed or not self._drawn:
+            return None
+        return _notebook.png_bytes(self.frame())
 
     # --- state -----------------------------------------------------------------------------------
 
@@ -295,3 +324,19 @@ def _dtype_name(dtype):
     if name not in ("uint8", "float32"):
         raise UsageError(f"dtype: uint8 or float32, got {name}")
     return name
+
+
+PREVIEW_SIZE = (400, 225)
+PREVIEW_DATE = "2026-01-01T00:00:00"
+
+
+def _shadertoy_png(shadertoy):
+    """Jupyter's inline picture of a Shadertoy: its frame 0 at 400x225 (iDate 2026-01-01), rendered
+    in a session of its own."""
+    with Session(shadertoy, size=PREVIEW_SIZE, date=PREVIEW_DATE) as session:
+        session.step()
+        return _notebook.png_bytes(session.frame())
+
+
+Shadertoy._repr_png_ = _shadertoy_png
+
