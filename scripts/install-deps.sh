@@ -21,6 +21,7 @@ packages=(
   dpkg-dev file                                          # cpack -G DEB: dpkg-shlibdeps computes Depends
   python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
   jupyter-nbconvert python3-ipykernel                    # the notebook test (python/tests/test_notebook.py)
+  mypy                                                   # the module's types checked (python/tests/test_types.py)
 )
 
 # `install-deps.sh fuzz` adds what the libFuzzer targets need (tests/fuzz): clang and its

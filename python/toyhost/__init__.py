@@ -14,6 +14,7 @@ toyhost.Error subclasses carrying toyhost's diagnostics (file, pass, line, code.
 """
 
 import os
+from typing import Any, Iterable, Iterator, Mapping, Optional, Sequence, Tuple, Union
 
 # Imported here, with the module, rather than by the first frame: importing numpy takes 70-90 ms,
 # which would otherwise land on whatever first makes an array (a frame, in a timed loop).
@@ -29,7 +30,13 @@ from ._errors import (CompileError, Error, GlError, InputError, InternalError, M
 from ._keys import key_code
 from ._toyhost import Diagnostic, InputEvent, Reloaded, Shadertoy
 
-__version__ = _toyhost.version_string()
+__version__: str = _toyhost.version_string()
+
+# What the arguments may be (for type checkers: the module ships py.typed and _toyhost.pyi).
+PathLike = Union[str, "os.PathLike[str]"]
+Point = Tuple[float, float]
+Keys = Iterable[Union[int, str]]
+Defines = Union[str, Sequence[str], Mapping[str, Any]]
 
 __all__ = [
     "load", "from_code", "Session", "compare", "compare_images", "CompareReport", "FrameDifference", "Shadertoy", "Diagnostic", "InputEvent", "Reloaded", "key_code", "Error", "UsageError", "InputError",
@@ -38,7 +45,7 @@ __all__ = [
 ]
 
 
-def defaults():
+def defaults() -> dict:
     """toyhost's defaults as a new dict: what a Session takes for what it is not given ("width",
     "height", "fps"), the bounds settings are checked against ("min_fps", "max_fps",
     "max_canvas_side"), and the CLI's ("frames", "capture_every", "png_level", "capture_memory_mib",
@@ -46,7 +53,8 @@ def defaults():
     return _toyhost.defaults()
 
 
-def load(path_or_json, name="export.json", folder=None):
+def load(path_or_json: Union[PathLike, dict, list], name: str = "export.json",
+         folder: Optional[PathLike] = None) -> Shadertoy:
     """A Shadertoy from a folder holding manifest.json, a manifest file, a Shadertoy JSON export file
     (API or site form), a lone .glsl/.frag file (an Image-only shadertoy; the common.glsl next to
     it joins as Common), the text of an export (a str starting with '{' or '['), or an export
@@ -62,7 +70,8 @@ def load(path_or_json, name="export.json", folder=None):
     return _toyhost.load_path(args.path("path_or_json", path_or_json))
 
 
-def from_code(image, *, common=None, buffers=None, channels=None, name="code"):
+def from_code(image: str, *, common: Optional[str] = None, buffers: Optional[Mapping[str, str]] = None,
+              channels: Optional[Mapping[str, Mapping[Union[int, str], Any]]] = None, name: str = "code") -> Shadertoy:
     """A Shadertoy from code strings: ``image`` (mainImage), ``common``, ``buffers`` ({"A": code,
     ...}) and ``channels`` ({"Image" or "A".."D": {0..3 or "iChannel0".. : source}}), where a source
     is a buffer ("A".."D", read linear and clamped as the site's default, or {"buffer": "A",
@@ -98,9 +107,14 @@ class Session:
     Close it (``close()`` or ``with``) to free its GL context at once rather than at garbage
     collection."""
 
-    def __init__(self, shadertoy, size=None, fps=None, start_time=0.0, date=None, media_folders=(),
-                 media_files=None, float_image=False, frame_timeout=None, compile_timeout=None, mouse_script=None,
-                 key_script=None, supersample=None, motion_blur=None, shutter=None, dither=False, defines=()):
+    def __init__(self, shadertoy: Union[Shadertoy, PathLike, dict, list], *, size: Optional[Tuple[int, int]] = None,
+                 fps: Optional[float] = None, start_time: float = 0.0, date: Optional[str] = None,
+                 media_folders: Union[PathLike, Sequence[PathLike]] = (),
+                 media_files: Optional[Mapping[str, PathLike]] = None, float_image: bool = False,
+                 frame_timeout: Optional[float] = None, compile_timeout: Optional[float] = None,
+                 mouse_script: Optional[PathLike] = None, key_script: Optional[PathLike] = None,
+                 supersample: Optional[int] = None, motion_blur: Optional[int] = None, shutter: Optional[float] = None,
+                 dither: bool = False, defines: Defines = ()) -> None:
         if not isinstance(shadertoy, Shadertoy):
             shadertoy = load(shadertoy)
         width, height = (None, None) if size is None else args.size("size", size)
@@ -122,7 +136,9 @@ class Session:
 
     # --- rendering -------------------------------------------------------------------------------
 
-    def step(self, mouse=None, keys=None, time=None, time_delta=None, frame_rate=None, events=()):
+    def step(self, *, mouse: Union[Point, bool, None] = None, keys: Optional[Keys] = None, time: Optional[float] = None,
+             time_delta: Optional[float] = None, frame_rate: Optional[float] = None,
+             events: Iterable[InputEvent] = ()) -> int:
         """Renders the next frame and returns its iFrame. Returns once the frame is submitted to
         the GPU, which draws it while Python goes on; frame() waits for it.
 
@@ -143,7 +159,7 @@ class Session:
         self._drawn = True
         return iframe
 
-    def frame(self, pass_="Image", dtype="uint8", out=None):
+    def frame(self, pass_: str = "Image", dtype: Any = "uint8", out: Optional[numpy.ndarray] = None) -> numpy.ndarray:
         """The latest output of a pass ("Image", "Buffer A".."Buffer D") as a numpy array of shape
         (height, width, 4), RGBA, top row first. ``uint8``: what the screen shows (a buffer's floats
         clamped and rounded); ``float32``: a buffer's floats as they are (Image's are its 8-bit levels
@@ -162,7 +178,8 @@ class Session:
             return self._native.read_uint8(pass_)
         return self._native.read_float32(pass_)
 
-    def render(self, frames, every=1, pass_="Image", dtype="uint8", mouse=None, keys=None):
+    def render(self, frames: int, *, every: int = 1, pass_: str = "Image", dtype: Any = "uint8",
+               mouse: Union[Point, bool, None] = None, keys: Optional[Keys] = None) -> Iterator[Tuple[int, numpy.ndarray]]:
         """Renders ``frames`` frames and yields ``(iframe, array)`` for the 0th, every-th and last of
         them (as the CLI's --capture-every), each array as frame() gives it. ``mouse`` and ``keys``
         are applied before the first frame, as step() takes them, and stay.
@@ -194,13 +211,13 @@ class Session:
         finally:
             stream.cancel()
 
-    def render_sound(self, seconds=0.0):
+    def render_sound(self, seconds: float = 0.0) -> numpy.ndarray:
         """The Sound pass (mainSound) as the site renders it: float32 samples of shape (n, 2), stereo
         at 44100 Hz, ``seconds`` long (0: the site's 180 s; negative, NaN, infinite or more than an
         hour raise UsageError naming ``seconds``)."""
         return self._native.render_sound(args.real("seconds", seconds, finite=False))
 
-    def reload(self, shadertoy=None):
+    def reload(self, shadertoy: Optional[Shadertoy] = None) -> Reloaded:
         """Switches to the shadertoy's files as they are now (`shadertoy`: loaded anew from this
         session's path when left out) without restarting: changed passes are recompiled, a pass
         that fails keeps its last good program, a changed structure keeps the buffers that still
@@ -215,17 +232,18 @@ class Session:
             self.shadertoy = shadertoy
         return outcome
 
-    def restart(self):
+    def restart(self) -> None:
         """iFrame back to 0 and every buffer cleared (the site's restart); mouse and keys stay."""
         self._native.restart()
 
-    def resize(self, size):
+    def resize(self, size: Tuple[int, int]) -> None:
         """A new canvas size; buffers keep their content bottom-left, iFrame goes on."""
         self._native.resize(*args.size("size", size))
 
     # --- notebooks -------------------------------------------------------------------------------
 
-    def show(self, frames=60, every=1, mouse=None, keys=None, strip=False, scale=1):
+    def show(self, frames: int = 60, *, every: int = 1, mouse: Union[Point, bool, None] = None,
+             keys: Optional[Keys] = None, strip: bool = False, scale: int = 1) -> "_notebook.Animation":
         """Renders ``frames`` frames (as render(), keeping every ``every``-th) and returns an
         Animation that Jupyter plays inline: an animated PNG at the session's fps / every, looping,
         or with ``strip=True`` the frames side by side as one still. ``scale`` enlarges it on screen
@@ -247,41 +265,41 @@ class Session:
     # --- state -----------------------------------------------------------------------------------
 
     @property
-    def next_frame(self):
+    def next_frame(self) -> int:
         """iFrame of the next frame (the number of frames rendered since the start or a restart)."""
         return self._native.next_frame
 
     @property
-    def size(self):
+    def size(self) -> Tuple[int, int]:
         return (self._native.width, self._native.height)
 
     @property
-    def fps(self):
+    def fps(self) -> float:
         return self._fps
 
     @property
-    def notices(self):
+    def notices(self) -> list:
         """Diagnostics about the run so far (the shadertoy's own notices from loading, stand-ins used,
         passes preprocessed), oldest first."""
         return self._native.notices
 
     @property
-    def backend(self):
+    def backend(self) -> str:
         """The GL backend ("EGL surfaceless; OpenGL ES 3.2 Mesa ...")."""
         return self._native.backend
 
-    def close(self):
+    def close(self) -> None:
         """Frees the session's GL context and objects now; later calls raise UsageError."""
         self._native.close()
 
     @property
-    def closed(self):
+    def closed(self) -> bool:
         return self._native.closed
 
-    def __enter__(self):
+    def __enter__(self) -> "Session":
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc: Any) -> None:
         self.close()
 
     def __repr__(self):

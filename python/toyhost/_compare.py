@@ -5,7 +5,7 @@ original?") and for scoring generated shader code against a reference."""
 
 import math
 from dataclasses import dataclass, field
-from typing import List, Optional
+from typing import Any, Iterable, Mapping, Optional, Sequence, Tuple, Union, List
 
 import numpy
 
@@ -47,7 +47,7 @@ class CompareReport:
     max_diff: int
 
     @property
-    def equal(self):
+    def equal(self) -> bool:
         return self.first_differing_frame is None
 
     def __str__(self):
@@ -61,10 +61,14 @@ def _frame(values):
     return FrameDifference(**values)
 
 
-def compare(a, b, frames=None, size=None, fps=None, start_time=0.0, date=None, pass_="Image", min_psnr=None,
-            max_diff=None, mouse=None, mouse_script=None, key_script=None, keep_diff_images=False, diff_gain=0,
-            stop_at_first_difference=False, media_folders=(), media_files=None, frame_timeout=None,
-            compile_timeout=None):
+def compare(a: Any, b: Any, *, frames: Optional[int] = None, size: Optional[Tuple[int, int]] = None,
+            fps: Optional[float] = None, start_time: float = 0.0, date: Optional[str] = None, pass_: str = "Image",
+            min_psnr: Optional[float] = None, max_diff: Optional[int] = None,
+            mouse: Optional[Tuple[float, float]] = None, mouse_script: Optional[Any] = None,
+            key_script: Optional[Any] = None, keep_diff_images: bool = False, diff_gain: int = 0,
+            stop_at_first_difference: bool = False, media_folders: Union[Any, Sequence[Any]] = (),
+            media_files: Optional[Mapping[str, Any]] = None, frame_timeout: Optional[float] = None,
+            compile_timeout: Optional[float] = None) -> CompareReport:
     """Renders ``a`` and ``b`` (Shadertoys, or anything toyhost.load takes) headless with the same
     size, fps, start time, date and inputs, and compares ``pass_`` after every frame.
 
@@ -96,7 +100,8 @@ def compare(a, b, frames=None, size=None, fps=None, start_time=0.0, date=None, p
     return CompareReport(**report)
 
 
-def compare_images(a, b, channels=3, min_psnr=None, max_diff=None, diff_image=False, diff_gain=0):
+def compare_images(a: Any, b: Any, *, channels: int = 3, min_psnr: Optional[float] = None,
+                   max_diff: Optional[int] = None, diff_image: bool = False, diff_gain: int = 0) -> FrameDifference:
     """Two frames as toyhost.Session.frame() gives them ((height, width, 4) uint8) compared as
     toyhost compare does: ``channels`` 3 compares R, G, B (as for Image, whose alpha is always 1),
     4 all four. Returns a FrameDifference (frame and time 0); ``diff_image`` asks for the

@@ -18,7 +18,7 @@ _PUNCTUATION = {";": 186, "=": 187, ",": 188, "-": 189, ".": 190, "/": 191, "`":
                 "\\": 220, "]": 221, "'": 222, " ": 32}
 
 
-def key_code(key):
+def key_code(key: "int | str") -> int:
     """The keyCode for ``key``: an int (taken as it is), one character ('a' and 'A' are 65) or a
     name ('Space', 'Left', 'F5', 'KP0'...)."""
     if isinstance(key, bool):
