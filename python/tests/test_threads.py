@@ -200,3 +200,20 @@ def test_the_interpreter_exits_cleanly_while_a_daemon_thread_renders():
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=120, check=False)
         assert done.returncode == 0, done.stdout
         assert "terminate" not in done.stdout
+
+
+def test_closing_from_another_thread_during_render_raises_usage_error_in_the_loop():
+    """The loop learns the session went away: the documented UsageError, not a loop that just ends
+    early as if all frames were rendered."""
+    session = toyhost.Session(SOURCE_DIR / "shadertoys/bench-trivial", size=(32, 18))
+    seen = 0
+    with pytest.raises(toyhost.UsageError) as raised:
+        for _ in session.render(1000):
+            seen += 1
+            if seen == 3:
+                closer = threading.Thread(target=session.close)
+                closer.start()
+                closer.join()
+    assert "closed while render() ran" in str(raised.value)
+    assert seen < 1000
+    assert session.closed

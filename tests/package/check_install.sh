@@ -14,7 +14,7 @@ expect() { for f in "$@"; do [[ -e "$stage/$f" ]] || { echo "missing after cmake
 expect bin/toyhost bin/toyhost-compat \
   lib/libtoyhost.so lib/cmake/toyhost/toyhostConfig.cmake lib/cmake/toyhost/toyhostConfigVersion.cmake \
   lib/cmake/toyhost/toyhostTargets.cmake lib/pkgconfig/toyhost.pc \
-  share/man/man1/toyhost.1 share/bash-completion/completions/toyhost share/doc/toyhost/README.md \
+  share/man/man1/toyhost.1.gz share/bash-completion/completions/toyhost share/doc/toyhost/README.md \
   share/doc/toyhost/docs/cli.md share/doc/toyhost/docs/manifest.md share/doc/toyhost/docs/library.md
 for header in "$src"/include/toyhost/*.h; do expect "include/toyhost/$(basename "$header")"; done
 expect include/toyhost/Version.h
@@ -32,7 +32,9 @@ fi
   || { echo "the installed toyhost --version differs from Version.h"; status=1; }
 
 # The man page: every subcommand has its section, every option of `toyhost run` is there.
-man="$stage/share/man/man1/toyhost.1"
+# Installed compressed (Debian policy); read it uncompressed.
+man="$stage/toyhost.1"
+gzip -dc "$stage/share/man/man1/toyhost.1.gz" >"$man" || { echo "toyhost.1.gz is not gzip"; status=1; }
 for command in $("$stage/bin/toyhost" --help | sed -n '/^Subcommands:/,/^$/p' | awk 'NR > 1 && NF {print $1}'); do
   grep -q "^\.SS toyhost $command\$" "$man" || { echo "toyhost.1 has no section for $command"; status=1; }
 done
