@@ -65,7 +65,9 @@ int commandLine(int argc, char** argv, bool& comparing) {
     app.set_version_flag("--version", std::string("toyhost ") + TOYHOST_VERSION_TEXT);
     app.require_subcommand(1);
     app.footer("Exit codes: 0 success; 1 the run failed (bad manifest, missing file, shader compile error, GL or "
-               "write error); 2 bad command-line usage; 130 / 143 / 129 interrupted by SIGINT / SIGTERM / SIGHUP.");
+               "write error); 2 bad command-line usage; 124 the watchdog ended the run (a frame or a compile took longer "
+               "than --frame-timeout / --compile-timeout, or the encoders stalled); 130 / 143 / 129 interrupted by "
+               "SIGINT / SIGTERM / SIGHUP.");
 
     RunCommand runCommand;
     CLI::App* run = app.add_subcommand("run", "Run a shadertoy (manifest folder or file, or a Shadertoy JSON export)");
