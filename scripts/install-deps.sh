@@ -18,6 +18,7 @@ packages=(
   python3 python3-numpy groff-base                       # man page and completion generators, package tests
   dpkg-dev file                                          # cpack -G DEB: dpkg-shlibdeps computes Depends
   python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
+  python3-pil                                            # ../shared/tools/gallery_truth.py (the gallery's truth test)
 )
 
 # `install-deps.sh fuzz` adds what the libFuzzer targets need (tests/fuzz): clang and its
