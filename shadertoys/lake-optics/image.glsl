@@ -8,9 +8,11 @@
 //   * Bottom radiance L_b = albedo * (sun * caustics + ambient) * exp(-K (d + d_acc)):
 //     K is an RGB extinction coefficient (1/m), applied to the light going down to the bottom
 //     and to the light coming back up along the view ray.
-//   * In-scattering: water = mix(C_s * E, L_b, exp(-b d_acc)); the longer the path, the more the
-//     colour tends to the scatter colour C_s lit by the light that enters the water,
-//     E = sun * cos(refracted sun) + sky ambient (b = scattering coefficient, 1/m).
+//   * In-scattering: water = L_b + C_s E (b / K) (1 - exp(-K d_acc)); the longer the path, the
+//     more the colour tends to the water's own light: the scatter colour C_s lit by the light that
+//     enters the water, E = sun * cos(refracted sun) + sky ambient (b = scattering coefficient,
+//     1/m), of which a deep column returns b / K per channel (what K absorbs first never comes
+//     back). Extended Reinhard tone map before gamma.
 //   * Sky reflection by Schlick's Fresnel, F = F0 + (1 - F0)(1 - cos)^5, F0 = 0.02 for water:
 //     colour = mix(water, sky(reflect), F).
 //   Presets (keys 1-3, kept in Buffer A texel (0,0).x = 0, 1, 2):
@@ -286,7 +288,13 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
             // the scatter colour is lit by what enters the water: the refracted sun and the sky
             vec3 Lw0 = -refract(-L, vec3(0.0, 1.0, 0.0), 1.0 / WATER_IOR);
             vec3 incident = SUN_COL * Lw0.y + vec3(0.25, 0.33, 0.42);
-            vec3 water = mix(Cs * incident, bottom, exp(-b * dAcc));
+            // the water's own light (single scattering): the light that enters is scattered back
+            // by the particles (colour C_s, coefficient b) while the water absorbs it on the way
+            // down and back up; a deep column returns b / (2 K) per channel, so the red that K
+            // takes first never comes back and tropical deep water turns blue-green, not the
+            // particles' own lavender. Along the view ray it builds up as 1 - exp(-K d_acc).
+            vec3 deep = Cs * incident * b / K;
+            vec3 water = bottom + deep * (1.0 - exp(-K * dAcc));
 
             // Fresnel (Schlick) blend with the reflected sky
             float cosi = clamp(dot(-rd, n), 0.0, 1.0);
@@ -303,6 +311,9 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         }
     }
 
+    // tone map (extended Reinhard, white at 2): highlights roll off instead of clipping, the
+    // dark water keeps its colour
+    col = col * (1.0 + col / 4.0) / (1.0 + col);
     col = pow(clamp(col, 0.0, 1.0), vec3(1.0 / 2.2)) + ditherNoise(fragCoord);
 
     // preset indicator: 1-3 small squares in the top-left corner, for 2 s after a preset key
