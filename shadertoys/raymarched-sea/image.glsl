@@ -63,8 +63,8 @@ const vec3 ZENITH      = vec3(0.030, 0.130, 0.520);
 const vec3 HORIZON     = vec3(0.420, 0.600, 0.860);
 const vec3 SUN_RADIANCE = vec3(1.0, 0.92, 0.8) * 10.0;  // the disc's brightness in skyColor (HDR)
 const float GLINT_SLOPE_VAR = 0.0025;  // the near glint's lobe: slope variance per axis (~3 degrees)
-const float FADE_START = 1.5;  // an octave fades out between these radians of its domain
-const float FADE_END   = 3.5;  // per pixel step (keepOctave)
+const float FADE_START = 2.0;  // an octave fades out between these radians of its domain
+const float FADE_END   = 4.5;  // per pixel step (keepOctave); past Nyquist: fit to the truth
 
 // ---------------------------------------------------------------- noise
 // Integer hash of a lattice point -> [0, 1): multiply-xor the coordinates with two odd
