@@ -6,8 +6,8 @@ usage: check_truth.py TOYHOST TOOL PORT_DIR OUT_DIR --size WxH --times T[,T] --m
                       --min-psnr-far DB --detail LO,HI [--glitter]
 The truth is rendered with --define TRUTH (the port's switch that turns its own filtering off).
 --glitter: also the sun's glitter path of exp-sine-ocean's default view: the far water under the
-sun (columns around the sun's x) is 5 levels brighter than the water beside it, in the port and in
-the truth.
+sun (columns around the sun's x) is brighter than the water beside it, by 12 levels in the port
+(more than the sky glow's reflection gives without the glint) and by 5 in the truth.
 """
 import argparse, re, subprocess, sys
 import numpy as np
@@ -50,7 +50,11 @@ if a.glitter:
         under = water[:, sun_x - band:sun_x + band].mean()
         beside = np.mean([water[:, x - band:x + band].mean() for x in (sun_x - W // 6, sun_x + W // 6)])
         print(f'glitter {name}: under the sun {under:.1f}, beside {beside:.1f}')
-        if under < beside + 5.0:
+        # the port must beat what the sky glow's reflection alone gives (an edit without the
+        # glint lobe: 5.5 at t = 3, 8.8 at t = 6; with it 18.9 and 23.5); the truth only has to
+        # show a path (13.4 and 19.1 at 320x180)
+        need = 12.0 if name.startswith('frame') else 5.0
+        if under < beside + need:
             failures.append(f'{name}: no glitter path (under the sun {under:.1f}, beside {beside:.1f})')
 
 for f in failures:
