@@ -222,7 +222,9 @@ float marchWater(vec3 ro, vec3 rd, float t0, float t1, float time) {
 vec3 sky(vec3 rd) {
     vec3 L = normalize(SUN_DIR);
     float y = max(rd.y, 0.0);
-    vec3 c = mix(vec3(0.78, 0.80, 0.82), vec3(0.22, 0.42, 0.74), pow(y, 0.45));
+    // a clear afternoon: the horizon pale blue, not the grey-white (0.78, 0.80, 0.82) that
+    // turned the far sea milky through the aerial perspective (issue 29)
+    vec3 c = mix(vec3(0.60, 0.72, 0.86), vec3(0.20, 0.40, 0.76), pow(y, 0.45));
     float sd = max(dot(rd, L), 0.0);
     c += vec3(1.0, 0.75, 0.45) * (0.35 * pow(sd, 6.0) + 0.25 * pow(sd, 48.0));
     c += vec3(1.0, 0.9, 0.7) * 25.0 * pow(sd, 1800.0);
@@ -238,7 +240,7 @@ vec3 sky(vec3 rd) {
 // Aerial perspective with per-channel extinction: the air scatters blue most, so distant rock
 // and sea lose red last and take the horizon haze's colour channel by channel.
 vec3 aerial(vec3 col, vec3 rd, float dist) {
-    vec3 ext = exp(-vec3(0.000014, 0.00002, 0.000028) * dist * dist);
+    vec3 ext = exp(-vec3(0.000007, 0.00001, 0.000014) * dist * dist);   // clear air (halved, issue 29)
     return col * ext + sky(vec3(rd.x, 0.02, rd.z)) * (1.0 - ext);
 }
 
