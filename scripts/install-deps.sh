@@ -14,6 +14,8 @@ packages=(
   ffmpeg                                                 # video output (--out x.mp4); ffprobe for its tests
   xvfb xauth xdotool                                     # window-mode tests: a virtual X server and real X input
   parallel                                               # the render-farm shard test (GNU parallel)
+  slurm-wlm munge                                        # the render-farm test's temporary Slurm cluster (tests/farm)
+  python3-distributed                                    # toyhost.farm on Dask (python/tests/test_farm.py)
   cpp                                                    # preprocessing as browsers do, where Mesa's preprocessor refuses a shader
   python3 python3-numpy groff-base                       # man page and completion generators, package tests
   dpkg-dev file                                          # cpack -G DEB: dpkg-shlibdeps computes Depends

@@ -12,7 +12,7 @@ out="$root/docs/cli.md"
     echo "This page is the output of \`toyhost --help\` and of each command's \`--help\`, regenerated"
     echo "by \`scripts/update-cli-doc.sh\`; a test fails while they differ. What the messages and exit"
     echo "codes mean is in [running.md](running.md); the README shows examples."
-    for command in "" run import inspect new media sound compare; do
+    for command in "" run import inspect new media sound compare farm "farm plan" "farm status" "farm join"; do
         echo
         echo "## toyhost${command:+ $command}"
         echo

@@ -144,7 +144,8 @@ enum class Category : std::uint8_t {
     X(WindowHelp,             109, "window.help",               Report) \
     X(WindowInit,             110, "window.init",               Gl) \
     X(WindowReload,           111, "window.reload",             Report) \
-    X(WindowScreenshot,       112, "window.screenshot",         Report)
+    X(WindowScreenshot,       112, "window.screenshot",         Report) \
+    X(ManifestLoneShader,     113, "manifest.lone-shader",      Report)
 
 enum class Code : std::uint16_t {
 #define TOYHOST_CODE_ENUMERATOR(name, number, text, category) name = number,

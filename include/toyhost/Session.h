@@ -74,6 +74,10 @@ struct SessionSettings {
     std::optional<int> motionBlur;
     std::optional<double> shutterDegrees;
     bool dither = false;
+    // Macros added to every pass after the site's header, before Common: "NAME" (defined as 1) or
+    // "NAME=VALUE", as the CLI's --define. A name is a GLSL identifier without GLSL ES's reserved
+    // GL_ prefix or "__"; a name given twice with different values is refused (field "defines").
+    std::vector<std::string> defines;
 };
 
 enum class RowOrder { TopFirst, BottomFirst };

@@ -237,7 +237,8 @@ SessionSettings settingsFrom(std::optional<int> width, std::optional<int> height
                              bool floatImage, std::optional<double> frameTimeout, std::optional<double> compileTimeout,
                              const std::optional<std::filesystem::path>& mouseScript,
                              const std::optional<std::filesystem::path>& keyScript, std::optional<int> supersample,
-                             std::optional<int> motionBlur, std::optional<double> shutter, bool dither) {
+                             std::optional<int> motionBlur, std::optional<double> shutter, bool dither,
+                             const std::vector<std::string>& defines) {
     SessionSettings settings;
     settings.width = width;
     settings.height = height;
@@ -255,6 +256,7 @@ SessionSettings settingsFrom(std::optional<int> width, std::optional<int> height
     settings.motionBlur = motionBlur;
     settings.shutterDegrees = shutter;
     settings.dither = dither;
+    settings.defines = defines;
     return settings;
 }
 
@@ -283,16 +285,18 @@ void bindSession(py::module_& module) {
                          bool floatImage, std::optional<double> frameTimeout, std::optional<double> compileTimeout,
                          const std::optional<std::filesystem::path>& mouseScript,
                          const std::optional<std::filesystem::path>& keyScript, std::optional<int> supersample,
-                         std::optional<int> motionBlur, std::optional<double> shutter, bool dither) {
+                         std::optional<int> motionBlur, std::optional<double> shutter, bool dither,
+                         const std::vector<std::string>& defines) {
                  return std::make_unique<NativeSession>(
                      shadertoy, settingsFrom(width, height, fps, startTime, date, mediaFolders, mediaFiles,
                                              floatImage, frameTimeout, compileTimeout, mouseScript, keyScript,
-                                             supersample, motionBlur, shutter, dither));
+                                             supersample, motionBlur, shutter, dither, defines));
              }),
              py::arg("shadertoy"), py::arg("width"), py::arg("height"), py::arg("fps"), py::arg("start_time"),
              py::arg("date"), py::arg("media_folders"), py::arg("media_files"), py::arg("float_image"),
              py::arg("frame_timeout"), py::arg("compile_timeout"), py::arg("mouse_script"), py::arg("key_script"),
-             py::arg("supersample"), py::arg("motion_blur"), py::arg("shutter"), py::arg("dither"))
+             py::arg("supersample"), py::arg("motion_blur"), py::arg("shutter"), py::arg("dither"),
+             py::arg("defines"))
         .def("close", &NativeSession::close)
         .def_property_readonly("closed", &NativeSession::closed)
         .def("step", &NativeSession::step, py::arg("events"), py::arg("time"), py::arg("time_delta"),

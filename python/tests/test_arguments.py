@@ -65,6 +65,7 @@ CONSTRUCTOR_CASES = {
     ("Session", "motion_blur"): [0, -1, HUGE, 257, 2.5, "2", NAN],
     ("Session", "shutter"): NUMBERS + [-1, 1e300, "180"],
     ("Session", "dither"): ["yes", 2, None],
+    ("Session", "defines"): ["1X", ["A=1", "A=2"], ["GL_X"], 5, [5], {"A": object()}, {"A": False}, {5: 1}],
 }
 COMPARE_CASES = {
     ("compare", "frames"): [0, -1, HUGE, 2.5, "3", NAN],

@@ -20,6 +20,7 @@ import os
 import numpy
 
 from . import _args as args
+from . import _code
 from . import _toyhost
 from ._compare import CompareReport, FrameDifference, compare, compare_images
 from ._errors import (CompileError, Error, GlError, InputError, InternalError, ManifestError, OutputError,
@@ -30,7 +31,7 @@ from ._toyhost import Diagnostic, InputEvent, Reloaded, Shadertoy
 __version__ = _toyhost.version_string()
 
 __all__ = [
-    "load", "Session", "compare", "compare_images", "CompareReport", "FrameDifference", "Shadertoy", "Diagnostic", "InputEvent", "Reloaded", "key_code", "Error", "UsageError", "InputError",
+    "load", "from_code", "Session", "compare", "compare_images", "CompareReport", "FrameDifference", "Shadertoy", "Diagnostic", "InputEvent", "Reloaded", "key_code", "Error", "UsageError", "InputError",
     "ManifestError", "CompileError", "OutputError", "GlError", "StoppedError", "WatchdogError", "InternalError",
     "defaults", "__version__",
 ]
@@ -46,14 +47,29 @@ def defaults():
 
 def load(path_or_json, name="export.json", folder=None):
     """A Shadertoy from a folder holding manifest.json, a manifest file, a Shadertoy JSON export file
-    (API or site form), or the text of such an export (a str starting with '{' or '[').
+    (API or site form), a lone .glsl/.frag file (an Image-only shadertoy; the common.glsl next to
+    it joins as Common), the text of an export (a str starting with '{' or '['), or an export
+    already parsed (a dict or list, as json.load gives it).
 
     ``name`` and ``folder`` apply to JSON text: the name messages use for it, and where files it
     names relatively would be found. Raises ManifestError (or another toyhost.Error) listing every
     problem found."""
+    if isinstance(path_or_json, (dict, list)):
+        path_or_json = _code.dumps(path_or_json)
     if isinstance(path_or_json, str) and path_or_json.lstrip()[:1] in ("{", "["):
         return _toyhost.load_export_json(path_or_json, name, os.fspath(folder) if folder is not None else "")
-    return _toyhost.load_path(os.fspath(path_or_json))
+    return _toyhost.load_path(args.path("path_or_json", path_or_json))
+
+
+def from_code(image, *, common=None, buffers=None, channels=None, name="code"):
+    """A Shadertoy from code strings: ``image`` (mainImage), ``common``, ``buffers`` ({"A": code,
+    ...}) and ``channels`` ({"Image" or "A".."D": {0..3 or "iChannel0".. : source}}), where a source
+    is a buffer ("A".."D", read linear and clamped as the site's default, or {"buffer": "A",
+    "filter": "nearest", "wrap": "repeat"}), "keyboard", or an input as the site's export writes it
+    (a dict with "ctype"). The passes run as the same code in an export or a folder: the frames are
+    the same, byte for byte. Compile errors name the pass ("code [Buffer A]:LINE")."""
+    document = _code.export_of_code(image, common=common, buffers=buffers, channels=channels, name=name)
+    return _toyhost.load_export_json(_code.dumps(document), name, "")
 
 
 class Session:
@@ -74,12 +90,16 @@ class Session:
     (buffers still run once a frame); ``dither=True`` dithers the average before it is rounded to 8
     bits. The same frames as the CLI's --supersample, --motion-blur, --shutter and --dither.
 
+    ``defines`` adds macros to every pass after the site's header, before Common, as the CLI's
+    --define: ``["TRUTH", "STEPS=64"]`` or ``{"TRUTH": True, "STEPS": 64}`` (a name alone, True or
+    None is defined as 1). A name that is not a GLSL macro name raises UsageError naming ``defines``.
+
     Close it (``close()`` or ``with``) to free its GL context at once rather than at garbage
     collection."""
 
     def __init__(self, shadertoy, size=None, fps=None, start_time=0.0, date=None, media_folders=(),
                  media_files=None, float_image=False, frame_timeout=None, compile_timeout=None, mouse_script=None,
-                 key_script=None, supersample=None, motion_blur=None, shutter=None, dither=False):
+                 key_script=None, supersample=None, motion_blur=None, shutter=None, dither=False, defines=()):
         if not isinstance(shadertoy, Shadertoy):
             shadertoy = load(shadertoy)
         width, height = (None, None) if size is None else args.size("size", size)
@@ -93,7 +113,7 @@ class Session:
             args.optional(args.path, "mouse_script", mouse_script), args.optional(args.path, "key_script", key_script),
             args.optional(args.integer, "supersample", supersample),
             args.optional(args.integer, "motion_blur", motion_blur), args.optional(args.real, "shutter", shutter),
-            args.flag("dither", dither))
+            args.flag("dither", dither), args.defines("defines", defines))
         self.shadertoy = shadertoy
         self._mouse_held = False
         self._keys_held = set()

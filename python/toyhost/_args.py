@@ -99,6 +99,32 @@ def paths(name, value):
     return [path(name, item) for item in items]
 
 
+def defines(name, value):
+    """--define macros: "NAME" / "NAME=VALUE" strings (one or a list), or {NAME: value} where True
+    or None is the name alone; checked by the native side (names, one value per name)."""
+    if isinstance(value, str):
+        return [value]
+    if isinstance(value, dict):
+        out = []
+        for key, item in value.items():
+            if not isinstance(key, str):
+                raise usage(name, f"expected macro names as keys, got {key!r}")
+            if item is None or item is True:
+                out.append(key)
+            elif isinstance(item, bool):
+                raise usage(name, f"{key}: False does not define a macro; leave the name out")
+            elif isinstance(item, (str, int, float)):
+                out.append(f"{key}={item}")
+            else:
+                raise usage(name, f"{key}: expected a string or a number as its value, got {item!r}")
+        return out
+    try:
+        items = list(value)
+    except TypeError:
+        raise usage(name, f"expected \"NAME[=VALUE]\" strings or a dict, got {value!r}") from None
+    return [text(name, item) for item in items]
+
+
 def named_paths(name, value):
     """{stock name or id: path}."""
     if not hasattr(value, "items"):

@@ -79,6 +79,7 @@ public:
     bool onOwnThread() const { return std::this_thread::get_id() == thread; }
     // The media settings, fixed at creation: prepareReload reads them from any thread.
     MediaOptions media;
+    MacroDefines defines;  // settings' defines, fixed at creation as the media settings are
 
     // What every call that renders does around its GL work: the context current (headless) or the
     // caller's state kept (its own context).
@@ -192,6 +193,7 @@ Result<std::unique_ptr<Session::Impl>> start(const Shadertoy& shadertoy, const S
     Result<SessionPlan> plan = prepareSession(options);
     if (!plan) return plan.error();
     impl->media = plan->media;
+    impl->defines = plan->defines;
     impl->timeline.emplace(timelineOf(*plan));
     WatchdogHooks hooks;
     hooks.expire = [file = shadertoy.path().string()](const Diagnostic& expired, int) {
@@ -434,7 +436,7 @@ PreparedReload& PreparedReload::operator=(PreparedReload&&) noexcept = default;
 PreparedReload Session::prepareReload(const Shadertoy& next) const {
     // The media settings are fixed at creation: reading them races nothing the GL thread does.
     const MediaOptions& media = impl_->media;
-    return PreparedReload(std::make_unique<PreparedReload::Plan>(PreparedReload::Plan{impl_.get(), planPlayer(ShadertoyAccess::desc(next), media)}));
+    return PreparedReload(std::make_unique<PreparedReload::Plan>(PreparedReload::Plan{impl_.get(), planPlayer(ShadertoyAccess::desc(next), media, impl_->defines)}));
 }
 
 Result<Reloaded> Session::reload(PreparedReload prepared) {

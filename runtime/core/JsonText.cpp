@@ -1,10 +1,14 @@
 #include "core/JsonText.h"
 
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "core/Defaults.h"
+#include "core/TextExcerpt.h"
 
 namespace toyhost {
 
@@ -18,6 +22,80 @@ struct Level {
     std::string key;              // objects: the key being read
     std::set<std::string> keys;   // objects: the keys seen so far
 };
+
+std::string afterPrefix(std::string_view text, std::string_view prefix) {
+    return std::string(text.starts_with(prefix) ? text.substr(prefix.size()) : text);
+}
+
+// nlohmann's "expected ..." in words.
+std::string expectedInWords(const std::string& expected, const std::string& context) {
+    if (expected == "string literal") return context == "object key" ? "a key in double quotes" : "a string in double quotes";
+    if (expected == "'[', '{', or a literal") return "a value (a number, a string in double quotes, true, false, null, [ or {)";
+    if (expected == "end of input") return "the end of the text";
+    return expected;
+}
+
+}  // namespace
+
+std::string jsonSyntaxMessage(std::string_view what) {
+    // "[json.exception.parse_error.101] parse error at line 3, column 5: syntax error while parsing
+    // object key - invalid literal; last read: '/'; expected string literal"
+    std::string_view rest = what;
+    if (std::size_t colon = rest.find(": "); rest.starts_with("[json.exception") && colon != std::string_view::npos)
+        rest.remove_prefix(colon + 2);
+    std::string text = afterPrefix(rest, "syntax error ");
+    std::string context;
+    if (text.starts_with("while parsing ")) {
+        const std::size_t dash = text.find(" - ");
+        context = text.substr(14, dash == std::string::npos ? std::string::npos : dash - 14);
+        text = dash == std::string::npos ? "" : text.substr(dash + 3);
+    }
+    std::string reason = text, lastRead, expected;
+    for (std::size_t at; (at = reason.rfind("; ")) != std::string::npos;) {
+        const std::string piece = reason.substr(at + 2);
+        reason.erase(at);
+        if (piece.starts_with("last read: ")) lastRead = piece.substr(11);
+        else if (piece.starts_with("expected ")) expected = piece.substr(9);
+    }
+    // "last read" is the lexer's whole token ('{<U+000A>  /' for a comment after a brace): a word
+    // is shown whole ('True'), anything else by its last character (or <U+...> escape), the one
+    // that does not fit.
+    if (lastRead.size() > 3 && lastRead.front() == '\'' && lastRead.back() == '\'') {
+        const std::string inner = lastRead.substr(1, lastRead.size() - 2);
+        const bool word = std::all_of(inner.begin(), inner.end(), [](unsigned char c) {
+            return std::isalnum(c) || c == '_' || c == '-' || c == '+' || c == '.';
+        });
+        if (!word) {
+            const std::size_t escape = inner.rfind("<U+");
+            const bool endsInEscape = inner.back() == '>' && escape != std::string::npos;
+            lastRead = "'" + (endsInEscape ? inner.substr(escape) : inner.substr(inner.size() - 1)) + "'";
+        }
+    }
+    if (lastRead.size() == 3 && static_cast<unsigned char>(lastRead[1]) >= 0x80) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned char>(lastRead[1]));
+        return std::string("found the byte ") + hex + ", which is not JSON outside a string (a stray byte, or a file in "
+               "another encoding than UTF-8?)";
+    }
+    std::string found = lastRead;
+    if (reason.starts_with("unexpected ")) found = reason.substr(11);
+    // The usual slips of hand-written JSON first.
+    if (found.starts_with("'/"))
+        return "found " + found + ": JSON has no comments (remove it, or put the note in a \"note\" field)";
+    if (reason == "unexpected '}'" || reason == "unexpected ']'")
+        if (context == "object key" || context == "value")
+            return "found " + found + " after a comma: JSON allows no comma before a closing bracket";
+    if (reason.starts_with("unexpected end of input"))
+        return "the text ends too early" + (expected.empty() ? std::string() : ": expected " + expectedInWords(expected, context));
+    if (reason == "invalid literal" && !lastRead.empty())
+        return "found " + lastRead + ", which is not JSON: strings need double quotes; true, false and null are lowercase" +
+               (expected.empty() ? std::string() : "; expected " + expectedInWords(expected, context));
+    if (reason.starts_with("invalid string: ")) return reason.substr(16);
+    if (!expected.empty()) return "expected " + expectedInWords(expected, context) + (found.empty() ? "" : ", found " + found);
+    return reason.empty() ? std::string(rest) : reason;
+}
+
+namespace {
 
 std::string pathOf(const std::vector<Level>& levels, std::size_t upTo) {
     std::string path;
@@ -88,7 +166,16 @@ Result<json> parseJsonStrictly(std::string_view text, const std::string& file, C
         d.code = code;
         d.file = file;
         if (e.id == 406 && !levels.empty()) d.field = pathOf(levels, levels.size());
-        d.message = std::string("invalid JSON: ") + e.what();
+        if (const auto* syntax = dynamic_cast<const json::parse_error*>(&e); syntax && syntax->byte > 0) {
+            // byte: 1-based index of the last byte read, the one that does not fit.
+            const TextPlace place = placeOfOffset(text, syntax->byte - 1);
+            d.line = place.line;
+            d.column = place.column;
+            d.excerpt = formatExcerpt(place.lineText, place.line, place.column);
+            d.message = "invalid JSON: " + jsonSyntaxMessage(e.what());
+        } else {
+            d.message = std::string("invalid JSON: ") + e.what();
+        }
         return Error(std::move(d));
     }
     if (unlisted > 0) {

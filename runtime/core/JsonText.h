@@ -21,4 +21,9 @@ Result<nlohmann::json> parseJsonStrictly(std::string_view text, const std::strin
 // contradiction after "must be a non-empty string, not ...".)
 std::string describeJsonValue(const nlohmann::json& value);
 
+// A syntax error of nlohmann's parser (its what()) in words for a person who wrote the JSON by
+// hand, without the parser's own terms: "found '/': JSON has no comments ...", "expected a key in
+// double quotes, found ...". parseJsonStrictly puts the line and column in the Diagnostic.
+std::string jsonSyntaxMessage(std::string_view what);
+
 }  // namespace toyhost

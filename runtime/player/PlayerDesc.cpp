@@ -25,7 +25,7 @@ Status checkCanvasSize(int width, int height) {
     return okStatus();
 }
 
-Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media) {
+Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media, MacroDefines defines) {
     // Bytes GL would drop or misread: every pass and Common, all reported together.
     std::vector<Diagnostic> textProblems;
     if (manifest.commonSource) checkShaderText(manifest.commonCode, manifest.commonName, "Common", textProblems);
@@ -37,7 +37,7 @@ Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media) 
     auto prepare = [&](const PassDesc& pass) -> std::future<PassSource> {
         const bool child = commonMacros || definesFunctionMacro(pass.code);
         return std::async(child ? std::launch::async : std::launch::deferred,
-                          [&manifest, &pass] { return preparePassSource(manifest, pass); });
+                          [&manifest, &pass, &defines] { return preparePassSource(manifest, pass, defines); });
     };
     std::vector<std::future<PassSource>> preparing;
     for (const PassDesc& pass : manifest.passes) preparing.push_back(prepare(pass));
@@ -57,7 +57,7 @@ Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media) 
     std::optional<PassSource> soundSource;
     if (preparingSound) soundSource = preparingSound->get();
     return PlayerPlan{std::move(manifest), std::move(graph), std::move(*images), std::move(notices), std::move(sources),
-                      std::move(soundSource)};
+                      std::move(soundSource), std::move(defines)};
 }
 
 }  // namespace toyhost

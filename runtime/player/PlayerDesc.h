@@ -51,11 +51,13 @@ struct PlayerPlan {
     // thread only compiles.
     std::vector<PassSource> sources;
     std::optional<PassSource> soundSource;
+    MacroDefines defines;  // the run's --define macros, in every pass's texts above
 };
 
 // Builds the graph, prepares every pass's shader texts (cpp for the browser-style expansion),
 // decodes every image channel and opens every video and audio source (ffprobe and ffmpeg, waits
 // of seconds for live sources: call it off the GL thread); every problem is reported at once.
-Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media);
+// `defines` go into every pass (shader/MacroDefines.h).
+Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media, MacroDefines defines = {});
 
 }  // namespace toyhost

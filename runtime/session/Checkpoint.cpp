@@ -53,7 +53,7 @@ Error bad(const fs::path& path, const std::string& what) {
 }
 }  // namespace
 
-std::string codeHash(const ManifestDesc& manifest) {
+std::string codeHash(const ManifestDesc& manifest, std::span<const MacroDefine> defines) {
     // FNV-1a, 64 bits, over Common and each pass (name and code), separated.
     std::uint64_t h = 1469598103934665603ull;
     auto mix = [&](std::string_view text) {
@@ -64,6 +64,12 @@ std::string codeHash(const ManifestDesc& manifest) {
     for (const PassDesc& pass : manifest.passes) {
         mix(passName(pass.id));
         mix(pass.code);
+    }
+    // Without defines the hash is the one checkpoints had before --define existed.
+    for (const MacroDefine& define : defines) {
+        mix("#define");
+        mix(define.name);
+        mix(define.value);
     }
     char text[17];
     std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));

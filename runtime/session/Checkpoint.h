@@ -11,11 +11,13 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 
 #include "core/Result.h"
 #include "manifest/ManifestDesc.h"
 #include "player/Player.h"
+#include "shader/MacroDefines.h"
 
 namespace toyhost {
 
@@ -29,8 +31,9 @@ struct Checkpoint {
     std::vector<std::string> media;  // the stock media and image files its channels show
 };
 
-// A hash of Common and every pass's code: a resume against other code is not the same run.
-std::string codeHash(const ManifestDesc& manifest);
+// A hash of Common and every pass's code, and of the run's --define macros when there are any: a
+// resume against other code is not the same run.
+std::string codeHash(const ManifestDesc& manifest, std::span<const MacroDefine> defines = {});
 // The media ids and image files of `manifest`'s channels, sorted.
 std::vector<std::string> channelMedia(const ManifestDesc& manifest);
 

@@ -222,7 +222,7 @@ Status SessionCore::saveCheckpoint() {
     const SessionOptions& o = plan_.options;
     if (!o.checkpoint || !player_) return okStatus();
     auto checkpoint = std::make_shared<Checkpoint>(Checkpoint{player_->saveState(), *o.settings.fps, o.settings.startTime, *plan_.wallClock,
-                                                              player_->manifest().name, codeHash(player_->manifest()),
+                                                              player_->manifest().name, codeHash(player_->manifest(), plan_.defines),
                                                               channelMedia(player_->manifest())});
     const fs::path path = *o.checkpoint;
     writer_->submit([path, checkpoint]() -> Result<fs::path> {

@@ -219,6 +219,9 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
 
     SessionPlan run{o, {}, std::nullopt, {}, {}, 0, *o.frames, std::nullopt, wallClock,
                     MediaOptions{s.mediaFiles, s.mediaFolders, o.webcam, o.mic}, sampling};
+    Result<MacroDefines> defines = parseMacroDefines(s.defines);
+    if (!defines) return defines.error();
+    run.defines = std::move(*defines);
     if (o.frameRange) {
         const auto [first, end] = *o.frameRange;
         if (first < 0 || end <= first || end > *o.frames)
@@ -243,7 +246,7 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
                              "the checkpoint is at frame " + std::to_string(resume->state.frame) +
                                  ", after the first frame this run must render (" + std::to_string(run.first) + ")",
                              Code::UsageResume);
-        if (resume->shadertoy != manifest->name || resume->codeHash != codeHash(*manifest))
+        if (resume->shadertoy != manifest->name || resume->codeHash != codeHash(*manifest, run.defines))
             return fileError(o.resume->string(),
                              "the checkpoint was made from other code (shadertoy \"" + resume->shadertoy +
                                  "\"): a resumed run would not continue the same frames",
@@ -309,7 +312,7 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
             return error;
         }
     }
-    Result<PlayerPlan> plan = planPlayer(std::move(*manifest), run.media);
+    Result<PlayerPlan> plan = planPlayer(std::move(*manifest), run.media, run.defines);
     if (!plan) return plan.error();
     run.shadertoy = std::move(*plan);
     // --codec auto tries the hardware encoders with short ffmpeg runs; the choice is kept for the

@@ -125,6 +125,7 @@ struct SessionPlan {
     // settings' supersample, motion blur, shutter and dither with the defaults filled in.
     SamplingDesc sampling;
     int tile = 0;                          // a tiled still: the tile side; 0: not tiled
+    MacroDefines defines = {};             // settings' defines, parsed: in every pass
 };
 
 // The run's fixed-step input (timing/Timeline.h): its clock, date and input scripts.

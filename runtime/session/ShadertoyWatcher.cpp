@@ -25,9 +25,9 @@ std::vector<fs::path> watchedFiles(const fs::path& target, const ManifestDesc& m
     return files;
 }
 
-ShadertoyWatcher::ShadertoyWatcher(fs::path target, MediaOptions media, const ManifestDesc& current,
+ShadertoyWatcher::ShadertoyWatcher(fs::path target, MediaOptions media, MacroDefines defines, const ManifestDesc& current,
                                    Clock::duration interval)
-    : target_(std::move(target)), media_(std::move(media)), interval_(interval), files_(watchedFiles(target_, current)) {
+    : target_(std::move(target)), media_(std::move(media)), defines_(std::move(defines)), interval_(interval), files_(watchedFiles(target_, current)) {
     thread_ = std::thread([this] { run(); });
 }
 
@@ -80,7 +80,7 @@ void ShadertoyWatcher::run() {
             Result<PlayerPlan> plan = [&]() -> Result<PlayerPlan> {
                 Result<ManifestDesc> manifest = loadShadertoy(target_);
                 if (!manifest) return manifest.error();
-                return planPlayer(std::move(*manifest), media_);
+                return planPlayer(std::move(*manifest), media_, defines_);
             }();
             if (plan) {
                 files_ = watchedFiles(target_, plan->manifest);  // passes may have come or gone

@@ -36,8 +36,9 @@ struct ShadertoyChange {
 class ShadertoyWatcher {
 public:
     using Clock = std::chrono::steady_clock;
-    // Starts watching the files of `current` (loaded from `target`).
-    ShadertoyWatcher(std::filesystem::path target, MediaOptions media, const ManifestDesc& current,
+    // Starts watching the files of `current` (loaded from `target`); a change is planned with the
+    // run's media settings and --define macros.
+    ShadertoyWatcher(std::filesystem::path target, MediaOptions media, MacroDefines defines, const ManifestDesc& current,
                      Clock::duration interval = std::chrono::milliseconds(100));
     ~ShadertoyWatcher();
     ShadertoyWatcher(const ShadertoyWatcher&) = delete;
@@ -60,6 +61,7 @@ private:
 
     std::filesystem::path target_;
     MediaOptions media_;
+    MacroDefines defines_;
     Clock::duration interval_;
     std::vector<std::filesystem::path> files_;  // watcher thread only
     std::mutex mutex_;

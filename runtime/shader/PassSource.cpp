@@ -33,13 +33,14 @@ bool definesFunctionMacro(std::string_view code) {
     return false;
 }
 
-PassSource preparePassSource(const ManifestDesc& manifest, const PassDesc& pass) {
+PassSource preparePassSource(const ManifestDesc& manifest, const PassDesc& pass, std::span<const MacroDefine> defines) {
     ShaderInputs inputs;
     inputs.pass = pass.id;
     inputs.sound = pass.id == PassId::Sound;
     for (int c = 0; c < kChannelCount; ++c) inputs.samplers[c] = pass.channels[c].samplerType;
     inputs.common = manifest.commonSource ? &manifest.commonCode : nullptr;
     inputs.code = pass.code;
+    inputs.defines = defines;
     AssembledShader fragment = assembleFragmentShader(inputs);
     PassSource source;
     source.text = std::move(fragment.text);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "manifest/ManifestDesc.h"
+#include "shader/MacroDefines.h"
 
 namespace toyhost {
 
@@ -29,6 +30,7 @@ bool definesFunctionMacro(std::string_view code);
 
 // Assembles `pass` of `manifest` (Common included; the Sound pass with mainSound's wrapper) and,
 // when its code or Common defines a function-like macro, expands it as browsers do (runs cpp).
-PassSource preparePassSource(const ManifestDesc& manifest, const PassDesc& pass);
+// `defines`: the run's --define macros, in every pass.
+PassSource preparePassSource(const ManifestDesc& manifest, const PassDesc& pass, std::span<const MacroDefine> defines = {});
 
 }  // namespace toyhost

@@ -172,7 +172,7 @@ std::string makeHeader(const ShaderInputs& in) {
 
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     AssembledShader out;
-    const std::string header = makeHeader(inputs);
+    const std::string header = makeHeader(inputs) + macroDefineLines(inputs.defines);
     std::string user;
     if (inputs.common) {
         // Common is pasted followed by a newline.

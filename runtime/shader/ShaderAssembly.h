@@ -4,10 +4,12 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <string>
 #include <string_view>
 
 #include "manifest/ManifestDesc.h"
+#include "shader/MacroDefines.h"
 
 namespace toyhost {
 
@@ -17,6 +19,8 @@ struct ShaderInputs {
     const std::string* common = nullptr;   // null: the shadertoy has no Common pass
     std::string_view code;
     std::array<SamplerType, kChannelCount> samplers{};
+    // The run's --define macros, written after the header (in its line numbering), before Common.
+    std::span<const MacroDefine> defines;
 };
 
 // The generated text numbers its parts apart with #line, so a compiler message's line number

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/TextExcerpt.h"
+
 namespace toyhost {
 
 struct SourcePosition {
@@ -70,11 +72,5 @@ private:
 
     std::size_t lineEnd(int n) const;
 };
-
-// The excerpt under a message: "  NN | " and the line, then a line with a caret under `column`
-// (followed by `width - 1` tildes when the problem spans a token). Tabs before the column are kept
-// in the caret line so that the caret stays under its character; a very long line is cut to a
-// window around the column. Ends with a newline.
-std::string formatExcerpt(std::string_view lineText, int lineNumber, int column, int width = 1);
 
 }  // namespace toyhost

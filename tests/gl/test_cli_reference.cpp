@@ -44,7 +44,9 @@ TEST(CliReference, DocsCliMdIsTheHelpOfEveryCommand) {
                                      << " --help`: run scripts/update-cli-doc.sh";
     }
     EXPECT_EQ(headings, (std::vector<std::string>{"toyhost", "toyhost run", "toyhost import", "toyhost inspect",
-                                                 "toyhost new", "toyhost media", "toyhost sound", "toyhost compare"}));
+                                                 "toyhost new", "toyhost media", "toyhost sound", "toyhost compare",
+                                                 "toyhost farm", "toyhost farm plan", "toyhost farm status",
+                                                 "toyhost farm join"}));
 }
 
 }  // namespace

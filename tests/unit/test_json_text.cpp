@@ -28,3 +28,56 @@ TEST(JsonText, ManyDuplicatesAreListedUpToTheCapAndTheRestCounted) {
               std::string::npos)
         << list.back().message;
 }
+
+// A syntax error says where (line, column, the line with a caret) and what, in words for a person
+// who wrote the JSON by hand, without the parser's own terms.
+namespace {
+Diagnostic syntaxError(const std::string& text) {
+    Result<nlohmann::json> parsed = parseJsonStrictly(text, "manifest.json", Code::ManifestJson);
+    EXPECT_FALSE(parsed.ok());
+    return parsed.ok() ? Diagnostic{} : parsed.error().first();
+}
+}  // namespace
+
+TEST(JsonText, ASyntaxErrorHasItsLineColumnAndExcerpt) {
+    const Diagnostic d = syntaxError("{\n  \"passes\": {\n    \"Image\": { \"source\": \"image.glsl\" },\n  }\n}\n");
+    EXPECT_EQ(d.line, 4);
+    EXPECT_EQ(d.column, 3);
+    EXPECT_EQ(d.code, Code::ManifestJson);
+    EXPECT_EQ(d.message, "invalid JSON: found '}' after a comma: JSON allows no comma before a closing bracket");
+    EXPECT_EQ(d.excerpt, "    4 |   }\n      |   ^\n");
+    EXPECT_EQ(formatDiagnostic(d).rfind("manifest.json:4:3: error: invalid JSON: ", 0), 0u) << formatDiagnostic(d);
+    EXPECT_EQ(d.message.find("json.exception"), std::string::npos);
+}
+
+TEST(JsonText, TheUsualSlipsAreNamed) {
+    Diagnostic d = syntaxError("{\n  // the ocean\n  \"name\": \"x\"\n}");
+    EXPECT_EQ(d.line, 2);
+    EXPECT_NE(d.message.find("JSON has no comments"), std::string::npos) << d.message;
+    d = syntaxError("{\"name\": 'x'}");
+    EXPECT_EQ(d.line, 1);
+    EXPECT_EQ(d.column, 10);
+    EXPECT_NE(d.message.find("strings need double quotes"), std::string::npos) << d.message;
+    d = syntaxError("{name: \"x\"}");
+    EXPECT_NE(d.message.find("strings need double quotes"), std::string::npos) << d.message;
+    d = syntaxError("{\"passes\": {\"Image\": {}}");
+    EXPECT_NE(d.message.find("the text ends too early"), std::string::npos) << d.message;
+    d = syntaxError("{\"a\": 1 \"b\": 2}");
+    EXPECT_NE(d.message.find("expected"), std::string::npos) << d.message;
+    EXPECT_EQ(d.message.find("json.exception"), std::string::npos) << d.message;
+    d = syntaxError("");
+    EXPECT_EQ(d.line, 1);
+    EXPECT_NE(d.message.find("the text ends too early"), std::string::npos) << d.message;
+}
+
+TEST(JsonText, AWindowsLineEndingIsNotPartOfTheExcerpt) {
+    const Diagnostic d = syntaxError("{\r\n  \"a\": 1,\r\n}\r\n");
+    EXPECT_EQ(d.line, 3);
+    EXPECT_EQ(d.excerpt, "    3 | }\n      | ^\n");
+}
+
+TEST(JsonText, AStrayByteIsNamedByItsValue) {
+    const Diagnostic d = syntaxError("{\"a\": 1}\xff");
+    EXPECT_EQ(d.column, 9);
+    EXPECT_NE(d.message.find("found the byte 0xFF"), std::string::npos) << d.message;
+}

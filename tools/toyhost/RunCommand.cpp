@@ -1,16 +1,20 @@
 #include <cmath>
 #include <cstdint>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <unistd.h>
 
 #include "Commands.h"
 #include "Console.h"
 #include "NumberOptions.h"
+#include "core/AtomicFile.h"
 #include "core/Defaults.h"
 #include "core/NumberText.h"
 #include "drivers/headless/HeadlessDriver.h"
 #include "drivers/window/WindowContext.h"
 #include "drivers/window/WindowDriver.h"
+#include "manifest/CodeShadertoy.h"
 
 namespace toyhost::cli {
 
@@ -40,11 +44,39 @@ void requireDecimalNumbers(CLI::App& run) {
         run.get_option(name)->transform(wholeNumber);  // transform: it may rewrite the text
 }
 
+// `toyhost run -`: the Image pass's code from standard input, read whole before the run starts.
+Result<std::string> readImageCodeFromStdin(const GlProcess& process) {
+    if (process.closedAtStart[STDIN_FILENO]) return Error("standard input is closed: give the Image code through a pipe", Code::Usage);
+    if (isatty(STDIN_FILENO))
+        return Error("'-' reads the Image pass's code from standard input, which is a terminal: pipe a file in "
+                     "(cat image.glsl | toyhost run -) or give the file",
+                     Code::Usage);
+    std::string code;
+    char block[65536];
+    for (;;) {
+        const ssize_t got = ::read(STDIN_FILENO, block, sizeof block);
+        if (got == 0) break;
+        if (got < 0) {
+            if (errno == EINTR) continue;
+            return Error(std::string("reading the Image code from standard input: ") + std::strerror(errno), Code::IoRead);
+        }
+        code.append(block, static_cast<std::size_t>(got));
+        if (code.size() > kDefaultReadLimitBytes)
+            return Error("standard input holds more than " + std::to_string(kDefaultReadLimitBytes >> 20) +
+                             " MiB: that is not a shader",
+                         Code::IoTooLarge);
+    }
+    return code;
+}
+
 }  // namespace
 
 void RunCommand::define(CLI::App& run) {
     const std::string defaultSize = std::to_string(defaults::kCanvasWidth) + "x" + std::to_string(defaults::kCanvasHeight);
-    run.add_option("target", target_, "Folder holding manifest.json, a manifest file, or a Shadertoy JSON export")
+    run.add_option("target", target_,
+                   "Folder holding manifest.json, a manifest file, a Shadertoy JSON export, a lone .glsl/.frag file (an "
+                   "Image-only shadertoy, with the common.glsl next to it as Common), or - for the Image code on "
+                   "standard input")
         ->required();
     run.add_flag("--window", window_,
                  "Open a window (GLFW, OpenGL ES 3) and run in real time with mouse and keyboard; the default when "
@@ -125,6 +157,13 @@ void RunCommand::define(CLI::App& run) {
 int RunCommand::execute(const GlProcess& process) {
     SessionOptions& o = options_;
     o.target = target_;
+    if (target_ == "-") {
+        Result<std::string> code = readImageCodeFromStdin(process);
+        if (!code) return fail(code.error());
+        std::error_code ec;
+        o.shadertoy = std::make_shared<const ManifestDesc>(
+            imageOnlyShadertoy("stdin", std::filesystem::current_path(ec) / "stdin", PassCode{std::move(*code), "stdin", "stdin"}));
+    }
     if (Status given = flags_.applyTo(o.settings, o.mouse); !given) return fail(given.error());
     sampling_.applyTo(o.settings);
     o.frames = frames_;

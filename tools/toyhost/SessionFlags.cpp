@@ -29,6 +29,7 @@ constexpr std::pair<const char*, const char*> kFlagOfSetting[] = {
     {"dither", "--dither"},
     {"tile", "--tile"},
     {"seconds", "--seconds"},
+    {"defines", "--define"},
 };
 
 std::string number(double value) {
@@ -86,6 +87,11 @@ void SessionFlags::define(CLI::App& command, unsigned groups) {
                                number(defaults::kMinTimeoutSeconds) + ")")
             ->check(timeoutSeconds);
     }
+    if (groups & Shader)
+        command.add_option("--define", defines_,
+                           "Add #define NAME VALUE to every pass, after the site's header and before Common: NAME "
+                           "(defined as 1) or NAME=VALUE (repeatable)")
+            ->allow_extra_args(false);
 }
 
 Status SessionFlags::parseMouse(std::optional<glm::vec2>& mouse) const {
@@ -129,6 +135,7 @@ Status SessionFlags::applyTo(SessionSettings& s, std::optional<glm::vec2>& mouse
     if (!keyScript_.empty()) s.keyScript = keyScript_;
     if (frameTimeout_) s.frameTimeout = *frameTimeout_;
     if (compileTimeout_) s.compileTimeout = *compileTimeout_;
+    s.defines = defines_;
     return parseMedia(s.mediaFolders, s.mediaFiles);
 }
 

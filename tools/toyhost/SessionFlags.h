@@ -1,5 +1,5 @@
 // SessionFlags: the flags `run`, `compare` and `sound` share (canvas, clock, date, input, media,
-// watchdog limits), declared once with one help text each and turned into the library's settings;
+// watchdog limits, --define), declared once with one help text each and turned into the library's settings;
 // and the other direction: the library names a setting in its errors (Diagnostic::field "size",
 // session/SettingChecks.h), the CLI shows the flag the user typed ("--size").
 #pragma once
@@ -18,7 +18,7 @@ namespace toyhost::cli {
 
 class SessionFlags {
 public:
-    enum Group : unsigned { Canvas = 1, Clock = 2, Input = 4, Media = 8, Limits = 16, All = 31 };
+    enum Group : unsigned { Canvas = 1, Clock = 2, Input = 4, Media = 8, Limits = 16, Shader = 32, All = 63 };
     // Declares the flags of `groups` on `command`.
     void define(CLI::App& command, unsigned groups);
     // What was given, into the library's settings (a run's SessionOptions::settings, compare's
@@ -33,7 +33,7 @@ private:
 
     std::string size_, date_, mouse_, mouseScript_, keyScript_;
     std::optional<double> fps_, startTime_, frameTimeout_, compileTimeout_;
-    std::vector<std::string> mediaFolders_, mediaFiles_;
+    std::vector<std::string> mediaFolders_, mediaFiles_, defines_;
 };
 
 // `error` with each setting the library names (Diagnostic::field) shown as the CLI's flag.

@@ -14,6 +14,7 @@
 
 #include "Commands.h"
 #include "Console.h"
+#include "FarmCommand.h"
 #include "ArgumentChecks.h"
 #include "core/Defaults.h"
 #include "core/NumberText.h"
@@ -109,7 +110,7 @@ int commandLine(int argc, char** argv, bool& comparing) {
     sound->add_option("--seconds", soundOptions.seconds, "Length, as the site's 180 s by default")
         ->default_val(defaults::kSoundSeconds)
         ->check(CLI::Validator([](std::string& text) { return decimalNumberProblem(text); }, ""));
-    soundOptions.flags.define(*sound, cli::SessionFlags::Media | cli::SessionFlags::Limits);
+    soundOptions.flags.define(*sound, cli::SessionFlags::Media | cli::SessionFlags::Limits | cli::SessionFlags::Shader);
     sound->add_flag("--quiet", soundOptions.quiet, "Hide notices (stand-ins)");
 
     CompareCommand compareCommand;
@@ -119,6 +120,9 @@ int commandLine(int argc, char** argv, bool& comparing) {
     compare->footer("Exit codes of compare (as cmp and diff): 0 equal within the tolerance; 1 different; 2 no answer "
                     "(bad usage, a shadertoy that does not load or compile, a pass one lacks, GL or write error); 124 "
                     "watchdog; 130 / 143 / 129 interrupted by SIGINT / SIGTERM / SIGHUP.");
+
+    FarmCommand farmCommand;
+    farmCommand.define(app);
 
     if (std::optional<std::string> empty = emptyArgumentProblem(app, argc, argv)) return usage(*empty);
     if (std::optional<std::string> unknown = unknownCommandProblem(app, argc, argv)) return usage(*unknown);
@@ -142,6 +146,7 @@ int commandLine(int argc, char** argv, bool& comparing) {
         if (const char* folder = std::getenv("TOYHOST_MEDIA"); folder && *folder) mediaFolders.emplace_back(folder);
         return mediaCommand(mediaFolders);
     }
+    if (farmCommand.parsed()) return farmCommand.execute();
     // What renders: its GL work on a GL thread (gl/GlThread.h), SIGINT/SIGTERM asking it to stop.
     if (!process) return fail(process.error());
     installStopSignals();

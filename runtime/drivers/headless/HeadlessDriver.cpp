@@ -77,7 +77,7 @@ Result<SessionReport> runHeadless(const SessionOptions& options, SessionObserver
     if (!context) return context.error();
     std::optional<ShadertoyWatcher> watcher;
     if (prepared->options.watch)
-        watcher.emplace(prepared->options.target, prepared->media, prepared->shadertoy.manifest);
+        watcher.emplace(prepared->options.target, prepared->media, prepared->defines, prepared->shadertoy.manifest);
     Result<std::unique_ptr<SessionCore>> session = SessionCore::start(std::move(*prepared), *context, observer, watchdog);
     if (!session) return session.error();
     if (options.sound) return (*session)->writeSound();

@@ -185,7 +185,7 @@ Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& 
     windowOptions.height = *prepared->options.settings.height;
     const std::string& name = prepared->shadertoy.manifest.name;
     windowOptions.title = name.empty() ? "toyhost" : name + " - toyhost";
-    ShadertoyWatcher watcher(prepared->options.target, prepared->media, prepared->shadertoy.manifest);
+    ShadertoyWatcher watcher(prepared->options.target, prepared->media, prepared->defines, prepared->shadertoy.manifest);
     Result<std::shared_ptr<WindowContext>> window = WindowContext::create(windowOptions);
     if (!window) return window.error();
     (*window)->releaseCurrent();  // the GL thread makes it current

@@ -1,0 +1,305 @@
+// FarmPlan: writes the scheduler files of a sharded render as text (see FarmPlan.h). The run's
+// options live only in run-shard.sh, so every scheduler runs the same command. No GL needed.
+#include "farm/FarmPlan.h"
+
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+
+namespace toyhost::farm {
+
+namespace {
+
+std::string joinQuoted(const std::vector<std::string>& words) {
+    std::string text;
+    for (const std::string& word : words) {
+        if (!text.empty()) text += ' ';
+        text += shellQuoted(word);
+    }
+    return text;
+}
+
+// The options the plan itself sets for every shard: given again, two values would fight.
+std::optional<std::string> ownedOption(const std::vector<std::string>& options) {
+    for (const std::string& option : options)
+        for (const char* owned : {"--frames", "--shard", "--frame-range", "--resume", "--checkpoint", "--out", "--window",
+                                  "--watch"})
+            if (option == owned || option.rfind(std::string(owned) + "=", 0) == 0) return option;
+    return std::nullopt;
+}
+
+std::string yamlQuoted(const std::string& text) {
+    // A JSON string is a YAML double-quoted scalar.
+    return nlohmann::json(text).dump();
+}
+
+std::string farmJson(const PlanRequest& r) {
+    nlohmann::json spans = nlohmann::json::array();
+    for (int i = 0; i < r.shards; ++i) {
+        const FrameSpan span = shardSpan(r.frames, r.shards, i);
+        spans.push_back({span.first, span.end});
+    }
+    const char* scheduler = r.scheduler == Scheduler::Slurm ? "slurm" : r.scheduler == Scheduler::Kubernetes ? "k8s" : "parallel";
+    nlohmann::json plan = {{"target", r.target}, {"frames", r.frames},    {"shards", r.shards},
+                           {"frameName", r.frameName}, {"spans", spans}, {"scheduler", scheduler},
+                           {"stateful", r.stateful}, {"runOptions", r.runOptions}};
+    return plan.dump(2) + "\n";
+}
+
+std::string bashArray(const std::vector<int>& values) {
+    std::string text = "(";
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (i) text += ' ';
+        text += std::to_string(values[i]);
+    }
+    text += ')';
+    return text;
+}
+
+// run-shard.sh INDEX: the one place the run's command and options are written. It resumes from the
+// shard's own checkpoint when a previous attempt left one (a requeued task), else from the chain's
+// checkpoint at the shard's first frame (stateful), else starts at the first frame directly.
+std::string runShardScript(const PlanRequest& r) {
+    std::vector<int> firsts, ends;
+    for (int i = 0; i < r.shards; ++i) {
+        const FrameSpan span = shardSpan(r.frames, r.shards, i);
+        firsts.push_back(span.first);
+        ends.push_back(span.end);
+    }
+    std::ostringstream s;
+    s << "#!/bin/bash\n"
+      << "# One shard of " << r.target << " (" << r.frames << " frames in " << r.shards
+      << " shards), written by `toyhost farm plan`: run-shard.sh INDEX.\n"
+      << "set -u\n"
+      << "index=\"${1:?usage: run-shard.sh INDEX}\"\n"
+      << "job=" << shellQuoted(r.jobDir) << "\n"
+      << "firsts=" << bashArray(firsts) << "\n"
+      << "ends=" << bashArray(ends) << "\n"
+      << "if ! [[ \"$index\" =~ ^[0-9]+$ ]] || ((index >= " << r.shards << ")); then\n"
+      << "  echo \"run-shard.sh: no shard $index (0.." << r.shards - 1 << ")\" >&2; exit 2\n"
+      << "fi\n"
+      << "first=${firsts[index]} end=${ends[index]}\n"
+      << "options=(" << joinQuoted(r.runOptions) << ")\n"
+      << "own=\"$job/checkpoints/shard-$index.ckpt\"\n"
+      << "mkdir -p \"$job/frames\" \"$job/checkpoints\" \"$job/exit\"\n"
+      << "# `again`: render the whole shard anew (frames lost or damaged after it finished).\n"
+      << "if [ \"${2:-}\" = again ]; then rm -f \"$own\"; fi\n"
+      << "# A checkpoint holds the next frame to render: resuming from it without a range renders\n"
+      << "# from there to --frames, the shard's end. The shard's own one is left by an attempt that\n"
+      << "# was stopped (a time limit, preemption: SIGTERM) or by one that finished.\n"
+      << "start=(--frame-range \"$first:$end\")\n"
+      << "if [ -s \"$own\" ]; then\n"
+      << "  start=(--resume \"$own\")\n";
+    if (r.stateful)
+        s << "elif ((index > 0)); then\n"
+          << "  start=(--resume \"$job/checkpoints/start-$index.ckpt\")\n";
+    s << "fi\n"
+      << "echo \"run-shard.sh: shard $index, frames $first-$((end - 1)): ${start[*]}\" >&2\n"
+      << "# exec: toyhost itself receives the scheduler's SIGTERM (a wrapper that forwarded it would\n"
+      << "# deliver a second one where the scheduler signals every process, which stops at once).\n"
+      << "exec " << shellQuoted(r.toyhost) << " run " << shellQuoted(r.target)
+      << " --headless --quiet --frames \"$end\" \"${start[@]}\" --checkpoint \"$own\" \"${options[@]}\" \\\n"
+      << "  --out \"$job/frames/\"" << shellQuoted(r.frameName) << "\n";
+    return s.str();
+}
+
+// checkpoints.sh: one sequential pass over the boundaries, each step simulating only its part.
+std::string chainScript(const PlanRequest& r) {
+    std::ostringstream s;
+    s << "#!/bin/bash\n"
+      << "# The checkpoint at each shard's first frame, for " << r.target << ": one sequential pass, each\n"
+      << "# step simulating only the frames since the previous one. Written by `toyhost farm plan`.\n"
+      << "set -eu\n"
+      << "job=" << shellQuoted(r.jobDir) << "\n"
+      << "options=(" << joinQuoted(r.runOptions) << ")\n"
+      << "mkdir -p \"$job/checkpoints\"\n"
+      << "previous=()\n";
+    for (int i = 1; i < r.shards; ++i) {
+        const FrameSpan span = shardSpan(r.frames, r.shards, i);
+        const std::string file = "\"$job/checkpoints/start-" + std::to_string(i) + ".ckpt\"";
+        s << "if [ ! -s " << file << " ]; then\n"
+          << "  " << shellQuoted(r.toyhost) << " run " << shellQuoted(r.target) << " --headless --quiet --frames "
+          << span.first << " \"${previous[@]}\" --checkpoint " << file << " \"${options[@]}\"\n"
+          << "fi\n"
+          << "previous=(--resume " << file << ")\n";
+    }
+    return s.str();
+}
+
+std::string sbatchHeader(const PlanRequest& r, const std::string& name) {
+    std::ostringstream s;
+    s << "#!/bin/bash\n"
+      << "#SBATCH --job-name=" << name << "\n"
+      << "#SBATCH --output=" << r.jobDir << "/logs/%x-%A_%a.log\n"
+      << "#SBATCH --open-mode=append\n";
+    if (!r.slurmTime.empty()) s << "#SBATCH --time=" << r.slurmTime << "\n";
+    if (r.cpusPerTask > 0) s << "#SBATCH --cpus-per-task=" << r.cpusPerTask << "\n";
+    return s.str();
+}
+
+std::string slurmArray(const PlanRequest& r) {
+    std::ostringstream s;
+    s << sbatchHeader(r, "toyhost")
+      << "#SBATCH --array=0-" << r.shards - 1;
+    if (r.parallelism > 0) s << '%' << r.parallelism;
+    s << "\n"
+      << "#SBATCH --requeue\n"
+      << "# One array task per shard. At its time limit Slurm sends SIGTERM: toyhost writes the shard's\n"
+      << "# checkpoint and exits 143, and the task asks to be requeued; the next attempt resumes.\n"
+      << "job=" << shellQuoted(r.jobDir) << "\n"
+      << "task=$SLURM_ARRAY_TASK_ID\n"
+      << "# Slurm signals every process of the task, toyhost included: this shell only outlives it.\n"
+      << "trap 'true' TERM\n"
+      << "\"$job/run-shard.sh\" \"$task\" \"$@\" &\n"
+      << "child=$!\n"
+      << "wait \"$child\"; code=$?\n"
+      << "while kill -0 \"$child\" 2>/dev/null; do wait \"$child\"; code=$?; done\n"
+      << "echo \"$code\" > \"$job/exit/shard-$task\"\n"
+      << "if [ \"$code\" -eq 143 ] && [ -s \"$job/checkpoints/shard-$task.ckpt\" ]; then\n"
+      << "  scontrol requeue \"${SLURM_ARRAY_JOB_ID}_${task}\"\n"
+      << "fi\n"
+      << "exit \"$code\"\n";
+    return s.str();
+}
+
+std::string slurmSubmit(const PlanRequest& r) {
+    std::ostringstream s;
+    s << "#!/bin/bash\n"
+      << "# Submits the job (the checkpoint chain first, for a stateful shadertoy); prints the array's job id.\n"
+      << "set -eu\n"
+      << "job=" << shellQuoted(r.jobDir) << "\n"
+      << "mkdir -p \"$job/logs\"\n";
+    if (r.stateful)
+        s << "chain=$(sbatch --parsable \"$job/checkpoints.sbatch\")\n"
+          << "sbatch --parsable --dependency=afterok:\"$chain\" \"$job/job.sbatch\"\n";
+    else
+        s << "sbatch --parsable \"$job/job.sbatch\"\n";
+    return s.str();
+}
+
+std::string k8sJob(const PlanRequest& r, const std::string& name, bool indexed, const std::string& command) {
+    std::ostringstream s;
+    s << "apiVersion: batch/v1\n"
+      << "kind: Job\n"
+      << "metadata:\n"
+      << "  name: " << name << "\n"
+      << "spec:\n";
+    if (indexed)
+        s << "  completionMode: Indexed\n"
+          << "  completions: " << r.shards << "\n"
+          << "  parallelism: " << (r.parallelism > 0 ? r.parallelism : r.shards) << "\n"
+          << "  backoffLimitPerIndex: 2\n";
+    s << "  backoffLimit: " << (indexed ? 2 * r.shards : 2) << "\n"
+      << "  template:\n"
+      << "    spec:\n"
+      << "      restartPolicy: Never\n"
+      << "      terminationGracePeriodSeconds: 30\n"
+      << "      containers:\n"
+      << "        - name: toyhost\n"
+      << "          image: " << yamlQuoted(r.image) << "\n"
+      << "          command: [\"bash\", \"-c\", " << yamlQuoted(command) << "]\n";
+    if (r.cpusPerTask > 0) s << "          resources: { requests: { cpu: \"" << r.cpusPerTask << "\" } }\n";
+    s << "          volumeMounts:\n"
+      << "            - { name: job, mountPath: " << yamlQuoted(r.jobDir) << " }\n"
+      << "      volumes:\n"
+      << "        - name: job\n"
+      << "          persistentVolumeClaim: { claimName: toyhost-job }  # shared storage holding the job folder\n";
+    return s.str();
+}
+
+std::string k8sSubmit(const PlanRequest& r) {
+    std::ostringstream s;
+    s << "#!/bin/bash\n"
+      << "# Applies the Job (after the checkpoint chain's Job has completed, for a stateful shadertoy).\n"
+      << "set -eu\n"
+      << "job=" << shellQuoted(r.jobDir) << "\n";
+    if (r.stateful)
+        s << "kubectl apply -f \"$job/checkpoints.yaml\"\n"
+          << "kubectl wait --for=condition=complete --timeout=24h job/toyhost-checkpoints\n";
+    s << "kubectl apply -f \"$job/job.yaml\"\n";
+    return s.str();
+}
+
+std::string parallelScript(const PlanRequest& r) {
+    std::ostringstream s;
+    s << "#!/bin/bash\n"
+      << "# Every shard on this machine (or add -S hosts to GNU parallel), written by `toyhost farm plan`.\n"
+      << "set -eu\n"
+      << "job=" << shellQuoted(r.jobDir) << "\n";
+    s << "mkdir -p \"$job/logs\"\n";
+    if (r.stateful) s << "\"$job/checkpoints.sh\"\n";
+    s << "parallel --will-cite --halt now,fail=1 -j " << (r.parallelism > 0 ? r.parallelism : r.shards)
+      << " --joblog \"$job/logs/parallel.log\" \"$job/run-shard.sh\" {} ::: $(seq 0 " << r.shards - 1 << ")\n";
+    return s.str();
+}
+
+}  // namespace
+
+std::optional<Scheduler> schedulerNamed(const std::string& name) {
+    if (name == "slurm") return Scheduler::Slurm;
+    if (name == "k8s" || name == "kubernetes") return Scheduler::Kubernetes;
+    if (name == "parallel") return Scheduler::Parallel;
+    return std::nullopt;
+}
+
+FrameSpan shardSpan(int frames, int shards, int index) {
+    return {static_cast<int>(static_cast<long long>(frames) * index / shards),
+            static_cast<int>(static_cast<long long>(frames) * (index + 1) / shards)};
+}
+
+std::optional<std::string> frameNameProblem(const std::string& name) {
+    static const std::regex shape(R"(^[^%/]*%(0[1-9][0-9]?)?d[^%/]*\.(png|exr)$)");
+    if (std::regex_match(name, shape)) return std::nullopt;
+    return "expected a file name with one frame number placeholder, ending in .png or .exr (f_%06d.png)";
+}
+
+std::string shellQuoted(const std::string& text) {
+    const bool plain = !text.empty() && text.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                                                "0123456789_-+=./:,@%") == std::string::npos;
+    if (plain) return text;
+    std::string quoted = "'";
+    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+Result<std::vector<PlanFile>> planFarm(const PlanRequest& r) {
+    if (r.frames < 1) return Error("--frames must be at least 1", Code::Usage);
+    if (r.shards < 1 || r.shards > r.frames)
+        return Error("--shards " + std::to_string(r.shards) + ": expected 1 .. --frames (" + std::to_string(r.frames) + ")",
+                     Code::Usage);
+    if (r.jobDir.empty() || r.jobDir.front() != '/')
+        return Error("the job folder must be an absolute path (every node finds it there): " + r.jobDir, Code::Usage);
+    if (std::optional<std::string> problem = frameNameProblem(r.frameName))
+        return Error("--frame-name " + r.frameName + ": " + *problem, Code::Usage);
+    if (std::optional<std::string> owned = ownedOption(r.runOptions))
+        return Error(*owned + ": farm plan sets it for every shard (from its --frames, --shards, --job and --frame-name)",
+                     Code::Usage);
+
+    // One shard has no boundary to checkpoint: the chain is only for stateful runs of several.
+    PlanRequest c = r;
+    c.stateful = r.stateful && r.shards > 1;
+    const std::string dir = shellQuoted(r.jobDir);
+    std::vector<PlanFile> files;
+    files.push_back({"farm.json", farmJson(r), false});
+    files.push_back({"run-shard.sh", runShardScript(c), true});
+    if (c.stateful) files.push_back({"checkpoints.sh", chainScript(c), true});
+    switch (r.scheduler) {
+    case Scheduler::Slurm:
+        files.push_back({"job.sbatch", slurmArray(c), true});
+        if (c.stateful)
+            files.push_back({"checkpoints.sbatch", sbatchHeader(c, "toyhost-checkpoints") + "exec " + dir + "/checkpoints.sh\n", true});
+        files.push_back({"submit.sh", slurmSubmit(c), true});
+        break;
+    case Scheduler::Kubernetes:
+        files.push_back({"job.yaml", k8sJob(c, "toyhost-render", true, "exec " + dir + "/run-shard.sh \"$JOB_COMPLETION_INDEX\""), false});
+        if (c.stateful) files.push_back({"checkpoints.yaml", k8sJob(c, "toyhost-checkpoints", false, "exec " + dir + "/checkpoints.sh"), false});
+        files.push_back({"submit.sh", k8sSubmit(c), true});
+        break;
+    case Scheduler::Parallel:
+        files.push_back({"parallel.sh", parallelScript(c), true});
+        break;
+    }
+    return files;
+}
+
+}  // namespace toyhost::farm

@@ -1,0 +1,62 @@
+// FarmPlan: one render (a shadertoy, its frames, its run options) turned into the files a
+// scheduler runs: a Slurm job array, a Kubernetes Indexed Job or a GNU parallel command. Pure text; no GL.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/Result.h"
+
+namespace toyhost::farm {
+
+enum class Scheduler { Slurm, Kubernetes, Parallel };
+
+// "slurm", "k8s" (or "kubernetes"), "parallel".
+std::optional<Scheduler> schedulerNamed(const std::string& name);
+
+// Frames first .. end-1: shard `index` of `shards`, exactly as `toyhost run --shard index/shards`.
+struct FrameSpan {
+    int first = 0;
+    int end = 0;
+};
+FrameSpan shardSpan(int frames, int shards, int index);
+
+struct PlanRequest {
+    Scheduler scheduler = Scheduler::Parallel;
+    std::string toyhost = "toyhost";  // the program as every node finds it
+    std::string target;               // the shadertoy as every node finds it
+    std::string jobDir;               // absolute, on storage every node shares: frames, checkpoints, logs
+    int frames = 0;
+    int shards = 0;
+    std::string frameName = "f_%06d.png";  // inside jobDir/frames: .png or .exr, numbered by iFrame
+    std::vector<std::string> runOptions;   // every other option of the run, passed to each shard once
+    // Buffers (or a cubemap pass) carry state from frame to frame: the shards start from a chain of
+    // checkpoints made in one sequential pass over the boundaries instead of each simulating its past.
+    bool stateful = false;
+    std::string slurmTime;   // sbatch --time; empty: the partition's limit
+    int cpusPerTask = 0;     // sbatch --cpus-per-task, Kubernetes cpu request; 0: not given
+    int parallelism = 0;     // shards at once (GNU parallel -j, Job parallelism, array %); 0: all
+    std::string image = "toyhost:latest";  // the container image of the Kubernetes Job
+};
+
+struct PlanFile {
+    std::string name;  // relative to jobDir
+    std::string text;
+    bool executable = false;
+};
+
+// The files of the job, the run options appearing once (in run-shard.sh, which every scheduler's
+// file calls): farm.json (what `farm status` and `farm join` read), run-shard.sh, checkpoints.sh
+// for a stateful shadertoy, and the scheduler's own: job.sbatch (+ checkpoints.sbatch) and
+// submit.sh; job.yaml (+ checkpoints.yaml) and submit.sh; or parallel.sh.
+Result<std::vector<PlanFile>> planFarm(const PlanRequest& request);
+
+// Why `name` cannot be the frames' file name, or nothing: one %d or %0Nd, no other %, no folder,
+// .png or .exr (what `toyhost run --out` numbers by iFrame).
+std::optional<std::string> frameNameProblem(const std::string& name);
+
+// `text` as one word for sh/bash: unchanged when it is plain, else in single quotes.
+std::string shellQuoted(const std::string& text);
+
+}  // namespace toyhost::farm

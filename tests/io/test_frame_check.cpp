@@ -1,0 +1,130 @@
+// sequence/FrameCheck and sequence/JoinFrames: frames are judged by decoding them (a cut PNG is
+// truncated, a PNG with a broken body undecodable, an empty EXR truncated), shard by shard; a
+// complete sequence joins into a video whose frame count ffprobe confirms. No GL.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <vector>
+
+#include "TestFolder.h"
+#include "capture/WavFile.h"
+#include "image/ImageWriters.h"
+#include "sequence/FrameCheck.h"
+#include "sequence/JoinFrames.h"
+
+using namespace toyhost;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::uint8_t> picture(int w, int h, int seed) {
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(w) * h * 4);
+    for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = static_cast<std::uint8_t>(i * 7 + seed * 31);
+    return rgba;
+}
+
+// The first line ffprobe prints for `arguments` on `file`.
+std::string probe(const std::string& arguments, const fs::path& file) {
+    std::FILE* pipe = popen(("ffprobe -v error " + arguments + " '" + file.string() + "'").c_str(), "r");
+    if (!pipe) return "";
+    char line[256] = {};
+    std::string all;
+    while (std::fgets(line, sizeof line, pipe)) all += line;
+    pclose(pipe);
+    return all;
+}
+
+std::string bytesOf(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+}  // namespace
+
+TEST(FrameCheck, DecodesEveryFrameAndReportsItsStatePerShard) {
+    toyhost::testing::TestFolder dir;
+    for (int f = 0; f < 6; ++f) {
+        const auto rgba = picture(16, 9, f);
+        ASSERT_TRUE(writePng(dir.path / ("f_" + std::to_string(f) + ".png"), 16, 9, rgba));
+    }
+    // Frame 2 cut in half (a writer killed mid-file without atomic renames), frame 3 gone, frame
+    // 4 complete in length but with its image data overwritten.
+    const std::string whole = bytesOf(dir.path / "f_2.png");
+    dir.write("f_2.png", whole.substr(0, whole.size() / 2));
+    fs::remove(dir.path / "f_3.png");
+    std::string broken = bytesOf(dir.path / "f_4.png");
+    for (std::size_t i = 60; i < broken.size() - 20; ++i) broken[i] = 'x';
+    dir.write("f_4.png", broken);
+
+    std::string reason;
+    EXPECT_EQ(checkFrameFile(dir.path / "f_0.png", reason), farm::FrameState::Ok);
+    EXPECT_EQ(checkFrameFile(dir.path / "f_2.png", reason), farm::FrameState::Truncated);
+    EXPECT_EQ(checkFrameFile(dir.path / "f_3.png", reason), farm::FrameState::Missing);
+    reason.clear();
+    EXPECT_EQ(checkFrameFile(dir.path / "f_4.png", reason), farm::FrameState::Undecodable);
+    EXPECT_FALSE(reason.empty());
+
+    farm::FrameLayout layout;
+    layout.frameDir = dir.path;
+    layout.frameName = "f_%d.png";
+    layout.frames = 6;
+    layout.shards = 2;
+    const farm::FarmStatus status = checkFarm(layout);
+    ASSERT_EQ(status.shards.size(), 2u);
+    EXPECT_EQ(status.shards[0].good, 2);
+    EXPECT_EQ(status.shards[1].good, 1);
+    EXPECT_EQ(status.badFrames(), (std::vector<int>{2, 3, 4}));
+    EXPECT_FALSE(status.complete());
+}
+
+TEST(FrameCheck, ExrFramesAreReadBack) {
+    toyhost::testing::TestFolder dir;
+    std::vector<float> rgba(8 * 4 * 4, 0.5f);
+    ASSERT_TRUE(writeExr(dir.path / "f.exr", 8, 4, rgba));
+    std::string reason;
+    EXPECT_EQ(checkFrameFile(dir.path / "f.exr", reason), farm::FrameState::Ok);
+    const std::string whole = bytesOf(dir.path / "f.exr");
+    dir.write("cut.exr", whole.substr(0, whole.size() - 40));
+    EXPECT_NE(checkFrameFile(dir.path / "cut.exr", reason), farm::FrameState::Ok);
+    dir.write("empty.exr", "");
+    EXPECT_EQ(checkFrameFile(dir.path / "empty.exr", reason), farm::FrameState::Truncated);
+}
+
+TEST(JoinFrames, EncodesTheSequenceAndRefusesMixedSizes) {
+    toyhost::testing::TestFolder dir;
+    std::vector<fs::path> frames;
+    for (int f = 0; f < 5; ++f) {
+        frames.push_back(dir.path / ("f_" + std::to_string(f) + ".png"));
+        ASSERT_TRUE(writePng(frames.back(), 16, 8, picture(16, 8, f)));
+    }
+    ASSERT_TRUE(joinFrames(frames, dir.path / "movie.mp4", 30, {}));
+    std::FILE* probe = popen(("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
+                              "-of csv=p=0 '" + (dir.path / "movie.mp4").string() + "'").c_str(), "r");
+    ASSERT_NE(probe, nullptr);
+    char line[64] = {};
+    ASSERT_NE(std::fgets(line, sizeof line, probe), nullptr);
+    pclose(probe);
+    EXPECT_EQ(std::atoi(line), 5);
+
+    ASSERT_TRUE(writePng(frames[3], 8, 8, picture(8, 8, 3)));
+    Status mixed = joinFrames(frames, dir.path / "mixed.mp4", 30, {});
+    ASSERT_FALSE(mixed);
+    EXPECT_NE(mixed.error().text().find("f_3.png"), std::string::npos);
+    EXPECT_FALSE(fs::exists(dir.path / "mixed.mp4"));
+}
+
+TEST(JoinFrames, MuxesTheSoundTrack) {
+    toyhost::testing::TestFolder dir;
+    std::vector<fs::path> frames;
+    for (int f = 0; f < 3; ++f) {
+        frames.push_back(dir.path / ("f_" + std::to_string(f) + ".png"));
+        ASSERT_TRUE(writePng(frames.back(), 16, 8, picture(16, 8, f)));
+    }
+    std::vector<float> stereo(2 * 4410, 0.25f);  // 0.1 s at 44100 Hz
+    ASSERT_TRUE(writeWav16(dir.path / "track.wav", stereo, 44100));
+    VideoSettings settings;
+    settings.audio = dir.path / "track.wav";
+    ASSERT_TRUE(joinFrames(frames, dir.path / "movie.mp4", 30, settings));
+    EXPECT_EQ(probe("-show_entries stream=codec_type -of csv=p=0", dir.path / "movie.mp4"), "video\naudio\n");
+}

@@ -1,0 +1,235 @@
+// farm/FarmPlan and farm/FarmStatus: the shard spans match --shard, the run options appear once,
+// the checkpoint chain exists exactly for stateful shadertoys, the plan refuses options it owns;
+// frame lists, patterns and the plan's layout. Pure: no GL, no files.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "farm/FarmPlan.h"
+#include "farm/FarmStatus.h"
+
+using namespace toyhost;
+using namespace toyhost::farm;
+
+namespace {
+
+PlanRequest request(Scheduler scheduler, bool stateful) {
+    PlanRequest r;
+    r.scheduler = scheduler;
+    r.toyhost = "/opt/toyhost/bin/toyhost";
+    r.target = "/srv/ports/my port";
+    r.jobDir = "/scratch/job";
+    r.frames = 10;
+    r.shards = 3;
+    r.stateful = stateful;
+    r.runOptions = {"--size", "64x36", "--date", "2024-01-01T00:00:00", "--mouse-script", "/srv/drag's.json"};
+    return r;
+}
+
+const PlanFile* fileNamed(const std::vector<PlanFile>& files, const std::string& name) {
+    auto it = std::find_if(files.begin(), files.end(), [&](const PlanFile& f) { return f.name == name; });
+    return it == files.end() ? nullptr : &*it;
+}
+
+std::size_t count(const std::string& text, const std::string& part) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST(FarmPlan, ShardSpansAreThoseOfRunShardAndCoverEveryFrameOnce) {
+    // toyhost run --shard i/n: frames * i / n .. frames * (i + 1) / n (session/SessionOptions.cpp).
+    EXPECT_EQ(shardSpan(10, 3, 0).first, 0);
+    EXPECT_EQ(shardSpan(10, 3, 0).end, 3);
+    EXPECT_EQ(shardSpan(10, 3, 1).first, 3);
+    EXPECT_EQ(shardSpan(10, 3, 1).end, 6);
+    EXPECT_EQ(shardSpan(10, 3, 2).end, 10);
+    int next = 0;
+    for (int i = 0; i < 7; ++i) {
+        EXPECT_EQ(shardSpan(100, 7, i).first, next);
+        next = shardSpan(100, 7, i).end;
+    }
+    EXPECT_EQ(next, 100);
+    // No overflow for long runs.
+    EXPECT_EQ(shardSpan(2000000000, 16, 15).end, 2000000000);
+}
+
+TEST(FarmPlan, RunOptionsAppearOnceInRunShardAndEverySchedulerCallsIt) {
+    for (Scheduler scheduler : {Scheduler::Slurm, Scheduler::Kubernetes, Scheduler::Parallel}) {
+        auto files = planFarm(request(scheduler, false));
+        ASSERT_TRUE(files) << files.error().text();
+        std::size_t mentions = 0;
+        for (const PlanFile& file : *files)
+            if (file.name != "farm.json") mentions += count(file.text, "64x36");
+        EXPECT_EQ(mentions, 1u);
+        const PlanFile* shard = fileNamed(*files, "run-shard.sh");
+        ASSERT_NE(shard, nullptr);
+        EXPECT_TRUE(shard->executable);
+        EXPECT_NE(shard->text.find("options=(--size 64x36 --date 2024-01-01T00:00:00 --mouse-script '/srv/drag'\\''s.json')"),
+                  std::string::npos)
+            << shard->text;
+        EXPECT_NE(shard->text.find("'/srv/ports/my port'"), std::string::npos);
+        EXPECT_NE(shard->text.find("firsts=(0 3 6)"), std::string::npos);
+        EXPECT_NE(shard->text.find("ends=(3 6 10)"), std::string::npos);
+        EXPECT_EQ(fileNamed(*files, "checkpoints.sh"), nullptr);  // no buffers: shards start directly
+    }
+}
+
+TEST(FarmPlan, SlurmArrayHasOneTaskPerShardAndRequeuesAfterSigterm) {
+    PlanRequest r = request(Scheduler::Slurm, false);
+    r.slurmTime = "00:01:00";
+    r.parallelism = 2;
+    auto files = planFarm(r);
+    ASSERT_TRUE(files);
+    const PlanFile* sbatch = fileNamed(*files, "job.sbatch");
+    ASSERT_NE(sbatch, nullptr);
+    EXPECT_NE(sbatch->text.find("#SBATCH --array=0-2%2\n"), std::string::npos);
+    EXPECT_NE(sbatch->text.find("#SBATCH --time=00:01:00\n"), std::string::npos);
+    EXPECT_NE(sbatch->text.find("#SBATCH --requeue\n"), std::string::npos);
+    EXPECT_NE(sbatch->text.find("scontrol requeue"), std::string::npos);
+    const PlanFile* submit = fileNamed(*files, "submit.sh");
+    ASSERT_NE(submit, nullptr);
+    EXPECT_EQ(submit->text.find("dependency"), std::string::npos);
+}
+
+TEST(FarmPlan, StatefulShadertoysGetACheckpointChainTheShardsStartFrom) {
+    auto files = planFarm(request(Scheduler::Slurm, true));
+    ASSERT_TRUE(files);
+    const PlanFile* chain = fileNamed(*files, "checkpoints.sh");
+    ASSERT_NE(chain, nullptr);
+    // One step per boundary (shards 1 and 2 start at frames 3 and 6), each resuming the previous.
+    EXPECT_NE(chain->text.find("--frames 3 \"${previous[@]}\" --checkpoint \"$job/checkpoints/start-1.ckpt\""),
+              std::string::npos)
+        << chain->text;
+    EXPECT_NE(chain->text.find("--frames 6 \"${previous[@]}\" --checkpoint \"$job/checkpoints/start-2.ckpt\""),
+              std::string::npos);
+    EXPECT_EQ(count(chain->text, "--checkpoint"), 2u);
+    EXPECT_NE(fileNamed(*files, "run-shard.sh")->text.find("start-$index.ckpt"), std::string::npos);
+    EXPECT_NE(fileNamed(*files, "submit.sh")->text.find("--dependency=afterok:"), std::string::npos);
+    ASSERT_NE(fileNamed(*files, "checkpoints.sbatch"), nullptr);
+
+    auto k8s = planFarm(request(Scheduler::Kubernetes, true));
+    ASSERT_TRUE(k8s);
+    ASSERT_NE(fileNamed(*k8s, "checkpoints.yaml"), nullptr);
+    const std::string& yaml = fileNamed(*k8s, "job.yaml")->text;
+    EXPECT_NE(yaml.find("completionMode: Indexed"), std::string::npos);
+    EXPECT_NE(yaml.find("completions: 3"), std::string::npos);
+    EXPECT_NE(yaml.find("JOB_COMPLETION_INDEX"), std::string::npos);
+
+    // One shard has no boundary: no chain.
+    PlanRequest one = request(Scheduler::Parallel, true);
+    one.shards = 1;
+    auto single = planFarm(one);
+    ASSERT_TRUE(single);
+    EXPECT_EQ(fileNamed(*single, "checkpoints.sh"), nullptr);
+    EXPECT_EQ(fileNamed(*single, "parallel.sh")->text.find("checkpoints.sh"), std::string::npos);
+}
+
+TEST(FarmPlan, RefusesWhatItCannotPlan) {
+    for (const char* owned : {"--frames", "--shard", "--frame-range", "--resume", "--checkpoint", "--out", "--out=x.png"}) {
+        PlanRequest r = request(Scheduler::Parallel, false);
+        r.runOptions.push_back(owned);
+        auto files = planFarm(r);
+        ASSERT_FALSE(files) << owned;
+        EXPECT_NE(files.error().text().find(owned), std::string::npos);
+    }
+    PlanRequest r = request(Scheduler::Parallel, false);
+    r.shards = 11;
+    EXPECT_FALSE(planFarm(r));
+    r = request(Scheduler::Parallel, false);
+    r.jobDir = "relative/job";
+    EXPECT_FALSE(planFarm(r));
+    r = request(Scheduler::Parallel, false);
+    r.frameName = "frames.png";
+    EXPECT_FALSE(planFarm(r));
+}
+
+TEST(FarmPlan, FrameNamesHoldOneNumberAndAnImageExtension) {
+    EXPECT_FALSE(frameNameProblem("f_%06d.png"));
+    EXPECT_FALSE(frameNameProblem("%d.exr"));
+    for (const char* bad : {"f.png", "f_%s.png", "f_%d_%d.png", "sub/f_%04d.png", "f_%04d.mp4", "f_%04d.png%n"})
+        EXPECT_TRUE(frameNameProblem(bad)) << bad;
+}
+
+TEST(FarmPlan, SchedulerNamesAndShellQuoting) {
+    EXPECT_EQ(schedulerNamed("slurm"), Scheduler::Slurm);
+    EXPECT_EQ(schedulerNamed("k8s"), Scheduler::Kubernetes);
+    EXPECT_EQ(schedulerNamed("parallel"), Scheduler::Parallel);
+    EXPECT_FALSE(schedulerNamed("pbs"));
+    EXPECT_EQ(shellQuoted("--size"), "--size");
+    EXPECT_EQ(shellQuoted(""), "''");
+    EXPECT_EQ(shellQuoted("a b"), "'a b'");
+    EXPECT_EQ(shellQuoted("it's $HOME"), "'it'\\''s $HOME'");
+}
+
+TEST(FarmStatus, PlanLayoutRoundTripsThroughFarmJson) {
+    auto files = planFarm(request(Scheduler::Parallel, false));
+    ASSERT_TRUE(files);
+    auto layout = layoutFromPlan(fileNamed(*files, "farm.json")->text, "/scratch/job");
+    ASSERT_TRUE(layout) << layout.error().text();
+    EXPECT_EQ(layout->frames, 10);
+    EXPECT_EQ(layout->shards, 3);
+    EXPECT_EQ(layout->frameFile(7), "/scratch/job/frames/f_000007.png");
+    EXPECT_EQ(layout->runOptions.size(), 6u);
+    EXPECT_FALSE(layoutFromPlan("[]", "/j"));
+    EXPECT_FALSE(layoutFromPlan(R"({"frames": 4, "shards": 2, "frameName": "f_%s.png"})", "/j"));
+    EXPECT_FALSE(layoutFromPlan(R"({"frames": 4, "shards": 5, "frameName": "f_%04d.png"})", "/j"));
+}
+
+TEST(FarmStatus, FramePatternsListsAndExitCodes) {
+    EXPECT_EQ(*framePatternOf({"f_0000.png", "f_0001.png", "notes.txt"}), "f_%04d.png");
+    EXPECT_EQ(*framePatternOf({"x00.exr"}), "x%02d.exr");
+    EXPECT_FALSE(framePatternOf({"notes.txt"}));
+    EXPECT_FALSE(framePatternOf({"a_0001.png", "b_0001.png"}));
+    EXPECT_EQ(frameList({}), "");
+    EXPECT_EQ(frameList({3}), "3");
+    EXPECT_EQ(frameList({3, 7, 8, 9, 12}), "3, 7-9, 12");
+    EXPECT_NE(exitMeaning(143).find("SIGTERM"), std::string::npos);
+    EXPECT_EQ(exitMeaning(0), "finished");
+
+    FarmStatus status;
+    status.shards.push_back({0, {0, 3}, 3, {}, 0});
+    EXPECT_TRUE(status.complete());
+    status.shards.push_back({1, {3, 6}, 1, {{5, FrameState::Truncated, "x"}, {4, FrameState::Missing, ""}}, 143});
+    EXPECT_FALSE(status.complete());
+    EXPECT_EQ(status.badFrames(), (std::vector<int>{4, 5}));
+}
+
+TEST(FarmStatus, CaptureEveryCountsTheFramesEachShardWrites) {
+    PlanRequest r = request(Scheduler::Slurm, false);
+    r.runOptions = {"--capture-every", "4"};
+    auto files = planFarm(r);
+    ASSERT_TRUE(files);
+    auto layout = layoutFromPlan(fileNamed(*files, "farm.json")->text, "/j");
+    ASSERT_TRUE(layout);
+    EXPECT_EQ(layout->captureEvery, 4);
+    // Shards of 10 frames: 0-2, 3-5, 6-9. Each shard runs with --frames at its end, so its last
+    // frame is written too, besides frames 0, 4 and 8.
+    std::vector<int> written;
+    for (int i = 0; i < 3; ++i) {
+        const FrameSpan span = shardSpan(10, 3, i);
+        for (int f = span.first; f < span.end; ++f)
+            if (layout->captured(f, span)) written.push_back(f);
+    }
+    EXPECT_EQ(written, (std::vector<int>{0, 2, 4, 5, 8, 9}));
+
+    FrameLayout plain;
+    plain.frames = 10;
+    plain.captureEvery = 4;
+    EXPECT_TRUE(plain.captured(9, {6, 10}));
+    EXPECT_FALSE(plain.captured(5, {3, 6}));
+}
+
+TEST(FarmStatus, ExitCodesComeFromGnuParallelsJoblog) {
+    const std::string joblog =
+        "Seq\tHost\tStarttime\tJobRuntime\tSend\tReceive\tExitval\tSignal\tCommand\n"
+        "1\t:\t1795829646.958\t     1.067\t0\t0\t0\t0\t/j/run-shard.sh 0\n"
+        "2\t:\t1795829646.960\t     0.500\t0\t0\t0\t15\t/j/run-shard.sh 1\n"
+        "3\t:\t1795829647.059\t     1.063\t0\t0\t1\t0\t/j/run-shard.sh 2\n"
+        "4\t:\t1795829650.000\t     1.000\t0\t0\t0\t0\t/j/run-shard.sh 2\n";
+    const std::map<int, int> codes = exitCodesFromJoblog(joblog);
+    EXPECT_EQ(codes, (std::map<int, int>{{0, 0}, {1, 143}, {2, 0}}));  // the last attempt counts
+    EXPECT_TRUE(exitCodesFromJoblog("not a joblog\n").empty());
+}
