@@ -22,6 +22,7 @@ packages=(
   python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
   jupyter-nbconvert python3-ipykernel                    # the notebook test (python/tests/test_notebook.py)
   mypy                                                   # the module's types checked (python/tests/test_types.py)
+  python3-pil                                            # ../shared/tools/gallery_truth.py (the gallery's truth test)
 )
 
 # `install-deps.sh fuzz` adds what the libFuzzer targets need (tests/fuzz): clang and its

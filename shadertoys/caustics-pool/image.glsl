@@ -27,6 +27,9 @@
 //     apart; the weights 1 - |1 - 2 phase| sum to 1 and each phase is weightless when it jumps
 //     back, so the reset never shows (flow-map technique as in Valve's water, 2010).
 //   iMouse: drag horizontally to orbit the camera around the pool.
+//   * TRUTH (`toyhost run --define TRUTH`): the scene itself, for ../shared/tools/gallery_truth.py
+//     to average 16 samples of: no distance fade of the surface normal, hard grout edges (no
+//     fwidth AA). The deck's haze stays (the scene's air).
 
 // #define FLOW_MAP
 
@@ -164,7 +167,11 @@ vec3 sky(vec3 rd) {
 float tileMask(vec2 uv, float size, float grout) {
     vec2 f = fract(uv / size);
     vec2 d = min(f, 1.0 - f);
+#ifdef TRUTH
+    vec2 fw = vec2(1e-6);   // hard grout edges: the truth averages them itself
+#else
     vec2 fw = fwidth(uv / size) + 1e-4;
+#endif
     vec2 m = smoothstep(grout - fw, grout + fw, d);
     return m.x * m.y;
 }
@@ -285,7 +292,11 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
                 col = alb * (SUN_COL * max(dot(n, L), 0.0) + vec3(0.30, 0.36, 0.45));
             } else {
                 vec3 P = ro + rd * tW;
+#ifdef TRUTH
+                float fade = 1.0;
+#else
                 float fade = 1.0 / (1.0 + 0.05 * tW);
+#endif
                 vec3 n = surfaceNormal(P.xz, t, fade);
                 vec3 r = refract(rd, n, 1.0 / IOR);
 

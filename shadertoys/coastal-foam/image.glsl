@@ -27,6 +27,10 @@
 //   * Aerial perspective with per-channel extinction (blue scatters most) into the horizon haze.
 //   * LAKE: the water becomes slow value-noise FBM (+-4 cm) with fine cat's-paw ripples in the
 //     normal, darker and greener, with only a thin contact line of foam and no breaking crests.
+//   * TRUTH (`toyhost run --define TRUTH`): the scene itself, for ../shared/tools/gallery_truth.py
+//     to average 16 samples of: zero footprint (every chop octave, the narrow sun lobe, the
+//     foam's holes and sharp edge) and no distance flattening of the sea. The aerial
+//     perspective stays (the scene's air).
 //   iMouse: drag horizontally to turn the camera.
 
 // #define LAKE
@@ -36,6 +40,8 @@ const vec3 SUN_COL = vec3(1.45, 1.25, 1.00);
 const float WMAX = 1.2;                           // water surface bounds, m
 const float WMIN = -0.8;
 const float RMAX = 4.5;                           // rock never higher than this, m
+const float CHOP_SLOPE_VAR = 0.005;               // the chop's slope variance per axis that the filter loses at most (fit to the truth)
+const float LOST_HALF = 0.3;                      // footprint (m) at which half of it is filtered
 
 // ----------------------------------------------------------------------------- noise --
 float hash21(vec2 p) {
@@ -216,7 +222,9 @@ float marchWater(vec3 ro, vec3 rd, float t0, float t1, float time) {
 vec3 sky(vec3 rd) {
     vec3 L = normalize(SUN_DIR);
     float y = max(rd.y, 0.0);
-    vec3 c = mix(vec3(0.78, 0.80, 0.82), vec3(0.22, 0.42, 0.74), pow(y, 0.45));
+    // a clear afternoon: the horizon pale blue, not the grey-white (0.78, 0.80, 0.82) that
+    // turned the far sea milky through the aerial perspective (issue 29)
+    vec3 c = mix(vec3(0.60, 0.72, 0.86), vec3(0.20, 0.40, 0.76), pow(y, 0.45));
     float sd = max(dot(rd, L), 0.0);
     c += vec3(1.0, 0.75, 0.45) * (0.35 * pow(sd, 6.0) + 0.25 * pow(sd, 48.0));
     c += vec3(1.0, 0.9, 0.7) * 25.0 * pow(sd, 1800.0);
@@ -232,7 +240,7 @@ vec3 sky(vec3 rd) {
 // Aerial perspective with per-channel extinction: the air scatters blue most, so distant rock
 // and sea lose red last and take the horizon haze's colour channel by channel.
 vec3 aerial(vec3 col, vec3 rd, float dist) {
-    vec3 ext = exp(-vec3(0.000014, 0.00002, 0.000028) * dist * dist);
+    vec3 ext = exp(-vec3(0.000007, 0.00001, 0.000014) * dist * dist);   // clear air (halved, issue 29)
     return col * ext + sky(vec3(rd.x, 0.02, rd.z)) * (1.0 - ext);
 }
 
@@ -305,16 +313,18 @@ float foamTex(vec2 p, float t, float footprint) {
     vec2 c2 = cellNear(w * 2.3 + 5.0);
     float holes = smoothstep(0.15 + 0.45 * c1.y, 0.3 + 0.5 * c1.y, c1.x)
                 * smoothstep(0.1 + 0.35 * c2.y, 0.25 + 0.4 * c2.y, c2.x);
-    // holes finer than a pixel or two average to their mean coverage instead of aliasing
-    holes = mix(holes, 0.55, smoothstep(0.03, 0.12, footprint));
+    // holes finer than a pixel or two average to their coverage (0.35, fit against the 16-sample
+    // truth; 0.55 turned the far foam into a white sheet) instead of aliasing
+    holes = mix(holes, 0.35, smoothstep(0.03, 0.12, footprint));
     return body * (0.55 + 0.45 * holes) + 0.1;
 }
 
 // foam coverage for a foam density 0..1: dense foam is solid, thin foam breaks into lace
-// `footprint` widens the edge (texture units change ~8x faster than metres): anti-aliased lace.
+// `footprint` widens the edge a little (anti-aliased lace); up to 0.4 wider (before issue 29)
+// spread far foam over water the truth shows clear.
 float foamCover(float density, float tex, float footprint) {
     float thr = 1.0 - density;
-    float w = 0.12 + min(8.0 * footprint, 0.4);
+    float w = 0.12 + min(1.0 * footprint, 0.1);
     return smoothstep(thr - w, thr + w, tex) * smoothstep(0.0, 0.15, density);
 }
 
@@ -329,6 +339,16 @@ vec3 ditherNoise(vec2 fragCoord) {
     q += dot(q, q.yxz + 33.33);
     vec3 b = fract((q.xxy + q.yzz) * q.zyx);
     return (a + b - 1.0) / 255.0;
+}
+
+// Slope variance (per axis) the water's normal loses at `footprint` (the chop octaves faded and
+// the normal's box filter): it grows with the footprint up to the chop's whole variance.
+float lostSlopeVariance(float footprint) {
+#ifdef TRUTH
+    return 0.0;
+#else
+    return CHOP_SLOPE_VAR * footprint / (footprint + LOST_HALF);
+#endif
 }
 
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
@@ -382,10 +402,15 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     } else if (tw < FAR && rd.y < 0.0) {
         vec3 p = ro + rd * tw;
         // the width of water one pixel covers: pixel angle x distance / grazing sine
+#ifdef TRUTH
+        float footprint = 0.0;
+        float fade = 1.0;
+#else
         float footprint = tw * 2.0 / (1.6 * iResolution.y) / max(-rd.y, 0.05);
+        float fade = exp(-0.012 * tw);                   // far away the sea goes flat
+#endif
         float e = max(0.02, footprint);
         vec3 n = waterNormal(p.xz, t, e);
-        float fade = exp(-0.012 * tw);                   // far away the sea goes flat
         n = normalize(mix(vec3(0.0, 1.0, 0.0), n, 0.35 + 0.65 * fade));
 
         float hr = rockH(p.xz, 3);
@@ -408,11 +433,34 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         float sss = pow(max(dot(rd, L), 0.0), 2.0) * crest * crest * crest * smoothstep(-24.0, -6.0, shoreS(p.xz));
         body += vec3(0.05, 0.22, 0.20) * sss * fade;
 #endif
-        float cosi = clamp(dot(-rd, n), 0.0, 1.0);
-        float F = 0.02 + 0.98 * pow(1.0 - cosi, 5.0);
+        // Fresnel x sky over the slopes the filtered normal no longer shows (the chop octaves
+        // and the box filter took them): four normals spread by that variance, each weighted by
+        // the area it shows the eye. A flattened normal alone turns the far sea into a grazing
+        // mirror, brighter than the water it stands for (the milky haze).
+        float unseen = lostSlopeVariance(footprint);
+        vec2 slope = -n.xz / n.y;
+        vec2 along = normalize(rd.xz + vec2(1e-6, 0.0));
+        vec2 across = vec2(-along.y, along.x);
+        float F = 0.0, area = 0.0;
+        vec3 refl = vec3(0.0);
+        for (int k = 0; k < 4; k++) {
+            vec2 o = vec2(k & 1, k >> 1) * 2.0 - 1.0;
+            vec2 sk = slope + sqrt(unseen) * (o.x * along + o.y * across);
+            vec3 nk = normalize(vec3(-sk.x, 1.0, -sk.y));
+            float cosk = clamp(dot(-rd, nk), 0.0, 1.0);
+            float seen = cosk / nk.y;
+            float Fk = 0.02 + 0.98 * pow(1.0 - cosk, 5.0);
+            vec3 rk = reflect(rd, nk);
+            rk.y = abs(rk.y);
+            refl += seen * Fk * sky(rk);
+            F += seen * Fk;
+            area += seen;
+        }
+        refl /= max(F, 1e-6);
+        F /= max(area, 1e-6);
         vec3 rf = reflect(rd, n);
         rf.y = abs(rf.y);
-        col = mix(body, sky(rf), F);
+        col = mix(body, refl, F);
         // sun glitter: a normalised lobe that widens where the footprint filtered slopes away
         float sp = 300.0 / (1.0 + 300.0 * 0.02 * smoothstep(0.0, 1.0, footprint * 4.0));
         col += SUN_COL * 1.2 * pow(max(dot(rf, L), 0.0), sp) * (sp + 2.0) / 302.0;

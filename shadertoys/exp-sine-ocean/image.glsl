@@ -12,13 +12,16 @@
 // - The normalised sum lies in (0, 1]; the surface is 0 .. -DEPTH below y = 0, so the ray is only
 //   marched between the planes y = 0 and y = -DEPTH, stepping by the vertical gap (stretched for
 //   shallow rays), with a final linear refinement. The march uses 12 waves, the normal 32 (extra detail only in shading).
-// - Distance-aware filtering: each wave of the normal fades to its mean once its wavelength nears
-//   the width of water one pixel covers (distance x pixel angle / grazing sine), and the sun's
-//   glitter lobe widens (normalised, so its energy stays) where detail has been filtered away.
-// - Sub-pixel roughness: the slopes a pixel no longer shows (the faded waves' slope variance, plus
-//   the capillary ripples shorter than any modelled wave) make the reflection a lobe, not a
-//   mirror: Fresnel x sky is averaged over four normals spread by that variance. Far water thus
-//   turns into the even, bright sheet a camera sees, instead of flickering facets.
+// - Filtering that converges to the scene (checked against ../shared/tools/gallery_truth.py,
+//   TRUTH below): each wave of the normal fades to its mean once the phase one pixel step
+//   crosses nears Nyquist, from the pixel's anisotropic footprint (a grazing pixel is a long
+//   strip along the view and a narrow one across it, so waves that cross the view keep their
+//   detail to the horizon). The slopes so lost (their covariance), the slope variation still
+//   inside the pixel (screen derivatives) and the capillary ripples shorter than any modelled
+//   wave (Cox & Munk) make the reflection a lobe: Fresnel x sky is averaged over four normals
+//   spread by that variance, weighted by the area each shows the eye; and the sun's glitter is a
+//   LEAN-style Gaussian in slope space widened by the same covariance (a dim, wide glitter path
+//   to the horizon instead of a vanished or flickering one).
 // - Sky: single-scattering air with a per-channel Rayleigh optical depth along an air mass of
 //   1 / (sin(elevation) + 0.1): deep blue overhead, whitening towards the horizon, plus a sun glow.
 // - Shading: Schlick's Fresnel with F0 = 0.04 mixes a sky reflection (which carries a bright HDR
@@ -28,13 +31,25 @@
 // - Camera: fixed above the water; before any click it looks at the horizon. Click or drag: look
 //   where the mouse is (x = heading, full turn across the width; y = pitch, centre = default).
 
+// TRUTH (`toyhost run --define TRUTH`): the scene itself, for ../shared/tools/gallery_truth.py to
+// average 16 samples of: no footprint filtering (every wave at full strength, no lobe widening),
+// the quality knobs at their best. The haze and the capillary roughness stay: they are the scene.
 const float DEPTH        = 1.0;    // wave range: the surface stays within [-DEPTH, 0]
 const float DRAG         = 0.38;
+#ifdef TRUTH
+const int   MARCH_WAVES  = 16;
+const int   NORMAL_WAVES = 40;
+const int   MARCH_STEPS  = 160;
+#else
 const int   MARCH_WAVES  = 12;
 const int   NORMAL_WAVES = 32;
 const int   MARCH_STEPS  = 48;
+#endif
 const float CAMERA_Y     = 1.2;    // above the top plane
-const float GLINT_POWER  = 900.0;  // the near sun glitter lobe (Phong exponent)
+const float GLINT_SLOPE_VAR = 2.8e-4; // the near glitter lobe: slope variance per axis (~1 degree)
+const float FADE_START   = 1.0;    // a wave fades to its mean between these radians of phase
+const float FADE_END     = 3.0;    // per pixel step (keepWave)
+const float PIXEL_VAR_SCALE = 0.25; // slope variance inside a pixel per (slope step per pixel)^2
 const float WAVE_MEAN    = 0.4658; // mean of exp(sin x - 1) over a period (I0(1) / e)
 const float WAVE_SLOPE_VAR = 0.1076; // variance of d/dx exp(sin x - 1) over a period
 // Slope variance (both axes) of the capillary ripples no wave here models: Cox & Munk's clean
@@ -42,17 +57,36 @@ const float WAVE_SLOPE_VAR = 0.1076; // variance of d/dx exp(sin x - 1) over a p
 const float CAPILLARY_SLOPE_VAR = 0.03;
 
 const vec3  SUN_DIR      = vec3(0.25, 0.1, 1.0);           // normalised where used
-const vec3  TROUGH_TINT  = vec3(0.015, 0.07, 0.10);        // subsurface colour in the troughs
+const vec3  TROUGH_TINT  = vec3(0.008, 0.040, 0.060);      // subsurface colour in the troughs
 const float CREST_TINT   = 0.35;                           // ... scaled this much on crests
 
 // 2x2 rotation by the golden angle, applied to the wave direction after every wave
 const mat2 GOLDEN_TURN = mat2(-0.737369, 0.675490, -0.675490, -0.737369);
 
-// Normalised wave sum at xz in [0, 1] (1 = highest crest), using n waves. `footprint` is the
-// width of the surface one pixel covers (0 = exact): a wave whose wavelength approaches it fades
-// to its mean (and stops dragging the later ones), so a far pixel never samples detail it cannot
-// show (that detail flickers from frame to frame: the horizon shimmer).
-float waveSum(vec2 xz, int n, float footprint) {
+// How much of a wave survives a pixel's footprint: `phase` is the radians of the wave's phase
+// that one pixel step crosses (the larger of the two screen axes). A box average over the pixel
+// keeps sinc(phase / 2) of a sinusoid; past Nyquist (pi) a point sample can only alias it, so the
+// wave goes to its mean between FADE_START and FADE_END.
+float keepWave(float phase) {
+#ifdef TRUTH
+    return 1.0;
+#else
+    return 1.0 - smoothstep(FADE_START, FADE_END, phase);
+#endif
+}
+
+// Phase a wave of direction `dir` and frequency `freq` crosses per pixel step, from the footprint
+// `fp` (columns: the water one pixel step moves across and along the view, in xz).
+float phasePerPixel(vec2 dir, float freq, mat2 fp) {
+    return freq * max(abs(dot(dir, fp[0])), abs(dot(dir, fp[1])));
+}
+
+// Normalised wave sum at xz in [0, 1] (1 = highest crest), using n waves, each faded by what the
+// pixel's footprint `fp` can hold (zero footprint: exact). The footprint is anisotropic: at a
+// grazing view a pixel covers a long strip of water along the view and a narrow one across it,
+// so waves whose crests run across the view fade long before waves whose crests point at the
+// eye (a single width, the strip's length, erased the far water's detail).
+float waveSum(vec2 xz, int n, mat2 fp) {
     vec2 dir = vec2(1.0, 0.0);
     float freq = 1.0;
     float speed = 2.0;
@@ -62,7 +96,7 @@ float waveSum(vec2 xz, int n, float footprint) {
     float t = iTime;
     for (int i = 0; i < n; i++) {
         float x = dot(dir, xz) * freq + t * speed;
-        float keep = 1.0 - smoothstep(1.0, 3.0, freq * footprint);   // radians of phase per pixel
+        float keep = keepWave(phasePerPixel(dir, freq, fp));
         float w = exp(sin(x) - 1.0);
         float slope = w * cos(x);
         xz += dir * slope * weight * DRAG * keep; // drag: pull later waves toward this crest
@@ -76,23 +110,25 @@ float waveSum(vec2 xz, int n, float footprint) {
     return sum / total;
 }
 
-// Slope variance (both axes) that the waves of waveSum lose at `footprint`: each wave's slope
-// amplitude is weight x frequency / total weight, and a wave faded by `keep` keeps keep^2 of its
-// variance. Checked numerically (drag included) against the slope variance inside a pixel's
-// footprint: within 10% for footprints 0.05 .. 0.8.
-float lostSlopeVariance(float footprint) {
-    float freq = 1.0, weight = 1.0, total = 0.0, lost = 0.0;
+// Slope covariance (xz) that the waves of waveSum lose at footprint `fp`: each wave's slope
+// amplitude is weight x frequency / total weight along its direction, and a wave faded by
+// `keep` keeps keep^2 of its variance.
+mat2 lostSlopeCovariance(mat2 fp) {
+    vec2 dir = vec2(1.0, 0.0);
+    float freq = 1.0, weight = 1.0, total = 0.0;
+    mat2 lost = mat2(0.0);
     for (int i = 0; i < NORMAL_WAVES; i++) {
-        float keep = 1.0 - smoothstep(1.0, 3.0, freq * footprint);
-        lost += weight * weight * freq * freq * (1.0 - keep * keep);
+        float keep = keepWave(phasePerPixel(dir, freq, fp));
+        lost += weight * weight * freq * freq * (1.0 - keep * keep) * outerProduct(dir, dir);
         total += weight;
         weight *= 0.8;
         freq *= 1.18;
+        dir = GOLDEN_TURN * dir;
     }
-    return lost * WAVE_SLOPE_VAR / (total * total);
+    return lost * (WAVE_SLOPE_VAR / (total * total));
 }
 
-float surfaceY(vec2 xz, int n, float footprint) { return (waveSum(xz, n, footprint) - 1.0) * DEPTH; }
+float surfaceY(vec2 xz, int n, mat2 fp) { return (waveSum(xz, n, fp) - 1.0) * DEPTH; }
 
 // March between the planes y = 0 and y = -DEPTH. Steps are the vertical gap (a little
 // lengthened for shallow rays, which otherwise crawl), capped at MARCH_STEPS; the final
@@ -101,13 +137,13 @@ float marchWater(vec3 ro, vec3 rd) {
     float tTop = (ro.y) / -rd.y;
     float tBot = (ro.y + DEPTH) / -rd.y;
     float t = tTop;
-    float gapPrev = ro.y + rd.y * t - surfaceY((ro + rd * t).xz, MARCH_WAVES, 0.0);
+    float gapPrev = ro.y + rd.y * t - surfaceY((ro + rd * t).xz, MARCH_WAVES, mat2(0.0));
     float tPrev = t;
     float stretch = 1.0 / (0.6 + abs(rd.y));
     for (int i = 0; i < MARCH_STEPS; i++) {
         t = min(t + max(gapPrev * stretch, 0.001 * t), tBot);
         vec3 p = ro + rd * t;
-        float gap = p.y - surfaceY(p.xz, MARCH_WAVES, 0.0);
+        float gap = p.y - surfaceY(p.xz, MARCH_WAVES, mat2(0.0));
         if (gap < 0.001 || t >= tBot) {
             // the surface lies between tPrev and t: take the linear root
             return mix(tPrev, t, gapPrev / max(gapPrev - gap, 1e-5));
@@ -118,21 +154,27 @@ float marchWater(vec3 ro, vec3 rd) {
     return t;
 }
 
-// The normal from the waves a pixel of `footprint` can show, by differences over a stencil as
-// wide as the footprint (a box filter of the slope).
-vec3 waterNormal(vec2 xz, float footprint) {
-    float e = max(0.01, footprint);
-    float h = surfaceY(xz, NORMAL_WAVES, footprint);
-    float hx = surfaceY(xz + vec2(e, 0.0), NORMAL_WAVES, footprint);
-    float hz = surfaceY(xz + vec2(0.0, e), NORMAL_WAVES, footprint);
+// The normal from the waves a pixel of footprint `fp` can show, by differences over a small
+// stencil (the waves it cannot show are already faded to their mean).
+vec3 waterNormal(vec2 xz, mat2 fp) {
+    const float e = 0.01;
+    float h = surfaceY(xz, NORMAL_WAVES, fp);
+    float hx = surfaceY(xz + vec2(e, 0.0), NORMAL_WAVES, fp);
+    float hz = surfaceY(xz + vec2(0.0, e), NORMAL_WAVES, fp);
     return normalize(vec3(h - hx, e, h - hz));
 }
 
-// Width of water one pixel covers at distance `dist` along `rd`: the pixel's angle times the
-// distance, stretched by the grazing angle (geometric mean of the along- and across-view widths).
-float pixelFootprint(float dist, vec3 rd) {
+// The water one pixel step covers at distance `dist` along `rd`, as two xz vectors (columns):
+// across the view (the camera's right axis) and along it (its up axis, projected onto the water
+// plane, stretched by the grazing angle). TRUTH: none.
+mat2 pixelFootprint(float dist, vec3 rd, mat3 cam) {
+#ifdef TRUTH
+    return mat2(0.0);
+#else
     float pixelAngle = 2.0 / (iResolution.y * 1.6);
-    return dist * pixelAngle / max(abs(rd.y), 0.02);
+    vec3 up = cam[1] - rd * (cam[1].y / min(rd.y, -0.02));
+    return dist * pixelAngle * mat2(cam[0].xz, up.xz);
+#endif
 }
 
 // The air: light scattered once towards the eye, with a Rayleigh optical depth per channel (blue
@@ -197,45 +239,78 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     float pitch = clamp((m.y - 0.5) * 2.6 - 0.1, -1.4, 1.4);
 
     vec3 ro = vec3(0.0, CAMERA_Y, 0.0);
-    vec3 rd = normalize(viewBasis(yaw, pitch) * vec3(uv, 1.6));
+    mat3 cam = viewBasis(yaw, pitch);
+    vec3 rd = normalize(cam * vec3(uv, 1.6));
+
+    // The water's hit point and slope come first, in uniform control flow, so that the slope's
+    // screen derivatives (below) are defined in every pixel of a quad.
+    bool water = rd.y < 0.0;
+    float dist = 0.0;
+    vec3 p = ro;
+    mat2 fp = mat2(0.0);
+    vec2 slope = vec2(0.0);
+    vec3 n = vec3(0.0, 1.0, 0.0);
+    if (water) {
+        dist = marchWater(ro, rd);
+        p = ro + rd * dist;
+        fp = pixelFootprint(dist, rd, cam);
+        n = waterNormal(p.xz, fp);
+        slope = -n.xz / n.y;
+    }
+    // Specular anti-aliasing (after Kaplanyan et al.'s screen-space normal filtering): the slopes
+    // the kept waves still vary by across one pixel, from their screen derivatives, are slopes
+    // one sample cannot show either; they join the lost variance. Bounded, because a quad that
+    // straddles a crest's silhouette differences two unrelated surfaces.
+    vec2 dsx = dFdx(slope), dsy = dFdy(slope);
+#ifdef TRUTH
+    float pixelVar = 0.0;
+#else
+    float pixelVar = min(PIXEL_VAR_SCALE * (dot(dsx, dsx) + dot(dsy, dsy)), 0.1);
+#endif
 
     vec3 col;
-    if (rd.y >= 0.0) {
+    if (!water) {
         col = sky(rd);
     } else {
-        float dist = marchWater(ro, rd);
-        vec3 p = ro + rd * dist;
-        float footprint = pixelFootprint(dist, rd);
-        vec3 n = waterNormal(p.xz, footprint);
-
-        // Fresnel x sky over the slopes this pixel does not resolve: four normals at +-sigma
-        // along two tangent axes (sigma^2 = half the two-axis variance). The sun disc is left to
+        // Fresnel x sky over the slopes this pixel does not resolve (the faded waves' covariance,
+        // the variation inside the pixel and the capillaries): four normals, the slopes moved by
+        // +-sigma along and across the view. Each is weighted by the area it shows the eye (cos
+        // to the eye / cos to the vertical): at grazing views the faces turned towards the eye
+        // fill the pixel, and their Fresnel is lower than a flat sheet's. The sun disc is left to
         // the glitter lobe below (four taps cannot sample a disc this small).
-        float sigma = sqrt(0.5 * (lostSlopeVariance(footprint) + CAPILLARY_SLOPE_VAR));
-        vec3 tx = normalize(cross(n, vec3(0.0, 0.0, 1.0)));
-        vec3 tz = cross(tx, n);
-        float F = 0.0;
+        mat2 lost = lostSlopeCovariance(fp);
+        vec2 along = normalize(rd.xz + vec2(1e-6, 0.0));
+        vec2 across = vec2(-along.y, along.x);
+        float lostAlong = dot(along, lost * along) + 0.5 * pixelVar;
+        float lostAcross = dot(across, lost * across) + 0.5 * pixelVar;
+        vec2 sigma = sqrt(vec2(lostAlong, lostAcross) + 0.5 * CAPILLARY_SLOPE_VAR);
+        float F = 0.0, area = 0.0;
         vec3 refl = vec3(0.0);
         for (int k = 0; k < 4; k++) {
             vec2 o = vec2(k & 1, k >> 1) * 2.0 - 1.0;
-            vec3 nk = normalize(n + sigma * (o.x * tx + o.y * tz));
+            vec2 sk = slope + o.x * sigma.x * along + o.y * sigma.y * across;
+            vec3 nk = normalize(vec3(-sk.x, 1.0, -sk.y));
+            float seen = max(dot(nk, -rd), 0.0) / nk.y;
             float Fk = 0.04 + 0.96 * pow(1.0 - max(dot(nk, -rd), 0.0), 5.0);   // Schlick, F0 = 0.04
             vec3 rk = reflect(rd, nk);
             rk.y = abs(rk.y);                             // no reflections from below the horizon
-            refl += Fk * skyAir(rk);
-            F += Fk;
+            refl += seen * Fk * skyAir(rk);
+            F += seen * Fk;
+            area += seen;
         }
-        refl /= max(F, 1e-4);                             // the Fresnel-weighted mean sky
-        F *= 0.25;
+        refl /= max(F, 1e-6);                             // the Fresnel-weighted mean sky
+        F /= max(area, 1e-6);
 
-        vec3 r = reflect(rd, n);
-        r.y = abs(r.y);
-        // the sun's glitter: a lobe wider than the tiny disc, so wave facets catch it. The slopes
-        // that the filtered normal no longer shows widen the lobe with distance; the lobe is
-        // normalised ((s + 2) / 2pi, relative to the near lobe), so the glitter path keeps its
-        // energy and dims as it spreads instead of clipping or vanishing.
-        float s = GLINT_POWER / (1.0 + GLINT_POWER * 0.03 * smoothstep(0.0, 1.0, footprint * 4.0));
-        float glint = pow(max(dot(r, normalize(SUN_DIR)), 0.0), s) * (s + 2.0) / (GLINT_POWER + 2.0);
+        // The sun's glitter, LEAN-style: a wave facet mirrors the sun where its slope equals the
+        // half vector's; the lobe is a Gaussian in slope space around that slope, of the near
+        // lobe's variance (GLINT_SLOPE_VAR) plus every slope this pixel does not show (the faded
+        // waves' covariance and the variation inside the pixel). Its peak falls as the lobe
+        // widens (unit integral), so the glitter path keeps its energy: a dim wide band to the
+        // horizon where the truth has many tiny glints, never a vanished path or a clipped smear.
+        vec3 h = normalize(normalize(SUN_DIR) - rd);
+        vec2 toSun = -h.xz / h.y - slope;
+        mat2 lobe = lost + (GLINT_SLOPE_VAR + 0.5 * pixelVar) * mat2(1.0);
+        float glint = GLINT_SLOPE_VAR / sqrt(determinant(lobe)) * exp(-0.5 * dot(toSun, inverse(lobe) * toSun));
         refl += vec3(1.0, 0.75, 0.45) * 30.0 * glint;
 
         // subsurface: light scattered back out of the water, deepest in the troughs

@@ -8,9 +8,11 @@
 //   * Bottom radiance L_b = albedo * (sun * caustics + ambient) * exp(-K (d + d_acc)):
 //     K is an RGB extinction coefficient (1/m), applied to the light going down to the bottom
 //     and to the light coming back up along the view ray.
-//   * In-scattering: water = mix(C_s * E, L_b, exp(-b d_acc)); the longer the path, the more the
-//     colour tends to the scatter colour C_s lit by the light that enters the water,
-//     E = sun * cos(refracted sun) + sky ambient (b = scattering coefficient, 1/m).
+//   * In-scattering: water = L_b + C_s E (b / K) (1 - exp(-K d_acc)); the longer the path, the
+//     more the colour tends to the water's own light: the scatter colour C_s lit by the light that
+//     enters the water, E = sun * cos(refracted sun) + sky ambient (b = scattering coefficient,
+//     1/m), of which a deep column returns b / K per channel (what K absorbs first never comes
+//     back). Extended Reinhard tone map before gamma.
 //   * Sky reflection by Schlick's Fresnel, F = F0 + (1 - F0)(1 - cos)^5, F0 = 0.02 for water:
 //     colour = mix(water, sky(reflect), F).
 //   Presets (keys 1-3, kept in Buffer A texel (0,0).x = 0, 1, 2):
@@ -25,6 +27,9 @@
 //   Colours are linear; gamma 1/2.2 and a fixed +-1 level dither at the end. iMouse x (while
 //   dragged) turns the camera. The preset indicator (1-3 squares, top left) shows for 2 s after
 //   a preset key, so captured frames carry no overlay unless a key was pressed.
+//   TRUTH (`toyhost run --define TRUTH`): the scene itself, for ../shared/tools/gallery_truth.py
+//   to average 16 samples of: no distance calming of the normal, no footprint fade of the waves.
+//   (Buffer A only keeps the preset and the key time, the same at any canvas size.)
 
 const vec3 SUN_DIR = vec3(-0.38, 0.70, -0.60);   // behind-left of the camera: no glint in view
 const vec3 SUN_COL = vec3(1.25, 1.15, 1.00);
@@ -131,22 +136,24 @@ vec3 sky(vec3 rd) {
 // sum of directional waves with deep-water dispersion w = sqrt(g k); returns the normal.
 // Nine waves, turned by the golden angle and x1.37 in wavenumber (no common period in view), each
 // modulated by slow value noise of its own so the pattern comes in patches instead of a visibly
-// repeating sheet; `fade` calms the normal far away, and a wave shorter than about two pixels
-// (`footprint`: the width of water a pixel covers) fades out instead of aliasing into moire.
-vec3 waterNormal(vec2 p, float t, float fade, float footprint) {
+// repeating sheet; a wave whose phase changes by more than ~3 rad per pixel along the view
+// (`footprint`: the length of water a pixel covers, the long axis of its strip) fades out instead
+// of aliasing into moire. The threshold is past Nyquist on purpose: waves that cross the view
+// still resolve across it, and against the 16-sample truth (issue 29) fading at 1 rad and a
+// distance calming of the normal left 0.13 of the far detail (now 0.38, and 31.1 -> 33.1 dB).
+vec3 waterNormal(vec2 p, float t, float footprint) {
     vec2 g = vec2(0.0);
     float ang = 0.4, k = 1.3, amp = 0.020;
     for (int i = 0; i < 9; i++) {
         vec2 dir = vec2(cos(ang), sin(ang));
         float w = sqrt(9.81 * k);
         float patchy = 0.35 + 1.3 * vnoise(p * 0.13 + vec2(float(i) * 7.1, 0.05 * t));
-        float keep = 1.0 - smoothstep(1.0, 3.0, k * footprint);
+        float keep = 1.0 - smoothstep(3.0, 8.0, k * footprint);
         g += dir * (amp * k * patchy * keep * cos(dot(p, dir) * k - w * t + float(i) * 1.7));
         ang += 2.39996;
         k *= 1.37;
         amp *= 0.78;
     }
-    g *= fade;
     return normalize(vec3(-g.x, 1.0, -g.y));
 }
 
@@ -252,9 +259,13 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
             col = shadeLand(ro + rd * tL, rd);
         } else {
             vec3 P = ro + rd * tW;
-            float fade = 1.0 / (1.0 + tW * 0.04);           // calm the normal far away
+#ifdef TRUTH
+            float fade = 1.0, footprint = 0.0;   // the scene itself (see the header)
+#else
+            float fade = 1.0 / (1.0 + tW * 0.04);           // the foam line's texture calms far away
             float footprint = tW * 2.0 / (1.7 * iResolution.y) / max(-rd.y, 0.05);
-            vec3 n = waterNormal(P.xz, t, fade, footprint);
+#endif
+            vec3 n = waterNormal(P.xz, t, footprint);
             vec3 rr = refract(rd, n, 1.0 / WATER_IOR);
 
             // march the refracted ray to the bottom (at most 45 m of water)
@@ -277,7 +288,13 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
             // the scatter colour is lit by what enters the water: the refracted sun and the sky
             vec3 Lw0 = -refract(-L, vec3(0.0, 1.0, 0.0), 1.0 / WATER_IOR);
             vec3 incident = SUN_COL * Lw0.y + vec3(0.25, 0.33, 0.42);
-            vec3 water = mix(Cs * incident, bottom, exp(-b * dAcc));
+            // the water's own light (single scattering): the light that enters is scattered back
+            // by the particles (colour C_s, coefficient b) while the water absorbs it on the way
+            // down and back up; a deep column returns b / (2 K) per channel, so the red that K
+            // takes first never comes back and tropical deep water turns blue-green, not the
+            // particles' own lavender. Along the view ray it builds up as 1 - exp(-K d_acc).
+            vec3 deep = Cs * incident * b / K;
+            vec3 water = bottom + deep * (1.0 - exp(-K * dAcc));
 
             // Fresnel (Schlick) blend with the reflected sky
             float cosi = clamp(dot(-rd, n), 0.0, 1.0);
@@ -294,6 +311,9 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         }
     }
 
+    // tone map (extended Reinhard, white at 2): highlights roll off instead of clipping, the
+    // dark water keeps its colour
+    col = col * (1.0 + col / 4.0) / (1.0 + col);
     col = pow(clamp(col, 0.0, 1.0), vec3(1.0 / 2.2)) + ditherNoise(fragCoord);
 
     // preset indicator: 1-3 small squares in the top-left corner, for 2 s after a preset key

@@ -9,28 +9,44 @@
 //   doubles the frequency (scale 2, angle ~34 deg, so octaves never line up); amplitude x 0.30 (0.24 read as smooth gel close up).
 // - The ray is marched against only 3 octaves (cheap, and the small ones barely move the hit
 //   point): from the crest plane it steps forward by the vertical gap until it is under the
-//   water, then refines that bracket with Illinois false position; normals come from 6 octaves
-//   by central differences over the pixel's footprint (distance / grazing sine), and each octave
-//   fades out once its crests come closer than about two pixels (no horizon shimmer).
-// - Shading (linear light): sky gradient with a sun glow and an HDR disc; water = deep colour
+//   water, then refines that bracket with Illinois false position; normals come from 6 octaves.
+// - Filtering that converges to the scene (checked against ../shared/tools/gallery_truth.py,
+//   TRUTH below): each octave fades once a pixel step crosses more than ~Nyquist of its domain,
+//   per screen axis (a grazing pixel is a long strip along the view, a narrow one across it, so
+//   octaves that run across the view keep their detail); the slope variance so lost spreads
+//   Fresnel x sky over four normals (weighted by the area each shows the eye) and widens the
+//   sun's glint, a unit-integral Gaussian in slope space (LEAN-style).
+// - Shading (linear light): blue sky gradient with a sun glow and an HDR disc; water = deep colour
 //   with wrapped diffuse + back light through thin crests, mixed with the sky reflection by
-//   Schlick's Fresnel (F0 = 0.02, capped at 0.7), plus the sun's glint: normalised Blinn-Phong
-//   whose lobe widens with the footprint, never brighter than the sun times Fresnel; exponential
-//   distance fog into the horizon colour; ACES tone curve, gamma 1/2.2, fixed dither.
+//   Schlick's Fresnel (F0 = 0.02, capped at 0.7), plus the sun's glint; exponential distance fog
+//   into the horizon colour; ACES tone curve, gamma 1/2.2, fixed dither.
 // - SUPERSAMPLE 2 (default) anti-aliases where it matters: 4 rotated-grid samples for the pixels
-//   whose ray grazes the sea near the horizon, one elsewhere; 1 renders a 3x3 grid per pixel
+//   whose ray grazes the sea near the horizon (0.12 rad), one elsewhere; 1 renders a 3x3 grid per pixel
 //   everywhere (9x the cost); 0 is one sample everywhere.
 // - Camera cruises forward and turns slowly with time; dragging the mouse steers it
 //   (x = heading, y = pitch).
 
+// TRUTH (`toyhost run --define TRUTH`): the scene itself, for ../shared/tools/gallery_truth.py to
+// average 16 samples of: one sample a pixel, no footprint filtering (every octave at full
+// strength, the glint's lobe never widened), the quality knobs at their best. The fog stays: it
+// is the scene's air.
+#ifdef TRUTH
+#define SUPERSAMPLE 0
+#else
 #define SUPERSAMPLE 2
+#endif
 
 const float EXPOSURE = 1.0;
 
 const int   MARCH_OCTAVES = 3;
 const int   SHADE_OCTAVES = 6;
+#ifdef TRUTH
+const int   MARCH_STEPS   = 120;
+const int   REFINE_ITERS  = 8;
+#else
 const int   MARCH_STEPS   = 40;   // forward steps before giving up on a bracket
 const int   REFINE_ITERS  = 5;
+#endif
 
 const float WAVE_HEIGHT = 0.6;   // amplitude of the first octave
 const float WAVE_FREQ   = 0.16;  // spatial frequency of the first octave
@@ -41,13 +57,14 @@ const float WAVE_SPEED  = 0.8;
 const mat2 OCTAVE_TURN = mat2(1.662, 1.113, -1.113, 1.662);
 
 const vec3 SUN_DIR     = vec3(0.45, 0.2, 0.85);     // normalised where used
-const vec3 DEEP_WATER  = vec3(0.0, 0.0124, 0.039);   // linear colours (gamma 2.2 at the end)
+const vec3 DEEP_WATER  = vec3(0.004, 0.032, 0.072);  // linear colours (gamma 2.2 at the end)
 const vec3 CREST_TINT  = vec3(0.177, 0.454, 0.268);
-const vec3 ZENITH      = vec3(0.022, 0.115, 0.407);
-const vec3 HORIZON     = vec3(0.582, 0.692, 0.780);
+const vec3 ZENITH      = vec3(0.030, 0.130, 0.520);
+const vec3 HORIZON     = vec3(0.420, 0.600, 0.860);
 const vec3 SUN_RADIANCE = vec3(1.0, 0.92, 0.8) * 10.0;  // the disc's brightness in skyColor (HDR)
-const float GLINT_POWER = 400.0;
-const float GLINT_SOLID_ANGLE = 0.25;  // the sun's lobe x this <= 1: a facet reflects at most the sun
+const float GLINT_SLOPE_VAR = 0.0025;  // the near glint's lobe: slope variance per axis (~3 degrees)
+const float FADE_START = 2.0;  // an octave fades out between these radians of its domain
+const float FADE_END   = 4.5;  // per pixel step (keepOctave); past Nyquist: fit to the truth
 
 // ---------------------------------------------------------------- noise
 // Integer hash of a lattice point -> [0, 1): multiply-xor the coordinates with two odd
@@ -83,31 +100,68 @@ float crest(vec2 p, float k) {
     return pow(1.0 - pow(prof.x * prof.y, 0.65), k);
 }
 
-// The sea's height from `octaves` octaves. `footprint` is the width of water a pixel covers
-// (0 = exact): an octave whose crests come closer than about two pixels fades out, so the normal
-// shows only detail the pixel can hold (unfiltered, far octaves flicker: horizon shimmer).
-float waterHeight(vec2 xz, int octaves, float footprint) {
-    vec2 p = xz * WAVE_FREQ;
-    p.x *= 0.75;                          // slightly longer crests across the wind
+// How much of an octave survives a pixel step that crosses `phase` radians of its domain (the
+// larger of the two screen axes): the octave fades to nothing past Nyquist. TRUTH: all of it.
+float keepOctave(float phase) {
+#ifdef TRUTH
+    return 1.0;
+#else
+    return 1.0 - smoothstep(FADE_START, FADE_END, phase);
+#endif
+}
+
+// Phase of the domain `q` (two columns: the domain's change per pixel step across and along the
+// view) that one pixel step crosses, on either domain axis.
+float domainPhase(mat2 q) {
+    vec2 m = max(abs(q[0]), abs(q[1]));
+    return max(m.x, m.y);
+}
+
+// The sea's height from `octaves` octaves. `fp` is the water one pixel step covers (columns:
+// across and along the view, in xz; zero = exact): an octave whose crests a pixel step crosses
+// too fast to show fades out, per screen axis, so the grazing far field keeps the octaves that
+// run across the view (one width, the strip's length, flattened it to a grey mirror).
+float waterHeight(vec2 xz, int octaves, mat2 fp) {
+    mat2 S = mat2(0.75 * WAVE_FREQ, 0.0, 0.0, WAVE_FREQ);   // slightly longer crests across the wind
+    vec2 p = S * xz;
+    mat2 q = S * fp;
     float phase = 1.0 + iTime * WAVE_SPEED;
     float amp = WAVE_HEIGHT;
     float k = WAVE_CHOP;
     float h = 0.0;
-    float freq = WAVE_FREQ;
     for (int i = 0; i < octaves; i++) {
         // two trains moving in opposite directions give a standing, tumbling chop
-        float keep = 1.0 - smoothstep(0.5, 1.5, freq * footprint);
+        float keep = keepOctave(domainPhase(q));
         h += amp * keep * (crest(p + phase, k) + crest(p - phase, k));
         p = OCTAVE_TURN * p;
-        freq *= 2.0;
+        q = OCTAVE_TURN * q;
         amp *= 0.30;
         k = mix(k, 1.0, 0.2);
     }
     return h;
 }
 
+// Slope variance (per axis, world xz) of the octaves that footprint `fp` fades: an octave of
+// amplitude a, choppiness k and domain scale f has ~2 a^2 f^2 (0.1 k + 0.1) (two trains of the
+// crest profile, whose slope variance per domain unit is 0.30 at k = 1.9 .. 0.50 at k = 4,
+// measured numerically); a faded octave loses (1 - keep^2) of it.
+float lostSlopeVariance(mat2 fp) {
+    mat2 S = mat2(0.75 * WAVE_FREQ, 0.0, 0.0, WAVE_FREQ);
+    mat2 q = S * fp;
+    float amp = WAVE_HEIGHT, k = WAVE_CHOP, f = WAVE_FREQ, lost = 0.0;
+    for (int i = 0; i < SHADE_OCTAVES; i++) {
+        float keep = keepOctave(domainPhase(q));
+        lost += (1.0 - keep * keep) * 2.0 * amp * amp * f * f * (0.1 * k + 0.1);
+        q = OCTAVE_TURN * q;
+        amp *= 0.30;
+        f *= 2.0;
+        k = mix(k, 1.0, 0.2);
+    }
+    return lost;
+}
+
 // signed vertical distance from the surface
-float above(vec3 p, int octaves) { return p.y - waterHeight(p.xz, octaves, 0.0); }
+float above(vec3 p, int octaves) { return p.y - waterHeight(p.xz, octaves, mat2(0.0)); }
 
 // Height-field intersection in two phases. (1) Walk forward from the crest plane with steps
 // proportional to the vertical gap, divided by (|rd.y| + a slope bound) so a step cannot jump
@@ -158,9 +212,10 @@ float traceSea(vec3 ro, vec3 rd, out bool hit) {
     return t;
 }
 
-vec3 waterNormal(vec3 p, float eps) {
-    float hx = waterHeight(p.xz + vec2(eps, 0.0), SHADE_OCTAVES, eps) - waterHeight(p.xz - vec2(eps, 0.0), SHADE_OCTAVES, eps);
-    float hz = waterHeight(p.xz + vec2(0.0, eps), SHADE_OCTAVES, eps) - waterHeight(p.xz - vec2(0.0, eps), SHADE_OCTAVES, eps);
+vec3 waterNormal(vec3 p, mat2 fp) {
+    const float eps = 0.002;
+    float hx = waterHeight(p.xz + vec2(eps, 0.0), SHADE_OCTAVES, fp) - waterHeight(p.xz - vec2(eps, 0.0), SHADE_OCTAVES, fp);
+    float hz = waterHeight(p.xz + vec2(0.0, eps), SHADE_OCTAVES, fp) - waterHeight(p.xz - vec2(0.0, eps), SHADE_OCTAVES, fp);
     return normalize(vec3(-hx, 2.0 * eps, -hz));
 }
 
@@ -175,16 +230,37 @@ vec3 skyColor(vec3 rd) {
     return col;
 }
 
-// `footprint`: the width of water the pixel covers; the detail it filtered away widens the sun's
-// lobe. The lobe is normalised Blinn-Phong times the sun's radiance (SUN_RADIANCE, the disc's
-// own brightness) and Fresnel: never brighter than the sun itself, the same energy when wide.
-vec3 shadeWater(vec3 p, vec3 n, vec3 rd, float footprint) {
+// `unseen`: the slope variance (per axis) the pixel does not show (faded octaves, variation
+// inside the pixel). Fresnel x sky is averaged over four normals spread by it, each weighted by
+// the area it shows the eye (at grazing views the faces turned to the eye fill the pixel, with a
+// lower Fresnel than a flat mirror's). The sun's glint is a Gaussian in slope space (LEAN-style)
+// around the slope that mirrors the sun, of the near lobe's variance plus `unseen`, with unit
+// integral: a wider, dimmer glint where detail was filtered, the same energy as the truth's.
+vec3 shadeWater(vec3 p, vec3 n, vec3 rd, float unseen) {
     vec3 sun = normalize(SUN_DIR);
-    float cosV = clamp(dot(n, -rd), 0.0, 1.0);
-    float F = 0.02 + 0.98 * pow(1.0 - cosV, 5.0);   // Schlick, water F0 ~ 0.02
-    F = min(F, 0.7);                                 // grazing: keep some body colour
-
-    vec3 refl = skyColor(reflect(rd, n));
+    vec2 slope = -n.xz / n.y;
+    vec2 along = normalize(rd.xz + vec2(1e-6, 0.0));
+    vec2 across = vec2(-along.y, along.x);
+    float sigma = sqrt(unseen);
+    float F = 0.0, area = 0.0;
+    vec3 refl = vec3(0.0);
+    for (int k = 0; k < 4; k++) {
+        vec2 o = vec2(k & 1, k >> 1) * 2.0 - 1.0;
+        vec2 sk = slope + sigma * (o.x * along + o.y * across);
+        vec3 nk = normalize(vec3(-sk.x, 1.0, -sk.y));
+        float cosV = clamp(dot(nk, -rd), 0.0, 1.0);
+        float seen = cosV / nk.y;
+        float Fk = 0.02 + 0.98 * pow(1.0 - cosV, 5.0);   // Schlick, water F0 ~ 0.02
+        Fk = min(Fk, 0.7);                                 // grazing: keep some body colour
+        vec3 rk = reflect(rd, nk);
+        rk.y = abs(rk.y);
+        refl += seen * Fk * skyColor(rk);
+        F += seen * Fk;
+        area += seen;
+        if (unseen == 0.0) break;                          // one normal: the taps would agree
+    }
+    refl /= max(F, 1e-6);
+    F /= max(area, 1e-6);
 
     float wrapDiff = pow(dot(n, sun) * 0.4 + 0.6, 40.0);
     vec3 body = DEEP_WATER + 0.15 * wrapDiff * CREST_TINT;
@@ -196,11 +272,11 @@ vec3 shadeWater(vec3 p, vec3 n, vec3 rd, float footprint) {
 
     vec3 col = mix(body, refl, F);
 
-    // sun glint: normalised Blinn-Phong, sharp near, wider where the footprint hides slopes
-    vec3 hv = normalize(sun - rd);
-    float s = GLINT_POWER / (1.0 + GLINT_POWER * 0.1 * smoothstep(0.0, 1.0, footprint * 2.0));
-    float spec = pow(max(dot(n, hv), 0.0), s) * (s + 8.0) / (8.0 * 3.14159) * max(dot(n, sun), 0.0);
-    col += SUN_RADIANCE * min(spec * GLINT_SOLID_ANGLE, 1.0) * F;
+    vec3 h = normalize(sun - rd);
+    vec2 toSun = -h.xz / h.y - slope;
+    float lobe = GLINT_SLOPE_VAR + unseen;
+    float spec = GLINT_SLOPE_VAR / lobe * exp(-0.5 * dot(toSun, toSun) / lobe) * max(dot(n, sun), 0.0);
+    col += SUN_RADIANCE * spec * F;
 
     return col;
 }
@@ -213,7 +289,7 @@ mat3 lookBasis(float yaw, float pitch) {
 }
 
 // The camera's ray through fragCoord.
-void viewRay(vec2 fragCoord, out vec3 ro, out vec3 rd) {
+void viewRay(vec2 fragCoord, out vec3 ro, out vec3 rd, out mat3 cam) {
     vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
 
     // slow orbit: the heading turns with time while the boat cruises along it
@@ -226,23 +302,30 @@ void viewRay(vec2 fragCoord, out vec3 ro, out vec3 rd) {
         pitch = clamp(-0.16 + m.y * 1.2, -0.9, 0.4);
     }
     ro = vec3(30.0 * sin(t * 0.04), 3.4 + 0.15 * sin(t * 0.8), 5.0 * t);
-    mat3 cam = lookBasis(yaw, pitch);
+    cam = lookBasis(yaw, pitch);
     rd = normalize(cam * vec3(uv, 2.0));
 }
 
 vec3 render(vec2 fragCoord) {
     vec3 ro, rd;
-    viewRay(fragCoord, ro, rd);
+    mat3 cam;
+    viewRay(fragCoord, ro, rd, cam);
     vec3 sky = skyColor(rd);
     bool hit;
     float dist = traceSea(ro, rd, hit);
     if (!hit) return sky;
 
     vec3 p = ro + rd * dist;
-    // the water one pixel covers: pixel angle x distance, stretched by the grazing angle
-    float footprint = dist * (1.0 / iResolution.y) / max(abs(rd.y), 0.05);
-    vec3 n = waterNormal(p, max(0.002, footprint));
-    vec3 col = shadeWater(p, n, rd, footprint);
+    // the water one pixel step covers, across the view (the camera's right axis) and along it
+    // (its up axis projected onto the water, stretched by the grazing angle)
+#ifdef TRUTH
+    mat2 fp = mat2(0.0);
+#else
+    vec3 up = cam[1] - rd * (cam[1].y / min(rd.y, -0.02));
+    mat2 fp = dist / iResolution.y * mat2(cam[0].xz, up.xz);
+#endif
+    vec3 n = waterNormal(p, fp);
+    vec3 col = shadeWater(p, n, rd, lostSlopeVariance(fp));
 
     float fog = 1.0 - exp(-dist * 0.0045);
     return mix(col, skyColor(normalize(vec3(rd.x, 0.0, rd.z))) , fog * fog);
@@ -280,10 +363,12 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     col /= 9.0;
 #elif SUPERSAMPLE == 2
     // adaptive: 4 rotated-grid samples only where the ray grazes the sea near the horizon (the
-    // crest silhouettes alias there, a few % of the pixels); one sample elsewhere
+    // crest silhouettes alias there, which no prefilter predicts: ~10% of the pixels; 0.06 rad
+    // left the far band at 28 dB against the truth, 0.12 gives 30); one sample elsewhere
     vec3 ro, rd;
-    viewRay(fragCoord, ro, rd);
-    int samples = (rd.y > -0.06 && rd.y < 0.01) ? 4 : 1;
+    mat3 cam;
+    viewRay(fragCoord, ro, rd, cam);
+    int samples = (rd.y > -0.12 && rd.y < 0.01) ? 4 : 1;
     vec3 col = vec3(0.0);
     for (int k = 0; k < samples; k++) {
         // rotated grid: (1, 3), (-3, 1), (3, -1), (-1, -3) / 8 of a pixel; one sample: the centre

@@ -41,10 +41,18 @@ const float EYE_UP   = 0.5;           // eye height above the water, in canvas h
 // in common.glsl).
 vec2 gridSize() { return max(floor(iResolution.xy / gridScale()), vec2(1.0)); }
 
+// Where this frame's time falls between the last two simulation steps (Buffer D holds h after
+// the last step due, tick n, in .x and h one step earlier in .y): the water is drawn half a step
+// behind iTime, interpolated between them. A frame's number of steps changes with the frame rate
+// (3, 2, 3, 2 ... at 24 fps); drawn from the last step alone the picture jumped by 3 and 2 steps'
+// worth in turn (+-25% change every frame), interpolated it moves by the same 2.5 every frame.
+float stepFraction() { return clamp(iTime * SIM_RATE + 0.5 - float(tickAt(iTime)), 0.0, 1.0); }
+
 float Hs(vec2 pos)   // bilinear height at a position in cells, clamped to the grid (walls)
 {
     pos = clamp(pos, vec2(0.5), gridSize() - 0.5);
-    return GAIN * texture(iChannel0, pos / iResolution.xy).x;
+    vec2 h = texture(iChannel0, pos / iResolution.xy).xy;
+    return GAIN * mix(h.y, h.x, stepFraction());
 }
 
 float hash21(vec2 q)
