@@ -14,7 +14,7 @@ expect() { for f in "$@"; do [[ -e "$stage/$f" ]] || { echo "missing after cmake
 expect bin/toyhost bin/toyhost-compat \
   lib/libtoyhost.so lib/cmake/toyhost/toyhostConfig.cmake lib/cmake/toyhost/toyhostConfigVersion.cmake \
   lib/cmake/toyhost/toyhostTargets.cmake lib/pkgconfig/toyhost.pc \
-  share/man/man1/toyhost.1.gz share/bash-completion/completions/toyhost share/doc/toyhost/README.md \
+  share/man/man1/toyhost.1.gz share/man/man1/toyhost-compat.1.gz share/bash-completion/completions/toyhost share/doc/toyhost/README.md \
   share/doc/toyhost/docs/cli.md share/doc/toyhost/docs/manifest.md share/doc/toyhost/docs/library.md
 for header in "$src"/include/toyhost/*.h; do expect "include/toyhost/$(basename "$header")"; done
 expect include/toyhost/Version.h
@@ -43,6 +43,15 @@ for option in $("$stage/bin/toyhost" run --help | grep -oE '^  -[-a-z,]+' | tr '
 done
 warnings="$(groff -man -Tutf8 -ww "$man" 2>&1 >/dev/null)"
 [[ -z "$warnings" ]] || { echo "groff warns about toyhost.1: $warnings"; status=1; }
+grep -q "^\.SH EXIT STATUS" "$man" && grep -q "124" "$man" || { echo "toyhost.1's EXIT STATUS does not list 124"; status=1; }
+# toyhost-compat has its page: every option of its --help is in it.
+compat_man="$stage/toyhost-compat.1"
+gzip -dc "$stage/share/man/man1/toyhost-compat.1.gz" >"$compat_man" || { echo "toyhost-compat.1.gz is not gzip"; status=1; }
+for option in $("$stage/bin/toyhost-compat" --help | grep -oE '^  -[-a-z,-]+' | tr ',' ' '); do
+  grep -qF -- "$(sed 's/-/\\-/g' <<<"$option")" "$compat_man" || { echo "toyhost-compat.1 does not document $option"; status=1; }
+done
+warnings="$(groff -man -Tutf8 -ww "$compat_man" 2>&1 >/dev/null)"
+[[ -z "$warnings" ]] || { echo "groff warns about toyhost-compat.1: $warnings"; status=1; }
 
 "$src/tests/package/check_completion.sh" "$stage/share/bash-completion/completions/toyhost" "$stage/bin/toyhost" || status=1
 exit $status
