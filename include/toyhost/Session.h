@@ -247,6 +247,24 @@ public:
     // returned false, or with the error that stopped it.
     Status render(const RenderRequest& request, const FrameCallback& onFrame);
 
+    // Recording the next frames to files through toyhost's own encoders, as `toyhost run --out`
+    // writes them: `out` is a PNG or EXR pattern ("f_%04d.png") or a video ("take.mp4", .webm, .mov,
+    // .mkv; needs ffmpeg); `frames` frames are stepped as step() steps them (`events` applied before
+    // the first), frames 0, every, 2 * every, ... and the last captured, numbered from 0 as a run's
+    // files are. With the session's settings and fresh from its creation, the files are those of
+    // `toyhost run` with the same options, byte for byte (a video: the same decoded frames). Checked
+    // as --out is (a pattern with a frame number when more than one frame is captured, ffmpeg for a
+    // video; stdout is refused). Returns the files written; on an error or a stop nothing half
+    // written is left (files complete so far stay; an unfinished video is removed). New member only.
+    struct RecordRequest {
+        std::string out;
+        int frames = 0;
+        int every = 1;
+        std::string pass = "Image";  // "Image" or a buffer the shadertoy has (EXR: its raw floats)
+        std::vector<InputEvent> events;
+    };
+    Result<std::vector<std::string>> record(const RecordRequest& request);
+
     // The Image output as a texture of the session's GL context (for sampling in the caller's own
     // shaders: bottom row first, as GL textures are), valid until the next step() or resize().
     unsigned int imageTexture() const;

@@ -138,6 +138,14 @@ public:
         return out;
     }
 
+    // Session.record(): the frames rendered on the GL thread, encoded by toyhost's own encoders.
+    std::vector<std::string> record(const std::vector<InputEvent>& events, const std::string& out, int frames,
+                                    int every, const std::string& pass) {
+        Session& s = open();
+        Session::RecordRequest request{out, frames, every, pass, events};
+        return valueOrThrow(onGlThread([&] { return s.record(request); }));
+    }
+
     Reloaded reload(const Shadertoy& next) {
         Session& s = open();
         // Planned here (files, decoding, a preprocessor child) with the GIL released; the GL
@@ -308,6 +316,8 @@ void bindSession(py::module_& module) {
         .def("read_into_uint8", &NativeSession::readInto<std::uint8_t>, py::arg("pass_"), py::arg("out"))
         .def("read_into_float32", &NativeSession::readInto<float>, py::arg("pass_"), py::arg("out"))
         .def("render_sound", &NativeSession::renderSound, py::arg("seconds"))
+        .def("record", &NativeSession::record, py::arg("events"), py::arg("out"), py::arg("frames"), py::arg("every"),
+             py::arg("pass_"))
         .def("reload", &NativeSession::reload, py::arg("shadertoy"))
         .def("restart", &NativeSession::restart)
         .def("resize", &NativeSession::resize, py::arg("width"), py::arg("height"))

@@ -14,6 +14,7 @@ toyhost.Error subclasses carrying toyhost's diagnostics (file, pass, line, code.
 """
 
 import os
+import pathlib
 from typing import Any, Iterable, Iterator, Mapping, Optional, Sequence, Tuple, Union
 
 # Imported here, with the module, rather than by the first frame: importing numpy takes 70-90 ms,
@@ -210,6 +211,21 @@ class Session:
                 raise UsageError("the session was closed while render() ran")
         finally:
             stream.cancel()
+
+    def record(self, out: PathLike, frames: int, *, every: int = 1, pass_: str = "Image",
+               mouse: Union[Point, bool, None] = None, keys: Optional[Keys] = None) -> list:
+        """Renders ``frames`` frames (as render() steps them) and writes the 0th, every ``every``-th
+        and the last through toyhost's own encoders, as the CLI's ``--out`` does: ``out`` is a PNG or
+        EXR pattern ("f_%04d.png", numbered from 0 as the CLI numbers a run's files) or a video
+        ("take.mp4", .webm, .mov, .mkv; needs ffmpeg). A fresh session with the CLI's settings
+        writes the CLI's files byte for byte (a video: the same decoded frames). Returns the paths
+        written. On an error nothing half written is left (an unfinished video is removed)."""
+        frames = args.integer("frames", frames, minimum=1)
+        every = args.integer("every", every, minimum=1)
+        files = self._native.record(self._events(mouse, keys, ()), args.path("out", out), frames, every,
+                                    args.text("pass_", pass_))
+        self._drawn = True
+        return [pathlib.Path(f) for f in files]
 
     def render_sound(self, seconds: float = 0.0) -> numpy.ndarray:
         """The Sound pass (mainSound) as the site renders it: float32 samples of shape (n, 2), stereo

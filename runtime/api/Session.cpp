@@ -615,6 +615,34 @@ Result<std::unique_ptr<Session::Rendering>> Session::startRendering(const Render
     return std::unique_ptr<Rendering>(new Rendering(std::move(impl)));
 }
 
+Result<std::vector<std::string>> Session::record(const RecordRequest& request) {
+    if (Status usable = impl_->usable("record"); !usable) return usable.error();
+    if (Status given = checkEvents(request.events); !given) return given.error();
+    Result<PassId> pass = impl_->pass(request.pass);
+    if (!pass) return pass.error();
+    Result<SessionPlan> plan = planRecording(impl_->core->plan(), request.out, request.frames, request.every, *pass);
+    if (!plan) return plan.error();
+    Status begun = impl_->withGl([&] { return impl_->core->beginRecording(std::move(*plan)); });
+    if (!begun) return begun.error();
+    Status rendered = okStatus();
+    for (int n = 0; n < request.frames && rendered; ++n) {
+        std::vector<InputEvent>& all = impl_->events;
+        all.clear();
+        const FrameTime time = impl_->timeline->next(frame(), all);
+        if (n == 0) all.insert(all.end(), request.events.begin(), request.events.end());
+        rendered = impl_->render(time, all);
+    }
+    if (!rendered) {
+        impl_->withGl([&] { (void)impl_->core->abandonRecording(); });
+        return rendered.error();
+    }
+    Result<std::vector<std::filesystem::path>> files = impl_->withGl([&] { return impl_->core->endRecording(); });
+    if (!files) return files.error();
+    std::vector<std::string> names;
+    for (const std::filesystem::path& file : *files) names.push_back(file.string());
+    return names;
+}
+
 Status Session::render(const RenderRequest& request, const FrameCallback& onFrame) {
     Result<std::unique_ptr<Rendering>> rendering = startRendering(request);
     if (!rendering) return rendering.error();

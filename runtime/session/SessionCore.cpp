@@ -171,7 +171,8 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     // Nothing reads the Image pass but the driver: a run that captures renders it only on the frames
     // it captures (long simulations captured every K frames run at buffer speed). A window shows
     // it, and a run without --out renders every pass (a dry run, the render-only benchmark).
-    const bool renderImage = !tiled_ && (live_ || !recording_ || recording_->needsImage(frame));
+    const int captureFrame = frame - recordingFirst_;  // a recording's own numbering (beginRecording)
+    const bool renderImage = !tiled_ && (live_ || !recording_ || recording_->needsImage(captureFrame));
     if (framesRendered_ == 0) {
         roundStartedAt_ = Clock::now();
         report_.startupSeconds = secondsBetween(startedAt_, roundStartedAt_);
@@ -181,7 +182,7 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     renderSeconds_ += secondsBetween(stepStarted, Clock::now());
 
     if (recording_)
-        if (Status recorded = recording_->rendered(*player_, frame); !recorded) return recorded;
+        if (Status recorded = recording_->rendered(*player_, captureFrame); !recorded) return recorded;
     if (tiled_)
         if (Status drawn = tiled_->render(*player_, frame); !drawn) return drawn;
     if (o.checkFinite) checkBuffers(frame);
@@ -317,6 +318,44 @@ Result<SessionReport> SessionCore::finishRound() {
         report_.restSeconds = secondsBetween(firstFrameEndedAt_, Clock::now());
     }
     return report_;
+}
+
+Status SessionCore::beginRecording(SessionPlan recording) {
+    if (!player_) return Error("no shadertoy runs yet (it did not compile)", Code::Internal);
+    if (recording_ || tiled_) return Error("this session records already", Code::Usage);
+    recordingPlan_ = std::make_unique<SessionPlan>(std::move(recording));
+    recordingFirst_ = frameNumber_;
+    recording_ = std::make_unique<Recording>(*recordingPlan_, activity(), [this] { return stopRequested(); });
+    if (Status begun = recording_->begin(*player_, observer_); !begun) {
+        recording_.reset();
+        recordingPlan_.reset();
+        recordingFirst_ = 0;
+        return begun;
+    }
+    return okStatus();
+}
+
+Result<std::vector<fs::path>> SessionCore::endRecording() {
+    if (!recording_) return Error("no recording to end", Code::Internal);
+    Status completed = recording_->complete();
+    SessionReport report;
+    if (completed) recording_->report(report, renderSeconds_, observer_, *finite_);
+    else (void)recording_->abandon();
+    recording_.reset();
+    recordingPlan_.reset();
+    recordingFirst_ = 0;
+    if (!completed) return completed.error();
+    return std::move(report.files);
+}
+
+std::string SessionCore::abandonRecording() {
+    if (!recording_) return {};
+    std::string left = recording_->abandon();
+    recording_->discardVideo();
+    recording_.reset();
+    recordingPlan_.reset();
+    recordingFirst_ = 0;
+    return left;
 }
 
 Result<SessionReport> SessionCore::run(SessionDriver& driver) {

@@ -101,6 +101,14 @@ public:
     // Applies `plan` (the shadertoy loaded and planned again after `changed` changed, or why it
     // could not be) with the reload rule above; a notice says what it did.
     ReloadOutcome reload(std::vector<std::filesystem::path> changed, Result<PlayerPlan> plan);
+    // A recording of the next frames of a session that records nothing (the library's
+    // Session::record): `recording` is planRecording()'s plan (its output, frames, capture-every
+    // and pass, frames numbered from 0 as a run's). renderFrame captures into it; endRecording()
+    // waits for the encoders and gives the files written (a video: one); abandonRecording()
+    // drops what is unfinished (an unfinished video is removed) and says what it left.
+    Status beginRecording(SessionPlan recording);
+    Result<std::vector<std::filesystem::path>> endRecording();
+    std::string abandonRecording();
     // iFrame back to 0 and every buffer cleared (the site's restart); the driver resets its clock.
     void restart();
     // New canvas size (window resize); buffers keep their content bottom-left.
@@ -151,6 +159,8 @@ private:
     std::string name_;
     std::unique_ptr<BackgroundWriter> writer_;
     std::unique_ptr<Player> player_;
+    std::unique_ptr<SessionPlan> recordingPlan_;  // beginRecording's plan, which recording_ reads
+    int recordingFirst_ = 0;                      // the frame number its frame 0 is
     std::unique_ptr<Recording> recording_;
     std::unique_ptr<TiledStill> tiled_;  // a canvas drawn in tiles (instead of recording_)
     std::unique_ptr<FiniteCheck> finite_;

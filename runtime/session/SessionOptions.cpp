@@ -127,6 +127,56 @@ TimelineDesc timelineOf(const SessionPlan& plan) {
     return {s.fps.value_or(defaults::kFps), s.startTime, plan.wallClock.value_or(0.0), plan.mouse, plan.keys};
 }
 
+Result<OutputPattern> checkedOutput(const SessionOptions& o, int first, int end) {
+    const SessionSettings& s = o.settings;
+    Result<OutputPattern> pattern = OutputPattern::parse(*o.outPattern);
+    if (!pattern) return pattern.error();
+    if (!pattern->numbered() && !pattern->streamed() && countCaptured(first, end, *o.frames, *o.captureEvery) > 1)
+        return usage("--out " + *o.outPattern + ": more than one frame is captured, so the "
+                     "pattern needs a frame number placeholder such as %04d");
+    if (pattern->format() != OutputFormat::RawStream) {
+        const std::string name = pattern->pathFor(end - 1).filename().string();
+        if (name.size() > 255)
+            return usage("--out " + *o.outPattern + ": the file name is " + std::to_string(name.size()) +
+                         " bytes long, more than the 255 a file system allows");
+    }
+    // A video has one frame rate; a window in real time renders at whatever rate it manages,
+    // so its recording would play at the wrong speed: ask for the step it should have.
+    if (pattern->format() == OutputFormat::Video && o.interactive && !s.fps)
+        return usage("--out " + *o.outPattern + ": a video recorded from a window needs --fps (each frame then "
+                     "advances iTime by exactly 1/fps, and the video plays at that rate); image files need none");
+    if (pattern->format() == OutputFormat::Video && !findExecutable("ffmpeg"))
+        return Error("--out " + *o.outPattern + ": video needs ffmpeg, which is not in PATH "
+                     "(Debian: apt-get install ffmpeg)",
+                     Code::CaptureFfmpeg);
+    return std::move(*pattern);
+}
+
+Result<SessionPlan> planRecording(const SessionPlan& session, const std::string& out, int frames, int every, PassId pass) {
+    if (frames < 1) return settingError("frames", "must be at least 1");
+    if (every < 1) return settingError("every", "must be at least 1");
+    SessionPlan recording;
+    recording.options = session.options;
+    SessionOptions& o = recording.options;
+    o.outPattern = out;
+    o.frames = frames;
+    o.captureEvery = every;
+    o.capturePass = pass;
+    o.interactive = false;
+    recording.first = 0;
+    recording.end = frames;
+    recording.wallClock = session.wallClock;
+    recording.sampling = session.sampling;
+    Result<OutputPattern> pattern = checkedOutput(o, 0, frames);
+    if (!pattern) return pattern.error();
+    if (pattern->format() == OutputFormat::RawStream)
+        return settingError("out", "a recording is written to files (frames or a video), not to stdout");
+    recording.output = std::move(*pattern);
+    if (recording.output->format() == OutputFormat::Video && o.video.codec == "auto")
+        (void)chooseAutoVideoEncoder(recording.output->extension());
+    return recording;
+}
+
 Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     SessionOptions options = asked;
     if (!options.startedAt) options.startedAt = std::chrono::steady_clock::now();
@@ -256,26 +306,8 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
         run.resume = std::move(resume);
     }
     if (o.outPattern) {
-        Result<OutputPattern> pattern = OutputPattern::parse(*o.outPattern);
+        Result<OutputPattern> pattern = checkedOutput(o, run.first, run.end);
         if (!pattern) return pattern.error();
-        if (!pattern->numbered() && !pattern->streamed() && countCaptured(run.first, run.end, *o.frames, *o.captureEvery) > 1)
-            return usage("--out " + *o.outPattern + ": more than one frame is captured, so the "
-                         "pattern needs a frame number placeholder such as %04d");
-        if (pattern->format() != OutputFormat::RawStream) {
-            const std::string name = pattern->pathFor(run.end - 1).filename().string();
-            if (name.size() > 255)
-                return usage("--out " + *o.outPattern + ": the file name is " + std::to_string(name.size()) +
-                             " bytes long, more than the 255 a file system allows");
-        }
-        // A video has one frame rate; a window in real time renders at whatever rate it manages,
-        // so its recording would play at the wrong speed: ask for the step it should have.
-        if (pattern->format() == OutputFormat::Video && o.interactive && !s.fps)
-            return usage("--out " + *o.outPattern + ": a video recorded from a window needs --fps (each frame then "
-                         "advances iTime by exactly 1/fps, and the video plays at that rate); image files need none");
-        if (pattern->format() == OutputFormat::Video && !findExecutable("ffmpeg"))
-            return Error("--out " + *o.outPattern + ": video needs ffmpeg, which is not in PATH "
-                         "(Debian: apt-get install ffmpeg)",
-                         Code::CaptureFfmpeg);
         run.output = std::move(*pattern);
     }
     if (tiled) {

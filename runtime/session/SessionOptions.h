@@ -131,6 +131,16 @@ struct SessionPlan {
 // The run's fixed-step input (timing/Timeline.h): its clock, date and input scripts.
 TimelineDesc timelineOf(const SessionPlan& plan);
 
+// The output `o.outPattern` names (checked as --out is) for frames [first, end) captured every
+// o.captureEvery of o.frames: a numbered pattern when more than one is captured, a file name a file
+// system takes, ffmpeg for a video.
+Result<OutputPattern> checkedOutput(const SessionOptions& o, int first, int end);
+
+// A recording of the next `frames` frames of a running session (the library's Session::record):
+// `session`'s options with the output `out`, `frames`, capture-every `every` and `pass`, frames
+// numbered from 0 as a run's; checked as a run's --out is (a stream to stdout is refused). No GL.
+Result<SessionPlan> planRecording(const SessionPlan& session, const std::string& out, int frames, int every, PassId pass);
+
 // Validates `options` (after withDefaults), loads the shadertoy and decodes its images, parses
 // the output pattern and the input scripts. No GL.
 Result<SessionPlan> prepareSession(const SessionOptions& options);
