@@ -419,7 +419,7 @@ TEST(ExportParse, ReadingABufferTheExportLacksUnbindsTheChannelWithANotice) {
 
 TEST(ExportParse, InvalidJsonNamesThePath) {
     const std::string message = parseError(R"({"Shader": {"renderpass": [)");
-    expectMentions(message, {kLabel + ": invalid JSON"});
+    expectMentions(message, {kLabel + ":1:28: invalid JSON: the text ends too early"});
 }
 
 TEST(ExportParse, NotAnExport) {
