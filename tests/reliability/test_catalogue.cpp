@@ -237,7 +237,7 @@ std::vector<Case> catalogue() {
     add({"EmptyValueAfterEquals", toy(), "run '@D/toy' --mouse= --frames 1", 2, {"--mouse: the value after '=' is empty"},
          "usage"});
     // Once a defect (issue 27): an unknown command said "A subcommand is required".
-    add({"UnknownCommand", toy(), "farm plan '@D/toy'", 2, {"unknown command \"farm\"", "known: run,"}, "usage"});
+    add({"UnknownCommand", toy(), "publish '@D/toy'", 2, {"unknown command \"publish\"", "known: run,"}, "usage"});
     add({"MisspelledCommand", toy(), "rnu '@D/toy'", 2, {"unknown command \"rnu\"", "did you mean \"run\""}, "usage"});
     add({"ShadertoyGivenAsCommand", toy(), "'@D/toy' --frames 1", 2, {"to run that shadertoy, toyhost run @D/toy"},
          "usage"});
