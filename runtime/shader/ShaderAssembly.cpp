@@ -190,7 +190,7 @@ AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     GlslRewriteOptions options = promotion(inputs);
     if (inputs.pass == PassId::Image && !inputs.sound) options.fragCoord = kFragCoordCopy;
     out.text = header + rewriteLikeWebGL(user, options);
-    options.zeroInit = options.rename = false;
+    options.zeroInit = options.rename = options.clampIndices = false;
     out.plainText = header + rewriteLikeWebGL(user, options);
     return out;
 }
