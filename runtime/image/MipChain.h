@@ -1,5 +1,5 @@
 // MipChain: the mip levels of an RGBA8 picture, built on the CPU with an exact 2x2 box filter
-// (rounded to nearest). llvmpipe's glGenerateMipmap for RGBA8 comes out about half a level
+// (rounded to nearest, ties to even, as the browser's levels are). llvmpipe's glGenerateMipmap for RGBA8 comes out about half a level
 // brighter per level (+3.8 at 1x1 on a mid-grey, reproduced outside toyhost); desktop drivers
 // behind browsers average exactly, so toyhost uploads these levels instead. No GL needed.
 #pragma once

@@ -7,6 +7,7 @@
 
 #include "core/Defaults.h"
 #include "shader/ChannelUse.h"
+#include "shader/ExpressionDepth.h"
 #include "shader/SourceText.h"
 
 namespace toyhost {
@@ -51,6 +52,7 @@ Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media, 
     std::vector<Diagnostic> notices = manifest.notices;
     notices.insert(notices.end(), images->notices().begin(), images->notices().end());
     for (Diagnostic& warning : unboundChannelWarnings(manifest)) notices.push_back(std::move(warning));
+    for (Diagnostic& warning : deepExpressionWarnings(manifest)) notices.push_back(std::move(warning));
     std::vector<PassSource> sources;
     sources.reserve(preparing.size());
     for (std::future<PassSource>& source : preparing) sources.push_back(source.get());

@@ -8,6 +8,7 @@
 #include "session/Recording.h"
 #include "session/TiledStill.h"
 #include "session/SoundJob.h"
+#include "shader/ImageCoverage.h"
 
 namespace toyhost {
 
@@ -113,6 +114,7 @@ Status SessionCore::createPlayer(PlayerPlan shadertoy) {
     Result<std::unique_ptr<Player>> made = Player::create(context_, std::move(shadertoy), desc);
     if (!made) return made.error();
     player_ = std::move(*made);
+    imageKeepsPixels_ = imageMayKeepPixels(player_->manifest());
     name_ = player_->manifest().name;
     problems_.clear();
     for (const Diagnostic& compiled : player_->compileNotices()) observer_.notice(compiled);
@@ -160,7 +162,10 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     if (frame < plan_.first) {
         // Before the frame range: buffers must still run (their state carries over); a shadertoy
         // without buffers only needs its inputs and counters to advance.
-        if (player_->manifest().hasBuffers()) player_->step(time, events, /*renderImage=*/false);
+        // An Image that may discard keeps what earlier frames drew (the site's canvas is preserved),
+        // so it is drawn on every frame, these included.
+        if (imageKeepsPixels_ && !tiled_) player_->step(time, events, /*renderImage=*/true);
+        else if (player_->manifest().hasBuffers()) player_->step(time, events, /*renderImage=*/false);
         else player_->skipFrame(events);
         ++frameNumber_;
         if (checkpointDue()) return saveCheckpoint();
@@ -170,9 +175,12 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
         if (Status begun = recording_->begin(*player_, observer_); !begun) return begun;
     // Nothing reads the Image pass but the driver: a run that captures renders it only on the frames
     // it captures (long simulations captured every K frames run at buffer speed). A window shows
-    // it, and a run without --out renders every pass (a dry run, the render-only benchmark).
+    // it, and a run without --out renders every pass (a dry run, the render-only benchmark). An
+    // Image that may `discard` leaves pixels as the previous frame drew them, as the site's
+    // preserved canvas does, so it is drawn on every frame (shader/ImageCoverage.h).
     const int captureFrame = frame - recordingFirst_;  // a recording's own numbering (beginRecording)
-    const bool renderImage = !tiled_ && (live_ || !recording_ || recording_->needsImage(captureFrame));
+    const bool renderImage =
+        !tiled_ && (live_ || !recording_ || imageKeepsPixels_ || recording_->needsImage(captureFrame));
     if (framesRendered_ == 0) {
         roundStartedAt_ = Clock::now();
         report_.startupSeconds = secondsBetween(startedAt_, roundStartedAt_);

@@ -167,6 +167,7 @@ private:
     std::vector<Diagnostic> problems_;
     std::vector<InputEvent> events_;
     std::vector<float> bufferPixels_;
+    bool imageKeepsPixels_ = false;  // the Image may discard: drawn on every frame (shader/ImageCoverage.h)
     bool live_ = false;          // a window: frames without an end, waiting for a shadertoy that compiles
     int frameNumber_ = 0;
     int framesRendered_ = 0;     // this round

@@ -1,6 +1,7 @@
 #include "shader/BrowserPreprocess.h"
 
 #include <cctype>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -51,6 +52,45 @@ long lineMarker(std::string_view line) {
     return (i < line.size() && line[i] == ' ' && i + 1 < line.size() && line[i + 1] == '"') ? n : -1;
 }
 
+// The directive word of a preprocessor line (`define` for `  #  define X`) and where its
+// operands start; empty for any other line.
+std::string_view directiveWord(std::string_view line, std::size_t& after) {
+    std::size_t i = line.find_first_not_of(" \t");
+    if (i == std::string_view::npos || line[i] != '#') return {};
+    i = line.find_first_not_of(" \t", i + 1);
+    if (i == std::string_view::npos) return {};
+    std::size_t end = i;
+    while (end < line.size() && std::isalpha(static_cast<unsigned char>(line[end]))) ++end;
+    after = end;
+    return line.substr(i, end - i);
+}
+
+// What GLSL ES 3.00's preprocessor refuses (and browsers and Mesa with it) that C's accepts and
+// can be seen line by line: token pasting and a macro name with the reserved GL_ prefix. (A
+// macro redefined with another body and an undefined name in an evaluated #if depend on which
+// groups are skipped: cpp reports those, see below.)
+std::optional<std::string> refusedLine(std::string_view line) {
+    std::size_t after = 0;
+    const std::string_view word = directiveWord(line, after);
+    if (word != "define" && word != "undef") return std::nullopt;
+    std::string_view rest = line.substr(after);
+    if (const std::size_t comment = rest.find("//"); comment != std::string_view::npos) rest = rest.substr(0, comment);
+    const std::size_t name = rest.find_first_not_of(" \t");
+    if (name != std::string_view::npos && rest.compare(name, 3, "GL_") == 0)
+        return "macro names beginning with GL_ are reserved: " + std::string(line);
+    if (word == "define" && rest.find("##") != std::string_view::npos)
+        return "token pasting (##) is not supported in GLSL ES: " + std::string(line);
+    return std::nullopt;
+}
+
+// A line of cpp's messages that GLSL ES makes an error although C makes it a warning.
+std::optional<std::string> refusedByLog(const std::string& log) {
+    for (std::string_view line : splitLines(log))
+        if (line.find("warning: \"") != std::string_view::npos && line.find("\" redefined") != std::string_view::npos)
+            return std::string(line);
+    return std::nullopt;
+}
+
 }  // namespace
 
 Result<std::string> preprocessLikeBrowsers(std::string_view shader) {
@@ -59,6 +99,8 @@ Result<std::string> preprocessLikeBrowsers(std::string_view shader) {
     std::vector<std::string> kept;
     std::string input;
     for (std::string_view line : splitLines(shader)) {
+        if (std::optional<std::string> refused = refusedLine(line))
+            return Error("the shader's preprocessor directives are refused by browsers: " + *refused, Code::ShaderPreprocess);
         if (isKeptDirective(line)) {
             input += std::string(kMarker) + std::to_string(kept.size());
             kept.emplace_back(line);
@@ -70,9 +112,10 @@ Result<std::string> preprocessLikeBrowsers(std::string_view shader) {
 
     TemporaryFiles temp("cpp", {"glsl", "log"});
     if (!temp.registerAll()) return Error("not preprocessed: toyhost is stopping", Code::Interrupted);
-    // GLSL ES 3.00's predefined macros; nothing of C's (-undef), no include paths, no warnings
-    // about what is valid GLSL but odd C (an apostrophe in a skipped block).
-    const std::vector<std::string> args = {"cpp", "-undef", "-nostdinc", "-w", "-x", "c", "-U__VERSION__",
+    // GLSL ES 3.00's predefined macros; nothing of C's (-undef), no include paths. An undefined
+    // name in an evaluated #if is an error in GLSL ES 3.00 (a 0 in C); warnings (an apostrophe in
+    // a skipped block, a redefined macro) only go to the log, read below.
+    const std::vector<std::string> args = {"cpp", "-undef", "-nostdinc", "-Werror=undef", "-x", "c", "-U__VERSION__",
                                            "-D__VERSION__=300", "-DGL_ES=1", "-", "-o", temp[0].string()};
     Result<ChildProcess> cpp = ChildProcess::spawn(args, temp[1]);
     if (!cpp) return cpp.error();
@@ -83,6 +126,10 @@ Result<std::string> preprocessLikeBrowsers(std::string_view shader) {
     Result<int> exit = cpp->closeAndWait();
     if (!exit || *exit != 0)
         return Error("the preprocessor rejected the shader: " + logTail(temp[1]), Code::ShaderPreprocess);
+    // A macro defined again with another body: an error in GLSL ES, a warning in C.
+    if (Result<std::string> log = readTextFile(temp[1], std::size_t(1) << 20); log)
+        if (std::optional<std::string> refused = refusedByLog(*log))
+            return Error("the preprocessor rejected the shader: " + *refused, Code::ShaderPreprocess);
     Result<std::string> output = readTextFile(temp[0], std::size_t(64) << 20);
     if (!output) return output.error();
 

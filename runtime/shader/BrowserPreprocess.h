@@ -16,7 +16,9 @@
 namespace toyhost {
 
 // The expanded text of a GLSL ES 3.00 shader (`#version` first), or an error when `cpp` is missing
-// or rejects the text. `#version`, `#extension` and `#pragma` lines are kept as they are.
+// or rejects the text, or when the text uses what GLSL ES forbids and C allows (browsers and Mesa
+// refuse it): token pasting `##`, a macro name beginning with GL_ (#define, #undef), a macro
+// defined again with another body, an undefined name in an #if or #elif that is evaluated. `#version`, `#extension` and `#pragma` lines are kept as they are.
 Result<std::string> preprocessLikeBrowsers(std::string_view shader);
 
 }  // namespace toyhost

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "shader/GlslTokens.h"
+#include "shader/IndexClamp.h"
 
 namespace toyhost {
 
@@ -292,6 +293,8 @@ std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions promote) 
             edits.push_back({t.offset, t.text.size(), "highp"});
     }
     if (promote.zeroInit) ZeroInitialiser(tokens).run(edits);
+    if (promote.clampIndices)
+        for (IndexInsertion& insertion : clampDynamicIndices(tokens)) edits.push_back({insertion.offset, 0, std::move(insertion.text)});
     std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) {
         return a.offset != b.offset ? a.offset < b.offset : a.erase < b.erase;  // insertions first
     });

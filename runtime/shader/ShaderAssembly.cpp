@@ -1,6 +1,7 @@
 #include "shader/ShaderAssembly.h"
 
 #include "shader/GlslRewrite.h"
+#include "shader/GlslTokens.h"
 
 #include <algorithm>
 #include <cctype>
@@ -168,11 +169,27 @@ std::string makeHeader(const ShaderInputs& in) {
     return h.str();
 }
 
+// Mesa 22 still offers GLSL ES 1.00's texture2D to 3.00 shaders; the site (WebGL2) refuses it.
+// A global of that name, after the header, hides Mesa's function, so a call gets Mesa's own "no
+// function with name 'texture2D'" (the site's verdict; webref probe cp_texture2D). Not when the
+// user's text names it itself: a macro (`#define texture2D texture`), a function or a variable.
+std::string hideTexture2D(std::string_view user) {
+    const std::vector<GlslToken> tokens = tokenizeGlsl(user);
+    for (std::size_t i = 1; i < tokens.size(); ++i) {
+        if (tokens[i].text != "texture2D") continue;
+        const GlslToken& before = tokens[i - 1];
+        if (tokens[i].directive ? before.text == "define" || before.text == "undef"
+                                : before.kind == GlslToken::Kind::Identifier && before.text != "return" && before.text != "else")
+            return {};
+    }
+    return "const int texture2D = 0;\n";
+}
+
 }  // namespace
 
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     AssembledShader out;
-    const std::string header = makeHeader(inputs) + macroDefineLines(inputs.defines);
+    const std::string headerStart = makeHeader(inputs) + macroDefineLines(inputs.defines);
     std::string user;
     if (inputs.common) {
         // Common is pasted followed by a newline.
@@ -187,10 +204,11 @@ AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     // the rewrite (of the user's text, Common and pass together) keeps every line where it was.
     // The text without it is kept for a driver that refuses the rewritten one (a declaration the
     // rewrite misread).
+    const std::string header = headerStart + hideTexture2D(user);
     GlslRewriteOptions options = promotion(inputs);
     if (inputs.pass == PassId::Image && !inputs.sound) options.fragCoord = kFragCoordCopy;
     out.text = header + rewriteLikeWebGL(user, options);
-    options.zeroInit = options.rename = false;
+    options.zeroInit = options.rename = options.clampIndices = false;
     out.plainText = header + rewriteLikeWebGL(user, options);
     return out;
 }

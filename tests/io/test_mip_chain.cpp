@@ -1,5 +1,5 @@
 // MipChain: the CPU box filter that replaces llvmpipe's glGenerateMipmap for RGBA8 pictures:
-// level sizes as GL's, exact averages rounded to nearest, down to 1x1.
+// level sizes as GL's, exact averages rounded to nearest with ties to even (the browser's), down to 1x1.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -36,11 +36,22 @@ TEST(MipChain, EachTexelIsTheRoundedAverageOfTheBlockBelowIt) {
     const std::vector<std::uint8_t> pixels{0, 1, 2, 255, 0, 0, 0, 255, 1, 1, 1, 255, 0, 0, 2, 254};
     const std::vector<MipLevel> levels = boxMipChain(pixels, 2, 2);
     ASSERT_EQ(levels.size(), 1u);
-    // R: 1/4 = 0.25 -> 0; G: 2/4 = 0.5 -> 1 (half up); B: 5/4 = 1.25 -> 1; A: 1019/4 = 254.75 -> 255.
-    EXPECT_EQ(levels[0].rgba, (std::vector<std::uint8_t>{0, 1, 1, 255}));
+    // R: 1/4 = 0.25 -> 0; G: 2/4 = 0.5 -> 0 (tie to even); B: 5/4 = 1.25 -> 1; A: 1019/4 = 254.75 -> 255.
+    EXPECT_EQ(levels[0].rgba, (std::vector<std::uint8_t>{0, 0, 1, 255}));
     // A 1-pixel-high row averages pairs.
     const std::vector<std::uint8_t> row{10, 10, 10, 10, 20, 20, 20, 20};
     EXPECT_EQ(boxMipChain(row, 2, 1)[0].rgba, (std::vector<std::uint8_t>{15, 15, 15, 15}));
+}
+
+TEST(MipChain, TiesRoundToEvenAsTheBrowsersLevelsDo) {
+    // Issue 30 (webref probe mip_levels): rounding ties up drifts +0.12 LSB per level; the
+    // browser's levels are the exact average with ties to even.
+    // Sums per channel 2, 6, 10, 1018 over 4: 0.5 -> 0, 1.5 -> 2, 2.5 -> 2, 254.5 -> 254.
+    const std::vector<std::uint8_t> pixels{2, 6, 10, 255, 0, 0, 0, 255, 0, 0, 0, 254, 0, 0, 0, 254};
+    EXPECT_EQ(boxMipChain(pixels, 2, 2)[0].rgba, (std::vector<std::uint8_t>{0, 2, 2, 254}));
+    // Pairs (a side already 1): 21 / 2 = 10.5 -> 10, 23 / 2 = 11.5 -> 12.
+    const std::vector<std::uint8_t> row{10, 11, 0, 0, 11, 12, 0, 0};
+    EXPECT_EQ(boxMipChain(row, 2, 1)[0].rgba, (std::vector<std::uint8_t>{10, 12, 0, 0}));
 }
 
 // Volumes: each level averages the 2x2x2 block under each voxel (rounded to nearest), per channel,

@@ -1,0 +1,48 @@
+// ExpressionDepth: the estimate behind "the site refuses this" for expressions nested deeper than
+// Chrome's 256 (webref probes cp_expr_deep: 300 nested parentheses, cp_expr_long_sum: 400 terms),
+// and ordinary code far below it. Pure.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "shader/ExpressionDepth.h"
+
+using namespace toyhost;
+
+namespace {
+
+std::string nested(int depth) {
+    std::string v = "ONE";
+    for (int i = 0; i < depth; ++i) v = "(" + v + " + 0.001)";
+    return "void f(float ONE) {\n  float a = 1.0;\n  float v = " + v + ";\n}\n";
+}
+
+std::string longSum(int terms) {
+    std::string v = "x * 0.0";
+    for (int i = 1; i < terms; ++i) v += " + x * 0.001";
+    return "float g(float x) { return " + v + "; }\n";
+}
+
+}  // namespace
+
+TEST(ExpressionDepth, NestedParenthesesCountOnePerLevel) {
+    const DeepestStatement deep = deepestStatement(nested(300));
+    EXPECT_GT(deep.depth, kSiteExpressionDepthLimit);
+    EXPECT_LT(deep.depth, 310);
+    EXPECT_EQ(deep.line, 3);
+    EXPECT_LT(deepestStatement(nested(200)).depth, kSiteExpressionDepthLimit);
+}
+
+TEST(ExpressionDepth, ALongSumIsAsDeepAsItsTerms) {
+    EXPECT_GT(deepestStatement(longSum(400)).depth, kSiteExpressionDepthLimit);
+    EXPECT_LT(deepestStatement(longSum(400)).depth, 410);
+    EXPECT_LT(deepestStatement(longSum(100)).depth, kSiteExpressionDepthLimit);
+}
+
+TEST(ExpressionDepth, ArgumentsAreSiblingsNotLevels) {
+    // 300 arguments of one call: each is shallow, the call is too.
+    std::string args = "1.0";
+    for (int i = 0; i < 300; ++i) args += ", 1.0 + 2.0";
+    EXPECT_LT(deepestStatement("float[301] a = float[301](" + args + ");").depth, 10);
+    EXPECT_LT(deepestStatement("void m(out vec4 o, in vec2 fc) { o = vec4(fc.x * 2.0 + sin(fc.y), 0.5, 0.25, 1.0); }").depth, 10);
+}
