@@ -186,7 +186,8 @@ float waterHf(vec2 p, float t, int oct, float footprint) {
     float theta = swellTheta(p, t);
     float r = 1.0 - abs(sin(0.5 * theta));
     float env = crestEnvelope(p, t);
-    float h = A * (env * (r * r * r - 0.25) + swellOthers(p, t, footprint));
+    // the other trains are low (<= 0.3 m): the march (2 octaves) leaves them to the normal
+    float h = A * (env * (r * r * r - 0.25) + (oct > 2 ? swellOthers(p, t, footprint) : 0.0));
     // breakers: in the surf zone the main crest peaks into a steep lip and a mound of whitewater
     // trails behind it (both where the crest is long enough to break)
     float surfB = smoothstep(-15.0, -7.0, s) * (1.0 - smoothstep(-3.0, 0.5, s));
