@@ -11,6 +11,11 @@
 //     (1 - |2 n - 1|) add chop: 2 while marching, 5 for the normal (cheap march, fine detail).
 //     The swell grows as the water shoals (amplitude x2.2 toward the shore) and dies where it
 //     breaks on the rock. Rock terraces (0.45 m steps, 55 %) give the ledges of bedded rock.
+//   * Two more swell trains (6.5 m from 18 deg left, 12 m from 25 deg right) and a crest envelope
+//     on each make crests a few wavelengths long instead of endless regular lines; in the surf
+//     zone the main crest peaks into a breaker (a lip ~ r^10) with a whitewater mound behind it.
+//   * Rock silhouettes: a ray that just misses the rock takes its colour by the share of the
+//     pixel the rock covers (closest clearance against the pixel's angle); off under TRUTH.
 //   * Foam: (1) contact foam where the water thickness h_w - h_r is near zero, i.e. where the
 //     surface meets the rock, widened when a crest arrives (wash); (2) crest foam where the
 //     ridge s is near 1 inside the surf zone, on the spilling front face and in a decaying trail
