@@ -6,15 +6,17 @@
 #     checkpoint chain: byte-identical; `farm status` names a deleted and a truncated frame, `farm
 #     join` refuses, the damaged shard is submitted again, `farm join` makes a lossless mp4 whose
 #     decoded frames equal the PNGs;
+#  2b. Mountains & Lakes (xjorma's original, Common + 4 buffers, from ../shared) in 3 tasks from the
+#     checkpoint chain: byte-identical to one run;
 #  3. a task killed at its time limit (Slurm sends SIGTERM): it leaves its checkpoint, is
 #     requeued, resumes from it, and the frames are byte-identical to one uninterrupted run.
 # The daemons are stopped by process id whatever happens; if they cannot start, the test fails.
-# Usage: test_slurm_farm.sh TOYHOST SOURCE_DIR WORK_DIR [cases: image buffers timeout]
+# Usage: test_slurm_farm.sh TOYHOST SOURCE_DIR WORK_DIR [cases: image buffers mountains timeout]
 set -uo pipefail
 toyhost=$1 source=$2 work=$3
 shift 3
 cases=("$@")
-((${#cases[@]})) || cases=(image buffers timeout)
+((${#cases[@]})) || cases=(image buffers mountains timeout)
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$here/slurm_cluster.sh"
 
@@ -107,6 +109,23 @@ if [[ " ${cases[*]} " == *" buffers "* ]]; then
   [ "$frames" = 30 ] || fail "the joined video has $frames frames, not 30"
   [ "$video" = "$pngs" ] && echo "ok: the joined mp4's 30 decoded frames equal the PNGs" ||
     fail "the joined mp4's decoded frames differ from the PNGs"
+fi
+
+if [[ " ${cases[*]} " == *" mountains "* ]]; then
+  lakes=$source/shadertoys/mountains-lakes
+  [ -r "$source/../shared/shadertoys/7tSSDD/common.glsl" ] || fail "mountains: ../shared/shadertoys/7tSSDD is not beside the repository"
+  options=(--size 64x36 "${date_option[@]}")
+  "$toyhost" run "$lakes" --headless --quiet --frames 24 "${options[@]}" --out "$work/lakes-single/f_%06d.png" 2>/dev/null ||
+    fail "mountains: the single run failed"
+  echo "+ toyhost farm plan $lakes --frames 24 --shards 3 --scheduler slurm --job $work/lakes ${options[*]}"
+  "$toyhost" farm plan "$lakes" --frames 24 --shards 3 --scheduler slurm --job "$work/lakes" "${options[@]}" >/dev/null ||
+    fail "mountains: farm plan failed"
+  [ -x "$work/lakes/checkpoints.sh" ] || fail "mountains: no checkpoint chain in the plan"
+  id=$(submit "$work/lakes") || fail "mountains: sbatch refused the job"
+  wait_job "$id" 300 || fail "mountains: job $id still queued after 300 s"
+  for i in 1 2; do [ -s "$work/lakes/checkpoints/start-$i.ckpt" ] || fail "mountains: no chain checkpoint start-$i.ckpt"; done
+  same_frames "$work/lakes/frames" "$work/lakes-single" "Mountains & Lakes (3 array tasks from the checkpoint chain)" ||
+    show_logs "$work/lakes"
 fi
 
 done_releasing() {
