@@ -82,6 +82,27 @@ struct SessionSettings {
 
 enum class RowOrder { TopFirst, BottomFirst };
 
+// A program's own pixels shown in a channel (Session::setChannel): a video's frame, a simulation's
+// field, a model's output. `width` x `height` pixels of `components` values (1: R, sampled as
+// (r, 0, 0, 1) as the site's one-channel textures; 3: RGB, alpha 1; 4: RGBA), packed rows in
+// `order` (TopFirst: row 0 is the picture's top, at t = 1, as read() gives a frame). The texture's
+// size and format follow the array: 8-bit normalised for UInt8, 32-bit floats (unclamped) for
+// Float32. Mipmap filtering takes UInt8 only.
+struct ChannelArray {
+    enum class Type { UInt8, Float32 };
+    enum class Filter { Nearest, Linear, Mipmap };
+    enum class Wrap { Clamp, Repeat };
+    int width = 0;
+    int height = 0;
+    int components = 4;
+    Type type = Type::UInt8;
+    const void* data = nullptr;
+    std::size_t bytes = 0;  // what `data` holds: width * height * components values
+    RowOrder order = RowOrder::TopFirst;
+    Filter filter = Filter::Linear;
+    Wrap wrap = Wrap::Clamp;
+};
+
 // What a hot reload did (Session::reload).
 struct Reloaded {
     bool applied = false;           // new code or structure runs now
@@ -264,6 +285,15 @@ public:
         std::vector<InputEvent> events;
     };
     Result<std::vector<std::string>> record(const RecordRequest& request);
+
+    // Shows `pixels` in channel `channel` (0..3) of `pass` ("Image", "Buffer A".."Buffer D",
+    // "Cube A") from the next frame on, uploaded now (the caller's memory is not kept); call it again
+    // before any step() to replace them (a new size or format makes a new texture). The channel must
+    // be unbound (its sampler2D then shows the array) or show a picture (an image file or stock
+    // texture, replaced); a buffer, cubemap, video or keyboard channel is refused, as are a shape
+    // or byte count that do not agree, naming pass and channel. The array stays through restart(),
+    // resize() and reloads that keep the channel able to show it. New member only.
+    Status setChannel(std::string_view pass, int channel, const ChannelArray& pixels);
 
     // The Image output as a texture of the session's GL context (for sampling in the caller's own
     // shaders: bottom row first, as GL textures are), valid until the next step() or resize().

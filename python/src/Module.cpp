@@ -83,7 +83,9 @@ void bindInputEvent(py::module_& m) {
 }
 
 void bindShadertoy(py::module_& m) {
-    py::class_<Shadertoy>(m, "Shadertoy", "A shadertoy, loaded and validated (toyhost.load).")
+    // dynamic_attr: from_code keeps the arrays given as channels on the object (_arrays), for the
+    // sessions made from it.
+    py::class_<Shadertoy>(m, "Shadertoy", "A shadertoy, loaded and validated (toyhost.load).", py::dynamic_attr())
         .def_property_readonly("name", &Shadertoy::name)
         .def_property_readonly("path", &Shadertoy::path)
         .def_property_readonly("passes", &Shadertoy::passes)

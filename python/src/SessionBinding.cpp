@@ -129,6 +129,32 @@ public:
         return out;
     }
 
+    // Session.set_channel(): the array's memory uploaded straight from numpy on the GL thread (the
+    // caller's thread waits, holding the array) after the Python side checked dtype and layout.
+    void setChannel(const std::string& pass, int channel, const py::array& pixels, const std::string& filter,
+                    const std::string& wrap) {
+        Session& s = open();
+        const bool bytes = pixels.dtype().is(py::dtype::of<std::uint8_t>());
+        const bool floats = pixels.dtype().is(py::dtype::of<float>());
+        if ((!bytes && !floats) || (pixels.ndim() != 2 && pixels.ndim() != 3) || !(pixels.flags() & py::array::c_style))
+            throw ToyhostError(Error("array: expected a C-contiguous uint8 or float32 array of shape (height, width) "
+                                     "or (height, width, 1|3|4)",
+                                     Code::Usage));
+        ChannelArray array;
+        array.height = static_cast<int>(std::min<py::ssize_t>(pixels.shape(0), INT32_MAX));
+        array.width = static_cast<int>(std::min<py::ssize_t>(pixels.shape(1), INT32_MAX));
+        array.components = pixels.ndim() == 3 ? static_cast<int>(std::min<py::ssize_t>(pixels.shape(2), 16)) : 1;
+        array.type = bytes ? ChannelArray::Type::UInt8 : ChannelArray::Type::Float32;
+        array.data = pixels.data();
+        array.bytes = static_cast<std::size_t>(pixels.nbytes());
+        array.order = RowOrder::TopFirst;
+        array.filter = filter == "nearest" ? ChannelArray::Filter::Nearest
+                       : filter == "mipmap" ? ChannelArray::Filter::Mipmap
+                                            : ChannelArray::Filter::Linear;
+        array.wrap = wrap == "repeat" ? ChannelArray::Wrap::Repeat : ChannelArray::Wrap::Clamp;
+        throwIfFailed(onGlThread([&] { return s.setChannel(pass, channel, array); }));
+    }
+
     py::array_t<float> renderSound(double seconds) {
         Session& s = open();
         const std::vector<float> samples = valueOrThrow(onGlThread([&] { return s.renderSound(seconds); }));
@@ -316,6 +342,8 @@ void bindSession(py::module_& module) {
         .def("read_into_uint8", &NativeSession::readInto<std::uint8_t>, py::arg("pass_"), py::arg("out"))
         .def("read_into_float32", &NativeSession::readInto<float>, py::arg("pass_"), py::arg("out"))
         .def("render_sound", &NativeSession::renderSound, py::arg("seconds"))
+        .def("set_channel", &NativeSession::setChannel, py::arg("pass_"), py::arg("channel"), py::arg("array"),
+             py::arg("filter"), py::arg("wrap"))
         .def("record", &NativeSession::record, py::arg("events"), py::arg("out"), py::arg("frames"), py::arg("every"),
              py::arg("pass_"))
         .def("reload", &NativeSession::reload, py::arg("shadertoy"))

@@ -76,11 +76,18 @@ def from_code(image: str, *, common: Optional[str] = None, buffers: Optional[Map
     """A Shadertoy from code strings: ``image`` (mainImage), ``common``, ``buffers`` ({"A": code,
     ...}) and ``channels`` ({"Image" or "A".."D": {0..3 or "iChannel0".. : source}}), where a source
     is a buffer ("A".."D", read linear and clamped as the site's default, or {"buffer": "A",
-    "filter": "nearest", "wrap": "repeat"}), "keyboard", or an input as the site's export writes it
-    (a dict with "ctype"). The passes run as the same code in an export or a folder: the frames are
-    the same, byte for byte. Compile errors name the pass ("code [Buffer A]:LINE")."""
-    document = _code.export_of_code(image, common=common, buffers=buffers, channels=channels, name=name)
-    return _toyhost.load_export_json(_code.dumps(document), name, "")
+    "filter": "nearest", "wrap": "repeat"}), "keyboard", an input as the site's export writes it
+    (a dict with "ctype"), or a numpy array: every Session made from the shadertoy shows it in that
+    channel as Session.set_channel does (linear, clamped; call set_channel for other settings or
+    new pixels). The passes run as the same code in an export or a folder: the frames are the
+    same, byte for byte. Compile errors name the pass ("code [Buffer A]:LINE")."""
+    arrays: dict = {}
+    document = _code.export_of_code(image, common=common, buffers=buffers, channels=channels, name=name,
+                                    arrays=arrays)
+    shadertoy = _toyhost.load_export_json(_code.dumps(document), name, "")
+    if arrays:
+        shadertoy._arrays = arrays
+    return shadertoy
 
 
 class Session:
@@ -134,6 +141,8 @@ class Session:
         self._drawn = False  # frame() has nothing to show before the first step (restart keeps the picture)
         self._mouse_held = False
         self._keys_held = set()
+        for (pass_name, channel), array in getattr(shadertoy, "_arrays", {}).items():
+            self.set_channel(pass_name, channel, array)
 
     # --- rendering -------------------------------------------------------------------------------
 
@@ -226,6 +235,42 @@ class Session:
                                     args.text("pass_", pass_))
         self._drawn = True
         return [pathlib.Path(f) for f in files]
+
+    def set_channel(self, pass_: str, channel: Union[int, str], array: Any, *, filter: str = "linear",
+                    wrap: str = "clamp") -> None:
+        """Shows ``array`` in channel ``channel`` (0..3 or "iChannel0".."iChannel3") of ``pass_``
+        ("Image", "Buffer A".."Buffer D", "Cube A") from the next frame on: a numpy array of shape
+        (height, width) or (height, width, 1|3|4), uint8 (0..255 sampled as 0..1) or float32 (sampled
+        as it is, unclamped), top row first as frame() gives one, so a frame passed back shows upright.
+        The texture's size and format follow the array (iChannelResolution too); one component
+        samples as (r, 0, 0, 1), three as (r, g, b, 1). ``filter``: "nearest", "linear" or
+        "mipmap" (uint8 only); ``wrap``: "clamp" or "repeat". Call it again before any step() with new
+        pixels (frames of a video, a simulation's field); they are uploaded straight from the
+        array's memory (a copy is made only to make a non-contiguous array contiguous). The channel
+        must be unbound or show a picture (replaced); a buffer, cubemap, video or keyboard channel
+        raises UsageError, as do other dtypes or shapes."""
+        pass_ = args.text("pass_", pass_)
+        if isinstance(channel, str):
+            text = channel.removeprefix("iChannel")
+            if not text.isdigit():
+                raise args.usage("channel", f"expected 0..3 or \"iChannel0\" .. \"iChannel3\", got {channel!r}")
+            channel = int(text)
+        channel = args.integer("channel", channel, minimum=0, maximum=3)
+        if filter not in _code.FILTERS:
+            raise args.usage("filter", f"must be one of {', '.join(_code.FILTERS)}, got {filter!r}")
+        if wrap not in _code.WRAPS:
+            raise args.usage("wrap", f"must be one of {', '.join(_code.WRAPS)}, got {wrap!r}")
+        if not _code.is_array(array) or isinstance(array, (str, bytes, dict)):
+            raise args.usage("array", f"expected a numpy array, got {type(array).__name__}")
+        pixels = numpy.asarray(array)
+        if pixels.dtype not in (numpy.uint8, numpy.float32):
+            raise args.usage("array", f"dtype {pixels.dtype} is not taken: uint8 (0..255) or float32 "
+                                      "(convert with .astype(numpy.float32))")
+        if pixels.ndim == 3 and pixels.shape[2] not in (1, 3, 4) or pixels.ndim not in (2, 3):
+            raise args.usage("array", f"shape {pixels.shape}: expected (height, width) or (height, width, 1|3|4)")
+        if pixels.shape[0] == 0 or pixels.shape[1] == 0:
+            raise args.usage("array", f"shape {pixels.shape} has no pixels")
+        self._native.set_channel(pass_, channel, numpy.ascontiguousarray(pixels), filter, wrap)
 
     def render_sound(self, seconds: float = 0.0) -> numpy.ndarray:
         """The Sound pass (mainSound) as the site renders it: float32 samples of shape (n, 2), stereo

@@ -52,7 +52,13 @@ def _channel_input(name, channel, spec):
     return {"id": BUFFER_IDS[letter], "ctype": "buffer", "channel": channel, "sampler": sampler}
 
 
-def _pass_channels(name, bindings):
+def is_array(spec):
+    """A channel source that is pixels (a numpy array or anything numpy takes as one, but not a
+    str, dict or number), which a session shows through Session.set_channel."""
+    return hasattr(spec, "__array_interface__") or hasattr(spec, "__array__")
+
+
+def _pass_channels(name, bindings, arrays=None, owner="Image"):
     if bindings is None:
         return []
     if not isinstance(bindings, dict):
@@ -62,13 +68,18 @@ def _pass_channels(name, bindings):
         text = str(key).removeprefix("iChannel")
         if not text.isdigit() or int(text) > 3:
             raise args.usage(name, f"{key!r} is not a channel: expected 0..3 or \"iChannel0\" .. \"iChannel3\"")
+        if is_array(spec):  # left unbound in the export; the session shows the array there
+            if arrays is not None:
+                arrays[(owner, int(text))] = spec
+            continue
         inputs.append(_channel_input(name, int(text), spec))
     return inputs
 
 
-def export_of_code(image, common=None, buffers=None, channels=None, name="code"):
+def export_of_code(image, common=None, buffers=None, channels=None, name="code", arrays=None):
     """The export dict from_code loads (also useful to save: json.dump it and the site's format
-    and toyhost's `import` read it)."""
+    and toyhost's `import` read it). Channels given as arrays are left unbound in it and put in
+    ``arrays`` ({(pass name, channel): array}) when given."""
     image = args.text("image", image)
     buffers = buffers or {}
     if not isinstance(buffers, dict):
@@ -82,7 +93,8 @@ def export_of_code(image, common=None, buffers=None, channels=None, name="code")
         owner = "Image" if text.lower() == "image" else _buffer_letter("channels", text)
         if owner != "Image" and owner not in {_buffer_letter("buffers", b) for b in buffers}:
             raise args.usage("channels", f"{text!r}: the shadertoy has no such buffer (give its code in buffers)")
-        by_pass[owner] = _pass_channels("channels", bindings)
+        by_pass[owner] = _pass_channels("channels", bindings, arrays,
+                                        "Image" if owner == "Image" else f"Buffer {owner}")
     passes = []
     if common is not None:
         passes.append({"inputs": [], "outputs": [], "code": args.text("common", common), "name": "Common",

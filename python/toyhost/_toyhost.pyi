@@ -57,6 +57,7 @@ class InputEvent:
     def key_up(key: int) -> "InputEvent": ...
 
 class Shadertoy:
+    _arrays: dict  # from_code's channels given as arrays (set only there)
     @property
     def name(self) -> str: ...
     @property

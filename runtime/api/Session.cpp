@@ -313,6 +313,29 @@ int Session::frame() const { return impl_->core->frame(); }
 int Session::width() const { return impl_->core->width(); }
 int Session::height() const { return impl_->core->height(); }
 
+Status Session::setChannel(std::string_view name, int channel, const ChannelArray& pixels) {
+    std::optional<PassId> pass = name == passName(PassId::CubeA) ? std::optional<PassId>(PassId::CubeA) : passNamed(name);
+    if (!pass || !impl_->core->manifest().find(*pass))
+        return Error("setChannel: no pass \"" + std::string(name) +
+                         "\" (Image, or a buffer or Cube A the shadertoy has)",
+                     Code::Usage);
+    PixelArray array;
+    array.width = pixels.width;
+    array.height = pixels.height;
+    array.components = pixels.components;
+    array.type = pixels.type == ChannelArray::Type::UInt8 ? PixelType::UInt8 : PixelType::Float32;
+    array.data = pixels.data;
+    array.bytes = pixels.bytes;
+    array.topRowFirst = pixels.order == RowOrder::TopFirst;
+    SamplerDesc sampler;
+    sampler.filter = pixels.filter == ChannelArray::Filter::Nearest  ? Filter::Nearest
+                     : pixels.filter == ChannelArray::Filter::Linear ? Filter::Linear
+                                                                     : Filter::Mipmap;
+    sampler.wrap = pixels.wrap == ChannelArray::Wrap::Clamp ? Wrap::Clamp : Wrap::Repeat;
+    if (Status made = impl_->usable("setChannel"); !made) return made;
+    return impl_->withGl([&] { return impl_->core->setChannelArray(*pass, channel, array, sampler); });
+}
+
 Status Session::read(std::string_view name, std::span<std::uint8_t> out, RowOrder order) const {
     Result<PassId> pass = impl_->pass(name);
     if (!pass) return pass.error();

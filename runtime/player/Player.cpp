@@ -204,6 +204,44 @@ void Player::restart() {
     renderer_->clearBuffers();
 }
 
+namespace {
+
+// Why channel `channel` of `pass` cannot show an array; empty when it can.
+std::string arrayRefusal(const ManifestDesc& manifest, PassId pass, int channel) {
+    const PassDesc* desc = manifest.find(pass);
+    if (!desc) return "the shadertoy has no such pass";
+    const ChannelDesc& bound = desc->channels[channel];
+    if (bound.samplerType != SamplerType::Sampler2D)
+        return std::string("it is declared as a ") + (bound.samplerType == SamplerType::SamplerCube ? "samplerCube" : "sampler3D") +
+               " (an array is a 2D texture)";
+    if (bound.kind != ChannelKind::None && bound.kind != ChannelKind::ImageFile && bound.kind != ChannelKind::StockMedia)
+        return std::string("it is bound to a ") + channelKindName(bound.kind) +
+               " (an array takes an unbound channel or one showing a picture)";
+    return "";
+}
+
+}  // namespace
+
+Status Player::setChannelArray(PassId pass, int channel, const PixelArray& pixels, const SamplerDesc& sampler) {
+    const std::string where = std::string(passName(pass)) + " iChannel" + std::to_string(channel);
+    if (channel < 0 || channel >= kChannelCount)
+        return Error(std::string(passName(pass)) + ": no channel " + std::to_string(channel) + " (0..3)", Code::Usage);
+    if (pass == PassId::Sound)
+        return Error(where + ": the Sound pass is rendered before any frame; an array is shown from the next frame",
+                     Code::Usage);
+    if (std::string refusal = arrayRefusal(plan_.manifest, pass, channel); !refusal.empty())
+        return Error(where + ": cannot show an array: " + refusal, Code::Usage);
+    if (Status shape = checkPixelArray(pixels, maxTextureSize(), where); !shape) return shape;
+    if (sampler.filter == Filter::Mipmap && pixels.type != PixelType::UInt8)
+        return Error(where + ": mipmap filtering takes uint8 arrays (GLES 3 cannot make mipmaps of float textures "
+                             "everywhere); sample a float32 array nearest or linear",
+                     Code::Usage);
+    Result<const ArrayTextures::Entry*> entry = arrays_.upload({pass, channel}, pixels, sampler);
+    if (!entry) return inPass(passName(pass), entry.error());
+    renderer_->bindPicture(pass, channel, (*entry)->texture.id(), (*entry)->width, (*entry)->height, sampler);
+    return okStatus();
+}
+
 ReloadReport Player::reload(PlayerPlan next) {
     ReloadReport report;
     const bool sameStructure = plan_.graph.sameStructure(next.graph) &&
@@ -221,6 +259,16 @@ ReloadReport Player::reload(PlayerPlan next) {
         (*renderer)->takeBuffersFrom(*renderer_);
         renderer_ = std::move(*renderer);
         plan_ = std::move(next);
+        // The program's arrays stay where the new structure still lets a channel show one.
+        std::vector<ArrayTextures::Key> dropped;
+        for (const auto& [key, entry] : arrays_.entries()) {
+            if (arrayRefusal(plan_.manifest, key.first, key.second).empty())
+                renderer_->bindPicture(key.first, key.second, entry.texture.id(), entry.width, entry.height,
+                                       entry.sampler);
+            else
+                dropped.push_back(key);
+        }
+        for (const ArrayTextures::Key& key : dropped) arrays_.erase(key);
         built_.clear();
         for (const PassDesc& pass : plan_.manifest.passes) {
             built_.push_back({pass.code, plan_.manifest.commonCode});

@@ -20,6 +20,7 @@
 #include "graph/FrameSequence.h"
 #include "input/InputEvent.h"
 #include "player/PlayerDesc.h"
+#include "render/ArrayTextures.h"
 #include "render/Renderer.h"
 #include "timing/FrameTime.h"
 
@@ -84,6 +85,13 @@ public:
     // Switches to `next` (made by planPlayer, possibly on another thread): see ReloadReport.
     ReloadReport reload(PlayerPlan next);
 
+    // Shows `pixels` in channel `channel` (0..3) of `pass` (a buffer, Cube A or Image), sampled
+    // with `sampler`, from the next frame on: a program's own input (Session::setChannel). The
+    // channel must be unbound or show a picture (an image file or stock texture, which the array
+    // replaces); the texture's size and format follow the array. It stays through restarts,
+    // resizes and reloads that keep the channel able to take it (dropped otherwise). Errors name
+    // the pass and channel; nothing changes on a refused array.
+    Status setChannelArray(PassId pass, int channel, const PixelArray& pixels, const SamplerDesc& sampler);
     // The state the next frame starts from (reads every buffer back: not for every frame).
     PlayerState saveState() const;
     // Continues from `state`: canvas size and buffers must match this shadertoy (errors say which
@@ -135,6 +143,7 @@ private:
     std::shared_ptr<GlContext> context_;  // declared first: destroyed after every GL object below
     PlayerDesc desc_;
     PlayerPlan plan_;
+    ArrayTextures arrays_;  // setChannelArray's textures, bound again when the renderer is rebuilt
     std::unique_ptr<Renderer> renderer_;
     std::vector<BuiltFrom> built_;
     FrameSequence sequence_;

@@ -339,6 +339,20 @@ Status Renderer::resize(int width, int height) {
     return okStatus();
 }
 
+void Renderer::bindPicture(PassId id, int channel, GLuint texture, int width, int height, const SamplerDesc& sampler) {
+    for (PassRuntime& pass : impl_->passes) {
+        if (pass.plan.id != id) continue;
+        ChannelBinding& binding = pass.bindings.channels[channel];
+        binding.source = ChannelSource::Picture;
+        binding.target = GL_TEXTURE_2D;
+        binding.texture = texture;
+        binding.sampler = impl_->inputs.sampler(sampler);
+        binding.resolution = {float(width), float(height), 1.0f};
+        binding.timed = nullptr;
+        impl_->setStaticUniforms(pass);
+    }
+}
+
 void Renderer::clearBuffers() {
     for (auto& buffer : impl_->buffers)
         if (buffer) buffer->clear();

@@ -98,6 +98,11 @@ public:
     // target. The origin stays for later frames.
     void drawImageAt(glm::vec2 origin);
 
+    // Shows `texture` (2D, width x height, owned by the caller: render/ArrayTextures.h) in channel
+    // `channel` of `pass`, sampled with `sampler`, until the renderer is rebuilt; iChannelResolution
+    // follows. The caller checks that the channel may take it (Player::setChannelArray).
+    void bindPicture(PassId pass, int channel, GLuint texture, int width, int height, const SamplerDesc& sampler);
+
     // New keyboard texels (256*3 bytes, row 0 first); call only when they changed.
     void updateKeyboard(std::span<const std::uint8_t> texels);
 

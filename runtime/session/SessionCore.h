@@ -138,6 +138,10 @@ public:
     void readRgba32f(PassId pass, std::vector<float>& out) const { player_->readRgba32f(pass, out); }
     // Waits for the GPU (the watchdog sees which pass it still draws).
     void finish() { player_->finish(); }
+    // A program's pixels in a channel from the next frame on (Player::setChannelArray).
+    Status setChannelArray(PassId pass, int channel, const PixelArray& pixels, const SamplerDesc& sampler) {
+        return player_->setChannelArray(pass, channel, pixels, sampler);
+    }
 
 private:
     friend struct SessionCoreAccess;  // tests: the Player itself

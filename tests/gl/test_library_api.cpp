@@ -392,5 +392,58 @@ TEST(LibraryApi, AGivenZeroSizeIsRefusedAsTheClisIs) {
     EXPECT_NE(cli.output.find("--size: " + refused->first().message), std::string::npos) << cli.output;
 }
 
+
+// setChannel(): a program's pixels in a channel, in either row order, and the refusals that come
+// back as data (the Python tests cover formats, filtering and reloads).
+TEST(LibraryApi, SetChannelShowsAnArrayInEitherRowOrder) {
+    const fs::path dir = freshOutputDir("library-api/set-channel");
+    writeFile(dir / "image.glsl", "void mainImage(out vec4 c, in vec2 p) { c = texelFetch(iChannel0, ivec2(p), 0); }\n");
+    Result<Shadertoy> toy = Shadertoy::load(dir / "image.glsl");
+    ASSERT_TRUE(toy.ok()) << toy.error().text();
+    SessionSettings settings;
+    settings.width = 3;
+    settings.height = 2;
+    runOnGlThread([&] {
+        Result<std::unique_ptr<Session>> made = Session::createHeadless(*toy, settings);
+        ASSERT_TRUE(made.ok()) << made.error().text();
+        Session& session = **made;
+        // Two rows of three grey levels: row 0 = 10, 20, 30; row 1 = 40, 50, 60.
+        const std::vector<std::uint8_t> rows{10, 20, 30, 40, 50, 60};
+        ChannelArray array;
+        array.width = 3;
+        array.height = 2;
+        array.components = 1;
+        array.data = rows.data();
+        array.bytes = rows.size();
+        std::vector<std::uint8_t> shown(3 * 2 * 4);
+        for (RowOrder order : {RowOrder::TopFirst, RowOrder::BottomFirst}) {
+            array.order = order;
+            ASSERT_TRUE(session.setChannel("Image", 0, array).ok());
+            ASSERT_TRUE(session.step().ok());
+            ASSERT_TRUE(session.read("Image", shown, RowOrder::TopFirst).ok());
+            // The first row read (the top) is row 0 when the array is top first, row 1 otherwise.
+            const std::uint8_t top = order == RowOrder::TopFirst ? 10 : 40;
+            EXPECT_EQ(shown[0], top);
+            EXPECT_EQ(shown[4], top + 10);
+            EXPECT_EQ(shown[12], order == RowOrder::TopFirst ? 40 : 10);
+            EXPECT_EQ(shown[1], 0) << "one component samples as (r, 0, 0, 1)";
+        }
+        array.bytes = 5;
+        Status shortData = session.setChannel("Image", 0, array);
+        ASSERT_FALSE(shortData.ok());
+        EXPECT_EQ(shortData.error().first().code, Code::Usage);
+        EXPECT_NE(shortData.error().text().find("Image iChannel0: 5 bytes for an array of shape (2, 3, 1) uint8, which needs 6"),
+                  std::string::npos)
+            << shortData.error().text();
+        array.bytes = 6;
+        EXPECT_FALSE(session.setChannel("Buffer A", 0, array).ok()) << "no Buffer A";
+        EXPECT_FALSE(session.setChannel("Image", 4, array).ok()) << "channels are 0..3";
+        // From another thread: refused, as every call is.
+        Status elsewhere = okStatus();
+        std::thread([&] { elsewhere = session.setChannel("Image", 0, array); }).join();
+        EXPECT_FALSE(elsewhere.ok());
+    });
+}
+
 }  // namespace
 }  // namespace toyhost::testing
