@@ -57,6 +57,9 @@ def test_bad_requests_are_refused_and_leave_nothing(tmp_path):
         with pytest.raises(toyhost.UsageError) as raised:
             session.record(tmp_path / "one.png", 3)  # three frames, one file name
         assert "frame number placeholder" in str(raised.value)
+        # The message names the parameter given, not the CLI's flag.
+        assert f"out: {tmp_path / 'one.png'}: " in str(raised.value) and "--out" not in str(raised.value)
+        assert raised.value.field == "out"
         with pytest.raises(toyhost.UsageError):
             session.record(tmp_path / "f_%04d.png", 0)
         with pytest.raises(toyhost.UsageError):

@@ -638,15 +638,29 @@ Result<std::unique_ptr<Session::Rendering>> Session::startRendering(const Render
     return std::unique_ptr<Rendering>(new Rendering(std::move(impl)));
 }
 
+namespace {
+// The recording checks are the CLI's, whose messages name its flag ("--out f.png: ..."); a
+// library or Python caller gave RecordRequest::out, so the message names that field instead.
+Error namingOutField(Error error) {
+    constexpr std::string_view flag = "--out ";
+    for (Diagnostic& d : error.diagnostics)
+        if (std::string_view(d.message).substr(0, flag.size()) == flag) {
+            d.message = "out: " + d.message.substr(flag.size());
+            if (d.field.empty()) d.field = "out";
+        }
+    return error;
+}
+}  // namespace
+
 Result<std::vector<std::string>> Session::record(const RecordRequest& request) {
     if (Status usable = impl_->usable("record"); !usable) return usable.error();
     if (Status given = checkEvents(request.events); !given) return given.error();
     Result<PassId> pass = impl_->pass(request.pass);
     if (!pass) return pass.error();
     Result<SessionPlan> plan = planRecording(impl_->core->plan(), request.out, request.frames, request.every, *pass);
-    if (!plan) return plan.error();
+    if (!plan) return namingOutField(plan.error());
     Status begun = impl_->withGl([&] { return impl_->core->beginRecording(std::move(*plan)); });
-    if (!begun) return begun.error();
+    if (!begun) return namingOutField(begun.error());
     Status rendered = okStatus();
     for (int n = 0; n < request.frames && rendered; ++n) {
         std::vector<InputEvent>& all = impl_->events;

@@ -16,7 +16,19 @@ cat "$work/info.txt"
 
 status=0
 grep -qE "^ Version: $version\$" "$work/info.txt" || { echo "the .deb's version is not $version"; status=1; }
-grep -qE "^ Maintainer: .+" "$work/info.txt" || { echo "the .deb names no maintainer"; status=1; }
+grep -qE "^ Maintainer: .+ <[^@ ]+@[^@ ]+\.[a-z]+>\$" "$work/info.txt" || { echo "the .deb names no maintainer with an address"; status=1; }
+if grep -qE "^ Maintainer: .*@localhost" "$work/info.txt"; then echo "the maintainer is a placeholder"; status=1; fi
+# Debian's copyright file, and a shlibs file naming libtoyhost by its SONAME (and nothing CPack had
+# to warn about: the Python module has no SONAME and is not in it).
+dpkg-deb --fsys-tarfile "$deb" | tar -xO ./usr/share/doc/toyhost/copyright >"$work/copyright" 2>/dev/null \
+  || { echo "the .deb lacks /usr/share/doc/toyhost/copyright"; status=1; }
+grep -q "^Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/" "$work/copyright" \
+  || { echo "the copyright file is not in Debian's format"; status=1; }
+dpkg-deb -e "$deb" "$work/control"
+soname="$(readelf -d "$build"/runtime/libtoyhost.so | sed -n 's/.*Library soname: \[libtoyhost\.so\.\(.*\)\]/\1/p')"
+grep -qx "libtoyhost $soname toyhost (>= $version)" "$work/control/shlibs" \
+  || { echo "shlibs does not name libtoyhost $soname:"; cat "$work/control/shlibs"; status=1; }
+if grep -qi "missing soname" "$work/cpack.log"; then echo "cpack warned:"; grep -i -B2 "missing soname" "$work/cpack.log"; status=1; fi
 depends="$(sed -n 's/^ Depends: //p' "$work/info.txt")"
 for package in libegl1 libgles2 libdeflate0 libfftw3-single3 libstdc++6 libc6; do
   [[ ", $depends" == *", $package "* || ", $depends," == *", $package,"* ]] \
