@@ -100,3 +100,31 @@ TEST(CompatFrameMeasure, AFlashIsADominantColourChangeBeyondTheTolerance) {
     EXPECT_TRUE(colourChanged({0, 0, 0}, {0, 0, 3}));
     EXPECT_TRUE(colourChanged({255, 255, 255}, {0, 0, 0}));
 }
+
+namespace {
+// Every key of the key script goes down once and up once, one at a time, each held for
+// kKeyHoldFrames frames; probeKeyHeldAt says which one is down.
+TEST(CompatProbeScript, TheKeyScriptHoldsEachKeyInTurnAndReleasesIt) {
+    std::vector<int> down;
+    int held = -1;
+    for (int f = 0; f < toyhost::compat::probeKeyFrames() + 5; ++f) {
+        for (const toyhost::InputEvent& e : toyhost::compat::probeKeysAt(f)) {
+            if (e.type == toyhost::InputEvent::Type::KeyDown) {
+                EXPECT_EQ(held, -1) << "a key goes down while another is held, frame " << f;
+                held = e.key;
+                down.push_back(e.key);
+            } else {
+                ASSERT_EQ(e.type, toyhost::InputEvent::Type::KeyUp);
+                EXPECT_EQ(e.key, held) << "frame " << f;
+                held = -1;
+            }
+        }
+        const int index = toyhost::compat::probeKeyHeldAt(f);
+        if (held == -1) EXPECT_EQ(index, -1) << "frame " << f;
+        else EXPECT_EQ(toyhost::compat::kProbeKeys[index].code, held) << "frame " << f;
+    }
+    EXPECT_EQ(held, -1) << "the last key is released";
+    ASSERT_EQ(static_cast<int>(down.size()), toyhost::compat::kProbeKeyCount);
+    EXPECT_EQ(down.front(), 32) << "Space first";
+}
+}  // namespace

@@ -80,10 +80,15 @@ void unbindStandIns(ManifestDesc& manifest, const std::vector<std::string>& ids)
     if (manifest.sound) unbind(*manifest.sound);
 }
 
+// How a run gives input: the visitor's mouse drag (with patience for fade-ins), or the key script
+// (ProbeScript.h), judged on every frame until the picture draws.
+enum class ProbeInput { Mouse, Keys };
+
 // `blankIds`: stand-ins (by id) to leave unbound; `wallClock`: iDate at frame 0, the same for
-// every run of one probe so that runs compare.
+// every run of one probe so that runs compare; `report`: the phases as they start.
 ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& settings,
-                           const std::vector<std::string>& blankIds, double wallClock) {
+                           const std::vector<std::string>& blankIds, double wallClock, const ProbeProgress& report,
+                           ProbeInput input = ProbeInput::Mouse) {
     ProbeResult result;
     result.file = exportFile.filename().string();
     // An export is known by its file name (<id>.json); a manifest folder by the folder's name.
@@ -134,19 +139,22 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
     NoticeCollector notices(result.notices);
     // Time and date come from the fixed-step input every headless run uses.
     Timeline timeline(timelineOf(*plan));
+    report(result, ProbePhase::Compile);
     auto session = SessionCore::start(std::move(*plan), *context, notices);
     if (!session) {
         result.error = firstErrorLine(session.error().text());
         return result;
     }
     result.compiled = true;
+    report(result, ProbePhase::FirstFrames);
     SessionCore* core = session->get();
 
     // Like a visitor, the probe drags the mouse across the canvas from frame 1 and lets go before
     // the last frames (ProbeScript.h), so shaders that show nothing until clicked get their click.
     std::vector<InputEvent> events;
     auto frameAt = [&](int frame) {
-        events = probeMouseAt(frame, settings.frames, settings.width, settings.height);
+        events = input == ProbeInput::Keys ? probeKeysAt(frame)
+                                           : probeMouseAt(frame, settings.frames, settings.width, settings.height);
         const FrameTime time = timeline.next(frame, events);
         (void)(*session)->renderFrame(time, events);
         // Finish each frame so ms/frame is the real shading cost: llvmpipe drops queued work for
@@ -156,10 +164,6 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
     };
     // CPU time of the process (llvmpipe's threads included), not wall time, which grows with the
     // machine's load.
-    const std::clock_t start = std::clock();
-    for (int frame = 0; frame < settings.frames; ++frame) frameAt(frame);
-    const double seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
-    result.msPerFrame = 1000.0 * seconds / settings.frames;
     std::optional<std::array<std::uint8_t, 3>> firstUniform;
     auto checkGl = [&] {
         if (GLenum error = glGetError(); error != GL_NO_ERROR && result.glError.empty()) {
@@ -167,9 +171,35 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
             result.error = "GL error " + result.glError + " while rendering";
         }
     };
+    result.judgedWidth = settings.width;
+    result.judgedHeight = settings.height;
+    if (input == ProbeInput::Keys) {
+        // Each key in turn, judged on every frame: the first frame that draws names its key.
+        const std::clock_t start = std::clock();
+        for (int frame = 0; frame < probeKeyFrames(); ++frame) {
+            frameAt(frame);
+            result.nonFiniteBuffers.clear();
+            judgeOutput(*core, settings, result, firstUniform);
+            if (!result.uniformImage || result.uniformColourChanged) {
+                const int held = probeKeyHeldAt(frame);
+                result.keyHeld = kProbeKeys[held >= 0 ? held : kProbeKeyCount - 1].name;
+                break;
+            }
+        }
+        result.msPerFrame = 1000.0 * static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC /
+                            std::max(1, result.framesRendered);
+        checkGl();
+        return result;
+    }
+    const std::clock_t start = std::clock();
+    for (int frame = 0; frame < settings.frames; ++frame) frameAt(frame);
+    const double seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+    result.msPerFrame = 1000.0 * seconds / settings.frames;
     checkGl();
     judgeOutput(*core, settings, result, firstUniform);
     result.otherShareAtFrames = result.share.otherShare;
+    if (result.uniformImage && !result.uniformColourChanged && settings.patienceSeconds > 0)
+        report(result, ProbePhase::FadeIn);
     // Patience for fade-ins and shaders that need time: check every quarter second of iTime, up to
     // a bound in iTime (frames), never in wall time, so the verdict does not depend on load.
     const int quarterSecond = std::max(1, static_cast<int>(std::lround(timeline.fps() / 4)));
@@ -183,42 +213,106 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
         if (!result.uniformImage || result.uniformColourChanged) result.firstNonUniformTime = timeline.at(frame).time;
     }
     checkGl();
-    result.judgedWidth = settings.width;
-    result.judgedHeight = settings.height;
     return result;
 }
 
 // One colour at the small size: shaders drawing at fixed pixel positions (a layout for 800x450, a
-// 100 px ring) can miss a 160x90 canvas. Render the second size before calling the frame empty.
-ProbeResult probeAtBothSizes(const fs::path& exportFile, const ProbeSettings& settings,
-                             const std::vector<std::string>& blankIds, double wallClock) {
-    ProbeResult first = probeAtOneSize(exportFile, settings, blankIds, wallClock);
+// 100 px ring) can miss a 160x90 canvas, and some draw only while a key is held. Before calling
+// the frame empty, render it at 320x180, at the site's 800x450, and at the first size with each
+// likely key held in turn; the result says what was tried. While a later attempt runs, the
+// verdict reported is the first one (what stands if the CPU time runs out).
+ProbeResult probeUntilItDraws(const fs::path& exportFile, const ProbeSettings& settings,
+                              const std::vector<std::string>& blankIds, double wallClock, const ProbeProgress& report) {
+    ProbeResult first = probeAtOneSize(exportFile, settings, blankIds, wallClock, report);
     if (!first.degenerate() || !first.compiled || !first.glError.empty()) return first;
+    auto attempt = [&](const ProbeSettings& at, ProbePhase phase, ProbeInput input) {
+        report(first, phase);
+        return probeAtOneSize(exportFile, at, blankIds, wallClock,
+                              [&](const ProbeResult&, ProbePhase) { report(first, phase); }, input);
+    };
     ProbeSettings larger = settings;
     larger.width = std::max(settings.width * 2, kSecondWidth);
     larger.height = std::max(settings.height * 2, kSecondHeight);
-    ProbeResult second = probeAtOneSize(exportFile, larger, blankIds, wallClock);
-    second.secondSize = std::to_string(larger.width) + "x" + std::to_string(larger.height);
+    ProbeResult second = attempt(larger, ProbePhase::SecondSize, ProbeInput::Mouse);
+    first.secondSize = std::to_string(larger.width) + "x" + std::to_string(larger.height);
     if (second.passed()) {
+        second.secondSize = first.secondSize;
         second.msPerFrame = first.msPerFrame;  // the table's timings stay at one size
         return second;
     }
-    first.secondSize = second.secondSize;
+    if (larger.width < kSiteWidth && larger.height < kSiteHeight) {
+        ProbeSettings site = settings;
+        site.width = kSiteWidth;
+        site.height = kSiteHeight;
+        site.patienceSeconds = 0;  // the frames only: a large canvas is slow on the CPU
+        ProbeResult third = attempt(site, ProbePhase::SiteSize, ProbeInput::Mouse);
+        first.siteSize = std::to_string(kSiteWidth) + "x" + std::to_string(kSiteHeight);
+        if (third.passed()) {
+            third.secondSize = first.secondSize;
+            third.siteSize = first.siteSize;
+            third.msPerFrame = first.msPerFrame;
+            return third;
+        }
+    }
+    ProbeResult keys = attempt(settings, ProbePhase::KeyScript, ProbeInput::Keys);
+    first.keysTried = true;
+    if (keys.passed()) {
+        keys.secondSize = first.secondSize;
+        keys.siteSize = first.siteSize;
+        keys.keysTried = true;
+        keys.msPerFrame = first.msPerFrame;
+        return keys;
+    }
     return first;
 }
 
 }  // namespace
 
-ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings) {
+const char* phaseName(ProbePhase phase) {
+    switch (phase) {
+        case ProbePhase::Compile: return "compile";
+        case ProbePhase::FirstFrames: return "first frames";
+        case ProbePhase::FadeIn: return "fade-in search";
+        case ProbePhase::SecondSize: return "second size";
+        case ProbePhase::SiteSize: return "site size";
+        case ProbePhase::KeyScript: return "key script";
+        case ProbePhase::StandInCheck: return "stand-in check";
+        case ProbePhase::Done: return "done";
+    }
+    return "done";
+}
+
+std::optional<ProbePhase> phaseNamed(const std::string& name) {
+    for (ProbePhase phase : {ProbePhase::Compile, ProbePhase::FirstFrames, ProbePhase::FadeIn, ProbePhase::SecondSize,
+                             ProbePhase::SiteSize, ProbePhase::KeyScript, ProbePhase::StandInCheck, ProbePhase::Done})
+        if (name == phaseName(phase)) return phase;
+    return std::nullopt;
+}
+
+ProbeResult timedOutResult(ProbeResult last, ProbePhase running, int seconds) {
+    if (last.compiled && last.framesRendered > 0 && running != ProbePhase::Compile &&
+        running != ProbePhase::FirstFrames) {
+        last.ranOutIn = phaseName(running);  // the verdict reached stands
+        return last;
+    }
+    last.error = "timed out after " + std::to_string(seconds) + " s of CPU time in the " + phaseName(running) +
+                 " phase" + (running == ProbePhase::Compile ? " (the shader compiler was still running)" : "");
+    return last;
+}
+
+ProbeResult runProbe(const fs::path& exportFile, const ProbeSettings& settings, const ProbeProgress& progress) {
+    const ProbeProgress report = progress ? progress : [](const ProbeResult&, ProbePhase) {};
     const double wallClock = localWallClockNow();
-    ProbeResult result = probeAtBothSizes(exportFile, settings, {}, wallClock);
+    ProbeResult result = probeUntilItDraws(exportFile, settings, {}, wallClock, report);
     if (settings.checkStandIns && result.passed() && !result.standInIds.empty()) {
+        report(result, ProbePhase::StandInCheck);
         // The same probe with the stand-ins unbound, at the size that passed: a picture that does
         // not change never read them; one that goes degenerate passed on their content alone.
         ProbeSettings same = settings;
         same.width = result.judgedWidth;
         same.height = result.judgedHeight;
-        const ProbeResult blank = probeAtOneSize(exportFile, same, result.standInIds, wallClock);
+        const ProbeResult blank = probeAtOneSize(exportFile, same, result.standInIds, wallClock,
+                                                 [&](const ProbeResult&, ProbePhase) { report(result, ProbePhase::StandInCheck); });
         if (!blank.passed()) result.standInEffect = "verdict";
         else if (blank.framesRendered == result.framesRendered && blank.lastImage == result.lastImage)
             result.standInEffect = "none";
@@ -265,6 +359,10 @@ nlohmann::json toJson(const ProbeResult& r) {
             {"notices", r.notices},
             {"error", r.error},
             {"second_size", r.secondSize},
+            {"site_size", r.siteSize},
+            {"key_held", r.keyHeld},
+            {"keys_tried", r.keysTried},
+            {"ran_out_in", r.ranOutIn},
             {"passed", r.passed()}};
 }
 
@@ -297,6 +395,10 @@ ProbeResult fromJson(const nlohmann::json& j) {
     r.notices = j.value("notices", std::vector<std::string>{});
     r.error = j.value("error", "");
     r.secondSize = j.value("second_size", "");
+    r.siteSize = j.value("site_size", "");
+    r.keyHeld = j.value("key_held", "");
+    r.keysTried = j.value("keys_tried", false);
+    r.ranOutIn = j.value("ran_out_in", "");
     return r;
 }
 

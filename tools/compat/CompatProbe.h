@@ -4,6 +4,8 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,10 @@ namespace toyhost::compat {
 // The size a frame that stays one colour is rendered at a second time, at least.
 inline constexpr int kSecondWidth = 320;
 inline constexpr int kSecondHeight = 180;
+// The site's own canvas, the third size: shaders that draw at fixed pixel positions of an 800x450
+// layout show nothing at smaller sizes.
+inline constexpr int kSiteWidth = 800;
+inline constexpr int kSiteHeight = 450;
 
 struct ProbeSettings {
     int width = 160;
@@ -67,6 +73,12 @@ struct ProbeResult {
     std::vector<std::string> notices;
     std::string error;                     // why it did not load, compile or render
     std::string secondSize;                // "320x180" when the first size gave one colour and this one was tried
+    std::string siteSize;                  // "800x450" when that was tried too (still one colour)
+    std::string keyHeld;                   // the key whose holding made a one-colour shader draw ("Space")
+    bool keysTried = false;                // the key script was tried (still one colour)
+    // The phase the probe's CPU time ran out in, when it did after a verdict was reached ("" when
+    // not): the verdict is the one reached before, and this says what could not be finished.
+    std::string ranOutIn;
     std::vector<std::uint8_t> lastImage;   // the last judged Image frame (RGBA8, not in the JSON)
 
     // The picture is judged; NaN/Inf in a buffer is a note (packed data, masked pixels and a
@@ -75,7 +87,21 @@ struct ProbeResult {
     bool passed() const { return compiled && framesRendered > 0 && glError.empty() && !degenerate(); }
 };
 
-ProbeResult runProbe(const std::filesystem::path& exportFile, const ProbeSettings& settings);
+// What a probe does, in order; a probe reports each phase as it starts (ProbeProgress), so that
+// a runner that kills it at its CPU limit knows what ran out and keeps what was reached before.
+enum class ProbePhase { Compile, FirstFrames, FadeIn, SecondSize, SiteSize, KeyScript, StandInCheck, Done };
+const char* phaseName(ProbePhase phase);   // "compile", "first frames", "fade-in search", ...
+std::optional<ProbePhase> phaseNamed(const std::string& name);
+// Called as each phase starts, with the best result so far (its verdict, once one was reached:
+// compiled and framesRendered > 0, stands if the probe goes no further).
+using ProbeProgress = std::function<void(const ProbeResult& soFar, ProbePhase starting)>;
+
+ProbeResult runProbe(const std::filesystem::path& exportFile, const ProbeSettings& settings,
+                     const ProbeProgress& progress = {});
+
+// The result a runner keeps for a probe killed at its CPU limit of `seconds`, from its last
+// report: the verdict reached before (with ranOutIn) or, without one, an error naming the phase.
+ProbeResult timedOutResult(ProbeResult last, ProbePhase running, int seconds);
 
 // What the table says about a verdict's stand-ins ("" when it has none or they were not checked).
 std::string standInEffectText(const ProbeResult& result);

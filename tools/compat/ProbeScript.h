@@ -33,6 +33,35 @@ inline std::vector<InputEvent> probeMouseAt(int frame, int frames, int width, in
     return events;
 }
 
+// The keys a shader that draws only while a key is held most likely waits for (the site's
+// keyboard texture codes, as in JavaScript's keyCode), tried in this order, each held for
+// kKeyHoldFrames frames and released before the next.
+struct ProbeKey {
+    int code;
+    const char* name;
+};
+inline constexpr ProbeKey kProbeKeys[] = {{32, "Space"}, {13, "Enter"}, {37, "Left"},  {38, "Up"},
+                                          {39, "Right"}, {40, "Down"},  {87, "W"},     {65, "A"},
+                                          {83, "S"},     {68, "D"},     {16, "Shift"}, {17, "Control"}};
+inline constexpr int kProbeKeyCount = static_cast<int>(sizeof(kProbeKeys) / sizeof(kProbeKeys[0]));
+inline constexpr int kKeyHoldFrames = 3;
+inline constexpr int probeKeyFrames() { return kProbeKeyCount * kKeyHoldFrames + 1; }
+
+// The key held on frame `frame` of the key script (-1 after the last), and the events of that
+// frame: key i goes down on frame i * kKeyHoldFrames and up on the frame the next one goes down.
+inline int probeKeyHeldAt(int frame) {
+    const int key = frame / kKeyHoldFrames;
+    return frame >= 0 && key < kProbeKeyCount ? key : -1;
+}
+inline std::vector<InputEvent> probeKeysAt(int frame) {
+    std::vector<InputEvent> events;
+    if (frame < 0 || frame % kKeyHoldFrames != 0) return events;
+    const int key = frame / kKeyHoldFrames;
+    if (key > 0 && key <= kProbeKeyCount) events.push_back(InputEvent::keyUp(kProbeKeys[key - 1].code));
+    if (key < kProbeKeyCount) events.push_back(InputEvent::keyDown(kProbeKeys[key].code));
+    return events;
+}
+
 // The line of a failure's text to show: the first that says "error" (a driver's warnings come
 // first and hide it), else the first line.
 inline std::string firstErrorLine(const std::string& text) {

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "CompatProbe.h"
@@ -49,15 +50,19 @@ ProbeResult probeInChild(const fs::path& file, const ProbeSettings& settings, in
         // blocked without using the CPU.
         const rlimit cpu{static_cast<rlim_t>(timeoutSeconds), static_cast<rlim_t>(timeoutSeconds) + 5};
         setrlimit(RLIMIT_CPU, &cpu);
+        // One JSON line per phase as it starts (the best result so far), then the final result: a
+        // probe killed at its CPU limit leaves the verdict it had reached and the phase that ran out.
+        auto send = [&](const ProbeResult& result, ProbePhase phase) {
+            const std::string text = nlohmann::json{{"phase", phaseName(phase)}, {"result", toJson(result)}}.dump() + "\n";
+            size_t done = 0;
+            while (done < text.size()) {
+                ssize_t n = write(fds[1], text.data() + done, text.size() - done);
+                if (n <= 0) break;
+                done += static_cast<size_t>(n);
+            }
+        };
         // On a GL thread, as every toyhost run: large shaders need its stack.
-        std::string text;
-        runOnGlThread([&] { text = toJson(runProbe(file, settings)).dump(); });
-        size_t done = 0;
-        while (done < text.size()) {
-            ssize_t n = write(fds[1], text.data() + done, text.size() - done);
-            if (n <= 0) break;
-            done += static_cast<size_t>(n);
-        }
+        runOnGlThread([&] { send(runProbe(file, settings, send), ProbePhase::Done); });
         _exit(0);
     }
     close(fds[1]);
@@ -82,11 +87,31 @@ ProbeResult probeInChild(const fs::path& file, const ProbeSettings& settings, in
     int status = 0;
     waitpid(pid, &status, 0);
 
+    // The last complete line: the final result, or the phase that was running and the result so far.
+    std::optional<ProbeResult> last;
+    ProbePhase running = ProbePhase::Compile;
+    for (std::size_t start = 0, end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
+        const nlohmann::json line = nlohmann::json::parse(text.substr(start, end - start), nullptr, false);
+        if (line.is_discarded() || !line.contains("result")) continue;
+        last = fromJson(line["result"]);
+        running = phaseNamed(line.value("phase", "")).value_or(ProbePhase::Compile);
+    }
+    const bool cpuLimit = WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL);
+    if (last && running == ProbePhase::Done && !timedOut && !WIFSIGNALED(status)) return *last;
+    if (last && (timedOut || cpuLimit)) {
+        result = timedOutResult(*last, running, timeoutSeconds);
+        if (timedOut && !result.error.empty())  // the wall-time guard, not the CPU limit
+            result.error = "no progress after " + std::to_string(wallGuardSeconds(timeoutSeconds)) +
+                           " s (wall time) in the " + phaseName(running) + " phase";
+        else if (timedOut)
+            result.ranOutIn = std::string(phaseName(running)) + " (wall-time guard)";
+        return result;
+    }
+    if (last) result = *last;
     if (timedOut) result.error = "no progress after " + std::to_string(wallGuardSeconds(timeoutSeconds)) + " s (wall time)";
-    else if (WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL))
-        result.error = "timed out after " + std::to_string(timeoutSeconds) + " s of CPU time";
-    else if (WIFSIGNALED(status)) result.error = "crashed (signal " + std::to_string(WTERMSIG(status)) + ")";
-    else if (auto json = nlohmann::json::parse(text, nullptr, false); !json.is_discarded()) result = fromJson(json);
+    else if (cpuLimit) result.error = "timed out after " + std::to_string(timeoutSeconds) + " s of CPU time";
+    else if (WIFSIGNALED(status))
+        result.error = "crashed (signal " + std::to_string(WTERMSIG(status)) + ") in the " + phaseName(running) + " phase";
     else result.error = "no result from the probe";
     return result;
 }
@@ -134,7 +159,20 @@ std::string outputVerdict(const ProbeResult& r) {
     } else {
         verdict = problems.empty() ? "ok" : joined(problems);
     }
-    if (!r.secondSize.empty()) verdict += r.passed() ? " (at " + r.secondSize + ")" : " (also at " + r.secondSize + ")";
+    if (!r.keyHeld.empty()) {
+        verdict += " while " + r.keyHeld + " is held (one colour without keys)";
+    } else if (!r.siteSize.empty() && r.passed() && r.judgedWidth == kSiteWidth) {
+        verdict += " (at " + r.siteSize + ", the site's size; one colour at smaller sizes)";
+    } else if (r.passed() && !r.secondSize.empty()) {
+        verdict += " (at " + r.secondSize + ")";
+    } else if (!r.passed() && !r.secondSize.empty()) {
+        std::vector<std::string> tried{"at " + r.secondSize};
+        if (!r.siteSize.empty()) tried.push_back("at " + r.siteSize);
+        if (r.keysTried) tried.push_back("with keys held");
+        verdict += " (also " + joined(tried) + ")";
+    }
+    // CPU time that ran out after the verdict: the verdict stands, the rest was not finished.
+    if (!r.ranOutIn.empty()) verdict += "; CPU time ran out in the " + r.ranOutIn + " phase (verdict from before it)";
     // NaN/Inf in a buffer: a note with its pass and count, not a verdict.
     if (!r.nonFiniteBuffers.empty()) verdict += "; note: " + joined(r.nonFiniteBuffers);
     // A pass that rests on a stand-in's content says so: the site, with the real media, may differ.
@@ -144,11 +182,18 @@ std::string outputVerdict(const ProbeResult& r) {
 
 // A first explanation for a failure nobody has looked at yet (known-issues entries replace it).
 std::string likelyReason(const ProbeResult& r) {
-    if (r.uniformImage)
-        return "nearly one colour through iTime 5 s (and at 320x180) with the mouse dragged: it may wait for keys" +
-               std::string(r.standIns.empty() ? "" : ", depend on the real stock textures (stand-ins used)") +
-               " or need more time";
-    return "";
+    if (!r.uniformImage) return "";
+    // One colour with NaN or Inf in a buffer: most likely the shader's own NaN spreading.
+    if (!r.nonFiniteBuffers.empty())
+        return "one colour, with NaN/Inf in its buffers (" + joined(r.nonFiniteBuffers) +
+               "): most likely its own NaN (a division by zero, a normalize(0)) spreading";
+    std::vector<std::string> tried{"through iTime 5 s", "with the mouse dragged"};
+    if (!r.secondSize.empty()) tried.push_back("at " + r.secondSize);
+    if (!r.siteSize.empty()) tried.push_back("at " + r.siteSize);
+    if (r.keysTried) tried.push_back("with Space, Enter, arrows, WASD, Shift and Control held in turn");
+    return "nearly one colour " + joined(tried) + ": it may" +
+           std::string(r.standIns.empty() ? "" : " depend on the real stock textures (stand-ins used), or") +
+           " need more time or other input";
 }
 
 std::string markdown(const std::vector<ProbeResult>& results, const ProbeSettings& s, const fs::path& dir,
@@ -164,7 +209,11 @@ std::string markdown(const std::vector<ProbeResult>& results, const ProbeSetting
        << "colour by more than " << kColourTolerance << "/255 in a channel (\"other %\" is that share of the last "
        << "frame judged), and that colour does not change over time (a full-screen colour that changes is a valid "
        << "flash). An Image still degenerate after those frames gets more frames, up to iTime " << s.patienceSeconds
-       << " s, for fade-ins, and then a second run at 320x180 (shaders drawing at fixed pixel positions). NaN/Inf "
+       << " s, for fade-ins, then runs at 320x180 and at the site's 800x450 (shaders drawing at fixed pixel positions), "
+          "then one with Space, Enter, the arrows, WASD, Shift and Control held in turn (shaders that draw while a key "
+          "is held); the output says which of these made it draw, or that all were tried. A probe that runs out of "
+          "CPU time after a verdict keeps that verdict and says which phase ran out; one that runs out before says "
+          "which phase (compile, first frames...) it was in. NaN/Inf "
        << "in a buffer is a note with its pass and count, not a failure. ms/frame is the CPU time of the probe "
        << "process per frame (llvmpipe's threads included), not wall time, so it does not grow with the machine's "
        << "load. A passing shader that used stand-ins is rendered again with them unbound (black): the stand-ins "
