@@ -93,9 +93,11 @@ void onDivisionFault(int signal, siginfo_t* info, void* context) {
         const bool minimum = wide ? regs[REG_RAX] == static_cast<greg_t>(INT64_MIN)
                                   : static_cast<std::uint32_t>(regs[REG_RAX]) == 0x80000000u;
         if (minimum) {
-            // Two's complement: the quotient wraps to the dividend itself, the remainder is 0
-            // (a 32-bit result zero-extends into the 64-bit register, as the CPU writes it).
-            regs[REG_RAX] = wide ? static_cast<greg_t>(INT64_MIN) : static_cast<greg_t>(0x80000000u);
+            // As the browsers fold it (ANGLE's constant folder, checked in headless Chromium with
+            // ../shared/webref's int_divzero_const and cp_const_intmin_div probes): the quotient
+            // saturates to the largest integer, the remainder is 0 (a 32-bit result zero-extends
+            // into the 64-bit register, as the CPU writes it).
+            regs[REG_RAX] = wide ? static_cast<greg_t>(INT64_MAX) : static_cast<greg_t>(0x7fffffffu);
             regs[REG_RDX] = 0;
             regs[REG_RIP] += length;
             emulatedCount.fetch_add(1, std::memory_order_relaxed);

@@ -57,9 +57,9 @@ bool childDied(Work work) {
 TEST(DivisionOverflowTrap, IntMinByMinusOneWrapsWhileATrapLives) {
     const long before = DivisionOverflowTrap::emulated();
     const DivisionOverflowTrap trap;
-    EXPECT_EQ(idiv32Register(INT32_MIN, -1), std::make_pair(INT32_MIN, 0));
-    EXPECT_EQ(idiv32Memory(INT32_MIN, -1), std::make_pair(INT32_MIN, 0));
-    EXPECT_EQ(idiv64Register(INT64_MIN, -1), std::make_pair(INT64_MIN, std::int64_t{0}));
+    EXPECT_EQ(idiv32Register(INT32_MIN, -1), std::make_pair(INT32_MAX, 0));
+    EXPECT_EQ(idiv32Memory(INT32_MIN, -1), std::make_pair(INT32_MAX, 0));
+    EXPECT_EQ(idiv64Register(INT64_MIN, -1), std::make_pair(INT64_MAX, std::int64_t{0}));
     EXPECT_EQ(DivisionOverflowTrap::emulated() - before, 3);
     // Ordinary divisions are the CPU's own.
     EXPECT_EQ(idiv32Register(-7, 2), std::make_pair(-3, -1));
@@ -73,7 +73,7 @@ TEST(DivisionOverflowTrap, NestedTrapsAndOtherFaultsKeepTheirMeaning) {
         {
             const DivisionOverflowTrap inner;
         }
-        EXPECT_EQ(idiv32Register(INT32_MIN, -1).first, INT32_MIN) << "the outer trap still holds";
+        EXPECT_EQ(idiv32Register(INT32_MIN, -1).first, INT32_MAX) << "the outer trap still holds";
     }
     EXPECT_TRUE(childDied([] { idiv32Register(INT32_MIN, -1); })) << "no trap: the CPU's fault";
     EXPECT_TRUE(childDied([] {
