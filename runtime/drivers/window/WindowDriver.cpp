@@ -4,6 +4,7 @@
 #include <ctime>
 
 #include "core/Defaults.h"
+#include "drivers/window/Overlay.h"
 #include "drivers/window/WindowContext.h"
 #include "drivers/window/WindowEvents.h"
 #include "gl/GlThread.h"
@@ -37,7 +38,12 @@ public:
     WindowDriver(WindowContext& window, WindowEvents& events, const SessionPlan& plan, ShadertoyWatcher& watcher,
                  SessionObserver& observer)
         : window_(window), events_(events), plan_(plan), o_(plan.options), watcher_(watcher), observer_(observer),
-          clock_(clockOptions(plan), monotonicNow()) {}
+          clock_(clockOptions(plan), monotonicNow()) {
+        if (Result<std::unique_ptr<Overlay>> overlay = Overlay::create(); overlay)
+            overlay_ = std::move(*overlay);
+        else
+            for (const Diagnostic& d : overlay.error().diagnostics) observer_.notice(d);
+    }
 
     bool poll(SessionCore& s) override {
         reportScreenshots();
@@ -47,6 +53,7 @@ public:
             (void)s.reload(std::move(change->files), std::move(change->plan));
         const double now = monotonicNow();
         if (events_.takeControl(Control::Help)) observer_.notice(notice(controlsHelp(), Code::WindowHelp));
+        if (events_.takeControl(Control::Inspector)) toggleInspector();
         if (events_.takeControl(Control::Restart)) {
             s.restart();
             clock_.restart(now);  // while paused, the restarted frame is still shown
@@ -76,6 +83,7 @@ public:
     void present(SessionCore& s) override {
         events_.setCanvasSize(s.width(), s.height());
         presentToDefaultFramebuffer(s.output(PassId::Image), framebuffer_.width, framebuffer_.height);
+        drawOverlay(s);
         (void)window_.present();
     }
 
@@ -86,6 +94,7 @@ public:
             present(s);
         } else {
             clearDefaultFramebuffer(framebuffer_.width, framebuffer_.height);
+            drawOverlay(s);
             (void)window_.present();
         }
         events_.waitForInput(0.05);
@@ -150,6 +159,23 @@ private:
         });
         return okStatus();
     }
+    // The overlay (errors, F2 inspector) over the presented canvas: see drivers/window/Overlay.h.
+    void toggleInspector() {
+        if (!overlay_) return;
+        overlay_->inspector().toggle();
+        events_.setPointerCaptured(overlay_->inspector().open());
+        observer_.notice(notice(overlay_->inspector().open() ? "inspector shown (F2 hides it; the mouse is the inspector's)"
+                                                             : "inspector hidden (the mouse is the shader's again)",
+                                Code::WindowInspector));
+    }
+    void drawOverlay(SessionCore& s) {
+        if (!overlay_) return;
+        std::vector<Diagnostic> notices;
+        overlay_->draw(s, {framebuffer_.width, framebuffer_.height, events_.takePointer(),
+                           {clock_.time(), clock_.measuredFrameRate(), clock_.paused()}},
+                       notices);
+        for (const Diagnostic& d : notices) observer_.notice(d);
+    }
     void reportScreenshots() {
         for (Result<fs::path>& written : writer_.takeFinished()) {
             if (!written) {
@@ -171,6 +197,7 @@ private:
     SessionObserver& observer_;
     RealTimeClock clock_;
     GlSurface::Size framebuffer_;
+    std::unique_ptr<Overlay> overlay_;  // none when it cannot be made: the window runs without it
     bool titlePaused_ = false;
     double titleShownAt_ = -1;
 };
