@@ -466,6 +466,8 @@ TEST_F(WindowMode, ErrorsAreDrawnOverTheCanvasButNeverCaptured) {
     // A line of text at least: a few hundred pixels.
     ASSERT_TRUE(within(20, [&] { return differingPixels(grab(), clean) > 200; }))
         << differingPixels(grab(), clean) << " pixels differ\n" << toyhost_->log();
+    const Image8 withError = grab();  // kept next to the log, to be looked at
+    EXPECT_TRUE(writePng(dir_ / "grab-with-error.png", withError.width, withError.height, withError.rgba).ok());
     EXPECT_EQ(screenshot().rgba, clean.rgba) << "the F12 screenshot holds overlay pixels";
     // Two frames rendered and captured while the error is shown.
     for (int step = 1; step <= 2; ++step) {
@@ -526,7 +528,9 @@ TEST_F(WindowMode, TheInspectorShowsABufferAndTheFloatsUnderTheCursor) {
         const auto p = at(grab(), 440, 330);
         return std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]);
     }();
-    EXPECT_EQ(at(grab(), 5, 300), (std::array<int, 3>{255, 0, 255})) << "NaN is drawn magenta";
+    const Image8 inspected = grab();  // kept next to the log, to be looked at
+    EXPECT_TRUE(writePng(dir_ / "grab-inspector.png", inspected.width, inspected.height, inspected.rgba).ok());
+    EXPECT_EQ(at(inspected, 5, 300), (std::array<int, 3>{255, 0, 255})) << "NaN is drawn magenta";
     const Image8 shot = screenshot();
     EXPECT_EQ(shot.width, 480);
     bool allGreen = !shot.rgba.empty();

@@ -37,7 +37,7 @@ Diagnostic inspectorNotice(std::string message) {
     Diagnostic d;
     d.severity = Severity::Notice;
     d.code = Code::WindowInspector;
-    d.message = std::move(message);
+    d.message = "inspector: " + message;
     return d;
 }
 

@@ -16,6 +16,8 @@ namespace {
 // Debian's fonts-dejavu-core; ImGui's built-in font when it is not installed.
 constexpr const char* kFontFile = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
 constexpr float kFontPixels = 14.0f;
+// As formatDiagnostics lists them on stderr.
+constexpr std::size_t kMaxProblemsShown = 100;
 
 // Binds an ImGui context for a scope (ImGui keeps the current one in a global).
 class CurrentImGui {
@@ -31,7 +33,6 @@ private:
 
 void drawProblems(const std::vector<Diagnostic>& problems, int framebufferW, int framebufferH) {
     if (problems.empty()) return;
-    const std::string text = formatDiagnostics(problems);
     const float w = static_cast<float>(framebufferW), h = static_cast<float>(framebufferH);
     ImGui::SetNextWindowPos(ImVec2(0, h), ImGuiCond_Always, ImVec2(0, 1));
     ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, h));
@@ -40,7 +41,17 @@ void drawProblems(const std::vector<Diagnostic>& problems, int framebufferW, int
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.55f, 1.0f));
-    ImGui::TextUnformatted(text.c_str(), text.c_str() + text.size());
+    // stderr's text (formatDiagnostics), each problem's line wrapped to the window so that its
+    // place and message are read in a small window; the excerpt is not, so the caret stays under
+    // its column.
+    const std::size_t shown = std::min<std::size_t>(problems.size(), kMaxProblemsShown);
+    for (std::size_t i = 0; i < shown; ++i) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextUnformatted(formatDiagnostic(problems[i]).c_str());
+        ImGui::PopTextWrapPos();
+        if (!problems[i].excerpt.empty()) ImGui::TextUnformatted(problems[i].excerpt.c_str());
+    }
+    if (shown < problems.size()) ImGui::Text("... and %zu more", problems.size() - shown);
     ImGui::PopStyleColor();
     ImGui::End();
 }

@@ -94,8 +94,6 @@ Result<std::unique_ptr<OverlayRenderer>> OverlayRenderer::create() {
     glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, width, height);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
     io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(r->font_.id())));
-    io.Fonts->ClearTexData();
-    if (glGetError() != GL_NO_ERROR) return Error("the window overlay's font texture cannot be made", Code::GlSetup);
     return r;
 }
 

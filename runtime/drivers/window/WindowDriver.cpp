@@ -38,12 +38,7 @@ public:
     WindowDriver(WindowContext& window, WindowEvents& events, const SessionPlan& plan, ShadertoyWatcher& watcher,
                  SessionObserver& observer)
         : window_(window), events_(events), plan_(plan), o_(plan.options), watcher_(watcher), observer_(observer),
-          clock_(clockOptions(plan), monotonicNow()) {
-        if (Result<std::unique_ptr<Overlay>> overlay = Overlay::create(); overlay)
-            overlay_ = std::move(*overlay);
-        else
-            for (const Diagnostic& d : overlay.error().diagnostics) observer_.notice(d);
-    }
+          clock_(clockOptions(plan), monotonicNow()) {}
 
     bool poll(SessionCore& s) override {
         reportScreenshots();
@@ -160,8 +155,19 @@ private:
         return okStatus();
     }
     // The overlay (errors, F2 inspector) over the presented canvas: see drivers/window/Overlay.h.
+    // Made when first needed: a window that never shows it starts as fast as before.
+    Overlay* overlay() {
+        if (overlay_ || overlayFailed_) return overlay_.get();
+        if (Result<std::unique_ptr<Overlay>> made = Overlay::create(); made) {
+            overlay_ = std::move(*made);
+        } else {
+            overlayFailed_ = true;
+            for (const Diagnostic& d : made.error().diagnostics) observer_.notice(d);
+        }
+        return overlay_.get();
+    }
     void toggleInspector() {
-        if (!overlay_) return;
+        if (!overlay()) return;
         overlay_->inspector().toggle();
         events_.setPointerCaptured(overlay_->inspector().open());
         observer_.notice(notice(overlay_->inspector().open() ? "inspector shown (F2 hides it; the mouse is the inspector's)"
@@ -169,7 +175,7 @@ private:
                                 Code::WindowInspector));
     }
     void drawOverlay(SessionCore& s) {
-        if (!overlay_) return;
+        if ((!overlay_ && s.problems().empty()) || !overlay()) return;
         std::vector<Diagnostic> notices;
         overlay_->draw(s, {framebuffer_.width, framebuffer_.height, events_.takePointer(),
                            {clock_.time(), clock_.measuredFrameRate(), clock_.paused()}},
@@ -197,7 +203,8 @@ private:
     SessionObserver& observer_;
     RealTimeClock clock_;
     GlSurface::Size framebuffer_;
-    std::unique_ptr<Overlay> overlay_;  // none when it cannot be made: the window runs without it
+    std::unique_ptr<Overlay> overlay_;  // none until needed, or when it cannot be made (said once)
+    bool overlayFailed_ = false;
     bool titlePaused_ = false;
     double titleShownAt_ = -1;
 };
