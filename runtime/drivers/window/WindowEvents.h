@@ -5,7 +5,8 @@
 // thread pumps events (GLFW callbacks become the same InputEvents the scripts make: iMouse in
 // canvas pixels as the site computes it, keys as JavaScript keyCodes, auto-repeat ignored) and
 // applies what only it may do (title, full screen); the GL thread takes events and controls and
-// says what the title and canvas are. Needs no GL context.
+// says what the title and canvas are, and reads the pointer for the overlay (which owns the mouse
+// while the inspector is open). Needs no GL context.
 #pragma once
 
 #include <array>
