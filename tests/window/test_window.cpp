@@ -277,6 +277,7 @@ TEST_F(WindowMode, KeysReachTheKeyboardTextureAndControlKeysDoNot) {
     xdo("keyup --window " + window_ + " space");
     xdo("key --window " + window_ + " F1");
     EXPECT_TRUE(toyhost_->waitForLog("F5 or Ctrl+R restart", 10)) << toyhost_->log();
+    EXPECT_NE(toyhost_->log().find("F2 inspector"), std::string::npos) << toyhost_->log();
 }
 
 // Pause (F6) shows "paused" at once and renders nothing; restart (F5) while paused shows frame 0
