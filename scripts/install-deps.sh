@@ -12,7 +12,8 @@ packages=(
   libfftw3-dev                                           # the music/mic texture (FFT, as WebAudio's analyser)
   libgtest-dev                                           # tests
   ffmpeg                                                 # video output (--out x.mp4); ffprobe for its tests
-  xvfb xauth xdotool                                     # window-mode tests: a virtual X server and real X input
+  libimgui-dev libstb-dev fonts-dejavu-core             # the window's overlay (errors, F2 inspector): Dear ImGui, its font
+  xvfb xauth xdotool libx11-dev                          # window-mode tests: a virtual X server, real X input, screen grabs
   parallel                                               # the render-farm shard test (GNU parallel)
   slurm-wlm munge                                        # the render-farm test's temporary Slurm cluster (tests/farm)
   python3-distributed                                    # toyhost.farm on Dask (python/tests/test_farm.py)

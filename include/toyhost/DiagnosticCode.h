@@ -143,6 +143,7 @@ enum class Category : std::uint8_t {
     X(WindowCreate,           108, "window.create",             Gl) \
     X(WindowHelp,             109, "window.help",               Report) \
     X(WindowInit,             110, "window.init",               Gl) \
+    X(WindowInspector,        114, "window.inspector",          Report) \
     X(WindowReload,           111, "window.reload",             Report) \
     X(WindowScreenshot,       112, "window.screenshot",         Report) \
     X(ManifestLoneShader,     113, "manifest.lone-shader",      Report)

@@ -7,7 +7,8 @@
 
 namespace toyhost {
 
-enum class Control { None, Help, Restart, Pause, Step, Fullscreen, Screenshot, Quit };
+enum class Control { None, Help, Restart, Pause, Step, Fullscreen, Screenshot, Quit, Inspector };
+inline constexpr int kControlCount = static_cast<int>(Control::Inspector) + 1;
 
 // The control a key press means (GLFW key and modifier bits), or Control::None: the shader's key.
 Control controlForKey(int glfwKey, int glfwMods);

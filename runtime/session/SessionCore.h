@@ -136,6 +136,8 @@ public:
     PassOutput output(PassId pass) const { return player_->output(pass); }
     void readRgba8(PassId pass, std::vector<std::uint8_t>& out) const { player_->readRgba8(pass, out); }
     void readRgba32f(PassId pass, std::vector<float>& out) const { player_->readRgba32f(pass, out); }
+    // iMouse as the next frame sees it.
+    glm::vec4 mouse() const { return player_->mouse().uniform(); }
     // Waits for the GPU (the watchdog sees which pass it still draws).
     void finish() { player_->finish(); }
     // A program's pixels in a channel from the next frame on (Player::setChannelArray).

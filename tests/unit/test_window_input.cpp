@@ -63,6 +63,7 @@ TEST(WindowInput, KeysBecomeTheBrowsersKeyCodes) {
 
 TEST(WindowControls, OnlyTheDocumentedKeysAreKept) {
     EXPECT_EQ(controlForKey(GLFW_KEY_F1, 0), Control::Help);
+    EXPECT_EQ(controlForKey(GLFW_KEY_F2, 0), Control::Inspector);
     EXPECT_EQ(controlForKey(GLFW_KEY_F5, 0), Control::Restart);
     EXPECT_EQ(controlForKey(GLFW_KEY_R, GLFW_MOD_CONTROL), Control::Restart);
     EXPECT_EQ(controlForKey(GLFW_KEY_R, 0), Control::None) << "R alone is the shader's";
@@ -73,7 +74,7 @@ TEST(WindowControls, OnlyTheDocumentedKeysAreKept) {
     EXPECT_EQ(controlForKey(GLFW_KEY_F12, 0), Control::Screenshot);
     EXPECT_EQ(controlForKey(GLFW_KEY_ESCAPE, 0), Control::Quit);
     EXPECT_EQ(controlForKey(GLFW_KEY_Q, GLFW_MOD_CONTROL), Control::Quit);
-    for (int key : {GLFW_KEY_SPACE, GLFW_KEY_A, GLFW_KEY_Q, GLFW_KEY_LEFT, GLFW_KEY_ENTER, GLFW_KEY_F2, GLFW_KEY_1})
+    for (int key : {GLFW_KEY_SPACE, GLFW_KEY_A, GLFW_KEY_Q, GLFW_KEY_LEFT, GLFW_KEY_ENTER, GLFW_KEY_F3, GLFW_KEY_TAB, GLFW_KEY_1})
         EXPECT_EQ(controlForKey(key, 0), Control::None) << key;
 }
 

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "Processes.h"
+#include "ScreenGrab.h"
 #include "image/ImageFile.h"
 #include "image/ImageWriters.h"
 
@@ -61,9 +62,10 @@ protected:
 
     // Starts toyhost in a window on `toy` (the probe by default), in the test's folder (where
     // screenshots go), and waits until the window is there.
-    void start(std::vector<std::string> extra = {}, fs::path toy = {}, const std::string& name = "window-probe") {
+    void start(std::vector<std::string> extra = {}, fs::path toy = {}, const std::string& name = "window-probe",
+               const std::string& size = "200x100") {
         if (toy.empty()) toy = dir_ / "probe";
-        std::vector<std::string> args = {"run", toy.string(), "--window", "--size", "200x100"};
+        std::vector<std::string> args = {"run", toy.string(), "--window", "--size", size};
         args.insert(args.end(), extra.begin(), extra.end());
         toyhost_.emplace(kToyhost, args, dir_ / "toyhost.log", dir_);
         auto [code, id] = shell("timeout 20 xdotool search --sync --onlyvisible --name '^" + name + "' | head -n1");
@@ -119,6 +121,27 @@ protected:
     // Buffer A counts frames since its last clear and iFrame counts frames since the last restart
     // (both mod 256 in the picture): counter - iFrame is 1 while nothing cleared the buffer.
     static int sinceClear(const Image8& image) { return (column(image, 3)[0] - column(image, 3)[1] + 256) % 256; }
+    // What the X server shows in the window (the overlay included).
+    Image8 grab() { return grabWindow(window_); }
+    // Pixels whose RGB differ (alpha aside: the X server has none); -1 when the sizes differ.
+    static long differingPixels(const Image8& a, const Image8& b) {
+        if (a.width != b.width || a.height != b.height || a.rgba.empty()) return -1;
+        long n = 0;
+        for (std::size_t i = 0; i < a.rgba.size(); i += 4)
+            if (a.rgba[i] != b.rgba[i] || a.rgba[i + 1] != b.rgba[i + 1] || a.rgba[i + 2] != b.rgba[i + 2]) ++n;
+        return n;
+    }
+    // The RGB at window pixel (x, y), top-left origin as xdotool counts.
+    static std::array<int, 3> at(const Image8& image, int x, int y) {
+        if (image.rgba.empty()) return {-1, -1, -1};
+        const std::size_t i = (static_cast<std::size_t>(image.height - 1 - y) * image.width + x) * 4;
+        return {image.rgba[i], image.rgba[i + 1], image.rgba[i + 2]};
+    }
+    static bool near(const std::array<int, 3>& a, const std::array<int, 3>& b, int tolerance = 1) {
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(a[c] - b[c]) > tolerance) return false;
+        return true;
+    }
     void edit(const fs::path& file, const std::string& from, const std::string& to) {
         std::ifstream in(file);
         std::string text((std::istreambuf_iterator<char>(in)), {});
@@ -254,6 +277,7 @@ TEST_F(WindowMode, KeysReachTheKeyboardTextureAndControlKeysDoNot) {
     xdo("keyup --window " + window_ + " space");
     xdo("key --window " + window_ + " F1");
     EXPECT_TRUE(toyhost_->waitForLog("F5 or Ctrl+R restart", 10)) << toyhost_->log();
+    EXPECT_NE(toyhost_->log().find("F2 inspector"), std::string::npos) << toyhost_->log();
 }
 
 // Pause (F6) shows "paused" at once and renders nothing; restart (F5) while paused shows frame 0
@@ -405,10 +429,130 @@ TEST_F(WindowMode, AShaderThatFailsAtStartOpensTheWindowAndWaitsForTheFix) {
     start();
     ASSERT_TRUE(within(20, [&] { return title().find("image.glsl:22:") != std::string::npos; })) << title() << toyhost_->log();
     EXPECT_TRUE(toyhost_->running());
+    // The error is drawn on the canvas (grey until the shadertoy compiles): more than one colour.
+    EXPECT_TRUE(within(20, [&] {
+        const Image8 shown = grab();
+        for (std::size_t i = 4; i < shown.rgba.size(); i += 4)
+            if (!std::equal(&shown.rgba[i], &shown.rgba[i + 3], &shown.rgba[0])) return true;
+        return false;
+    })) << "the window is one colour: no error on the canvas";
     edit(dir_ / "probe/image.glsl", "vec4(10, 20, broken_name, 255)", "vec4(10, 20, 30, 255)");
     ASSERT_TRUE(within(20, [&] { return shownFrame() >= 2; })) << title() << toyhost_->log();
     EXPECT_EQ(column(screenshot(), 5), (std::array<int, 4>{10, 20, 30, 255}));
     EXPECT_EQ(title().find("error"), std::string::npos) << title();
+    // Fixed: the window shows exactly the frame, nothing over it.
+    xdo("key --window " + window_ + " F6");
+    ASSERT_TRUE(within(10, [&] { return title().find("paused") != std::string::npos; })) << title();
+    const Image8 shot = screenshot();
+    EXPECT_TRUE(within(20, [&] { return differingPixels(grab(), shot) == 0; }))
+        << differingPixels(grab(), shot) << " pixels differ from the F12 screenshot";
+}
+
+// A compile error while running is drawn over the canvas (the text stderr shows) for as long as it
+// lasts; the F12 screenshot and the frames captured meanwhile hold none of it: they equal a
+// headless run's byte for byte.
+TEST_F(WindowMode, ErrorsAreDrawnOverTheCanvasButNeverCaptured) {
+    fs::create_directories(dir_ / "frames");
+    start({"--out", (dir_ / "frames/f_%d.png").string(), "--fps", "30"});
+    waitFrames();
+    xdo("key --window " + window_ + " F6");
+    ASSERT_TRUE(within(10, [&] { return title().find("paused") != std::string::npos; })) << title();
+    const Image8 clean = screenshot();
+    ASSERT_TRUE(within(20, [&] { return differingPixels(grab(), clean) == 0; }))
+        << "paused, the window shows exactly the F12 screenshot: " << differingPixels(grab(), clean) << " pixels differ";
+
+    const fs::path image = dir_ / "probe/image.glsl";
+    edit(image, "vec4(10, 20, 30, 255)", "vec4(10, 20, undefined_name, 255)");
+    ASSERT_TRUE(toyhost_->waitForLog("undefined_name", 20)) << toyhost_->log();
+    // A line of text at least: a few hundred pixels.
+    ASSERT_TRUE(within(20, [&] { return differingPixels(grab(), clean) > 200; }))
+        << differingPixels(grab(), clean) << " pixels differ\n" << toyhost_->log();
+    const Image8 withError = grab();  // kept next to the log, to be looked at
+    EXPECT_TRUE(writePng(dir_ / "grab-with-error.png", withError.width, withError.height, withError.rgba).ok());
+    EXPECT_EQ(screenshot().rgba, clean.rgba) << "the F12 screenshot holds overlay pixels";
+    // Two frames rendered and captured while the error is shown.
+    for (int step = 1; step <= 2; ++step) {
+        const int from = shownFrame();
+        xdo("key --window " + window_ + " F7");
+        ASSERT_TRUE(within(20, [&] { return shownFrame() == from + 1; })) << title();
+    }
+    const Image8 stepped = screenshot();
+    EXPECT_GT(differingPixels(grab(), stepped), 200) << "the error is still shown";
+
+    edit(image, "vec4(10, 20, undefined_name, 255)", "vec4(10, 20, 30, 255)");
+    ASSERT_TRUE(toyhost_->waitForLog("nothing to recompile", 20)) << toyhost_->log();
+    EXPECT_TRUE(within(20, [&] { return differingPixels(grab(), stepped) == 0; }))
+        << "fixed, the overlay is gone: " << differingPixels(grab(), stepped) << " pixels differ";
+    closeWindow();
+    ASSERT_EQ(toyhost_->wait(20), 0) << toyhost_->log();
+
+    int frames = 0;
+    while (fs::exists(dir_ / ("frames/f_" + std::to_string(frames) + ".png"))) ++frames;
+    ASSERT_GE(frames, 4) << "frames before the pause and the two steps";
+    auto run = shell("'" + kToyhost.string() + "' run '" + (dir_ / "probe").string() + "' --headless --size 200x100 --frames " +
+                     std::to_string(frames) + " --fps 30 --quiet --out '" + (dir_ / "frames/h_%d.png").string() + "' 2>&1");
+    ASSERT_EQ(run.first, 0) << run.second;
+    for (int frame = 0; frame < frames; ++frame) {
+        const std::string windowBytes = fileBytes(dir_ / ("frames/f_" + std::to_string(frame) + ".png"));
+        EXPECT_FALSE(windowBytes.empty());
+        EXPECT_EQ(windowBytes, fileBytes(dir_ / ("frames/h_" + std::to_string(frame) + ".png"))) << "frame " << frame;
+    }
+}
+
+// F2: the inspector. A click on Buffer A's thumbnail shows the buffer full-canvas (values drawn
+// as they are, NaN in magenta); a click on a texel prints the floats the buffer holds there,
+// read back from its float target. Nothing of it reaches the F12 screenshot.
+TEST_F(WindowMode, TheInspectorShowsABufferAndTheFloatsUnderTheCursor) {
+    fs::create_directories(dir_ / "values");
+    std::ofstream(dir_ / "values/manifest.json")
+        << R"({"name": "values", "passes": {"Buffer A": {"source": "buffer_a.glsl"},)"
+        << R"( "Image": {"source": "image.glsl"}}})";
+    // Known floats, outside 0..1 too; NaN in the 20 columns on the left.
+    std::ofstream(dir_ / "values/buffer_a.glsl")
+        << "void mainImage(out vec4 c, in vec2 f) {\n"
+           "    c = vec4(f.x / 100.0, f.y / 1000.0, 0.25, -2.0);\n"
+           "    if (f.x < 20.0) c.g = sqrt(-1.0 - f.y);\n}\n";
+    std::ofstream(dir_ / "values/image.glsl") << "void mainImage(out vec4 c, in vec2 f) { c = vec4(0.0, 0.5, 0.0, 1.0); }\n";
+    start({}, dir_ / "values", "values", "480x360");
+    waitFrames();
+    const std::array<int, 3> green = {0, 128, 0};
+    EXPECT_TRUE(near(at(grab(), 440, 330), green)) << "the Image";
+
+    xdo("key --window " + window_ + " F2");
+    ASSERT_TRUE(toyhost_->waitForLog("inspector shown", 20)) << toyhost_->log();
+    waitFrames();
+    // The thumbnails are the panel's first row at the window's top-left corner: Buffer A first.
+    xdo("mousemove --window " + window_ + " 30 30 click 1");
+    ASSERT_TRUE(toyhost_->waitForLog("Buffer A full-canvas", 20)) << toyhost_->log();
+    // (440, 330) is texel (440, 29): r = 4.405 (255 on screen), g = 0.0295, b = 0.25.
+    EXPECT_TRUE(within(20, [&] { return near(at(grab(), 440, 330), {255, 8, 64}); })) << [&] {
+        const auto p = at(grab(), 440, 330);
+        return std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]);
+    }();
+    const Image8 inspected = grab();  // kept next to the log, to be looked at
+    EXPECT_TRUE(writePng(dir_ / "grab-inspector.png", inspected.width, inspected.height, inspected.rgba).ok());
+    EXPECT_EQ(at(inspected, 5, 300), (std::array<int, 3>{255, 0, 255})) << "NaN is drawn magenta";
+    const Image8 shot = screenshot();
+    EXPECT_EQ(shot.width, 480);
+    bool allGreen = !shot.rgba.empty();
+    for (std::size_t i = 0; i < shot.rgba.size(); i += 4)
+        allGreen = allGreen && near({shot.rgba[i], shot.rgba[i + 1], shot.rgba[i + 2]}, green);
+    EXPECT_TRUE(allGreen) << "the F12 screenshot is the Image alone (green everywhere)";
+
+    xdo("mousemove --window " + window_ + " 440 330 click 1");
+    ASSERT_TRUE(toyhost_->waitForLog("Buffer A texel (440, 29) = (", 20)) << toyhost_->log();
+    std::smatch m;
+    const std::string log = toyhost_->log();
+    ASSERT_TRUE(std::regex_search(log, m, std::regex(R"(Buffer A texel \(440, 29\) = \(([^,]+), ([^,]+), ([^,]+), ([^)]+)\))")))
+        << log;
+    EXPECT_NEAR(std::stof(m[1]), 440.5f / 100.0f, 1e-5f);
+    EXPECT_NEAR(std::stof(m[2]), 29.5f / 1000.0f, 1e-7f);
+    EXPECT_EQ(std::stof(m[3]), 0.25f);
+    EXPECT_EQ(std::stof(m[4]), -2.0f);
+
+    xdo("key --window " + window_ + " F2");
+    ASSERT_TRUE(toyhost_->waitForLog("inspector hidden", 20)) << toyhost_->log();
+    EXPECT_TRUE(within(20, [&] { return near(at(grab(), 440, 330), green); })) << "the canvas as usual";
 }
 
 // The title's frame rate is the measured one (frames over real time), not a value that starts at

@@ -80,7 +80,7 @@ void RunCommand::define(CLI::App& run) {
         ->required();
     run.add_flag("--window", window_,
                  "Open a window (GLFW, OpenGL ES 3) and run in real time with mouse and keyboard; the default when "
-                 "$DISPLAY or $WAYLAND_DISPLAY is set. Keys: F1 help, F5/Ctrl+R restart, F6/Pause pause, F7 step, "
+                 "$DISPLAY or $WAYLAND_DISPLAY is set. Keys: F1 help, F2 inspector, F5/Ctrl+R restart, F6/Pause pause, F7 step, "
                  "F11 fullscreen, F12 screenshot, Esc/Ctrl+Q quit; hot reload is always on");
     run.add_flag("--headless", headless_, "Render without a window (EGL, no display needed); the default without a display");
     run.add_flag("--watch", watch_,

@@ -4,6 +4,7 @@
 #include <ctime>
 
 #include "core/Defaults.h"
+#include "drivers/window/Overlay.h"
 #include "drivers/window/WindowContext.h"
 #include "drivers/window/WindowEvents.h"
 #include "gl/GlThread.h"
@@ -47,6 +48,7 @@ public:
             (void)s.reload(std::move(change->files), std::move(change->plan));
         const double now = monotonicNow();
         if (events_.takeControl(Control::Help)) observer_.notice(notice(controlsHelp(), Code::WindowHelp));
+        if (events_.takeControl(Control::Inspector)) toggleInspector();
         if (events_.takeControl(Control::Restart)) {
             s.restart();
             clock_.restart(now);  // while paused, the restarted frame is still shown
@@ -76,6 +78,7 @@ public:
     void present(SessionCore& s) override {
         events_.setCanvasSize(s.width(), s.height());
         presentToDefaultFramebuffer(s.output(PassId::Image), framebuffer_.width, framebuffer_.height);
+        drawOverlay(s);
         (void)window_.present();
     }
 
@@ -86,6 +89,7 @@ public:
             present(s);
         } else {
             clearDefaultFramebuffer(framebuffer_.width, framebuffer_.height);
+            drawOverlay(s);
             (void)window_.present();
         }
         events_.waitForInput(0.05);
@@ -150,6 +154,34 @@ private:
         });
         return okStatus();
     }
+    // The overlay (errors, F2 inspector) over the presented canvas: see drivers/window/Overlay.h.
+    // Made when first needed: a window that never shows it starts as fast as before.
+    Overlay* overlay() {
+        if (overlay_ || overlayFailed_) return overlay_.get();
+        if (Result<std::unique_ptr<Overlay>> made = Overlay::create(); made) {
+            overlay_ = std::move(*made);
+        } else {
+            overlayFailed_ = true;
+            for (const Diagnostic& d : made.error().diagnostics) observer_.notice(d);
+        }
+        return overlay_.get();
+    }
+    void toggleInspector() {
+        if (!overlay()) return;
+        overlay_->inspector().toggle();
+        events_.setPointerCaptured(overlay_->inspector().open());
+        observer_.notice(notice(overlay_->inspector().open() ? "inspector shown (F2 hides it; the mouse is the inspector's)"
+                                                             : "inspector hidden (the mouse is the shader's again)",
+                                Code::WindowInspector));
+    }
+    void drawOverlay(SessionCore& s) {
+        if ((!overlay_ && s.problems().empty()) || !overlay()) return;
+        std::vector<Diagnostic> notices;
+        overlay_->draw(s, {framebuffer_.width, framebuffer_.height, events_.takePointer(),
+                           {clock_.time(), clock_.measuredFrameRate(), clock_.paused()}},
+                       notices);
+        for (const Diagnostic& d : notices) observer_.notice(d);
+    }
     void reportScreenshots() {
         for (Result<fs::path>& written : writer_.takeFinished()) {
             if (!written) {
@@ -171,6 +203,8 @@ private:
     SessionObserver& observer_;
     RealTimeClock clock_;
     GlSurface::Size framebuffer_;
+    std::unique_ptr<Overlay> overlay_;  // none until needed, or when it cannot be made (said once)
+    bool overlayFailed_ = false;
     bool titlePaused_ = false;
     double titleShownAt_ = -1;
 };

@@ -1,6 +1,7 @@
 // The window driver: what a window brings to a SessionCore (session/SessionCore.h): a real-time clock
 // (or a fixed step with --fps, timing/RealTimeClock.h), the mouse and keys from WindowEvents, a
-// few controls (F5 restart, F6 pause, F7 step, F12 screenshot, F1 help; input/WindowControls.h),
+// few controls (F5 restart, F6 pause, F7 step, F12 screenshot, F1 help, F2 inspector;
+// input/WindowControls.h), the overlay over the canvas (errors, inspector: drivers/window/Overlay.h),
 // the canvas following the window's framebuffer (not while recording), the frame presented, and a
 // title with the state (name, measured frame rate, iFrame, iTime, paused, the current error).
 // runWindow handles events on the calling (main) thread and renders on a GL thread of its own.

@@ -17,6 +17,7 @@ struct WindowCallbacks {
     static void cursor(GLFWwindow* window, double x, double y) {
         WindowEvents& e = of(window);
         std::lock_guard lock(e.mutex_);
+        e.trackPointer(x, y);
         if (e.buttonsDown_ == 0) return;  // iMouse.xy moves only while the button is held
         const glm::vec2 p = e.canvasPosition(x, y);
         e.push(InputEvent::mouseMove(p.x, p.y));
@@ -27,6 +28,18 @@ struct WindowCallbacks {
         double x = 0, y = 0;
         glfwGetCursorPos(window, &x, &y);
         std::lock_guard lock(e.mutex_);
+        e.trackPointer(x, y);
+        if (action == GLFW_PRESS && e.pointerCaptured_ && e.buttonsDown_ == 0) {
+            ++e.overlayButtonsDown_;
+            e.overlayPressed_ = true;
+            e.input_.notify_all();
+            return;
+        }
+        if (action == GLFW_RELEASE && e.overlayButtonsDown_ > 0) {
+            --e.overlayButtonsDown_;
+            e.input_.notify_all();
+            return;
+        }
         if (action == GLFW_PRESS) {
             if (e.buttonsDown_++ == 0) {
                 const glm::vec2 p = e.canvasPosition(x, y);
@@ -88,6 +101,12 @@ void WindowEvents::push(const InputEvent& event) {
         events_.push_back(event);
     }
     input_.notify_all();
+}
+
+void WindowEvents::trackPointer(double cursorX, double cursorY) {
+    if (windowSize_.width <= 0 || windowSize_.height <= 0) return;
+    pointerX_ = static_cast<float>(cursorX * framebuffer_.width / windowSize_.width);
+    pointerY_ = static_cast<float>(cursorY * framebuffer_.height / windowSize_.height);
 }
 
 glm::vec2 WindowEvents::canvasPosition(double cx, double cy) const {
@@ -162,6 +181,18 @@ void WindowEvents::setTitle(std::string title) {
         title_ = std::move(title);
     }
     wake();
+}
+
+WindowEvents::Pointer WindowEvents::takePointer() {
+    std::lock_guard lock(mutex_);
+    Pointer p{pointerX_, pointerY_, overlayButtonsDown_ > 0 || overlayPressed_};
+    overlayPressed_ = false;
+    return p;
+}
+
+void WindowEvents::setPointerCaptured(bool captured) {
+    std::lock_guard lock(mutex_);
+    pointerCaptured_ = captured;
 }
 
 void WindowEvents::waitForInput(double seconds) {

@@ -5,7 +5,8 @@
 // thread pumps events (GLFW callbacks become the same InputEvents the scripts make: iMouse in
 // canvas pixels as the site computes it, keys as JavaScript keyCodes, auto-repeat ignored) and
 // applies what only it may do (title, full screen); the GL thread takes events and controls and
-// says what the title and canvas are. Needs no GL context.
+// says what the title and canvas are, and reads the pointer for the overlay (which owns the mouse
+// while the inspector is open). Needs no GL context.
 #pragma once
 
 #include <array>
@@ -49,9 +50,22 @@ public:
     // Waits until an event comes in or `seconds` pass.
     void waitForInput(double seconds);
 
+    // The pointer as the overlay sees it (drivers/window/Overlay.h): framebuffer pixels, top-left
+    // origin; `down` also reads true once after a press released before this call, so that a
+    // quick click is never lost between two frames.
+    struct Pointer {
+        float x = -1, y = -1;
+        bool down = false;
+    };
+    Pointer takePointer();
+    // While captured, presses (and the drags they start) are the overlay's and never reach the
+    // shader's iMouse; a drag the shader already holds ends as it began.
+    void setPointerCaptured(bool captured);
+
 private:
     friend struct WindowCallbacks;
     void push(const InputEvent& event);  // with the lock held
+    void trackPointer(double cursorX, double cursorY);  // with the lock held
     glm::vec2 canvasPosition(double cursorX, double cursorY) const;
 
     WindowContext& window_;
@@ -59,8 +73,12 @@ private:
     std::mutex mutex_;
     std::condition_variable input_;
     std::vector<InputEvent> events_;
-    std::array<bool, 8> controls_{};  // by Control
+    std::array<bool, kControlCount> controls_{};  // by Control
     int buttonsDown_ = 0;
+    int overlayButtonsDown_ = 0;
+    bool overlayPressed_ = false;  // since the last takePointer()
+    bool pointerCaptured_ = false;
+    float pointerX_ = -1, pointerY_ = -1;
     bool quit_ = false;
     int canvasW_ = 1, canvasH_ = 1;
     GlSurface::Size framebuffer_, windowSize_;
