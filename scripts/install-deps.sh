@@ -12,6 +12,7 @@ packages=(
   libfftw3-dev                                           # the music/mic texture (FFT, as WebAudio's analyser)
   libgtest-dev                                           # tests
   ffmpeg                                                 # video output (--out x.mp4); ffprobe for its tests
+  libfreetype-dev                                        # the font stand-in (Font 1) drawn from DejaVu
   libimgui-dev libstb-dev fonts-dejavu-core             # the window's overlay (errors, F2 inspector): Dear ImGui, its font
   xvfb xauth xdotool libx11-dev                          # window-mode tests: a virtual X server, real X input, screen grabs
   parallel                                               # the render-farm shard test (GNU parallel)

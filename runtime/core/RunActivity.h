@@ -16,7 +16,9 @@ public:
     // decoded the frame it shows yet; `pass` names the first pass that reads the video.
     // Abandoning: after a stop, the encoders finish the frame each is writing (queued frames are
     // dropped); CPU work of toyhost's own that ends, unlike a draw GL cannot interrupt.
-    enum class Phase { Idle, Compiling, Drawing, WaitingForOutput, WaitingForInput, Abandoning };
+    // DrawCall: inside a pass's draw call while older draws are still on the GPU (llvmpipe compiles
+    // a pass's machine code inside its first draw call: a call that does not return is that compile).
+    enum class Phase { Idle, Compiling, Drawing, DrawCall, WaitingForOutput, WaitingForInput, Abandoning };
 
     struct Snapshot {
         Phase phase = Phase::Idle;

@@ -31,7 +31,15 @@ GpuActivity::Wait::~Wait() {
 }
 
 void GpuActivity::beforeDraw(const char* pass, int frame) {
-    if (!watchDraws_ || count_ != 0) return;
+    if (!watchDraws_) return;
+    if (count_ != 0) {
+        // Older draws are still on the GPU, but while this call has not returned it is what the
+        // run waits for (llvmpipe compiles the pass here the first time): published as such, and
+        // the oldest pending draw again once it returns (afterDraw).
+        activity_->begin(RunActivity::Phase::DrawCall, pass, frame);
+        published_ = nullptr;
+        return;
+    }
     activity_->begin(RunActivity::Phase::Drawing, pass, frame);
     drawPublished_ = true;
 }
@@ -42,6 +50,7 @@ void GpuActivity::afterDraw(const char* pass, int frame) {
     items_[count_++] = {glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0), pass, frame};
     // The pass published before its draw call keeps its start time.
     if (drawPublished_ && count_ == 1) published_ = items_[0].fence;
+    else if (!drawPublished_) publishPending();  // after a DrawCall: the oldest pending draw again
     drawPublished_ = false;
 }
 

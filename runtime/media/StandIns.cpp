@@ -6,10 +6,13 @@
 #include <cstdlib>
 #include <vector>
 
+#include "media/FontAtlas.h"
+
 namespace toyhost {
 
 // ---- Stand-ins ---------------------------------------------------------------------------------
-// Everything below uses integer arithmetic only, so the bytes are identical on every compiler and
+// Everything below but the font (drawn by FreeType from DejaVu, media/FontAtlas.h: the same bytes for
+// the same FreeType and font files) uses integer arithmetic only, so the bytes are identical on every compiler and
 // CPU. The generators write RGBA; conformToChannels then applies the file's channel count.
 namespace {
 using Bytes = std::vector<std::uint8_t>;
@@ -200,6 +203,14 @@ Image8 glyphAtlas(const StockMediaInfo& info) {
     return image;
 }
 
+// The site's font texture's layout with DejaVu's glyphs (media/FontAtlas.h), so text reads as text;
+// boxes in the same grid where the font is not installed (or FreeType fails).
+Image8 fontStandIn(const StockMediaInfo& info) {
+    if (std::optional<std::filesystem::path> font = atlasFontFile())
+        if (Result<Image8> atlas = fontAtlas(info.width, info.height, *font)) return std::move(*atlas);
+    return glyphAtlas(info);
+}
+
 // Six 40-pixel sprite frames on a transparent sheet; the body bobs by a pixel every other frame.
 Image8 spriteSheet(const StockMediaInfo& info) {
     Image8 image = blank(info);
@@ -261,7 +272,7 @@ Image8 makeStandIn(const StockMediaInfo& info) {
     else if (info.name == "Bayer")
         image = bayer(info);
     else if (info.name == "Font 1")
-        image = glyphAtlas(info);
+        image = fontStandIn(info);
     else if (info.name == "Nyancat")
         image = spriteSheet(info);
     else if (info.name == "Blue Noise")

@@ -134,6 +134,18 @@ void Watchdog::loop() {
                                    "limit off)",
                                now.pass),
                        kExitWatchdog);
+        else if (frameLimit > 0 && now.phase == RunActivity::Phase::DrawCall && now.seconds > frameLimit)
+            expireWith(problem(Code::WatchdogFrame,
+                               "frame " + std::to_string(now.frame) + ": the draw call of this pass has not returned for " +
+                                   seconds(now.seconds) + " s, longer than --frame-timeout " + seconds(frameLimit) +
+                                   ": the run is ended. The driver compiles a pass's machine code inside its first "
+                                   "draw (llvmpipe does), so " +
+                                   (now.frame <= 0 ? std::string("this pass's compile is what stalls (many loops bounded by "
+                                                                 "iTime or iFrame make LLVM's loop analysis slow)")
+                                                   : std::string("a recompile of this pass or its drawing stalls")) +
+                                   "; --frame-timeout 0 turns the limit off",
+                               now.pass),
+                       kExitWatchdog);
         else if (frameLimit > 0 && now.phase == RunActivity::Phase::WaitingForInput && now.seconds > frameLimit)
             expireWith(problem(Code::WatchdogInput,
                                "frame " + std::to_string(now.frame) + " has waited " + seconds(now.seconds) +

@@ -271,3 +271,62 @@ TEST(StandIn, OtherTexturesHaveTheirOwnPatterns) {
     }
     EXPECT_LT(covariance / variance, -0.05);
 }
+
+namespace {
+// The coverage (red) of character `code`'s cell in the font stand-in, rows top first, and where
+// its ink lies.
+struct Cell {
+    double ink = 0;            // sum of red / 255
+    double centreColumns = 0;  // share of the ink in the middle fifth of the columns
+    double centreRows = 0;     // share in the middle fifth of the rows
+    double lowerHalf = 0;      // share in the lower half
+};
+Cell fontCell(const Image8& atlas, int code) {
+    const int cw = atlas.width / 16, ch = atlas.height / 16, x0 = (code % 16) * cw, y0 = (code / 16) * ch;
+    Cell cell;
+    double columns = 0, rows = 0, lower = 0;
+    for (int y = 0; y < ch; ++y)
+        for (int x = 0; x < cw; ++x) {
+            const double ink = atlas.rgba[(static_cast<std::size_t>(y0 + y) * atlas.width + x0 + x) * 4] / 255.0;
+            cell.ink += ink;
+            if (std::abs(2 * x - cw) < cw / 5) columns += ink;
+            if (std::abs(2 * y - ch) < ch / 5) rows += ink;
+            if (y >= ch / 2) lower += ink;
+        }
+    if (cell.ink > 0) {
+        cell.centreColumns = columns / cell.ink;
+        cell.centreRows = rows / cell.ink;
+        cell.lowerHalf = lower / cell.ink;
+    }
+    return cell;
+}
+}  // namespace
+
+// Font 1's stand-in has the site's layout (16 x 16 cells, code c at column c % 16, row c / 16 from
+// the top), real glyphs in red (a bar is a bar, a dash a dash, a full stop sits low, a space is
+// empty, letters differ) and a signed distance in alpha that agrees with them (below 127 inside).
+TEST(StandIn, FontHasTheSitesLayoutAndLegibleGlyphs) {
+    const Image8 made = makeStandIn(stock("Font 1"));
+    ASSERT_EQ(made.width, 1024);
+    const Image8 atlas{made.width, made.height, topFirst(made)};
+    EXPECT_EQ(fontCell(atlas, ' ').ink, 0.0) << "a space is empty";
+    const Cell bar = fontCell(atlas, '|'), dash = fontCell(atlas, '-'), stop = fontCell(atlas, '.');
+    EXPECT_GT(bar.ink, 50.0);
+    EXPECT_GT(bar.centreColumns, 0.9) << "'|' is a vertical bar in the middle of its cell";
+    EXPECT_GT(dash.centreRows, 0.9) << "'-' is a horizontal bar at mid height";
+    EXPECT_GT(stop.lowerHalf, 0.95) << "'.' sits on the baseline, in the lower half";
+    EXPECT_LT(stop.ink, bar.ink);
+    const Cell h = fontCell(atlas, 'H'), i = fontCell(atlas, 'I'), w = fontCell(atlas, 'W');
+    EXPECT_GT(w.ink, i.ink) << "a W has more ink than an I";
+    EXPECT_LT(h.centreColumns, i.centreColumns) << "H's ink is in its two stems, I's in the middle";
+    std::size_t agree = 0, inked = 0;
+    for (std::size_t p = 0; p < atlas.rgba.size() / 4; ++p) {
+        const int red = atlas.rgba[p * 4], alpha = atlas.rgba[p * 4 + 3];
+        if (red >= 250) {
+            ++inked;
+            agree += alpha < 127;
+        }
+    }
+    ASSERT_GT(inked, 1000u);
+    EXPECT_EQ(agree, inked) << "the distance is negative (alpha below 127/255) inside every glyph";
+}

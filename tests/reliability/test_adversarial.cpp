@@ -472,5 +472,25 @@ TEST(Adversarial, AShaderCompiledLazilyInsideItsFirstDrawIsEndedByTheFrameLimit)
     EXPECT_TRUE(entries(dir / "out").empty());
 }
 
+// The same lazy compile in the Image after a buffer: the buffer's draw is still pending on the GPU
+// when the Image's draw call stalls, and the message names the Image and says that its draw call
+// (its compile) has not returned, not "Buffer A: frame 0 has been drawing" (issue 30).
+TEST(Adversarial, ALazyCompileAfterABufferIsNamedAsThePassWhoseDrawCallStalls) {
+    const fs::path dir = freshOutputDir("reliability/adversarial-lazy-jit-after-buffer");
+    writeFile(dir / "toy/manifest.json", R"({"passes": {"Buffer A": {"source": "a.glsl"},
+        "Image": {"source": "image.glsl", "channels": {"iChannel0": {"buffer": "A"}}}}})");
+    writeFile(dir / "toy/a.glsl", "void mainImage(out vec4 c, in vec2 f) { c = vec4(f.x / 64.0); }\n");
+    writeFile(dir / "toy/image.glsl", "void mainImage(out vec4 c, in vec2 f) {\n    float a[1000000];\n"
+                                      "    a[int(f.x)] = texelFetch(iChannel0, ivec2(f), 0).x;\n    c = vec4(a[int(f.y)]);\n}\n");
+    auto run = runToyhost("run " + quoted(dir / "toy") + " --size 64x36 --frames 1 --frame-timeout 5 --compile-timeout 5 --out " +
+                          quoted(dir / "out/f.png"));
+    EXPECT_EQ(run.exitCode, 124) << run.output;
+    EXPECT_NE(run.output.find("Image: frame 0: the draw call of this pass has not returned for"), std::string::npos)
+        << run.output;
+    EXPECT_NE(run.output.find("this pass's compile is what stalls"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("Buffer A: frame 0"), std::string::npos) << run.output;
+    EXPECT_TRUE(entries(dir / "out").empty());
+}
+
 }  // namespace
 }  // namespace toyhost::testing
