@@ -130,8 +130,13 @@ void Watchdog::loop() {
             expireWith(problem(Code::WatchdogFrame,
                                "frame " + std::to_string(now.frame) + " has been drawing this pass for " +
                                    seconds(now.seconds) + " s, longer than --frame-timeout " + seconds(frameLimit) +
-                                   ": the run is ended (a shader that loops too long? --frame-timeout 0 turns the "
-                                   "limit off)",
+                                   ": the run is ended (a shader that loops too long? " +
+                                   (now.frame <= 0 ? std::string("On frame 0 it may also be the driver compiling the pass "
+                                                                 "inside its first draw: with Mesa's llvmpipe, "
+                                                                 "GALLIVM_PERF=nopt in the environment makes such compiles "
+                                                                 "fast. ")
+                                                   : std::string()) +
+                                   "--frame-timeout 0 turns the limit off)",
                                now.pass),
                        kExitWatchdog);
         else if (frameLimit > 0 && now.phase == RunActivity::Phase::DrawCall && now.seconds > frameLimit)
@@ -141,7 +146,9 @@ void Watchdog::loop() {
                                    ": the run is ended. The driver compiles a pass's machine code inside its first "
                                    "draw (llvmpipe does), so " +
                                    (now.frame <= 0 ? std::string("this pass's compile is what stalls (many loops bounded by "
-                                                                 "iTime or iFrame make LLVM's loop analysis slow)")
+                                                                 "iTime or iFrame make LLVM's loop analysis slow; with Mesa's "
+                                                                 "llvmpipe, GALLIVM_PERF=nopt in the environment compiles them "
+                                                                 "in a fraction of the time)")
                                                    : std::string("a recompile of this pass or its drawing stalls")) +
                                    "; --frame-timeout 0 turns the limit off",
                                now.pass),
