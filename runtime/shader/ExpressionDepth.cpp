@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <map>
+#include <set>
 #include <string>
 
 #include "shader/GlslTokens.h"
@@ -88,6 +90,67 @@ DeepestStatement deepestStatement(std::string_view code) {
     return deepest;
 }
 
+DeepestCallChain deepestCallChain(std::string_view code) {
+    const std::vector<GlslToken> tokens = tokenizeGlsl(code);
+    // Top-level function definitions: `type name ( ... ) {` at brace depth 0; the calls in each body.
+    std::map<std::string_view, std::set<std::string_view>> calls;
+    std::map<std::string_view, std::size_t> definedAt;  // offset of the name
+    int braces = 0;
+    std::string_view current;
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+        const GlslToken& t = tokens[i];
+        if (t.directive) continue;
+        if (t.text == "{") {
+            if (braces == 0 && i > 0 && tokens[i - 1].text == ")") {
+                // Back to the parenthesis that opens the parameter list: the name is before it.
+                int depth = 0;
+                std::size_t j = i - 1;
+                for (; j > 0; --j) {
+                    if (tokens[j].text == ")") ++depth;
+                    else if (tokens[j].text == "(" && --depth == 0) break;
+                }
+                if (j > 0 && tokens[j - 1].kind == GlslToken::Kind::Identifier) {
+                    current = tokens[j - 1].text;
+                    calls[current];
+                    definedAt.emplace(current, tokens[j - 1].offset);
+                }
+            }
+            ++braces;
+        } else if (t.text == "}") {
+            if (--braces <= 0) {
+                braces = 0;
+                current = {};
+            }
+        } else if (braces > 0 && !current.empty() && t.kind == GlslToken::Kind::Identifier && i + 1 < tokens.size() &&
+                   tokens[i + 1].text == "(") {
+            calls[current].insert(t.text);
+        }
+    }
+    // Longest chain by memoised depth-first search over defined functions; -1 marks one in progress.
+    std::map<std::string_view, int> depth;
+    std::function<int(std::string_view)> chain = [&](std::string_view name) -> int {
+        auto known = depth.find(name);
+        if (known != depth.end()) return std::max(known->second, 0);
+        auto callee = calls.find(name);
+        if (callee == calls.end()) return 0;  // a built-in or a constructor
+        depth[name] = -1;
+        int deepest = 0;
+        for (std::string_view next : callee->second) deepest = std::max(deepest, chain(next));
+        return depth[name] = deepest + 1;
+    };
+    DeepestCallChain result;
+    for (std::string_view entry : {"mainImage", "mainSound", "mainCubemap"}) {
+        auto at = definedAt.find(entry);
+        if (at == definedAt.end()) continue;
+        const int d = chain(entry) + 1;  // the site's main() calls it
+        if (d > result.depth) {
+            result.depth = d;
+            result.line = 1 + static_cast<int>(std::count(code.begin(), code.begin() + static_cast<std::ptrdiff_t>(at->second), '\n'));
+        }
+    }
+    return result;
+}
+
 std::vector<Diagnostic> deepExpressionWarnings(const ManifestDesc& manifest) {
     std::vector<Diagnostic> warnings;
     auto check = [&](std::string_view code, const std::string& file, const std::string& pass) {
@@ -106,6 +169,26 @@ std::vector<Diagnostic> deepExpressionWarnings(const ManifestDesc& manifest) {
     };
     if (manifest.commonSource) check(manifest.commonCode, manifest.commonSource->string(), "Common");
     for (const PassDesc& pass : manifest.passes) check(pass.code, pass.sourceName, passName(pass.id));
+    // Calls: a pass's functions with Common's, as they are compiled together (Common first, so the
+    // pass's line numbers are counted from the pass's own text).
+    auto checkCalls = [&](const std::string& code, const std::string& file, const std::string& pass, int commonLines) {
+        const DeepestCallChain deepest = deepestCallChain(code);
+        if (deepest.depth <= kSiteCallDepthLimit) return;
+        Diagnostic d;
+        d.severity = Severity::Warning;
+        d.code = Code::ShaderCompile;
+        d.file = file;
+        d.pass = pass;
+        d.line = std::max(0, deepest.line - commonLines);
+        d.message = "function calls nested about " + std::to_string(deepest.depth) + " deep: the site refuses this " +
+                    "(Chrome rejects call chains deeper than " + std::to_string(kSiteCallDepthLimit) + ")";
+        warnings.push_back(std::move(d));
+    };
+    const std::string common = manifest.commonSource ? manifest.commonCode + "\n" : std::string();
+    const int commonLines = static_cast<int>(std::count(common.begin(), common.end(), '\n'));
+    auto passCalls = [&](const PassDesc& pass) { checkCalls(common + pass.code, pass.sourceName, passName(pass.id), commonLines); };
+    for (const PassDesc& pass : manifest.passes) passCalls(pass);
+    if (manifest.sound) passCalls(*manifest.sound);
     return warnings;
 }
 

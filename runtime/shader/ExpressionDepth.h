@@ -22,8 +22,21 @@ DeepestStatement deepestStatement(std::string_view code);
 // Chrome's limit (ANGLE's MaxExpressionComplexity as Chrome sets it for WebGL).
 constexpr int kSiteExpressionDepthLimit = 256;
 
-// One warning per pass (Common included) with a statement deeper than the limit: "the site
-// refuses this". A warning, not an error: the estimate is not ANGLE's exact count.
+// The longest chain of calls from an entry point (mainImage, mainSound, mainCubemap) through the
+// functions `code` defines, counting the entry point and the site's main() that calls it, and the
+// line of the entry point's definition; 0, 0 when there is no entry point. Functions are known by
+// name (overloads count as one); a recursive cycle (which GLSL refuses anyway) ends a chain.
+struct DeepestCallChain {
+    int depth = 0;
+    int line = 0;
+};
+DeepestCallChain deepestCallChain(std::string_view code);
+// Chrome's limit on the call stack (ANGLE's MaxCallStackDepth as Chrome sets it for WebGL).
+constexpr int kSiteCallDepthLimit = 256;
+
+// One warning per pass (Common included) with a statement deeper than the limit, and per pass
+// (with Common's functions) whose calls nest deeper than the call limit: "the site refuses this".
+// Warnings, not errors: the estimates are not ANGLE's exact counts.
 std::vector<Diagnostic> deepExpressionWarnings(const ManifestDesc& manifest);
 
 }  // namespace toyhost
