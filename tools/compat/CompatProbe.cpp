@@ -153,7 +153,8 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
     // the last frames (ProbeScript.h), so shaders that show nothing until clicked get their click.
     std::vector<InputEvent> events;
     auto frameAt = [&](int frame) {
-        events = input == ProbeInput::Keys ? probeKeysAt(frame)
+        // The key script starts on frame 1: frame 0 has no input at all (no mouse either).
+        events = input == ProbeInput::Keys ? probeKeysAt(frame - 1)
                                            : probeMouseAt(frame, settings.frames, settings.width, settings.height);
         const FrameTime time = timeline.next(frame, events);
         (void)(*session)->renderFrame(time, events);
@@ -176,13 +177,18 @@ ProbeResult probeAtOneSize(const fs::path& exportFile, const ProbeSettings& sett
     if (input == ProbeInput::Keys) {
         // Each key in turn, judged on every frame: the first frame that draws names its key.
         const std::clock_t start = std::clock();
-        for (int frame = 0; frame < probeKeyFrames(); ++frame) {
+        for (int frame = 0; frame <= probeKeyFrames(); ++frame) {
             frameAt(frame);
             result.nonFiniteBuffers.clear();
             judgeOutput(*core, settings, result, firstUniform);
             if (!result.uniformImage || result.uniformColourChanged) {
-                const int held = probeKeyHeldAt(frame);
-                result.keyHeld = kProbeKeys[held >= 0 ? held : kProbeKeyCount - 1].name;
+                if (frame == 0) {
+                    result.keyHeld = "";  // it draws with no input: the probe's mouse drag hid it
+                    result.drawsWithoutInput = true;
+                } else {
+                    const int held = probeKeyHeldAt(frame - 1);
+                    result.keyHeld = kProbeKeys[held >= 0 ? held : kProbeKeyCount - 1].name;
+                }
                 break;
             }
         }
@@ -259,7 +265,7 @@ ProbeResult probeUntilItDraws(const fs::path& exportFile, const ProbeSettings& s
     if (keys.passed()) {
         keys.secondSize = first.secondSize;
         keys.siteSize = first.siteSize;
-        keys.keysTried = true;
+        keys.keysTried = !keys.drawsWithoutInput;
         keys.msPerFrame = first.msPerFrame;
         return keys;
     }
@@ -362,6 +368,7 @@ nlohmann::json toJson(const ProbeResult& r) {
             {"site_size", r.siteSize},
             {"key_held", r.keyHeld},
             {"keys_tried", r.keysTried},
+            {"draws_without_input", r.drawsWithoutInput},
             {"ran_out_in", r.ranOutIn},
             {"passed", r.passed()}};
 }
@@ -398,6 +405,7 @@ ProbeResult fromJson(const nlohmann::json& j) {
     r.siteSize = j.value("site_size", "");
     r.keyHeld = j.value("key_held", "");
     r.keysTried = j.value("keys_tried", false);
+    r.drawsWithoutInput = j.value("draws_without_input", false);
     r.ranOutIn = j.value("ran_out_in", "");
     return r;
 }

@@ -76,6 +76,9 @@ struct ProbeResult {
     std::string siteSize;                  // "800x450" when that was tried too (still one colour)
     std::string keyHeld;                   // the key whose holding made a one-colour shader draw ("Space")
     bool keysTried = false;                // the key script was tried (still one colour)
+    // The run without any input (the key script's first frame) draws: the probe's mouse drag made
+    // the picture one colour (a mouse-driven viewer pointed at nothing).
+    bool drawsWithoutInput = false;
     // The phase the probe's CPU time ran out in, when it did after a verdict was reached ("" when
     // not): the verdict is the one reached before, and this says what could not be finished.
     std::string ranOutIn;

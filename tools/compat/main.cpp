@@ -159,7 +159,9 @@ std::string outputVerdict(const ProbeResult& r) {
     } else {
         verdict = problems.empty() ? "ok" : joined(problems);
     }
-    if (!r.keyHeld.empty()) {
+    if (r.drawsWithoutInput) {
+        verdict += " without input (one colour with the probe's mouse drag)";
+    } else if (!r.keyHeld.empty()) {
         verdict += " while " + r.keyHeld + " is held (one colour without keys)";
     } else if (!r.siteSize.empty() && r.passed() && r.judgedWidth == kSiteWidth) {
         verdict += " (at " + r.siteSize + ", the site's size; one colour at smaller sizes)";
