@@ -13,8 +13,8 @@
 #include "session/ShadertoyWatcher.h"
 #include "session/AllProblems.h"
 #include "timing/FrameClock.h"
-#include "timing/ProgressLine.h"
 #include "timing/RealTimeClock.h"
+#include "timing/WindowTitle.h"
 
 namespace toyhost {
 
@@ -51,7 +51,10 @@ public:
             s.restart();
             clock_.restart(now);  // while paused, the restarted frame is still shown
         }
-        if (events_.takeControl(Control::Pause)) clock_.setPaused(!clock_.paused(), now);
+        if (events_.takeControl(Control::Pause)) {
+            clock_.setPaused(!clock_.paused(), now);
+            shownRate_.setPaused(clock_.paused(), now);
+        }
         if (events_.takeControl(Control::Step)) clock_.stepOnce();
         if (events_.takeControl(Control::Screenshot))
             if (Status shot = screenshot(s); !shot) observer_.notice(shot.error().first());
@@ -70,7 +73,9 @@ public:
         if (clock_.paused() && events_.hasEvents()) clock_.forceFrame();
         if (!clock_.shouldRender()) return std::nullopt;
         events_.takeEvents(events);
-        return clock_.frame(monotonicNow(), localWallClockNow());
+        const double now = monotonicNow();
+        shownRate_.frame(now);
+        return clock_.frame(now, localWallClockNow());
     }
 
     void present(SessionCore& s) override {
@@ -117,9 +122,8 @@ private:
         if (paused == titlePaused_ && now - titleShownAt_ < 0.25) return;
         titlePaused_ = paused;
         titleShownAt_ = now;
-        events_.setTitle(formatWindowTitle({s.name(), clock_.measuredFrameRate(), s.running() ? s.frame() - 1 : -1,
-                                            clock_.time(), paused,
-                                            s.problems().empty() ? "" : formatDiagnostic(s.problems().front())}));
+        events_.setTitle({s.name(), shownRate_.rate(), s.running() ? s.frame() - 1 : -1, clock_.time(), paused,
+                          s.problems().empty() ? "" : formatDiagnostic(s.problems().front())});
     }
 
     // F12: the shown frame as NAME-YYYYMMDD-HHMMSS-frameN.png in --out's folder or the working
@@ -170,6 +174,7 @@ private:
     BackgroundWriter writer_;
     SessionObserver& observer_;
     RealTimeClock clock_;
+    ShownFrameRate shownRate_{monotonicNow()};
     GlSurface::Size framebuffer_;
     bool titlePaused_ = false;
     double titleShownAt_ = -1;
@@ -193,7 +198,10 @@ Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& 
     std::atomic<bool> done{false};
     std::optional<Result<SessionReport>> result;
     WindowEvents events(**window, [&] {
-        if (watchdog) watchdog->requestStop(StopReason::Quit);  // the grace period starts now
+        if (!watchdog) return;
+        // The first close starts the grace period; a second one while stopping ends at once.
+        if (watchdog->stopRequested()) watchdog->quitAgain();
+        else watchdog->requestStop(StopReason::Quit);
     });
     GlThread gl([&] {
         if (!prepared->options.outPattern) {  // the canvas is the framebuffer, in pixels
