@@ -487,5 +487,23 @@ TEST_F(WindowMode, TheTitleSaysStoppingAndASecondEscapeEndsAtOnce) {
     EXPECT_EQ(toyhost_->log().find("did not stop within"), std::string::npos) << toyhost_->log();
 }
 
+// Issue 27: with --fps F a window draws F frames per second of wall time (a preview of the
+// recording's timing; iTime ran 21 s in 3 s before). Only a lower bound: a loaded machine is
+// slower, never faster. --unpaced draws them as fast as it can.
+TEST_F(WindowMode, FpsPacesTheWindowAtFFramesPerSecond) {
+    const auto from = Clock::now();
+    auto paced = shell("'" + kToyhost.string() + "' run '" + (dir_ / "probe").string() +
+                       "' --window --size 64x32 --frames 11 --fps 5 --quiet 2>&1");
+    const double seconds = std::chrono::duration<double>(Clock::now() - from).count();
+    ASSERT_EQ(paced.first, 0) << paced.second;
+    EXPECT_GE(seconds, 10 / 5.0) << "11 frames at --fps 5 took " << seconds << " s";
+    auto unpaced = shell("'" + kToyhost.string() + "' run '" + (dir_ / "probe").string() +
+                         "' --window --size 64x32 --frames 11 --fps 5 --unpaced --quiet 2>&1");
+    EXPECT_EQ(unpaced.first, 0) << unpaced.second;
+    auto alone = shell("'" + kToyhost.string() + "' run '" + (dir_ / "probe").string() + "' --window --unpaced 2>&1");
+    EXPECT_EQ(alone.first, 2) << alone.second;
+    EXPECT_NE(alone.second.find("--unpaced goes with --fps"), std::string::npos) << alone.second;
+}
+
 }  // namespace
 }  // namespace toyhost::testing

@@ -13,6 +13,7 @@
 #include "session/ShadertoyWatcher.h"
 #include "session/AllProblems.h"
 #include "timing/FrameClock.h"
+#include "timing/FramePacer.h"
 #include "timing/RealTimeClock.h"
 #include "timing/WindowTitle.h"
 
@@ -50,10 +51,12 @@ public:
         if (events_.takeControl(Control::Restart)) {
             s.restart();
             clock_.restart(now);  // while paused, the restarted frame is still shown
+            if (pacer_) pacer_->reset();
         }
         if (events_.takeControl(Control::Pause)) {
             clock_.setPaused(!clock_.paused(), now);
             shownRate_.setPaused(clock_.paused(), now);
+            if (pacer_) pacer_->reset();
         }
         if (events_.takeControl(Control::Step)) clock_.stepOnce();
         if (events_.takeControl(Control::Screenshot))
@@ -72,6 +75,15 @@ public:
         // Input while paused makes the site paint one frame at the paused time.
         if (clock_.paused() && events_.hasEvents()) clock_.forceFrame();
         if (!clock_.shouldRender()) return std::nullopt;
+        if (pacer_ && !clock_.paused()) {
+            // --fps F: F frames per second of wall time. Input or a control ends the wait early;
+            // the frame then comes at its time on a later call.
+            if (const double wait = pacer_->wait(monotonicNow()); wait > 0) {
+                events_.waitForInput(wait);
+                if (pacer_->wait(monotonicNow()) > 0) return std::nullopt;
+            }
+            pacer_->drawn(monotonicNow());
+        }
         events_.takeEvents(events);
         const double now = monotonicNow();
         shownRate_.frame(now);
@@ -175,6 +187,8 @@ private:
     SessionObserver& observer_;
     RealTimeClock clock_;
     ShownFrameRate shownRate_{monotonicNow()};
+    std::optional<FramePacer> pacer_ =
+        o_.settings.fps && !o_.unpaced ? std::optional<FramePacer>(*o_.settings.fps) : std::nullopt;
     GlSurface::Size framebuffer_;
     bool titlePaused_ = false;
     double titleShownAt_ = -1;
@@ -212,7 +226,7 @@ Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& 
         {
             Result<std::unique_ptr<SessionCore>> session = SessionCore::start(std::move(*prepared), *window, observer, watchdog);
             if (session) {
-                (void)(*window)->setSwapInterval(1);
+                (void)(*window)->setSwapInterval((*session)->plan().options.unpaced ? 0 : 1);
                 WindowDriver driver(**window, events, (*session)->plan(), watcher, observer);
                 result = (*session)->run(driver);
                 driver.finishScreenshots();
