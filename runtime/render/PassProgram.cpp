@@ -86,7 +86,8 @@ Result<PassProgram> compilePassProgram(const ManifestDesc& manifest, const PassD
         if (build.failedStage == ProgramBuild::Stage::Link)
             for (Diagnostic& d : diagnostics) {
                 d.code = Code::ShaderLink;
-                d.message = "link: " + d.message;
+                // A message explainCompileProblems rewrote quotes the linker's words already.
+                if (d.message.find("(link: ") == std::string::npos) d.message = "link: " + d.message;
             }
         return Error(std::move(diagnostics));
     }

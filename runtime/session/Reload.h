@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,11 @@ struct ReloadOutcome {
     std::vector<Diagnostic> problems;
 };
 
-// "buffer_a.glsl changed: recompiled Buffer A" (or what was not applied, and why).
-Diagnostic describeReload(const ReloadOutcome& outcome);
+// "buffer_a.glsl changed: recompiled Buffer A" (or what was not applied, and why). A live reload
+// (a window, the library's Session::reload) goes on from the current frame, so buffers that still
+// exist keep their content. `rerunFrames` set: a --watch round that renders that many frames again
+// from frame 0 (every buffer starts anew), said in the same line; one that is not applied writes no
+// frames, which the line says too.
+Diagnostic describeReload(const ReloadOutcome& outcome, std::optional<int> rerunFrames = std::nullopt);
 
 }  // namespace toyhost

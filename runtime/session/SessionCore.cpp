@@ -278,8 +278,11 @@ ReloadOutcome SessionCore::reload(std::vector<fs::path> changed, Result<PlayerPl
     // The problems shown are those of the files as they are now: a change that leaves nothing
     // failing (an undone mistake whose code equals what runs) clears them.
     problems_ = outcome.problems;
-    observer_.notice(describeReload(outcome));
-    if (!outcome.problems.empty()) observer_.problems(outcome.problems);
+    // A --watch round reports its problems itself when it ends (SessionObserver::roundFinished):
+    // said here too, each would be printed twice.
+    const bool watch = plan_.options.watch;
+    observer_.notice(describeReload(outcome, watch ? std::optional<int>(std::max(0, plan_.end - plan_.first)) : std::nullopt));
+    if (!outcome.problems.empty() && !watch) observer_.problems(outcome.problems);
     return outcome;
 }
 

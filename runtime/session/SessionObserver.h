@@ -59,6 +59,9 @@ struct SessionReport {
 // The summary a command prints after a run, one line each ("ocean: 60 frames at 1280x720 ...",
 // "wrote ..."), without the "toyhost: " prefix.
 std::vector<std::string> summaryLines(const SessionReport& report);
+// A --watch round after the first in one line: "2 frames in 7.7 ms; wrote 2 files (2.5 KiB):
+// out_0.png .. out_1.png" (the first round's summary said the rest, which does not change).
+std::string watchRoundLine(const SessionReport& report);
 
 class SessionObserver {
 public:

@@ -54,6 +54,9 @@ struct SessionOptions {
     bool interactive = false;
     // Re-render (headless) or hot-reload (window) when a file of the shadertoy changes.
     bool watch = false;
+    // Window with a fixed step (fps): draw frames as fast as the display allows instead of fps
+    // frames per second of wall time (timing/FramePacer.h).
+    bool unpaced = false;
     std::optional<int> frames;             // default defaults::kFrames (headless), no end (window)
     std::optional<std::string> outPattern;
     std::optional<int> captureEvery;       // default defaults::kCaptureEvery

@@ -70,4 +70,19 @@ std::vector<std::string> summaryLines(const SessionReport& r) {
     return lines;
 }
 
+std::string watchRoundLine(const SessionReport& r) {
+    std::string line = std::to_string(r.frames) + (r.frames == 1 ? " frame" : " frames") + " in " +
+                       duration(r.firstFrameSeconds + r.restSeconds);
+    auto bytes = [&] { return formatBytes(r.bytesWritten); };
+    if (r.files.size() == 1)
+        line += "; wrote " + r.files.front().string() + (r.bytesWritten ? " (" + bytes() + ")" : "");
+    else if (!r.files.empty())
+        line += "; wrote " + std::to_string(r.files.size()) + " files (" + bytes() + "): " + r.files.front().string() +
+                " .. " + r.files.back().string();
+    else if (r.toStdout)
+        line += "; wrote " + bytes() + " of raw RGBA8 frames to stdout";
+    if (r.checkpoint) line += "; checkpoint " + r.checkpoint->string();
+    return line;
+}
+
 }  // namespace toyhost

@@ -58,6 +58,11 @@ void Watchdog::quitHonoured() {
     if (stop_.reason == StopReason::Quit) graceArmed_ = false;
 }
 
+void Watchdog::quitAgain() {
+    if (stop().reason != StopReason::Quit) return;
+    expireWith(problem(Code::Interrupted, "the window was closed again while stopping: stopped at once"), 130);
+}
+
 std::optional<Diagnostic> Watchdog::expired() const {
     std::lock_guard lock(mutex_);
     return expired_;

@@ -70,6 +70,9 @@ public:
     // The render thread saw a Quit and now completes the outputs: the grace period no longer
     // applies (a signal's does: its run only abandons what is unfinished).
     void quitHonoured();
+    // The window was closed again while its quit is being honoured: the run expires at once, as
+    // after a second signal (exit 130, unfinished files removed). Nothing when no quit is under way.
+    void quitAgain();
     bool stopRequested() const { return stopped_.load(std::memory_order_acquire); }
     // The expiry, when the expire callback did not end the process.
     std::optional<Diagnostic> expired() const;

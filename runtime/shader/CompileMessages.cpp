@@ -1,6 +1,7 @@
 #include "shader/CompileMessages.h"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -57,13 +58,91 @@ bool isFollowOn(const Diagnostic& d) {
 // that used it.
 bool isCascade(const Diagnostic& d) {
     static const std::regex operandType(R"(^(LHS|RHS|operands?)\b.* must be )");
-    return isError(d) && (std::regex_search(d.message, operandType) ||
+    return isError(d) && (std::regex_search(d.message, operandType) || d.message == "type mismatch" ||
                           d.message.find("from a non-numeric data type") != std::string::npos);
 }
 
 bool isUnknownName(const Diagnostic& d) {
     return isError(d) && (d.message.find("undeclared") != std::string::npos ||
                           d.message.rfind("no function with name", 0) == 0);
+}
+
+// Errors that make the type of an expression unknown: what Mesa then says about the expression
+// holding it (a constructor "from a non-numeric data type", a "type mismatch") only follows.
+bool isCascadeRoot(const Diagnostic& d) {
+    return isUnknownName(d) || (isError(d) && d.message.rfind("invalid swizzle", 0) == 0);
+}
+
+// The entry point a pass defines and how Shadertoy declares it (ShaderAssembly calls it so).
+struct EntryPoint {
+    const char* name;
+    const char* declaration;
+};
+EntryPoint entryPointOf(std::string_view pass) {
+    if (pass == "Sound") return {"mainSound", "vec2 mainSound(int samp, float time)"};
+    if (pass.rfind("Cube", 0) == 0)
+        return {"mainCubemap",
+                "void mainCubemap(out vec4 fragColor, in vec2 fragCoord, in vec3 rayOri, in vec3 rayDir)"};
+    return {"mainImage", "void mainImage(out vec4 fragColor, in vec2 fragCoord)"};
+}
+
+// A #define of the user's text: where it is and the names its body uses.
+struct MacroDefinition {
+    int line = 0;
+    std::vector<std::string> uses;
+};
+
+std::map<std::string, MacroDefinition> macroDefinitions(const SourceView& view) {
+    static const std::regex define(R"(^\s*#\s*define\s+([A-Za-z_]\w*)(\([^)]*\))?(.*)$)");
+    static const std::regex word(R"([A-Za-z_]\w*)");
+    std::map<std::string, MacroDefinition> macros;
+    for (int n = 1; n <= view.lineCount(); ++n) {
+        if (view.directiveOf(n) != "#define") continue;
+        std::string text(view.line(n));
+        // A body continued with '\' goes on over the next lines.
+        for (int next = n + 1; !text.empty() && text.back() == '\\' && next <= view.lineCount(); ++next)
+            text.back() = ' ', text.append(view.line(next));
+        std::smatch m;
+        if (!std::regex_match(text, m, define)) continue;
+        MacroDefinition& macro = macros[m[1].str()];
+        macro.line = n;
+        const std::string body = m[3].str();
+        for (std::sregex_iterator it(body.begin(), body.end(), word), end; it != end; ++it) macro.uses.push_back(it->str());
+    }
+    return macros;
+}
+
+// The chain of macros through which `name`'s body comes back to `name` ("LOOP_A" alone for
+// `#define LOOP_A LOOP_A`), or empty when it does not. The preprocessor leaves a macro's own name
+// in its expansion as it is, so the compiler then meets that name as an undeclared one.
+std::vector<std::string> selfReference(const std::map<std::string, MacroDefinition>& macros, const std::string& name) {
+    std::vector<std::string> chain{name};
+    std::set<std::string> seen{name};
+    std::function<bool(const std::string&)> reaches = [&](const std::string& from) {
+        auto it = macros.find(from);
+        if (it == macros.end()) return false;
+        for (const std::string& used : it->second.uses) {
+            if (used == name) return true;
+            if (!macros.count(used) || !seen.insert(used).second) continue;
+            chain.push_back(used);
+            if (reaches(used)) return true;
+            chain.pop_back();
+        }
+        return false;
+    };
+    return reaches(name) ? chain : std::vector<std::string>{};
+}
+
+// Macro names are written in capitals by convention and variables are not: a near miss is only
+// looked for among names of its own style (and the built-in names), so that a misspelt macro is
+// never offered a local variable that only matches with case ignored, nor the reverse.
+bool capitalsOnly(std::string_view name) {
+    bool letter = false;
+    for (char c : name) {
+        if (c >= 'a' && c <= 'z') return false;
+        letter = letter || (c >= 'A' && c <= 'Z');
+    }
+    return letter;
 }
 
 // Mesa lists each candidate of a failed overload as a message of its own after "candidates are:".
@@ -141,7 +220,9 @@ struct Explained {
 
 class Explainer {
 public:
-    Explainer(const SourceView& view, const std::vector<std::string>& names) : view_(view), names_(names) {}
+    Explainer(const SourceView& view, const std::vector<std::string>& names,
+              const std::map<std::string, MacroDefinition>& macros, std::string pass)
+        : view_(view), names_(names), macros_(macros), pass_(std::move(pass)) {}
 
     Explained explain(const Diagnostic& d) const {
         Explained e{d.column > 0 ? view_.fromCompilerPosition(d.line, d.column) : SourcePosition{d.line, 0}, d.message};
@@ -199,6 +280,19 @@ private:
                         ": " + original + ")";
             return;
         }
+        // A ';' missing before a '}' on the same line ("x = 1.0 }"): noticed at the '}'.
+        if (unexpected == "'}'" && expecting.find("';'") != std::string::npos) {
+            const std::string_view text = view_.line(e.at.line);
+            int before = std::min(e.at.column - 1, static_cast<int>(text.size()));
+            while (before >= 1 && (text[before - 1] == ' ' || text[before - 1] == '\t' || view_.inComment(e.at.line, before)))
+                --before;
+            if (before >= 1 && endsLikeAStatement(text, before)) {
+                e.at.column = before + 1;
+                e.width = 1;
+                e.message = "';' missing here, before the '}' that closes the block (" + original + ")";
+                return;
+            }
+        }
         if ((unexpected == "';'" || unexpected == "'{'") && expecting.find("')'") != std::string::npos) {
             e.message = "a ')' is missing before this " + unexpected + " (" + original + ")";
             return;
@@ -230,6 +324,9 @@ private:
             if (name == "iGlobalTime") e.message += " (Shadertoy renamed iGlobalTime to iTime)";
             else if (name == "gl_FragColor")
                 e.message += " (a Shadertoy pass writes its colour to mainImage's first parameter, out vec4 fragColor)";
+            else if (macros_.count(name)) e.message += macroExplanation(name, e.at.line);
+            else if ((name == "fragColor" || name == "fragCoord") && !view_.functionDefinitionLines("main").empty())
+                e.message += " (" + name + " is a parameter of mainImage, which this pass does not define)";
             else e.message += suggestion(name);
         } else if (original.rfind("no function with name", 0) == 0 && !name.empty()) {
             const std::vector<int> defined = view_.functionDefinitionLines(name);
@@ -239,6 +336,17 @@ private:
             else if (std::optional<std::string> now = renamedFunction(name))
                 e.message += " (GLSL ES 3.00, which Shadertoy uses, calls it " + *now + ")";
             else e.message += suggestion(name);
+        } else if (name == "main" && original.find("redefined") != std::string::npos) {
+            // A glslsandbox or plain-GLSL shader: the host's main() calls the pass's entry point.
+            const EntryPoint entry = entryPointOf(pass_);
+            e.message = "a Shadertoy pass defines " + std::string(entry.name) + ", not main: the host's own main() calls " +
+                        entry.name + "; write `" + entry.declaration + "' instead of `void main()'" +
+                        (std::string_view(entry.name) == "mainImage"
+                             ? ", assign the colour to fragColor instead of gl_FragColor and use fragCoord for "
+                               "gl_FragCoord.xy (glslsandbox's time, resolution and mouse are iTime, "
+                               "iResolution.xy and iMouse)"
+                             : "") +
+                        " (" + original + ")";
         } else if (original.rfind("illegal use of reserved word", 0) == 0 && !name.empty()) {
             e.message += " (`" + name + "' is reserved in GLSL ES 3.00: give it another name)";
         } else if (std::regex_search(original, intToFloat)) {
@@ -249,13 +357,69 @@ private:
     }
 
     std::string suggestion(const std::string& name) const {
-        std::optional<std::string> match = closestMatch(name, names_);
+        std::vector<std::string> sameStyle;
+        for (const std::string& candidate : names_)
+            if (capitalsOnly(candidate) == capitalsOnly(name)) sameStyle.push_back(candidate);
+        std::optional<std::string> match = closestMatch(name, sameStyle);
         return match ? " (did you mean `" + *match + "'?)" : "";
+    }
+
+    // An undeclared name that is a macro of the user's: one that refers to itself, or one used
+    // above its #define.
+    std::string macroExplanation(const std::string& name, int usedOn) const {
+        const MacroDefinition& macro = macros_.at(name);
+        const std::vector<std::string> chain = selfReference(macros_, name);
+        if (!chain.empty()) {
+            std::string through;
+            for (std::size_t i = 1; i < chain.size(); ++i) through += (i > 1 ? ", then `" : " through `") + chain[i] + "'";
+            return " (the macro `" + name + "' defined on line " + std::to_string(macro.line) + " refers to itself" +
+                   through + ": the preprocessor leaves a macro's own name in its expansion, so the compiler meets `" +
+                   name + "' as a name nothing declares)";
+        }
+        if (macro.line > usedOn)
+            return " (`" + name + "' is a macro defined on line " + std::to_string(macro.line) +
+                   ", below this use: a #define applies only to the lines after it)";
+        return "";
     }
 
     const SourceView& view_;
     const std::vector<std::string>& names_;
+    const std::map<std::string, MacroDefinition>& macros_;
+    std::string pass_;
 };
+
+// The linker's "unresolved reference to function `mainImage'": the pass does not define its entry
+// point as Shadertoy declares it. Said with the declaration expected and, when the pass defines
+// a near miss (a function of that name with other parameters, `mainimage`, `mainImg`), where.
+void explainMissingEntryPoint(Diagnostic& d, const std::vector<CompileSource>& sources,
+                              const std::vector<std::unique_ptr<SourceView>>& views) {
+    const EntryPoint entry = entryPointOf(d.pass);
+    if (d.message.find("unresolved reference to function `" + std::string(entry.name) + "'") == std::string::npos) return;
+    std::string original = d.message;
+    if (original.rfind("error: ", 0) == 0) original.erase(0, 7);
+    d.message = "no `" + std::string(entry.declaration) + "' in this pass";
+    for (std::size_t s = 0; s < sources.size(); ++s) {
+        const SourceView& view = *views[s];
+        if (view.hasLineDirective()) continue;
+        std::vector<std::string> defined;
+        for (const std::string& word : view.identifiers())
+            if (!view.functionDefinitionLines(word).empty()) defined.push_back(word);
+        std::string nearMiss;
+        if (std::find(defined.begin(), defined.end(), entry.name) != defined.end()) nearMiss = entry.name;
+        else if (std::optional<std::string> match = closestMatch(entry.name, defined)) nearMiss = *match;
+        if (nearMiss.empty()) continue;
+        const int line = view.functionDefinitionLines(nearMiss).front();
+        d.file = sources[s].file;
+        d.line = line;
+        d.column = std::max(1, view.nearestWord(line, nearMiss, 1));
+        d.message += nearMiss == entry.name
+                         ? ": the `" + nearMiss + "' defined here has other parameters"
+                         : ": did you mean this `" + nearMiss + "'? (names are case-sensitive)";
+        d.excerpt = formatExcerpt(view.line(line), line, d.column, static_cast<int>(nearMiss.size()));
+        break;
+    }
+    d.message += " (link: " + original + ")";
+}
 
 }  // namespace
 
@@ -271,7 +435,7 @@ std::vector<Diagnostic> explainCompileProblems(std::vector<Diagnostic> problems,
             // The expression Mesa complains about starts on its line and holds the unknown name,
             // on that line or a few below (an expression written over several lines).
             const bool afterUnknownName = isCascade(d) && std::any_of(kept.begin(), kept.end(), [&](const Diagnostic& k) {
-                return isUnknownName(k) && k.file == d.file && k.line >= d.line && k.line - d.line <= 10;
+                return isCascadeRoot(k) && k.file == d.file && k.line >= d.line && k.line - d.line <= 10;
             });
             if (isFollowOn(d) || afterUnknownName) continue;
             if (!isError(d) && d.message.find("used uninitialized") != std::string::npos) continue;
@@ -293,12 +457,17 @@ std::vector<Diagnostic> explainCompileProblems(std::vector<Diagnostic> problems,
         for (std::string& word : views.back()->identifiers())
             if (!unknown.count(word)) names.push_back(std::move(word));
     }
+    std::vector<std::map<std::string, MacroDefinition>> macros;
+    for (const std::unique_ptr<SourceView>& view : views) macros.push_back(macroDefinitions(*view));
     for (Diagnostic& d : problems) {
-        if (d.line <= 0) continue;
+        if (d.line <= 0) {
+            explainMissingEntryPoint(d, sources, views);
+            continue;
+        }
         for (std::size_t s = 0; s < sources.size(); ++s) {
             const SourceView& view = *views[s];
             if (sources[s].file != d.file || view.hasLineDirective() || d.line > view.lineCount()) continue;
-            const Explained e = Explainer(view, names).explain(d);
+            const Explained e = Explainer(view, names, macros[s], d.pass).explain(d);
             d.line = e.at.line;
             d.column = e.at.column;
             d.message = e.message;

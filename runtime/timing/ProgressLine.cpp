@@ -37,21 +37,3 @@ std::string formatProgressLine(const RunProgress& p) {
 }
 
 }  // namespace toyhost
-
-namespace toyhost {
-
-std::string formatWindowTitle(const WindowTitle& t) {
-    std::string title = t.name.empty() ? std::string("toyhost") : t.name;
-    if (t.shownFrame >= 0) {
-        char text[96];
-        std::snprintf(text, sizeof text, " | %s fps | iFrame %d | iTime %.2f",
-                      t.frameRate ? std::to_string(static_cast<long long>(std::lround(*t.frameRate))).c_str() : "--",
-                      t.shownFrame, t.time);
-        title += text;
-    }
-    if (t.paused) title += " | paused (F6)";
-    if (!t.problem.empty()) title += " | " + t.problem;
-    return title;
-}
-
-}  // namespace toyhost

@@ -1,6 +1,6 @@
 // ProgressLine: the one-line progress text of a run ("frame 120/600  5.3 fps  ETA 1:30
-// 12.4 MiB written") and a window's title. Formatting only; the CLI and the window driver decide
-// when and where to show them. No GL needed.
+// 12.4 MiB written"; a window's title is timing/WindowTitle.h). Formatting only; the CLI decides
+// when and where to show it. No GL needed.
 #pragma once
 
 #include <cstdint>
@@ -22,20 +22,6 @@ struct RunProgress {
 };
 
 std::string formatProgressLine(const RunProgress& progress);
-
-// What a window's title shows: the shadertoy, the measured frame rate (empty: not measured yet),
-// iFrame and iTime of the shown frame (shownFrame < 0: none yet), "paused", and the current
-// problem ("" when none): "name | 59 fps | iFrame 120 | iTime 2.00 | paused (F6) | problem".
-struct WindowTitle {
-    std::string name;
-    std::optional<double> frameRate;
-    int shownFrame = -1;
-    double time = 0;
-    bool paused = false;
-    std::string problem;
-};
-std::string formatWindowTitle(const WindowTitle& title);
-
 
 // "0:07", "12:34", "1:02:03"; rounds to whole seconds.
 std::string formatDuration(double seconds);

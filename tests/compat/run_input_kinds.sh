@@ -19,7 +19,14 @@ for id in "${ids[@]}"; do
   ln -s "$wild/$id.json" "$out/exports/$id.json"
 done
 "$compat" "$out/exports" --size 160x90 --frames 10 --min-pass-rate 1 \
-  --markdown "$out/input-kinds.md" --json "$out/input-kinds.json" || {
+  --markdown "$out/input-kinds.md" --json "$out/input-kinds.json" 2> "$out/stderr.txt" || {
+  cat "$out/stderr.txt" >&2
   echo "a shader of a new input kind did not pass; see $out/input-kinds.md"
+  exit 1
+}
+cat "$out/stderr.txt" >&2
+# The lines on stderr say what their "other" column is (issue 27).
+grep -q '"other" (the share of the last judged frame' "$out/stderr.txt" || {
+  echo "toyhost-compat's per-shader lines do not explain their \"other\" column"
   exit 1
 }

@@ -125,5 +125,18 @@ TEST_F(CompileMessages, AnExportsPassGetsItsExcerpt) {
               "      |              ^~~~~~~~~~~\n");
 }
 
+// Issue 27: the linker's "unresolved reference to function `mainImage'" had no line and no hint.
+TEST_F(CompileMessages, AMisspeltMainImageNamesThePassTheDeclarationAndTheNearMiss) {
+    const std::string output = run({{"manifest.json", R"({"passes": {"Buffer A": {"source": "a.glsl"}, "Image": {"source": "image.glsl", "channels": [{"buffer": "A"}]}}})"},
+                                    {"a.glsl", "void mainImg(out vec4 fragColor, in vec2 fragCoord) { fragColor = vec4(1.0); }\n"},
+                                    {"image.glsl", "void mainImage(out vec4 fragColor, in vec2 fragCoord) { fragColor = texture(iChannel0, fragCoord); }\n"}});
+    EXPECT_EQ(output,
+              "toyhost: @D/a.glsl:1:6: error: Buffer A: no `void mainImage(out vec4 fragColor, in vec2 fragCoord)' in "
+              "this pass: did you mean this `mainImg'? (names are case-sensitive) (link: unresolved reference to "
+              "function `mainImage') [shader.link]\n"
+              "    1 | void mainImg(out vec4 fragColor, in vec2 fragCoord) { fragColor = vec4(1.0); }\n"
+              "      |      ^~~~~~~\n");
+}
+
 }  // namespace
 }  // namespace toyhost::testing

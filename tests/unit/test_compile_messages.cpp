@@ -320,3 +320,137 @@ TEST(SourceView, ExcerptsKeepTabsAndCutLongLines) {
     const std::size_t zz = excerpt.find("zz") + 1;
     EXPECT_EQ(caret, zz) << excerpt;
 }
+
+// ---- issue 27: entry points, a ';' before '}', macros that refer to themselves ----------------
+
+// Mesa's linker names the missing function with no position; the pass's near miss is the place.
+TEST(CompileMessages, AMisspeltMainImageIsNamedWithTheDeclarationExpected) {
+    const std::string code = "void mainimage(out vec4 fragColor, in vec2 fragCoord) { fragColor = vec4(1.0); }\n";
+    EXPECT_EQ(text(explain("error: unresolved reference to function `mainImage'\n", code)),
+              "toyhost: /toy/image.glsl:1:6: error: Image: no `void mainImage(out vec4 fragColor, in vec2 fragCoord)' "
+              "in this pass: did you mean this `mainimage'? (names are case-sensitive) (link: unresolved reference to "
+              "function `mainImage') [shader.compile]\n"
+              "    1 | void mainimage(out vec4 fragColor, in vec2 fragCoord) { fragColor = vec4(1.0); }\n"
+              "      |      ^~~~~~~~~");
+    const std::string shortened = "void mainImg(out vec4 fragColor, in vec2 fragCoord) { fragColor = vec4(1.0); }\n";
+    EXPECT_NE(text(explain("error: unresolved reference to function `mainImage'\n", shortened)).find("did you mean this `mainImg'"),
+              std::string::npos);
+}
+
+TEST(CompileMessages, AMainImageWithOtherParametersIsPointedAt) {
+    const std::string code = "void mainImage(out vec4 fragColor) { fragColor = vec4(1.0); }\n";
+    const std::vector<Diagnostic> problems = explain("error: unresolved reference to function `mainImage'\n", code);
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0].line, 1);
+    EXPECT_EQ(problems[0].column, 6);
+    EXPECT_EQ(problems[0].message,
+              "no `void mainImage(out vec4 fragColor, in vec2 fragCoord)' in this pass: the `mainImage' defined here "
+              "has other parameters (link: unresolved reference to function `mainImage')");
+}
+
+TEST(CompileMessages, NoNearMissStillSaysWhatThePassLacks) {
+    const std::vector<Diagnostic> problems =
+        explain("error: unresolved reference to function `mainImage'\n", "float helper(float x) { return x; }\n");
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0].line, 0);
+    EXPECT_EQ(problems[0].message, "no `void mainImage(out vec4 fragColor, in vec2 fragCoord)' in this pass (link: "
+                                   "unresolved reference to function `mainImage')");
+}
+
+TEST(CompileMessages, AGlslSandboxMainSaysWhatToWriteInstead) {
+    const std::string code = "#ifdef GL_ES\nprecision mediump float;\n#endif\nuniform float time;\n"
+                             "uniform vec2 resolution;\nvoid main(void) {\n"
+                             "    vec2 p = gl_FragCoord.xy / resolution;\n"
+                             "    gl_FragColor = vec4(p, sin(time), 1.0);\n}\n";
+    const std::vector<Diagnostic> problems = explain("0:6(6): error: function `main' redefined\n"
+                                                     "0:8(2): error: `gl_FragColor' undeclared\n"
+                                                     "0:8(2): error: value of type vec4 cannot be assigned to variable of type error\n",
+                                                     code);
+    ASSERT_EQ(problems.size(), 2u);
+    EXPECT_EQ(problems[0].line, 6);
+    EXPECT_EQ(problems[0].message.rfind("a Shadertoy pass defines mainImage, not main: ", 0), 0u) << problems[0].message;
+    EXPECT_NE(problems[0].message.find("write `void mainImage(out vec4 fragColor, in vec2 fragCoord)' instead of `void main()'"),
+              std::string::npos);
+    EXPECT_NE(problems[0].message.find("(function `main' redefined)"), std::string::npos);
+    EXPECT_EQ(problems[1].line, 8);
+}
+
+TEST(CompileMessages, ASemicolonMissingBeforeABraceOnTheSameLine) {
+    const std::string code = "void mainImage(out vec4 fragColor, in vec2 fragCoord) { fragColor = vec4(1.0) }\n";
+    EXPECT_EQ(text(explain("0:1(79): error: syntax error, unexpected '}', expecting ',' or ';'\n", code)),
+              "toyhost: /toy/image.glsl:1:78: error: Image: ';' missing here, before the '}' that closes the block "
+              "(syntax error, unexpected '}', expecting ',' or ';') [shader.compile]\n"
+              "    1 | void mainImage(out vec4 fragColor, in vec2 fragCoord) { fragColor = vec4(1.0) }\n"
+              "      |                                                                              ^");
+}
+
+TEST(CompileMessages, AMacroThatExpandsToItselfIsSaidToReferToItself) {
+    const std::string code = "#define LOOP_A LOOP_A\n"
+                             "void mainImage(out vec4 fragColor, in vec2 fragCoord) { float x = LOOP_A; fragColor = vec4(x); }\n";
+    const std::vector<Diagnostic> problems =
+        explain("0:2(67): error: `LOOP_A' undeclared\n0:2(92): warning: `x' used uninitialized\n", code);
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0].message,
+              "`LOOP_A' undeclared (the macro `LOOP_A' defined on line 1 refers to itself: the preprocessor leaves a "
+              "macro's own name in its expansion, so the compiler meets `LOOP_A' as a name nothing declares)");
+    // Through another macro.
+    const std::string twoMacros = "#define A B\n#define B A\n"
+                                  "void mainImage(out vec4 fragColor, in vec2 fragCoord) { float x = A; fragColor = vec4(x); }\n";
+    const std::vector<Diagnostic> cycle =
+        explain("0:3(67): error: `A' undeclared\n0:3(87): warning: `x' used uninitialized\n", twoMacros);
+    ASSERT_EQ(cycle.size(), 1u);
+    EXPECT_NE(cycle[0].message.find("the macro `A' defined on line 1 refers to itself through `B'"), std::string::npos)
+        << cycle[0].message;
+}
+
+// A misspelt macro is never offered the local variable that only matches with case ignored; a
+// misspelt variable is offered the variable, not the macro.
+TEST(CompileMessages, MacroNamesAndVariablesAreSuggestedEachForTheirOwnKind) {
+    const std::string misspeltMacro = "#define LOOP_COUNT 4\n"
+                                      "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                                      "    float loop_cnt = 2.0;\n"
+                                      "    float x = loop_cnt * float(LOOP_CNT);\n"
+                                      "    fragColor = vec4(x);\n"
+                                      "}\n";
+    const std::vector<Diagnostic> macro = explain("0:4(29): error: `LOOP_CNT' undeclared\n"
+                                                  "0:4(23): error: cannot construct `float' from a non-numeric data type\n"
+                                                  "0:4(12): error: operands to arithmetic operators must be numeric\n"
+                                                  "0:5(19): warning: `x' used uninitialized\n",
+                                                  misspeltMacro);
+    ASSERT_EQ(macro.size(), 1u);
+    EXPECT_EQ(macro[0].message, "`LOOP_CNT' undeclared (did you mean `LOOP_COUNT'?)");
+    const std::string misspeltVariable = "#define LOOP_CNT 4\n"
+                                         "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                                         "    float loop_count = 2.0;\n"
+                                         "    float x = loop_cnt * float(LOOP_CNT);\n"
+                                         "    fragColor = vec4(x);\n"
+                                         "}\n";
+    const std::vector<Diagnostic> variable = explain("0:4(12): error: `loop_cnt' undeclared\n"
+                                                     "0:4(12): error: operands to arithmetic operators must be numeric\n"
+                                                     "0:5(19): warning: `x' used uninitialized\n",
+                                                     misspeltVariable);
+    ASSERT_EQ(variable.size(), 1u);
+    EXPECT_EQ(variable[0].message, "`loop_cnt' undeclared (did you mean `loop_count'?)");
+}
+
+// docs/running.md: errors that only follow from an earlier one are left out. A swizzle a vector
+// does not have makes the constructor around it fail twice more.
+TEST(CompileMessages, AWrongSwizzleIsOneErrorWithoutItsFollowOns) {
+    const std::string code = "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                             "  vec2 a = fragCoord;\n"
+                             "  vec4 c = vec4(a.xyz, 1.0);\n"
+                             "  fragColor = c * 2.0;\n"
+                             "  float k = c.x + c.y;\n"
+                             "  fragColor += vec4(k);\n"
+                             "}\n";
+    const std::vector<Diagnostic> problems = explain("0:3(16): error: invalid swizzle / mask `xyz'\n"
+                                                     "0:3(16): error: type mismatch\n"
+                                                     "0:3(11): error: cannot construct `vec4' from a non-numeric data type\n"
+                                                     "0:4(14): warning: `c' used uninitialized\n"
+                                                     "0:5(12): warning: `c' used uninitialized\n"
+                                                     "0:5(18): warning: `c' used uninitialized\n",
+                                                     code);
+    ASSERT_EQ(problems.size(), 1u) << text(problems);
+    EXPECT_EQ(problems[0].message, "invalid swizzle / mask `xyz'");
+    EXPECT_EQ(problems[0].line, 3);
+}

@@ -187,11 +187,3 @@ TEST(RealTimeClock, DateIsTheGivenWallClock) {
     ASSERT_TRUE(wall.ok());
     EXPECT_EQ(clock.frame(0.0, *wall).date, glm::vec4(2026, 10, 22, 36030));
 }
-
-TEST(WindowTitle, SaysTheMeasuredRateTheShownFrameAndTheState) {
-    EXPECT_EQ(formatWindowTitle({"ocean", std::nullopt, -1, 0, false, ""}), "ocean");
-    EXPECT_EQ(formatWindowTitle({"ocean", std::nullopt, 0, 0, false, ""}), "ocean | -- fps | iFrame 0 | iTime 0.00");
-    EXPECT_EQ(formatWindowTitle({"ocean", 0.8, 12, 15.0, true, ""}), "ocean | 1 fps | iFrame 12 | iTime 15.00 | paused (F6)");
-    EXPECT_EQ(formatWindowTitle({"", 59.6, 3, 0.05, false, "image.glsl:3:1: error: x"}),
-              "toyhost | 60 fps | iFrame 3 | iTime 0.05 | image.glsl:3:1: error: x");
-}

@@ -321,6 +321,12 @@ int main(int argc, char** argv) {
     }
     std::sort(results.begin(), results.end(), [](const ProbeResult& a, const ProbeResult& b) { return a.file < b.file; });
     for (const ProbeResult& r : results) all.push_back(toJson(r));
+    if (!files.empty())
+        std::fprintf(stderr,
+                     "toyhost-compat: one line per shader: id, pass/FAIL, CPU ms per frame, \"other\" (the share of the "
+                     "last judged frame's pixels that differ from its dominant colour by more than %d/255 in a "
+                     "channel; under %g%% and unchanging is degenerate), the output verdict\n",
+                     kColourTolerance, 100 * settings.minOtherShare);
     for (const fs::path& file : files) {
         ProbeResult r = probeInChild(file, settings, timeout);
         const std::string effect = standInEffectText(r);

@@ -64,11 +64,15 @@ void ConsoleObserver::summary(const SessionReport& report) {
 }
 
 void ConsoleObserver::roundFinished(const Result<SessionReport>& round) {
-    if (round) summary(*round);
+    // The first round's summary says where and how it ran; later rounds (the reload's notice
+    // before them) take one line.
+    const bool first = rounds_++ == 0;
+    if (round && first) summary(*round);
     std::lock_guard lock(mutex_);
     clearProgress();
     if (!round) printError(round.error());
-    std::cerr << "toyhost: watching the shadertoy's files; Ctrl-C ends\n";
+    if (round && !first) std::cerr << "toyhost: " << watchRoundLine(*round) << "; watching the shadertoy's files (Ctrl-C ends)\n";
+    else std::cerr << "toyhost: watching the shadertoy's files; Ctrl-C ends\n";
 }
 
 void ConsoleObserver::notice(const Diagnostic& notice) {

@@ -53,6 +53,7 @@ private:
     bool quiet_;
     bool show_;
     bool shown_ = false;
+    int rounds_ = 0;  // --watch rounds finished
     std::chrono::steady_clock::time_point lastShown_;
 };
 

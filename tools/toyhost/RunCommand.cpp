@@ -86,6 +86,9 @@ void RunCommand::define(CLI::App& run) {
     run.add_flag("--watch", watch_,
                  "Headless: render the frames again whenever a file of the shadertoy changes, until Ctrl-C");
     flags_.define(run, SessionFlags::All);
+    run.add_flag("--unpaced", unpaced_,
+                 "Window with --fps F: draw frames as fast as the display allows (no vsync) instead of F per second "
+                 "of wall time; iTime still advances 1/F per frame, so the preview runs faster than the recording");
     sampling_.define(run);
     run.add_option("--frames", frames_,
                    "Frames to render (default " + std::to_string(defaults::kFrames) + "; in a window: until closed)");
@@ -216,8 +219,12 @@ int RunCommand::execute(const GlProcess& process) {
     if (windowMode && watch_) return usage("--watch is for headless runs; a window always reloads changed files");
     if (windowMode && o.outPattern && *o.outPattern == "-")
         return usage("--out - (raw frames on stdout) is for headless runs");
+    if (unpaced_ && !windowMode) return usage("--unpaced is for a window: headless runs are never paced");
+    if (unpaced_ && !o.settings.fps)
+        return usage("--unpaced goes with --fps: without it a window runs in real time, one frame per display refresh");
     o.interactive = windowMode;
     o.watch = watch_;
+    o.unpaced = unpaced_;
 
     // A window's events are handled on this (the main) thread and it renders on a GL thread of its
     // own; headless runs render on a GL thread.

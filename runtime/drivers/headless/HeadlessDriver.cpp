@@ -20,14 +20,6 @@ void HeadlessDriver::restart() { timeline_.restart(); }
 
 namespace {
 
-Diagnostic watchNotice(std::string message) {
-    Diagnostic d;
-    d.severity = Severity::Notice;
-    d.code = Code::WatchChanged;
-    d.message = std::move(message);
-    return d;
-}
-
 // --watch: the run's frames, then after every change of the shadertoy's files the frames again
 // from frame 0 with what changed rebuilt, until a stop. A round's files are complete before the
 // next begins.
@@ -35,7 +27,6 @@ Result<SessionReport> runWatchRounds(SessionCore& session, HeadlessDriver& drive
                                      SessionObserver& observer, Watchdog* watchdog) {
     Result<SessionReport> round = session.run(driver);
     auto stop = [&] { return session.stopRequested(); };
-    const SessionPlan& plan = session.plan();
     while (true) {
         if (!round && round.error().category() == Category::Interrupted) return round;
         observer.roundFinished(round);
@@ -51,15 +42,11 @@ Result<SessionReport> runWatchRounds(SessionCore& session, HeadlessDriver& drive
         }
         session.beginNextRound();  // the start-up of the next round: reloading and recompiling
         ReloadOutcome outcome = session.reload(std::move(change->files), std::move(change->plan));
+        // The reload's notice said what changed and whether the frames are rendered again.
         if (!session.running() || (!outcome.applied && !outcome.problems.empty())) {
-            observer.notice(watchNotice("no frames written: the shadertoy as it is now does not run; the files of the "
-                                        "last good round stay"));
             round = Error(outcome.problems.empty() ? session.problems() : outcome.problems);
             continue;
         }
-        if (plan.end > plan.first)
-            observer.notice(watchNotice("rendering " + std::to_string(plan.end - plan.first) + " frame" +
-                                        (plan.end - plan.first == 1 ? "" : "s") + " again"));
         session.restart();
         driver.restart();
         round = session.run(driver);

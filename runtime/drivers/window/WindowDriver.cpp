@@ -14,8 +14,9 @@
 #include "session/ShadertoyWatcher.h"
 #include "session/AllProblems.h"
 #include "timing/FrameClock.h"
-#include "timing/ProgressLine.h"
+#include "timing/FramePacer.h"
 #include "timing/RealTimeClock.h"
+#include "timing/WindowTitle.h"
 
 namespace toyhost {
 
@@ -52,8 +53,13 @@ public:
         if (events_.takeControl(Control::Restart)) {
             s.restart();
             clock_.restart(now);  // while paused, the restarted frame is still shown
+            if (pacer_) pacer_->reset();
         }
-        if (events_.takeControl(Control::Pause)) clock_.setPaused(!clock_.paused(), now);
+        if (events_.takeControl(Control::Pause)) {
+            clock_.setPaused(!clock_.paused(), now);
+            shownRate_.setPaused(clock_.paused(), now);
+            if (pacer_) pacer_->reset();
+        }
         if (events_.takeControl(Control::Step)) clock_.stepOnce();
         if (events_.takeControl(Control::Screenshot))
             if (Status shot = screenshot(s); !shot) observer_.notice(shot.error().first());
@@ -71,8 +77,19 @@ public:
         // Input while paused makes the site paint one frame at the paused time.
         if (clock_.paused() && events_.hasEvents()) clock_.forceFrame();
         if (!clock_.shouldRender()) return std::nullopt;
+        if (pacer_ && !clock_.paused()) {
+            // --fps F: F frames per second of wall time. Input or a control ends the wait early;
+            // the frame then comes at its time on a later call.
+            if (const double wait = pacer_->wait(monotonicNow()); wait > 0) {
+                events_.waitForInput(wait);
+                if (pacer_->wait(monotonicNow()) > 0) return std::nullopt;
+            }
+            pacer_->drawn(monotonicNow());
+        }
         events_.takeEvents(events);
-        return clock_.frame(monotonicNow(), localWallClockNow());
+        const double now = monotonicNow();
+        shownRate_.frame(now);
+        return clock_.frame(now, localWallClockNow());
     }
 
     void present(SessionCore& s) override {
@@ -121,9 +138,8 @@ private:
         if (paused == titlePaused_ && now - titleShownAt_ < 0.25) return;
         titlePaused_ = paused;
         titleShownAt_ = now;
-        events_.setTitle(formatWindowTitle({s.name(), clock_.measuredFrameRate(), s.running() ? s.frame() - 1 : -1,
-                                            clock_.time(), paused,
-                                            s.problems().empty() ? "" : formatDiagnostic(s.problems().front())}));
+        events_.setTitle({s.name(), shownRate_.rate(), s.running() ? s.frame() - 1 : -1, clock_.time(), paused,
+                          s.problems().empty() ? "" : formatDiagnostic(s.problems().front())});
     }
 
     // F12: the shown frame as NAME-YYYYMMDD-HHMMSS-frameN.png in --out's folder or the working
@@ -202,6 +218,9 @@ private:
     BackgroundWriter writer_;
     SessionObserver& observer_;
     RealTimeClock clock_;
+    ShownFrameRate shownRate_{monotonicNow()};
+    std::optional<FramePacer> pacer_ =
+        o_.settings.fps && !o_.unpaced ? std::optional<FramePacer>(*o_.settings.fps) : std::nullopt;
     GlSurface::Size framebuffer_;
     std::unique_ptr<Overlay> overlay_;  // none until needed, or when it cannot be made (said once)
     bool overlayFailed_ = false;
@@ -227,7 +246,10 @@ Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& 
     std::atomic<bool> done{false};
     std::optional<Result<SessionReport>> result;
     WindowEvents events(**window, [&] {
-        if (watchdog) watchdog->requestStop(StopReason::Quit);  // the grace period starts now
+        if (!watchdog) return;
+        // The first close starts the grace period; a second one while stopping ends at once.
+        if (watchdog->stopRequested()) watchdog->quitAgain();
+        else watchdog->requestStop(StopReason::Quit);
     });
     GlThread gl([&] {
         if (!prepared->options.outPattern) {  // the canvas is the framebuffer, in pixels
@@ -238,7 +260,7 @@ Result<SessionReport> runWindow(const SessionOptions& options, SessionObserver& 
         {
             Result<std::unique_ptr<SessionCore>> session = SessionCore::start(std::move(*prepared), *window, observer, watchdog);
             if (session) {
-                (void)(*window)->setSwapInterval(1);
+                (void)(*window)->setSwapInterval((*session)->plan().options.unpaced ? 0 : 1);
                 WindowDriver driver(**window, events, (*session)->plan(), watcher, observer);
                 result = (*session)->run(driver);
                 driver.finishScreenshots();

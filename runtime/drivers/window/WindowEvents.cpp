@@ -130,8 +130,15 @@ void WindowEvents::pump(double seconds) {
         std::lock_guard lock(mutex_);
         framebuffer_ = fb;
         windowSize_ = win;
-        if (window_.closeRequested() && !quit_) quit_ = quitNow = true;
-        if (title_ != shownTitle_) title = shownTitle_ = title_;
+        if (window_.closeRequested()) {
+            quit_ = quitNow = true;
+            glfwSetWindowShouldClose(window_.handle(), GLFW_FALSE);  // so that a second Esc or click is seen
+        }
+        if (titleSet_ || quit_) {
+            WindowTitle shown = title_;
+            shown.stopping = quit_;
+            if (std::string text = formatWindowTitle(shown); text != shownTitle_) title = shownTitle_ = std::move(text);
+        }
     }
     if (!title.empty()) window_.setTitle(title);
     if (quitNow) {
@@ -174,11 +181,12 @@ void WindowEvents::setCanvasSize(int width, int height) {
     canvasH_ = height;
 }
 
-void WindowEvents::setTitle(std::string title) {
+void WindowEvents::setTitle(WindowTitle title) {
     {
         std::lock_guard lock(mutex_);
-        if (title == title_) return;
+        if (titleSet_ && title == title_) return;
         title_ = std::move(title);
+        titleSet_ = true;
     }
     wake();
 }

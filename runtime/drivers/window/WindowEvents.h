@@ -19,13 +19,15 @@
 #include "drivers/window/WindowContext.h"
 #include "input/InputEvent.h"
 #include "input/WindowControls.h"
+#include "timing/WindowTitle.h"
 
 namespace toyhost {
 
 class WindowEvents {
 public:
     // Installs the GLFW callbacks on `window` (main thread). `onQuit` is called on the main thread
-    // when the user closes the window (Esc, Ctrl+Q, the close button).
+    // each time the user closes the window (Esc, Ctrl+Q, the close button): the first asks the run
+    // to stop, a second while it stops asks for at once.
     WindowEvents(WindowContext& window, std::function<void()> onQuit);
     ~WindowEvents();
     WindowEvents(const WindowEvents&) = delete;
@@ -44,9 +46,10 @@ public:
     bool takeControl(Control control);
     bool quitRequested();
     GlSurface::Size framebufferSize();
-    // The canvas size (for the mouse position) and the window title to show.
+    // The canvas size (for the mouse position) and the window title to show (once the user asked
+    // to close, the main thread shows it as stopping).
     void setCanvasSize(int width, int height);
-    void setTitle(std::string title);
+    void setTitle(WindowTitle title);
     // Waits until an event comes in or `seconds` pass.
     void waitForInput(double seconds);
 
@@ -82,7 +85,9 @@ private:
     bool quit_ = false;
     int canvasW_ = 1, canvasH_ = 1;
     GlSurface::Size framebuffer_, windowSize_;
-    std::string title_, shownTitle_;
+    WindowTitle title_;
+    bool titleSet_ = false;
+    std::string shownTitle_;
 };
 
 }  // namespace toyhost
