@@ -1,8 +1,9 @@
-// ripple-pool / Image: a tiled swimming pool seen from straight above.
+// ripple-pool / Image: a tiled swimming pool with a sphere, seen at an angle (default; the
+// 3-D view at the end of this file, its camera in common.glsl), or straight from above (TOP_VIEW).
 //
 // iChannel0 = Buffer D (the height field at the end of the frame, .x = height
 // in cells, linear filtering; common.glsl simulates it).
-// The eye is a wide-angle pinhole above the pool centre (half the pool's short
+// The top view (TOP_VIEW): the eye is a wide-angle pinhole above the pool centre (half the pool's short
 // side up) and the water surface lies in the image plane, so pixel p shows the
 // water at p: where you click is where the ripple appears. Towards the edges the
 // view meets the water up to ~64 degrees from the normal, where Fresnel matters.
