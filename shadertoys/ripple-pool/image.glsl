@@ -31,8 +31,13 @@ const float ALPHA    = 1.0 - 1.0 / 1.333;
 const vec2  DEPTH_M  = vec2(1.1, 3.4); // physical depth, shallow (left) to deep end, metres
 const vec3  SIGMA    = vec3(1.10, 0.26, 0.11);   // absorption per metre
 const vec3  WATER    = vec3(0.02, 0.16, 0.22);   // in-scattered water colour
+#ifdef TOP_VIEW
 const vec3  SUN_DIR  = vec3(0.12, 0.16, 0.98);   // towards the sun (normalised below), high:
                                                  // caustics sit close under their ripples
+#else
+const vec3  SUN_DIR  = vec3(0.60, 0.40, 0.69);   // 3-D view (x right, y to the far side, z up): lower,
+                                                 // beyond the pool, so the sphere's shadow shows
+#endif
 const vec3  SUN_COL  = vec3(1.0, 0.93, 0.82);
 const float WALL_UP  = 4.0 * DEPTH;   // height of the shading wall + deck above the floor
 const float EYE_UP   = 0.5;           // eye height above the water, in canvas heights
@@ -268,7 +273,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
 // (distance from the sphere's centre to that ray, smoothstep across 0.8-1.25 radii). The sphere's
 // under-water part gets its caustic the same way.
 
-const vec3  SPHERE_ALBEDO = vec3(0.78, 0.74, 0.70);
+const vec3  SPHERE_ALBEDO = vec3(0.62, 0.56, 0.50);
 const vec3  DECK = vec3(0.62, 0.58, 0.52);       // stone around the pool
 
 vec3 zUp(vec3 v) { return vec3(v.x, v.z, v.y); } // world (y up) <-> the z-up frame of sky(), SUN_DIR

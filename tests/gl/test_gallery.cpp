@@ -319,9 +319,9 @@ TEST_F(RipplePool, ThreeDViewClickRaisesARingAroundTheClickedWater) {
         for (int x = 0; x < kWidth; ++x) ASSERT_EQ(height(field, x, z), 0.0f) << "a click on the deck dropped at " << x << ", " << z;
 }
 
-// The 3-D view shows the sphere: the calm pool with and without it (--define NO_SPHERE) differs in a
-// compact region around where the sphere projects (its body, its shadow and reflection nearby),
-// and nowhere far from it.
+// The 3-D view shows the sphere: the calm pool with and without it (--define NO_SPHERE) differs in
+// the disc where the sphere projects and in a compact region around it (its shadow on the floor,
+// darker, and its reflection), nowhere far from it.
 TEST(RipplePoolView, ThreeDViewShowsTheSphere) {
     std::optional<Image8> frames[2];
     for (int i = 0; i < 2; ++i) {
@@ -338,28 +338,37 @@ TEST(RipplePoolView, ThreeDViewShowsTheSphere) {
     const double dist = std::hypot(0.62 * 320.0 - camera.eye[0], -0.36 * 180.0 + 45.0 - camera.eye[1],
                                    0.56 * 180.0 - camera.eye[2]);
     const double radius = 45.0 * camera.focal * 180.0 / dist;  // the sphere's radius in pixels, about
-    std::vector<std::pair<int, int>> changed;
+    // Changed pixels (any channel by more than 12 levels); inside the sphere's disc, and beyond it
+    // (its shadow and its reflection), where the sphere's frame is darker or brighter.
+    std::size_t changed = 0, disc = 0, discChanged = 0, near = 0, outsideDarker = 0, outsideBrighter = 0;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
             const std::size_t at = (static_cast<std::size_t>(y) * kWidth + x) * 4;
-            int largest = 0;
-            for (int c = 0; c < 3; ++c) largest = std::max(largest, std::abs(frames[0]->rgba[at + c] - frames[1]->rgba[at + c]));
-            if (largest > 12) changed.emplace_back(x, y);
+            int largest = 0, sum = 0;
+            for (int c = 0; c < 3; ++c) {
+                const int d = frames[0]->rgba[at + c] - frames[1]->rgba[at + c];
+                largest = std::max(largest, std::abs(d));
+                sum += d;
+            }
+            const double r = std::hypot(x + 0.5 - sx, y + 0.5 - sy);
+            if (r <= 0.8 * radius) ++disc;
+            if (largest <= 12) continue;
+            ++changed;
+            if (r <= 0.8 * radius) ++discChanged;
+            if (r <= 2.0 * radius) ++near;
+            if (r > 1.1 * radius) (sum < 0 ? outsideDarker : outsideBrighter)++;
         }
-    double mx = 0, my = 0;
-    for (auto [x, y] : changed) mx += x, my += y;
-    mx /= std::max<std::size_t>(changed.size(), 1);
-    my /= std::max<std::size_t>(changed.size(), 1);
-    std::size_t near = 0;
-    for (auto [x, y] : changed) near += std::hypot(x + 0.5 - sx, y + 0.5 - sy) <= 1.4 * radius;
-    const double share = double(changed.size()) / (kWidth * kHeight);
-    std::printf("sphere projects to (%.1f, %.1f), radius %.1f px; %.1f%% of pixels change, centred (%.1f, %.1f), "
-                "%.1f%% of them within 1.4 radii\n", sx, sy, radius, share * 100.0, mx, my,
-                100.0 * near / std::max<std::size_t>(changed.size(), 1));
-    EXPECT_GT(share, 0.6 * 3.14159 * radius * radius / (kWidth * kHeight)) << "the sphere is not seen";
+    const double share = double(changed) / (kWidth * kHeight);
+    std::printf("sphere projects to (%.1f, %.1f), radius %.1f px; %.1f%% of pixels change, %.1f%% of the disc, "
+                "%.1f%% of them within 2 radii; beyond 1.1 radii %zu darker, %zu brighter\n", sx, sy, radius,
+                share * 100.0, 100.0 * discChanged / std::max<std::size_t>(disc, 1),
+                100.0 * near / std::max<std::size_t>(changed, 1), outsideDarker, outsideBrighter);
+    EXPECT_GT(double(discChanged), 0.9 * disc) << "the sphere is not seen where it projects";
     EXPECT_LT(share, 0.15) << "more than the sphere changes";
-    EXPECT_LT(std::hypot(mx - sx, my - sy), 0.25 * radius) << "the change is not where the sphere projects";
-    EXPECT_GT(double(near), 0.9 * changed.size()) << "the change is not compact";
+    EXPECT_GT(double(near), 0.97 * changed) << "the change is not compact";
+    // its shadow on the floor beside it: the floor it darkens outnumbers what it brightens there
+    EXPECT_GT(outsideDarker, 200u) << "no shadow beside the sphere";
+    EXPECT_GT(outsideDarker, 2 * outsideBrighter) << "no shadow beside the sphere";
 }
 
 // ---------------------------------------------------------------------------------------------
