@@ -59,6 +59,90 @@ const float DRAG_STEP = 6.0;    // a drag adds a full line every DRAG_STEP cells
 // their speed are the same fraction of the picture at any canvas size.
 float gridScale() { return max(1.0, iResolution.y / 180.0); }
 
+// --- The view (shared by the Image and Buffer A's drops, so a click lands on the water it shows) ---
+// Default: an angled 3-D view of the pool. World units are grid cells: the water is the plane
+// y = 0 over x in [0, grid.x], z in [0, grid.y] (cell (i, j) is at x = i, z = j), y is up, the floor
+// at y = -POOL_DEPTH * grid rows. The camera stands beyond the near long side (z < 0), CAM_PITCH
+// down, placed so that the pool (rims included) is centred in the picture and its near rim just
+// fits the width; its position scales with the grid, so the whole pool is in view at any aspect.
+// With TOP_VIEW (--define TOP_VIEW) the Image looks straight down and pixel p is cell p / scale.
+const float POOL_DEPTH = 0.36;     // pool depth, in grid rows
+const float CAM_PITCH  = 0.733;    // radians down from horizontal (42 degrees)
+const vec2  CAM_EYE    = vec2(1.64, -1.22);   // eye height and z, in units of the framing size
+const float CAM_FOCAL  = 1.8;      // focal length in canvas heights (vertical FOV ~31 degrees)
+const float RIM        = 30.0;     // the walls rise this far above the water (cells); a deck there
+
+vec2 poolGrid() { return max(floor(iResolution.xy / gridScale()), vec2(1.0)); }
+
+// The camera: its position and its orthonormal right, up and forward axes.
+void poolCamera(out vec3 eye, out vec3 right, out vec3 up, out vec3 fwd)
+{
+    vec2 g = poolGrid();
+    float aspect = iResolution.x / iResolution.y;
+    float size = max(g.x / aspect, g.y);             // what must fit: the pool's width or depth
+    fwd = vec3(0.0, -sin(CAM_PITCH), cos(CAM_PITCH));
+    right = vec3(1.0, 0.0, 0.0);
+    up = vec3(0.0, cos(CAM_PITCH), sin(CAM_PITCH));
+    eye = vec3(0.5 * g.x, CAM_EYE * size);
+}
+
+// A sphere rests on the pool's floor and breaks the surface (--define NO_SPHERE removes it).
+const float SPHERE_R = 0.25;                     // sphere radius, in grid rows
+vec4 poolSphere()                                 // centre, radius
+{
+    vec2 g = poolGrid();
+    float r = SPHERE_R * g.y;
+    return vec4(0.62 * g.x, -POOL_DEPTH * g.y + r, 0.56 * g.y, r);
+}
+
+// Distance along d (unit) from o to the sphere, or -1 when it is missed (o outside the sphere).
+float sphereHit(vec3 o, vec3 d)
+{
+#ifdef NO_SPHERE
+    return -1.0;
+#else
+    vec4 sp = poolSphere();
+    vec3 oc = o - sp.xyz;
+    float b = dot(oc, d);
+    float c = dot(oc, oc) - sp.w * sp.w;
+    float disc = b * b - c;
+    if (disc < 0.0) return -1.0;
+    float t = -b - sqrt(disc);
+    return t > 1e-3 ? t : -1.0;
+#endif
+}
+
+// The view ray through a pixel (fragCoord in canvas pixels).
+vec3 cameraRay(vec2 fragCoord, out vec3 eye)
+{
+    vec3 right, up, fwd;
+    poolCamera(eye, right, up, fwd);
+    vec2 uv = (fragCoord - 0.5 * iResolution.xy) / iResolution.y;
+    return normalize(fwd * CAM_FOCAL + uv.x * right + uv.y * up);
+}
+
+// The grid cell (in cells, fractional) of the water seen at pixel fragCoord; vec2(-1) where the
+// pixel does not see the water (the ray misses the plane y = 0 inside the pool). Top view: the
+// water is the picture, pixel / scale, never a miss (as before the 3-D view).
+vec2 pixelToCell(vec2 fragCoord)
+{
+#ifdef TOP_VIEW
+    return fragCoord / gridScale();
+#else
+    vec3 eye;
+    vec3 d = cameraRay(fragCoord, eye);
+    if (d.y >= 0.0) return vec2(-1.0);
+    vec3 p = eye + d * (-eye.y / d.y);
+    vec3 rim = eye + d * ((RIM - eye.y) / d.y);    // where it passes the walls' top
+    vec2 g = poolGrid();
+    if (p.x < 0.0 || p.z < 0.0 || p.x >= g.x || p.z >= g.y) return vec2(-1.0);
+    if (rim.x < 0.0 || rim.z < 0.0 || rim.x > g.x || rim.z > g.y) return vec2(-1.0);   // behind a wall
+    float ls = sphereHit(eye, d);
+    if (ls > 0.0 && ls < -eye.y / d.y) return vec2(-1.0);                         // behind the sphere
+    return p.xz;
+#endif
+}
+
 // The tick (step number since iTime = 0) of the last step due by time t. Rounded, so that a time
 // a whole number of steps long is never split by float error.
 int tickAt(float t) { return int(floor(t * SIM_RATE + 0.5)); }
@@ -132,16 +216,18 @@ void rippleSubstep(out vec4 fragColor, vec2 fragCoord, int substep)
         return;
     }
 
-    vec2 mouse = iMouse.xy / scale;                 // the pointer in cells
+    vec2 mouse = pixelToCell(iMouse.xy);            // the water under the pointer, in cells
+    bool onWater = mouse.x >= 0.0;                  // (top view: always)
     if (any(greaterThanEqual(p, grid))) { fragColor = vec4(0.0, 0.0, mouse); return; }
     vec2 hn = steps > 0 ? waveStep(p, grid - 1, s.xy) : s.xy;
     if (iFrame == 0) hn = vec2(0.0);
 
-    // The pointer's drops, once per frame.
+    // The pointer's drops, once per frame; a pointer off the water drops nothing (nor does a drag
+    // line from or to a point off the water).
     float bump = 0.0;
     if (iMouse.w > 0.0) {
-        bump = DROP_AMP * dropShape(p, ivec2(floor(mouse)), DROP_R);   // click frame
-    } else if (iMouse.z > 0.0) {
+        if (onWater) bump = DROP_AMP * dropShape(p, ivec2(floor(mouse)), DROP_R);   // click frame
+    } else if (iMouse.z > 0.0 && onWater && s.z >= 0.0) {
         float strength = min(1.0, length(mouse - s.zw) / DRAG_STEP);  // drag: a line
         if (strength > 0.0)
             bump = DROP_AMP * strength * lineShape(p, floor(s.zw) + 0.5, floor(mouse) + 0.5, DROP_R);

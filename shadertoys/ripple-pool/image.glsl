@@ -1,8 +1,9 @@
-// ripple-pool / Image: a tiled swimming pool seen from straight above.
+// ripple-pool / Image: a tiled swimming pool with a sphere, seen at an angle (default; the
+// 3-D view at the end of this file, its camera in common.glsl), or straight from above (TOP_VIEW).
 //
 // iChannel0 = Buffer D (the height field at the end of the frame, .x = height
 // in cells, linear filtering; common.glsl simulates it).
-// The eye is a wide-angle pinhole above the pool centre (half the pool's short
+// The top view (TOP_VIEW): the eye is a wide-angle pinhole above the pool centre (half the pool's short
 // side up) and the water surface lies in the image plane, so pixel p shows the
 // water at p: where you click is where the ripple appears. Towards the edges the
 // view meets the water up to ~64 degrees from the normal, where Fresnel matters.
@@ -30,11 +31,15 @@ const float ALPHA    = 1.0 - 1.0 / 1.333;
 const vec2  DEPTH_M  = vec2(1.1, 3.4); // physical depth, shallow (left) to deep end, metres
 const vec3  SIGMA    = vec3(1.10, 0.26, 0.11);   // absorption per metre
 const vec3  WATER    = vec3(0.02, 0.16, 0.22);   // in-scattered water colour
+#ifdef TOP_VIEW
 const vec3  SUN_DIR  = vec3(0.12, 0.16, 0.98);   // towards the sun (normalised below), high:
                                                  // caustics sit close under their ripples
+#else
+const vec3  SUN_DIR  = vec3(0.60, 0.40, 0.69);   // 3-D view (x right, y to the far side, z up): lower,
+                                                 // beyond the pool, so the sphere's shadow shows
+#endif
 const vec3  SUN_COL  = vec3(1.0, 0.93, 0.82);
 const float WALL_UP  = 4.0 * DEPTH;   // height of the shading wall + deck above the floor
-const float RIM      = 30.0;          // the walls rise this far above the water (cells)
 const float EYE_UP   = 0.5;           // eye height above the water, in canvas heights
 
 // The simulation's grid: one cell per pixel up to 180 rows, else 180 rows scaled up (gridScale()
@@ -120,6 +125,31 @@ vec3 ditherNoise(vec2 fragCoord) {
     return (a + b - 1.0) / 255.0;
 }
 
+// Caustic brightness on a floor `depth` cells below the water, for the sunlight that crossed the
+// surface at sc: the refracted-area rule. Sunlight bent by the surface moves a floor point by
+// -alpha*depth*grad(h) (small slopes), the Jacobian is I - alpha*depth*Hessian(h), light ~ 1/|det J|.
+float causticAt(vec2 sc, float depth)
+{
+    // Hessian of h at sc (bilinear samples)
+    float k = ALPHA * depth;
+    float c0 = Hs(sc);
+    float hxx = Hs(sc + vec2(1, 0)) + Hs(sc - vec2(1, 0)) - 2.0 * c0;
+    float hyy = Hs(sc + vec2(0, 1)) + Hs(sc - vec2(0, 1)) - 2.0 * c0;
+    float hxy = 0.25 * (Hs(sc + vec2(1, 1)) + Hs(sc - vec2(1, 1))
+                      - Hs(sc + vec2(1, -1)) - Hs(sc + vec2(-1, 1)));
+    float det = (1.0 - k * hxx) * (1.0 - k * hyy) - k * k * hxy * hxy;
+    // normalised once: flat water (det = 1) gives exactly 1
+    float caustic = (1.0 + 0.12) / (abs(det) + 0.12);
+    return min(caustic, 6.0);
+}
+
+// Schlick's Fresnel reflectance of water (F0 = 0.02) for the cosine of the angle of incidence.
+float fresnel(float cosi)
+{
+    float F = 0.02 + 0.98 * pow(1.0 - cosi, 5.0);
+    return F;
+}
+
 // Light on a tiled wall: sun on the walls facing it, sky light on all. `dir` is the ray that
 // reached the wall (its sign tells which wall), `acrossX` whether the wall is an x = const one.
 vec3 litWall(vec3 albedo, vec2 dir, bool acrossX)
@@ -144,6 +174,7 @@ vec3 reflectedScene(vec3 s, vec3 r, vec2 res, float tileSize)
     return litWall(albedo, r.xy, acrossX);
 }
 
+#ifdef TOP_VIEW
 void mainImage(out vec4 fragColor, in vec2 fragCoord)
 {
     // everything below is in grid cells: the picture is the grid scaled up
@@ -197,17 +228,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
         vec2 inside = min(sw, res - sw);
         float shade = smoothstep(-4.0, 4.0, min(inside.x, inside.y));
 
-        // caustics: Hessian of h at sc (bilinear samples)
-        float k = ALPHA * DEPTH;
-        float c0 = Hs(sc);
-        float hxx = Hs(sc + vec2(1, 0)) + Hs(sc - vec2(1, 0)) - 2.0 * c0;
-        float hyy = Hs(sc + vec2(0, 1)) + Hs(sc - vec2(0, 1)) - 2.0 * c0;
-        float hxy = 0.25 * (Hs(sc + vec2(1, 1)) + Hs(sc - vec2(1, 1))
-                          - Hs(sc + vec2(1, -1)) - Hs(sc + vec2(-1, 1)));
-        float det = (1.0 - k * hxx) * (1.0 - k * hyy) - k * k * hxy * hxy;
-        // normalised once: flat water (det = 1) gives exactly 1
-        float caustic = (1.0 + 0.12) / (abs(det) + 0.12);
-        caustic = min(caustic, 6.0);
+        float caustic = causticAt(sc, DEPTH);
 
         // soft darkening where floor meets walls
         vec2 dq = min(q, res - q);
@@ -229,7 +250,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
     vec3 r = reflect(v, n);
     vec3 refl = reflectedScene(s, r, res, tileSize);
     float cosi = clamp(dot(-v, n), 0.0, 1.0);
-    float F = 0.02 + 0.98 * pow(1.0 - cosi, 5.0);
+    float F = fresnel(cosi);
 
     vec3 col = mix(refr, refl, F);
 
@@ -238,3 +259,160 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
     col = pow(col, vec3(1.0 / 2.2));
     fragColor = vec4(col + ditherNoise(fragCoord), 1.0);
 }
+#else
+// --- The 3-D view (the default; common.glsl's camera) ---------------------------------------------
+// World: y up, units of grid cells, the water plane y = 0 over the pool [0, grid.x] x [0, grid.y]
+// (x, z), the floor at y = -D, the walls rising RIM above the water, a stone deck at y = RIM around.
+// A sphere rests on the floor and breaks the surface. Everything is intersected analytically: the
+// view ray meets the sphere, the deck, the walls above the water or the water; at the water the
+// height field (interpolated between steps, as the top view) gives the normal, and Schlick's Fresnel
+// mixes the reflection (sphere, walls, sky) with the refraction (floor, walls, sphere under water).
+// Light under the water: the sun refracted by calm water; the floor's caustics use the refracted-area
+// rule at the point where that light crossed the surface (causticAt, flat water = 1), and the sphere
+// shadows the floor: the floor point's ray back towards the sun is softly occluded by the sphere
+// (distance from the sphere's centre to that ray, smoothstep across 0.8-1.25 radii). The sphere's
+// under-water part gets its caustic the same way.
+
+const vec3  SPHERE_ALBEDO = vec3(0.62, 0.56, 0.50);
+const vec3  DECK = vec3(0.62, 0.58, 0.52);       // stone around the pool
+
+vec3 zUp(vec3 v) { return vec3(v.x, v.z, v.y); } // world (y up) <-> the z-up frame of sky(), SUN_DIR
+
+// How much of the light coming from direction l reaches p past the sphere (soft: 0 inside its
+// shadow, 1 beyond 1.25 radii of the shadow's axis).
+float sphereOcclusion(vec3 p, vec3 l)
+{
+#ifdef NO_SPHERE
+    return 1.0;
+#else
+    vec4 sp = poolSphere();
+    vec3 v = sp.xyz - p;
+    float along = dot(v, l);
+    if (along <= 0.0) return 1.0;
+    return smoothstep(0.8 * sp.w, 1.25 * sp.w, length(v - l * along));
+#endif
+}
+
+// The sunlight under calm water: the direction it travels, in the world frame.
+vec3 sunUnderWater() { return zUp(refract(-normalize(SUN_DIR), vec3(0, 0, 1), ETA)); }
+
+// The caustic brightness at an under-water point p: the sunlight reaching it crossed the surface
+// where the ray from p back towards the sun meets y = 0.
+float causticAtPoint(vec3 p)
+{
+    vec3 tl = sunUnderWater();
+    vec2 sc = p.xz - tl.xz / tl.y * p.y;          // tl.y < 0, p.y < 0: moves towards the sun
+    return causticAt(sc, -p.y);
+}
+
+vec3 shadeSphere(vec3 p, bool underWater)
+{
+    vec4 sp = poolSphere();
+    vec3 n = (p - sp.xyz) / sp.w;
+    vec3 sd = zUp(normalize(SUN_DIR));
+    vec3 amb = vec3(0.30, 0.38, 0.45) * (0.6 + 0.4 * n.y);
+    float sun;
+    if (underWater) sun = max(dot(n, -sunUnderWater()), 0.0) * causticAtPoint(p);
+    else            sun = max(dot(n, sd), 0.0);
+    return SPHERE_ALBEDO * (amb + 1.5 * SUN_COL * sun);
+}
+
+// What the light under the water shows along d from o (o on the surface): the sphere, the floor or a
+// wall, lit, then Beer-Lambert absorbed along the path (plus the light's path down, roughly).
+vec3 underWater(vec3 o, vec3 d, vec2 g, float tileSize)
+{
+    float D = POOL_DEPTH * g.y;
+    vec3 sd = normalize(SUN_DIR);
+    float lam = (D + o.y) / max(-d.y, 1e-4);      // to the floor
+    vec2 bound = mix(vec2(0.0), g, step(0.0, d.xz));
+    vec2 dd = vec2(abs(d.x) < 1e-6 ? 1e-6 : d.x, abs(d.z) < 1e-6 ? 1e-6 : d.z);
+    vec2 lw = max((bound - o.xz) / dd, 0.0);
+    float lwall = min(lw.x, lw.y);
+    float ls = sphereHit(o, d);
+
+    vec3 lit;
+    float pathLen;
+    if (ls > 0.0 && ls < min(lam, lwall)) {
+        pathLen = ls;
+        lit = shadeSphere(o + d * ls, true);
+    } else if (lwall < lam) {
+        vec3 w = o + d * lwall;
+        bool acrossX = lw.x < lw.y;
+        float along = acrossX ? w.z : w.x;
+        vec3 albedo = tiles(vec2(along, -w.y) / tileSize, 0.03, 1.0 / (tileSize * gridScale())) * 0.92;
+        bool sunny = acrossX ? (d.x * sd.x < 0.0) : (d.z * sd.y < 0.0);
+        lit = albedo * (vec3(0.30, 0.38, 0.45) + 1.5 * SUN_COL * (sunny ? 0.55 : 0.1) * sd.z
+                        * sphereOcclusion(w, -sunUnderWater()));
+        pathLen = lwall;
+    } else {
+        vec3 q = o + d * lam;
+        vec3 albedo = floorAlbedo(q.xz, tileSize);
+        // the wall + deck on the sunny side shade a band of floor
+        vec3 tl = sunUnderWater();
+        vec2 sw = q.xz - tl.xz / -tl.y * (D + RIM);
+        vec2 inside = min(sw, g - sw);
+        float shade = smoothstep(-4.0, 4.0, min(inside.x, inside.y));
+        vec2 dq = min(q.xz, g - q.xz);
+        albedo *= 0.72 + 0.28 * smoothstep(0.0, 0.8 * D, min(dq.x, dq.y));
+        float light = shade * causticAtPoint(q) * sphereOcclusion(q, -tl);
+#ifndef NO_SPHERE
+        vec4 sp = poolSphere();                   // the sphere also hides sky light near its foot
+        albedo *= 1.0 - 0.45 * pow(clamp(sp.w / length(sp.xyz - q), 0.0, 1.0), 4.0);
+#endif
+        lit = albedo * (vec3(0.30, 0.38, 0.45) + 1.5 * SUN_COL * light * sd.z);
+        pathLen = lam;
+    }
+    vec3 hit = o + d * pathLen;
+    float depthM = mix(DEPTH_M.x, DEPTH_M.y, smoothstep(0.15, 0.85, hit.x / g.x));
+    float metres = (pathLen - hit.y) / D * depthM * 0.5;
+    vec3 T = exp(-SIGMA * metres);
+    return lit * T + WATER * (1.0 - T);
+}
+
+// The walls above the water, the deck and the sky along d from o (o above or on the water).
+vec3 aboveWater(vec3 o, vec3 d, vec2 g, float tileSize)
+{
+    float ls = sphereHit(o, d);
+    if (ls > 0.0 && (o + d * ls).y >= 0.0) return shadeSphere(o + d * ls, false);
+    vec3 sd = zUp(normalize(SUN_DIR));
+    if (o.y > RIM) {                               // the camera: the deck first
+        if (d.y >= 0.0) return sky(zUp(d));
+        vec3 p = o + d * ((RIM - o.y) / d.y);
+        if (p.x < 0.0 || p.z < 0.0 || p.x > g.x || p.z > g.y) {
+            vec3 albedo = DECK * (0.9 + 0.1 * hash21(floor(p.xz / (0.5 * tileSize))));
+            return albedo * (vec3(0.30, 0.38, 0.45) + 1.5 * SUN_COL * sd.y);
+        }
+        o = p;
+    }
+    return reflectedScene(zUp(o), zUp(d), g, tileSize);
+}
+
+void mainImage(out vec4 fragColor, in vec2 fragCoord)
+{
+    vec2 g = gridSize();
+    float tileSize = g.y / 11.0;
+    vec3 eye;
+    vec3 d = cameraRay(fragCoord, eye);
+
+    vec3 col;
+    vec2 cell = pixelToCell(fragCoord);             // the water seen here (common.glsl), if any
+    if (cell.x < 0.0) {
+        col = aboveWater(eye, d, g, tileSize);
+    } else {
+        // the water: the surface point, its normal from the height field's differences
+        vec3 s = vec3(cell.x, 0.0, cell.y);
+        float gx = 0.5 * (Hs(s.xz + vec2(1, 0)) - Hs(s.xz - vec2(1, 0)));
+        float gz = 0.5 * (Hs(s.xz + vec2(0, 1)) - Hs(s.xz - vec2(0, 1)));
+        vec3 n = normalize(vec3(-gx, 1.0, -gz));
+        vec3 r = reflect(d, n);
+        r.y = max(r.y, 1e-3);
+        vec3 refl = aboveWater(s, r, g, tileSize);
+        vec3 refr = underWater(s, refract(d, n, ETA), g, tileSize);
+        col = mix(refr, refl, fresnel(clamp(dot(-d, n), 0.0, 1.0)));
+    }
+
+    col = 1.0 - exp(-col * 1.3);
+    col = pow(col, vec3(1.0 / 2.2));
+    fragColor = vec4(col + ditherNoise(fragCoord), 1.0);
+}
+#endif

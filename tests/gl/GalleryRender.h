@@ -118,11 +118,15 @@ inline std::vector<GalleryCase> galleryCases() {
         {"coastal_foam_t5_5", "coastal-foam", "--start-time 5.5"},
         {"coastal_foam_mouse", "coastal-foam", "--start-time 2 --mouse 80,90"},
         {"coastal_foam_lake", "coastal-foam", "--start-time 2", 0, {{"image.glsl", "// #define LAKE", "#define LAKE"}}},
-        {"ripple_pool_calm", "ripple-pool", ""},
-        {"ripple_pool_drag_f30", "ripple-pool", "--mouse-script drag.json", 30},
-        {"ripple_pool_drag_f90", "ripple-pool", "--mouse-script drag.json", 90},
-        {"ripple_pool_rain", "ripple-pool", "", 80,
+        // ripple-pool straight from above (--define TOP_VIEW: pixel p is cell p, so the mouse
+        // script's points are the water's), then the default angled 3-D view with its sphere
+        {"ripple_pool_calm", "ripple-pool", "--define TOP_VIEW"},
+        {"ripple_pool_drag_f30", "ripple-pool", "--define TOP_VIEW --mouse-script drag.json", 30},
+        {"ripple_pool_drag_f90", "ripple-pool", "--define TOP_VIEW --mouse-script drag.json", 90},
+        {"ripple_pool_rain", "ripple-pool", "--define TOP_VIEW", 80,
          {{"common.glsl", "// #define RAIN", "#define RAIN"}}},
+        {"ripple_pool_3d_calm", "ripple-pool", ""},
+        {"ripple_pool_3d_drag_f90", "ripple-pool", "--mouse-script drag.json", 90},
     };
 }
 

@@ -8,7 +8,9 @@
 #include "Golden.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 
 #include "core/AtomicFile.h"
 #include "image/ImageWriters.h"
@@ -39,6 +41,29 @@ INSTANTIATE_TEST_SUITE_P(Shaders, GalleryGolden, ::testing::ValuesIn(galleryCase
 
 class RipplePool : public GlTest {};
 
+// ripple-pool as loadSession starts it, with `defines` (--define) in every pass.
+std::unique_ptr<SessionCore> loadPool(const std::shared_ptr<GlContext>& context, int width, int height,
+                                      std::vector<std::string> defines) {
+    SessionOptions options;
+    options.target = sourceDir() / "shadertoys/ripple-pool";
+    options.settings.width = width;
+    options.settings.height = height;
+    options.settings.defines = std::move(defines);
+    auto plan = prepareSession(options);
+    EXPECT_TRUE(plan.ok()) << plan.error().text();
+    if (!plan.ok()) return nullptr;
+    auto session = SessionCore::start(std::move(*plan), context, testObserver());
+    EXPECT_TRUE(session.ok()) << session.error().text();
+    if (!session.ok()) return nullptr;
+    return std::move(*session);
+}
+
+// Straight from above (TOP_VIEW), where pixel p is grid cell p / scale: the tests of the
+// simulation click pixels and read those cells.
+std::unique_ptr<SessionCore> loadTopView(const std::shared_ptr<GlContext>& context, int width, int height) {
+    return loadPool(context, width, height, {"TOP_VIEW"});
+}
+
 constexpr int kWidth = 320, kHeight = 180;
 constexpr int kDropX = 160, kDropY = 90;  // pixel; the drop is centred on its centre
 
@@ -47,7 +72,7 @@ float height(const std::vector<float>& rgba, int x, int y) {
 }
 
 TEST_F(RipplePool, OneDropSpreadsSymmetricallyAtSteadySpeedAndDecays) {
-    auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", kWidth, kHeight);
+    auto toy = loadTopView(context_, kWidth, kHeight);
     ASSERT_TRUE(toy);
     stepAt(*toy);
     stepAt(*toy);
@@ -99,7 +124,7 @@ TEST_F(RipplePool, OneDropSpreadsSymmetricallyAtSteadySpeedAndDecays) {
 // shadertoys/ripple-pool/drag.json, the script of the golden frames, as a user runs it: the
 // height field is disturbed along the drag and still flat far from it.
 TEST_F(RipplePool, ScriptedDragDisturbsTheWaterAlongItsPathOnly) {
-    auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", kWidth, kHeight);
+    auto toy = loadTopView(context_, kWidth, kHeight);
     ASSERT_TRUE(toy);
     auto text = readTextFile(sourceDir() / "shadertoys/ripple-pool/drag.json");
     ASSERT_TRUE(text.ok());
@@ -132,7 +157,7 @@ TEST_F(RipplePool, ScriptedDragDisturbsTheWaterAlongItsPathOnly) {
 TEST_F(RipplePool, TheSameClickOnADoubleSizeCanvasGivesTheSameField) {
     std::vector<float> fields[2];
     for (int scale : {1, 2}) {
-        auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", kWidth * scale, kHeight * scale);
+        auto toy = loadTopView(context_, kWidth * scale, kHeight * scale);
         ASSERT_TRUE(toy);
         stepAt(*toy);
         const InputEvent click[] = {InputEvent::mouseDown((kDropX + 0.25f) * scale, (kDropY + 0.75f) * scale),
@@ -170,7 +195,7 @@ int ringRadius(const std::vector<float>& field) {
 TEST_F(RipplePool, RingsSpreadByTimeNotByFrames) {
     std::vector<int> radii;
     for (double fps : {60.0, 30.0, 15.0}) {
-        auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", kWidth, kHeight);
+        auto toy = loadTopView(context_, kWidth, kHeight);
         ASSERT_TRUE(toy);
         const int perTick = int(60.0 / fps);  // frames per 1/15 s: 4, 2, 1
         for (int i = 0; i < 4 / perTick; ++i) stepAt(*toy, {}, fps);
@@ -191,12 +216,159 @@ TEST_F(RipplePool, RingsSpreadByTimeNotByFrames) {
 }
 
 TEST_F(RipplePool, CalmPoolStaysFlatWithoutInput) {
-    auto toy = loadSession(context_, sourceDir() / "shadertoys/ripple-pool", 64, 36);
+    auto toy = loadPool(context_, 64, 36, {});  // either view: no input, no motion
     ASSERT_TRUE(toy);
     for (int i = 0; i < 30; ++i) stepAt(*toy);
     std::vector<float> field;
     playerOf(*toy).readRgba32f(PassId::BufferD, field);
     for (std::size_t i = 0; i < field.size(); i += 4) ASSERT_EQ(field[i], 0.0f) << "pixel " << i / 4;
+}
+
+// ---------------------------------------------------------------------------------------------
+// ripple-pool's default 3-D view at 320x180: the camera as its README and common.glsl describe it,
+// written again here (not taken from the shader): grid 320x180 cells, world units = cells, water
+// y = 0 over x in [0, 320], z in [0, 180], walls rising 30 above it; the eye at (160, 1.64, -1.22)
+// * 180 looking 0.733 rad down (+z), focal length 1.8 canvas heights; a sphere of radius 45 resting
+// on the floor (y = -0.36 * 180) at x = 0.62 * 320, z = 0.56 * 180.
+struct PoolCamera {
+    double eye[3] = {160.0, 1.64 * 180.0, -1.22 * 180.0};
+    double pitch = 0.733, focal = 1.8;
+    // the unit view ray through canvas point (px, py)
+    std::array<double, 3> ray(double px, double py) const {
+        const double ux = (px - 160.0) / 180.0, uy = (py - 90.0) / 180.0;
+        std::array<double, 3> d = {ux, -std::sin(pitch) * focal + uy * std::cos(pitch),
+                                   std::cos(pitch) * focal + uy * std::sin(pitch)};
+        const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (double& c : d) c /= n;
+        return d;
+    }
+    // the water point (x, z) seen at (px, py), ignoring walls and sphere
+    std::pair<double, double> water(double px, double py) const {
+        const auto d = ray(px, py);
+        const double t = -eye[1] / d[1];
+        return {eye[0] + d[0] * t, eye[2] + d[2] * t};
+    }
+    // canvas point of world point p
+    std::pair<double, double> project(const std::array<double, 3>& p) const {
+        const double v[3] = {p[0] - eye[0], p[1] - eye[1], p[2] - eye[2]};
+        const double depth = -v[1] * std::sin(pitch) + v[2] * std::cos(pitch);
+        const double up = v[1] * std::cos(pitch) + v[2] * std::sin(pitch);
+        return {160.0 + v[0] * focal / depth * 180.0, 90.0 + up * focal / depth * 180.0};
+    }
+};
+
+// A click in the 3-D view drops where the picture shows the water under the pointer: the drop's
+// peak is in the cell the camera ray meets, and 30 frames later the ring around it has the same
+// radius east, west, north and south of that cell (it is centred there). A click on the deck drops
+// nothing.
+TEST_F(RipplePool, ThreeDViewClickRaisesARingAroundTheClickedWater) {
+    const PoolCamera camera;
+    const float px = 110.25f, py = 70.75f;
+    const auto [wx, wz] = camera.water(px, py);
+    const int cx = int(std::floor(wx)), cz = int(std::floor(wz));
+    std::printf("click (%.2f, %.2f) -> water (%.2f, %.2f), cell (%d, %d)\n", px, py, wx, wz, cx, cz);
+    ASSERT_TRUE(cx > 30 && cx < kWidth - 30 && cz > 30 && cz < kHeight - 30) << "choose a click inside the pool";
+
+    auto toy = loadPool(context_, kWidth, kHeight, {});
+    ASSERT_TRUE(toy);
+    stepAt(*toy);
+    const InputEvent click[] = {InputEvent::mouseDown(px, py), InputEvent::mouseUp()};
+    stepAt(*toy, click);
+    std::vector<float> field;
+    playerOf(*toy).readRgba32f(PassId::BufferD, field);
+    int peakX = -1, peakZ = -1;
+    float peak = 0.0f;
+    for (int z = 0; z < kHeight; ++z)
+        for (int x = 0; x < kWidth; ++x)
+            if (height(field, x, z) > peak) {
+                peak = height(field, x, z);
+                peakX = x;
+                peakZ = z;
+            }
+    std::printf("drop's peak %.3f at cell (%d, %d)\n", peak, peakX, peakZ);
+    EXPECT_GT(peak, 0.5f);
+    EXPECT_LE(std::abs(peakX - cx), 1) << "the drop is not under the pointer";
+    EXPECT_LE(std::abs(peakZ - cz), 1) << "the drop is not under the pointer";
+
+    for (int i = 0; i < 30; ++i) stepAt(*toy);
+    playerOf(*toy).readRgba32f(PassId::BufferD, field);
+    auto ring = [&](int dx, int dz) {
+        int radius = 0;
+        float top = 0.0f;
+        for (int r = 0; r <= 28; ++r)
+            if (std::abs(height(field, cx + dx * r, cz + dz * r)) > top) {
+                top = std::abs(height(field, cx + dx * r, cz + dz * r));
+                radius = r;
+            }
+        return radius;
+    };
+    const int east = ring(1, 0), west = ring(-1, 0), north = ring(0, 1), south = ring(0, -1);
+    std::printf("ring radius 30 frames later: east %d, west %d, north %d, south %d cells\n", east, west, north, south);
+    EXPECT_GE(east, 15) << "no ring has spread";
+    for (int r : {west, north, south}) EXPECT_LE(std::abs(r - east), 1) << "the ring is not centred on the clicked water";
+
+    // the near deck, below the pool's near rim in the picture: nothing drops
+    auto deck = loadPool(context_, kWidth, kHeight, {});
+    ASSERT_TRUE(deck);
+    stepAt(*deck);
+    const InputEvent offWater[] = {InputEvent::mouseDown(160.25f, 8.75f), InputEvent::mouseUp()};
+    stepAt(*deck, offWater);
+    for (int i = 0; i < 5; ++i) stepAt(*deck);
+    playerOf(*deck).readRgba32f(PassId::BufferD, field);
+    for (int z = 0; z < kHeight; ++z)
+        for (int x = 0; x < kWidth; ++x) ASSERT_EQ(height(field, x, z), 0.0f) << "a click on the deck dropped at " << x << ", " << z;
+}
+
+// The 3-D view shows the sphere: the calm pool with and without it (--define NO_SPHERE) differs in
+// the disc where the sphere projects and in a compact region around it (its shadow on the floor,
+// darker, and its reflection), nowhere far from it.
+TEST(RipplePoolView, ThreeDViewShowsTheSphere) {
+    std::optional<Image8> frames[2];
+    for (int i = 0; i < 2; ++i) {
+        const fs::path dir = freshOutputDir(std::string("gallery/ripple-pool-sphere-") + (i ? "none" : "shown"));
+        auto run = runToyhost("run " + shellQuoted(sourceDir() / "shadertoys/ripple-pool") + (i ? " --define NO_SPHERE" : "") +
+                              " --size 320x180 --frames 1 --quiet --out " + shellQuoted(dir / "f.png"));
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+        auto image = loadImageFile(dir / "f.png");
+        ASSERT_TRUE(image.ok()) << image.error().text();
+        frames[i] = std::move(*image);
+    }
+    const PoolCamera camera;
+    const auto [sx, sy] = camera.project({0.62 * 320.0, -0.36 * 180.0 + 45.0, 0.56 * 180.0});
+    const double dist = std::hypot(0.62 * 320.0 - camera.eye[0], -0.36 * 180.0 + 45.0 - camera.eye[1],
+                                   0.56 * 180.0 - camera.eye[2]);
+    const double radius = 45.0 * camera.focal * 180.0 / dist;  // the sphere's radius in pixels, about
+    // Changed pixels (any channel by more than 12 levels); inside the sphere's disc, and beyond it
+    // (its shadow and its reflection), where the sphere's frame is darker or brighter.
+    std::size_t changed = 0, disc = 0, discChanged = 0, near = 0, outsideDarker = 0, outsideBrighter = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const std::size_t at = (static_cast<std::size_t>(y) * kWidth + x) * 4;
+            int largest = 0, sum = 0;
+            for (int c = 0; c < 3; ++c) {
+                const int d = frames[0]->rgba[at + c] - frames[1]->rgba[at + c];
+                largest = std::max(largest, std::abs(d));
+                sum += d;
+            }
+            const double r = std::hypot(x + 0.5 - sx, y + 0.5 - sy);
+            if (r <= 0.8 * radius) ++disc;
+            if (largest <= 12) continue;
+            ++changed;
+            if (r <= 0.8 * radius) ++discChanged;
+            if (r <= 2.0 * radius) ++near;
+            if (r > 1.1 * radius) (sum < 0 ? outsideDarker : outsideBrighter)++;
+        }
+    const double share = double(changed) / (kWidth * kHeight);
+    std::printf("sphere projects to (%.1f, %.1f), radius %.1f px; %.1f%% of pixels change, %.1f%% of the disc, "
+                "%.1f%% of them within 2 radii; beyond 1.1 radii %zu darker, %zu brighter\n", sx, sy, radius,
+                share * 100.0, 100.0 * discChanged / std::max<std::size_t>(disc, 1),
+                100.0 * near / std::max<std::size_t>(changed, 1), outsideDarker, outsideBrighter);
+    EXPECT_GT(double(discChanged), 0.9 * disc) << "the sphere is not seen where it projects";
+    EXPECT_LT(share, 0.15) << "more than the sphere changes";
+    EXPECT_GT(double(near), 0.97 * changed) << "the change is not compact";
+    // its shadow on the floor beside it: the floor it darkens outnumbers what it brightens there
+    EXPECT_GT(outsideDarker, 200u) << "no shadow beside the sphere";
+    EXPECT_GT(outsideDarker, 2 * outsideBrighter) << "no shadow beside the sphere";
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -53,6 +53,8 @@ const Mutation kMutations[] = {
      {"image.glsl", "if (iMouse.z > 0.0) yaw", "if (iMouse.z > 1e9) yaw"}},
     {"ripple_pool_fresnel_constant", "ripple_pool_drag_f90",
      {"image.glsl", "float F = 0.02 + 0.98 * pow(1.0 - cosi, 5.0);", "float F = 0.02;"}},
+    {"ripple_pool_3d_fresnel_constant", "ripple_pool_3d_drag_f90",
+     {"image.glsl", "float F = 0.02 + 0.98 * pow(1.0 - cosi, 5.0);", "float F = 0.02;"}},
     {"coastal_foam_mouse_ignored", "coastal_foam_mouse",
      {"image.glsl", "if (iMouse.z > 0.0) yaw", "if (iMouse.z > 1e9) yaw"}},
 };
@@ -78,18 +80,23 @@ INSTANTIATE_TEST_SUITE_P(Gallery, GalleryMutation, ::testing::ValuesIn(kMutation
                          [](const auto& info) { return std::string(info.param.name); });
 
 // ripple-pool's caustic is normalised once: on flat water (the calm pool) it is exactly 1, so
-// replacing it by the constant 1 leaves every pixel of the frame unchanged.
+// replacing it by the constant 1 leaves every pixel of the frame unchanged, from above and in the
+// 3-D view (where the floor's and the sphere's caustics both use it).
 TEST(GalleryInvariants, RipplePoolFlatWaterCausticIsOne) {
-    const GalleryCase calm = galleryCase("ripple_pool_calm");
-    const auto asIs = renderGalleryCase(calm, freshOutputDir("golden/invariants/caustic_as_is"));
-    const auto one = renderGalleryCase(calm, freshOutputDir("golden/invariants/caustic_one"),
-                                       {{"image.glsl", "float caustic = (1.0 + 0.12) / (abs(det) + 0.12);",
-                                         "float caustic = 1.0;"}});
-    ASSERT_TRUE(asIs && one);
-    auto a = loadImageFile(*asIs);
-    auto b = loadImageFile(*one);
-    ASSERT_TRUE(a.ok() && b.ok());
-    EXPECT_EQ(maxAbsError(*a, *b), 0) << "flat water's caustic is not 1";
+    for (const char* name : {"ripple_pool_calm", "ripple_pool_3d_calm"}) {
+        SCOPED_TRACE(name);
+        const GalleryCase calm = galleryCase(name);
+        const std::string out = std::string("golden/invariants/") + name;
+        const auto asIs = renderGalleryCase(calm, freshOutputDir(out + "_caustic_as_is"));
+        const auto one = renderGalleryCase(calm, freshOutputDir(out + "_caustic_one"),
+                                           {{"image.glsl", "float caustic = (1.0 + 0.12) / (abs(det) + 0.12);",
+                                             "float caustic = 1.0;"}});
+        ASSERT_TRUE(asIs && one);
+        auto a = loadImageFile(*asIs);
+        auto b = loadImageFile(*one);
+        ASSERT_TRUE(a.ok() && b.ok());
+        EXPECT_EQ(maxAbsError(*a, *b), 0) << "flat water's caustic is not 1";
+    }
 }
 
 }  // namespace

@@ -198,7 +198,8 @@ TEST_F(WindowMode, GalleryShadersRenderTheSameInAWindow) {
 // ripple-pool with a real drag: the ripples are where the pointer went, and nowhere else.
 TEST_F(WindowMode, RipplePoolDragLeavesRipplesWhereThePointerWent) {
     fs::copy(kSource / "shadertoys/ripple-pool", dir_ / "ripple-pool", fs::copy_options::recursive);
-    start({}, dir_ / "ripple-pool", "ripple-pool");
+    // straight from above (TOP_VIEW): window pixel (x, y) is the water's cell (x, 100 - y)
+    start({"--define", "TOP_VIEW"}, dir_ / "ripple-pool", "ripple-pool");
     waitFrames();
     const Image8 calm = screenshot();
     // Paused, every input paints exactly one frame (the site's rule), so the rings spread for a
