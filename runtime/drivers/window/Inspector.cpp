@@ -30,7 +30,13 @@ std::string floatText(float v) {
 }
 
 std::string rgbaText(const std::array<float, 4>& v) {
-    return "(" + floatText(v[0]) + ", " + floatText(v[1]) + ", " + floatText(v[2]) + ", " + floatText(v[3]) + ")";
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "(" + std::string.
+    std::string text = "(";
+    for (int i = 0; i < 4; ++i) {
+        if (i) text += ", ";
+        text += floatText(v[static_cast<std::size_t>(i)]);
+    }
+    return text + ")";
 }
 
 Diagnostic inspectorNotice(std::string message) {
