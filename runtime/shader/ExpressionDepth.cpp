@@ -153,42 +153,39 @@ DeepestCallChain deepestCallChain(std::string_view code) {
 
 std::vector<Diagnostic> deepExpressionWarnings(const ManifestDesc& manifest) {
     std::vector<Diagnostic> warnings;
-    auto check = [&](std::string_view code, const std::string& file, const std::string& pass) {
-        const DeepestStatement deepest = deepestStatement(code);
-        if (deepest.depth <= kSiteExpressionDepthLimit) return;
+    auto warn = [&](const std::string& file, const std::string& pass, int line, std::string message) {
         Diagnostic d;
         d.severity = Severity::Warning;
         d.code = Code::ShaderCompile;
         d.file = file;
         d.pass = pass;
-        d.line = deepest.line;
-        d.message = "an expression nested about " + std::to_string(deepest.depth) + " deep: the site refuses this " +
-                    "(Chrome rejects expressions deeper than " + std::to_string(kSiteExpressionDepthLimit) +
-                    "; split it with local variables)";
+        d.line = line;
+        d.message = std::move(message);
         warnings.push_back(std::move(d));
+    };
+    auto check = [&](std::string_view code, const std::string& file, const std::string& pass) {
+        const DeepestStatement deepest = deepestStatement(code);
+        if (deepest.depth > kSiteExpressionDepthLimit)
+            warn(file, pass, deepest.line,
+                 "an expression nested about " + std::to_string(deepest.depth) + " deep: the site refuses this " +
+                     "(Chrome rejects expressions deeper than " + std::to_string(kSiteExpressionDepthLimit) +
+                     "; split it with local variables)");
     };
     if (manifest.commonSource) check(manifest.commonCode, manifest.commonSource->string(), "Common");
     for (const PassDesc& pass : manifest.passes) check(pass.code, pass.sourceName, passName(pass.id));
     // Calls: a pass's functions with Common's, as they are compiled together (Common first, so the
     // pass's line numbers are counted from the pass's own text).
-    auto checkCalls = [&](const std::string& code, const std::string& file, const std::string& pass, int commonLines) {
-        const DeepestCallChain deepest = deepestCallChain(code);
-        if (deepest.depth <= kSiteCallDepthLimit) return;
-        Diagnostic d;
-        d.severity = Severity::Warning;
-        d.code = Code::ShaderCompile;
-        d.file = file;
-        d.pass = pass;
-        d.line = std::max(0, deepest.line - commonLines);
-        d.message = "function calls nested about " + std::to_string(deepest.depth) + " deep: the site refuses this " +
-                    "(Chrome rejects call chains deeper than " + std::to_string(kSiteCallDepthLimit) + ")";
-        warnings.push_back(std::move(d));
-    };
     const std::string common = manifest.commonSource ? manifest.commonCode + "\n" : std::string();
     const int commonLines = static_cast<int>(std::count(common.begin(), common.end(), '\n'));
-    auto passCalls = [&](const PassDesc& pass) { checkCalls(common + pass.code, pass.sourceName, passName(pass.id), commonLines); };
-    for (const PassDesc& pass : manifest.passes) passCalls(pass);
-    if (manifest.sound) passCalls(*manifest.sound);
+    auto checkCalls = [&](const PassDesc& pass) {
+        const DeepestCallChain deepest = deepestCallChain(common + pass.code);
+        if (deepest.depth > kSiteCallDepthLimit)
+            warn(pass.sourceName, passName(pass.id), std::max(0, deepest.line - commonLines),
+                 "function calls nested about " + std::to_string(deepest.depth) + " deep: the site refuses this " +
+                     "(Chrome rejects call chains deeper than " + std::to_string(kSiteCallDepthLimit) + ")");
+    };
+    for (const PassDesc& pass : manifest.passes) checkCalls(pass);
+    if (manifest.sound) checkCalls(*manifest.sound);
     return warnings;
 }
 

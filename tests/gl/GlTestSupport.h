@@ -18,6 +18,8 @@
 #include "player/Player.h"
 #include "session/SessionCore.h"
 
+#include <toyhost/Session.h>
+
 namespace toyhost {
 // The GL tests look at the Player a SessionCore runs; programs use the session's own methods.
 struct SessionCoreAccess {
@@ -83,14 +85,16 @@ inline TestObserver& testObserver() {
 }
 
 // A shadertoy (folder, manifest or export) started as a SessionCore on `context`, prepared as real runs
-// are (images decoded, stand-ins for stock media), without output.
+// are (images decoded, stand-ins for stock media), without output; `defines` as --define gives them.
 inline std::unique_ptr<SessionCore> loadSession(const std::shared_ptr<GlContext>& context, const std::filesystem::path& target,
-                                            int width, int height, bool floatImage = false) {
+                                            int width, int height, bool floatImage = false,
+                                            std::vector<std::string> defines = {}) {
     SessionOptions options;
     options.target = target;
     options.settings.width = width;
     options.settings.height = height;
     options.settings.floatImage = floatImage;
+    options.settings.defines = std::move(defines);
     auto plan = prepareSession(options);
     EXPECT_TRUE(plan.ok()) << plan.error().text();
     if (!plan.ok()) return nullptr;
@@ -144,6 +148,41 @@ inline std::filesystem::path freshOutputDir(const std::string& name) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
+}
+
+// An Image-only shadertoy of `imageCode` written to `dir`, rendered for one frame at width x height
+// through the public Session on toyhost's GL thread: its RGBA8 pixels, top row first (empty, with
+// the test failed, when it does not load, start or render).
+inline std::vector<std::uint8_t> renderImageOnce(const std::filesystem::path& dir, const std::string& imageCode,
+                                                 int width = 4, int height = 4) {
+    writeFile(dir / "manifest.json", R"({"passes": {"Image": {"source": "image.glsl"}}})");
+    writeFile(dir / "image.glsl", imageCode);
+    Result<Shadertoy> toy = Shadertoy::load(dir);
+    if (!toy.ok()) {
+        ADD_FAILURE() << toy.error().text();
+        return {};
+    }
+    std::vector<std::uint8_t> pixels;
+    runOnGlThread([&] {
+        SessionSettings settings;
+        settings.width = width;
+        settings.height = height;
+        Result<std::unique_ptr<Session>> made = Session::createHeadless(*toy, settings);
+        if (!made.ok()) {
+            ADD_FAILURE() << made.error().text();
+            return;
+        }
+        if (Status stepped = (*made)->step(); !stepped.ok()) {
+            ADD_FAILURE() << stepped.error().text();
+            return;
+        }
+        pixels.resize(static_cast<std::size_t>(width) * height * 4);
+        if (Status read = (*made)->read("Image", pixels); !read.ok()) {
+            ADD_FAILURE() << read.error().text();
+            pixels.clear();
+        }
+    });
+    return pixels;
 }
 
 }  // namespace toyhost::testing

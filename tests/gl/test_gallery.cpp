@@ -44,18 +44,7 @@ class RipplePool : public GlTest {};
 // ripple-pool as loadSession starts it, with `defines` (--define) in every pass.
 std::unique_ptr<SessionCore> loadPool(const std::shared_ptr<GlContext>& context, int width, int height,
                                       std::vector<std::string> defines) {
-    SessionOptions options;
-    options.target = sourceDir() / "shadertoys/ripple-pool";
-    options.settings.width = width;
-    options.settings.height = height;
-    options.settings.defines = std::move(defines);
-    auto plan = prepareSession(options);
-    EXPECT_TRUE(plan.ok()) << plan.error().text();
-    if (!plan.ok()) return nullptr;
-    auto session = SessionCore::start(std::move(*plan), context, testObserver());
-    EXPECT_TRUE(session.ok()) << session.error().text();
-    if (!session.ok()) return nullptr;
-    return std::move(*session);
+    return loadSession(context, sourceDir() / "shadertoys/ripple-pool", width, height, false, std::move(defines));
 }
 
 // Straight from above (TOP_VIEW), where pixel p is grid cell p / scale: the tests of the

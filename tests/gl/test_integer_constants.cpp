@@ -14,6 +14,13 @@
 namespace toyhost::testing {
 namespace {
 
+// An Image showing constant K's top byte in red and low byte in green (blue 0.25: it rendered).
+std::string imageShowing(const char* expression) {
+    return std::string("const int K = ") + expression +
+           ";\nvoid mainImage(out vec4 o, in vec2 f) {\n"
+           "    o = vec4(float((K >> 24) & 255) / 255.0, float(K & 255) / 255.0, 0.25, 1.0);\n}\n";
+}
+
 struct Edge {
     const char* expression;  // a constant int expression
     int expectedTopByte;     // (k >> 24) & 255 when GLSL defines it (or ANGLE does), else -1
@@ -43,25 +50,11 @@ TEST(IntegerConstants, EveryEdgeCompilesAndRendersWithoutCrashing) {
     for (const Edge& edge : edges) {
         SCOPED_TRACE(edge.expression);
         const std::filesystem::path dir = root / std::to_string(index++);
-        writeFile(dir / "manifest.json", R"({"passes": {"Image": {"source": "image.glsl"}}})");
-        writeFile(dir / "image.glsl", std::string("const int K = ") + edge.expression +
-                                          ";\nvoid mainImage(out vec4 o, in vec2 f) {\n"
-                                          "    o = vec4(float((K >> 24) & 255) / 255.0, float(K & 255) / 255.0, 0.25, 1.0);\n}\n");
-        Result<Shadertoy> toy = Shadertoy::load(dir);
-        ASSERT_TRUE(toy.ok()) << toy.error().text();
-        runOnGlThread([&] {
-            SessionSettings settings;
-            settings.width = 4;
-            settings.height = 4;
-            Result<std::unique_ptr<Session>> made = Session::createHeadless(*toy, settings);
-            ASSERT_TRUE(made.ok()) << made.error().text();
-            ASSERT_TRUE((*made)->step().ok());
-            std::vector<std::uint8_t> pixels(4 * 4 * 4);
-            ASSERT_TRUE((*made)->read("Image", pixels).ok());
-            EXPECT_EQ(pixels[2], 64);
-            if (edge.expectedTopByte >= 0) EXPECT_EQ(pixels[0], edge.expectedTopByte);
-            if (edge.expectedLowByte >= 0) EXPECT_EQ(pixels[1], edge.expectedLowByte);
-        });
+        const std::vector<std::uint8_t> pixels = renderImageOnce(dir, imageShowing(edge.expression));
+        ASSERT_EQ(pixels.size(), 64u);
+        EXPECT_EQ(pixels[2], 64);
+        if (edge.expectedTopByte >= 0) EXPECT_EQ(pixels[0], edge.expectedTopByte);
+        if (edge.expectedLowByte >= 0) EXPECT_EQ(pixels[1], edge.expectedLowByte);
     }
 }
 
@@ -71,24 +64,11 @@ TEST(IntegerConstants, EveryEdgeCompilesAndRendersWithoutCrashing) {
 // int_divzero_const), Mesa 22.3 folds it to INT_MIN without an idiv the trap could complete.
 // This test asserts the browser's value, so it fails today and passes once that is fixed.
 TEST(IntegerConstants, DISABLED_KnownDefectIntMinByMinusOneIsIntMaxAsInTheBrowser) {
-    const std::filesystem::path dir = freshOutputDir("gl/integer-constants-known-defect");
-    writeFile(dir / "manifest.json", R"({"passes": {"Image": {"source": "image.glsl"}}})");
-    writeFile(dir / "image.glsl", "const int K = int(0x80000000u) / -1;\nvoid mainImage(out vec4 o, in vec2 f) {\n"
-                                  "    o = vec4(float((K >> 24) & 255) / 255.0, float(K & 255) / 255.0, 0.25, 1.0);\n}\n");
-    Result<Shadertoy> toy = Shadertoy::load(dir);
-    ASSERT_TRUE(toy.ok()) << toy.error().text();
-    runOnGlThread([&] {
-        SessionSettings settings;
-        settings.width = 4;
-        settings.height = 4;
-        Result<std::unique_ptr<Session>> made = Session::createHeadless(*toy, settings);
-        ASSERT_TRUE(made.ok()) << made.error().text();
-        ASSERT_TRUE((*made)->step().ok());
-        std::vector<std::uint8_t> pixels(4 * 4 * 4);
-        ASSERT_TRUE((*made)->read("Image", pixels).ok());
-        EXPECT_EQ(pixels[0], 0x7F) << "INT_MAX's top byte, as the browser folds it";
-        EXPECT_EQ(pixels[1], 0xFF);
-    });
+    const std::vector<std::uint8_t> pixels =
+        renderImageOnce(freshOutputDir("gl/integer-constants-known-defect"), imageShowing("int(0x80000000u) / -1"));
+    ASSERT_EQ(pixels.size(), 64u);
+    EXPECT_EQ(pixels[0], 0x7F) << "INT_MAX's top byte, as the browser folds it";
+    EXPECT_EQ(pixels[1], 0xFF);
 }
 
 }  // namespace
