@@ -16,8 +16,8 @@ public:
     // decoded the frame it shows yet; `pass` names the first pass that reads the video.
     // Abandoning: after a stop, the encoders finish the frame each is writing (queued frames are
     // dropped); CPU work of toyhost's own that ends, unlike a draw GL cannot interrupt.
-    // DrawCall: inside a pass's draw call while older draws are still on the GPU (llvmpipe compiles
-    // a pass's machine code inside its first draw call: a call that does not return is that compile).
+    // DrawCall: inside a pass's draw call (llvmpipe compiles a pass's machine code inside its first
+    // draw call: a call that does not return is that compile); Drawing once it returned.
     enum class Phase { Idle, Compiling, Drawing, DrawCall, WaitingForOutput, WaitingForInput, Abandoning };
 
     struct Snapshot {
@@ -37,6 +37,19 @@ public:
         since_ = std::chrono::steady_clock::now();
     }
     void idle() { begin(Phase::Idle); }
+    // The same pass and start time in another phase (a draw call that returned: Drawing goes on).
+    void rephase(Phase phase) {
+        std::lock_guard lock(mutex_);
+        phase_ = phase;
+    }
+    // What snapshot() said, again, with its start time (the pass published before a draw call).
+    void restore(const Snapshot& s) {
+        std::lock_guard lock(mutex_);
+        phase_ = s.phase;
+        pass_ = s.pass;
+        frame_ = s.frame;
+        since_ = s.since;
+    }
 
     Snapshot snapshot() const {
         std::lock_guard lock(mutex_);

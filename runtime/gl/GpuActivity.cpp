@@ -32,26 +32,23 @@ GpuActivity::Wait::~Wait() {
 
 void GpuActivity::beforeDraw(const char* pass, int frame) {
     if (!watchDraws_) return;
-    if (count_ != 0) {
-        // Older draws are still on the GPU, but while this call has not returned it is what the
-        // run waits for (llvmpipe compiles the pass here the first time): published as such, and
-        // the oldest pending draw again once it returns (afterDraw).
-        activity_->begin(RunActivity::Phase::DrawCall, pass, frame);
-        published_ = nullptr;
-        return;
-    }
-    activity_->begin(RunActivity::Phase::Drawing, pass, frame);
-    drawPublished_ = true;
+    // While the call has not returned, this pass is what the run waits for, whatever older draws
+    // are pending; what was published before comes back once it returns (afterDraw).
+    beforeCall_ = activity_->snapshot();
+    activity_->begin(RunActivity::Phase::DrawCall, pass, frame);
 }
 
 void GpuActivity::afterDraw(const char* pass, int frame) {
     if (!watchDraws_) return;
     if (count_ == items_.size()) dropOldest();
     items_[count_++] = {glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0), pass, frame};
-    // The pass published before its draw call keeps its start time.
-    if (drawPublished_ && count_ == 1) published_ = items_[0].fence;
-    else if (!drawPublished_) publishPending();  // after a DrawCall: the oldest pending draw again
-    drawPublished_ = false;
+    if (count_ == 1) {
+        // Nothing older: the GPU now draws this pass, timed from the start of its call.
+        published_ = items_[0].fence;
+        activity_->rephase(RunActivity::Phase::Drawing);
+    } else {
+        activity_->restore(beforeCall_);  // the oldest pending draw, with its own start time
+    }
 }
 
 void GpuActivity::publishPending() {
@@ -73,7 +70,6 @@ void GpuActivity::publishPending() {
 void GpuActivity::clear() {
     dropAll();
     published_ = nullptr;
-    drawPublished_ = false;
 }
 
 void GpuActivity::dropAll() {

@@ -56,7 +56,8 @@ public:
 
     // Right before and right after a pass's draw call. llvmpipe compiles a shader's machine code
     // lazily inside the first draw that uses it, which can take minutes (a huge local array), so
-    // the call itself counts as drawing the pass when nothing older is pending.
+    // the call itself is published as DrawCall of its pass; once it returns, the oldest pass the
+    // GPU still draws is published again (this one, timed from its call, when nothing is older).
     void beforeDraw(const char* pass, int frame);
     void afterDraw(const char* pass, int frame);
     // Forgets the passes that have finished (asking without waiting) and publishes the oldest one
@@ -82,7 +83,7 @@ private:
     std::array<Item, 24> items_{};
     std::size_t count_ = 0;
     void* published_ = nullptr;  // compared only, never used after its deletion
-    bool drawPublished_ = false;
+    RunActivity::Snapshot beforeCall_;  // what was published when the current draw call began
 };
 
 }  // namespace toyhost

@@ -146,10 +146,10 @@ void Watchdog::loop() {
                        kExitWatchdog);
         else if (frameLimit > 0 && now.phase == RunActivity::Phase::DrawCall && now.seconds > frameLimit)
             expireWith(problem(Code::WatchdogFrame,
-                               "frame " + std::to_string(now.frame) + ": the draw call of this pass has not returned for " +
+                               "frame " + std::to_string(now.frame) + " has been drawing this pass for " +
                                    seconds(now.seconds) + " s, longer than --frame-timeout " + seconds(frameLimit) +
-                                   ": the run is ended. The driver compiles a pass's machine code inside its first "
-                                   "draw (llvmpipe does), so " +
+                                   ": the run is ended. Its draw call has not returned: the driver compiles a pass's "
+                                   "machine code inside its first draw (llvmpipe does), so " +
                                    (now.frame <= 0 ? std::string("this pass's compile is what stalls (many loops bounded by "
                                                                  "iTime or iFrame make LLVM's loop analysis slow; with Mesa's "
                                                                  "llvmpipe, GALLIVM_PERF=nopt in the environment compiles them "
