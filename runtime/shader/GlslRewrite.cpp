@@ -7,6 +7,7 @@
 
 #include "shader/GlslTokens.h"
 #include "shader/IndexClamp.h"
+#include "shader/IntegerConstantFold.h"
 
 namespace toyhost {
 
@@ -295,6 +296,9 @@ std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions promote) 
     if (promote.zeroInit) ZeroInitialiser(tokens).run(edits);
     if (promote.clampIndices)
         for (IndexInsertion& insertion : clampDynamicIndices(tokens)) edits.push_back({insertion.offset, 0, std::move(insertion.text)});
+    if (promote.foldIntegerConstants)
+        for (ConstantFoldEdit& fold : foldUndefinedIntegerConstants(tokens))
+            edits.push_back({fold.offset, fold.erase, std::move(fold.text)});
     std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) {
         return a.offset != b.offset ? a.offset < b.offset : a.erase < b.erase;  // insertions first
     });

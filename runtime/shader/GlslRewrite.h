@@ -1,7 +1,8 @@
 // GlslRewrite: the source rewrite that gives a GLSL ES 3.00 shader WebGL's semantics on a desktop
 // driver: locals declared without an initialiser become zero at every execution of the
 // declaration and `out` parameters zero at every call (ANGLE does both; Mesa's glsl_zero_init only
-// once per invocation), dynamic indices clamped into range (shader/IndexClamp.h), and identifiers Mesa reserves but browsers accept are renamed. Every
+// once per invocation), dynamic indices clamped into range (shader/IndexClamp.h), undefined integer constants given
+// ANGLE's values (shader/IntegerConstantFold.h), and identifiers Mesa reserves but browsers accept are renamed. Every
 // insertion stays on its line, so compiler messages keep the user's line numbers. Pure text work.
 #pragma once
 
@@ -17,7 +18,10 @@ namespace toyhost {
 // the code and in `#define` bodies (never in `#ifdef`, `#if defined`, `#undef` or a macro's name),
 // so they compute in 32 bits as on desktop GPUs while `#ifdef lowp` stays false as in WebGL.
 // With `clampIndices`, dynamic array, vector and matrix indices are clamped as ANGLE does.
-// Without `zeroInit`, `rename` and `clampIndices` only the promotion is done (the text a driver gets when it
+// With `foldIntegerConstants`, integer constant operations GLSL leaves undefined (division by 0,
+// INT_MIN / -1, `%` of negatives, shifts past 31) are written as the value ANGLE folds them to
+// (shader/IntegerConstantFold.h).
+// Without `zeroInit`, `rename`, `clampIndices` and `foldIntegerConstants` only the promotion is done (the text a driver gets when it
 // refuses the full rewrite).
 // With `fragCoord`, every `gl_FragCoord` of the text (directives included) is that name instead: the
 // Image pass reads a copy moved by the sample's or tile's offset (shader/ShaderAssembly.h).
@@ -27,6 +31,7 @@ struct GlslRewriteOptions {
     bool zeroInit = true;
     bool rename = true;
     bool clampIndices = true;
+    bool foldIntegerConstants = true;
     std::string_view fragCoord;
 };
 std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions options = {});

@@ -208,7 +208,7 @@ AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     GlslRewriteOptions options = promotion(inputs);
     if (inputs.pass == PassId::Image && !inputs.sound) options.fragCoord = kFragCoordCopy;
     out.text = header + rewriteLikeWebGL(user, options);
-    options.zeroInit = options.rename = options.clampIndices = false;
+    options.zeroInit = options.rename = options.clampIndices = options.foldIntegerConstants = false;
     out.plainText = header + rewriteLikeWebGL(user, options);
     return out;
 }
