@@ -287,6 +287,8 @@ std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions promote) 
         if (t.kind != Kind::Identifier) continue;
         if (std::string_view to = webglOnlyIdentifierRename(t.text); promote.rename && !to.empty())
             edits.push_back({t.offset, t.text.size(), std::string(to)});
+        if (promote.preciseInverseTrig && (t.text == "asin" || t.text == "acos"))
+            edits.push_back({t.offset, 0, "toyhost_"});
         if (!promote.fragCoord.empty() && t.text == "gl_FragCoord")
             edits.push_back({t.offset, t.text.size(), std::string(promote.fragCoord)});
         const bool promoted = (t.text == "lowp" && promote.lowp) || (t.text == "mediump" && promote.mediump);

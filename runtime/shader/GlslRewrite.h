@@ -21,7 +21,9 @@ namespace toyhost {
 // With `foldIntegerConstants`, integer constant operations GLSL leaves undefined (division by 0,
 // INT_MIN / -1, `%` of negatives, shifts past 31) are written as the value ANGLE folds them to
 // (shader/IntegerConstantFold.h).
-// Without `zeroInit`, `rename`, `clampIndices` and `foldIntegerConstants` only the promotion is done (the text a driver gets when it
+// With `preciseInverseTrig`, every `asin` and `acos` is `toyhost_asin` / `toyhost_acos`, the
+// header's versions (shader/ShaderAssembly.cpp: preciseInverseTrigFunctions) through atan.
+// Without `zeroInit`, `rename`, `clampIndices`, `foldIntegerConstants` and `preciseInverseTrig` only the promotion is done (the text a driver gets when it
 // refuses the full rewrite).
 // With `fragCoord`, every `gl_FragCoord` of the text (directives included) is that name instead: the
 // Image pass reads a copy moved by the sample's or tile's offset (shader/ShaderAssembly.h).
@@ -32,6 +34,7 @@ struct GlslRewriteOptions {
     bool rename = true;
     bool clampIndices = true;
     bool foldIntegerConstants = true;
+    bool preciseInverseTrig = true;
     std::string_view fragCoord;
 };
 std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions options = {});

@@ -185,6 +185,24 @@ std::string hideTexture2D(std::string_view user) {
     return "const int texture2D = 0;\n";
 }
 
+// Mesa lowers asin and acos to a polynomial that is off by up to 4e-4 rad (asin(0.9): 1.12012
+// for 1.11977); browsers give them to a few float steps (ANGLE on SwiftShader, and the GPUs' own
+// instructions under D3D11 and Metal). Through Mesa's atan, which agrees with SwiftShader's, the
+// error is about 1e-6 (webref probe asin_acos, docs/shadertoy-behaviour.md). The rewrite calls
+// these for every asin and acos of the user's text; only written when the text names either.
+std::string preciseInverseTrigFunctions(std::string_view user) {
+    bool named = false;
+    for (const GlslToken& t : tokenizeGlsl(user))
+        if (t.kind == GlslToken::Kind::Identifier && (t.text == "asin" || t.text == "acos")) named = true;
+    if (!named) return {};
+    std::string out;
+    for (const char* type : {"float", "vec2", "vec3", "vec4"}) {
+        out.append(type).append(" toyhost_asin(").append(type).append(" x) { return atan(x, sqrt((1.0 - x) * (1.0 + x))); }\n");
+        out.append(type).append(" toyhost_acos(").append(type).append(" x) { return atan(sqrt((1.0 - x) * (1.0 + x)), x); }\n");
+    }
+    return out;
+}
+
 }  // namespace
 
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
@@ -204,11 +222,12 @@ AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     // the rewrite (of the user's text, Common and pass together) keeps every line where it was.
     // The text without it is kept for a driver that refuses the rewritten one (a declaration the
     // rewrite misread).
-    const std::string header = headerStart + hideTexture2D(user);
+    const std::string header = headerStart + hideTexture2D(user) + preciseInverseTrigFunctions(user);
     GlslRewriteOptions options = promotion(inputs);
     if (inputs.pass == PassId::Image && !inputs.sound) options.fragCoord = kFragCoordCopy;
     out.text = header + rewriteLikeWebGL(user, options);
     options.zeroInit = options.rename = options.clampIndices = options.foldIntegerConstants = false;
+    options.preciseInverseTrig = false;
     out.plainText = header + rewriteLikeWebGL(user, options);
     return out;
 }

@@ -1,6 +1,7 @@
 // Rules where WebGL (ANGLE) and Mesa differ, each checked by a one-pass export against the value a
 // browser shows (decided with ../shared/webref, its probes of the same names): locals and `out`
-// parameters zero at every call, words Mesa reserves usable as names, `#ifdef lowp` false.
+// parameters zero at every call, words Mesa reserves usable as names, `#ifdef lowp` false, asin and
+// acos as precise as the browsers'.
 #include "GlTestSupport.h"
 
 #include <nlohmann/json.hpp>
@@ -95,6 +96,26 @@ TEST(WebglSemantics, LowpAndMediumpStillComputeIn32Bits) {
     EXPECT_EQ(redOf("lowp_32bit", "void mainImage(out vec4 o, in vec2 f) { lowp float x = 1.0 + iTime * 0.0 + 1e-4;"
                                   " mediump float y = x - 1.0; o = vec4(y * 2500.0, 0.0, 0.0, 1.0); }"),
               64);
+}
+
+// Browsers give asin and acos to a few float steps (ANGLE on SwiftShader in headless Chromium:
+// asin(0.9) = 1.11976945, acos(0.3) = 1.26610374; probe asin_acos); Mesa's polynomial was off by
+// up to 4e-4 (1.12012327, 1.26594770). Red is 255 when every value (scalars and each vector
+// component, at run time) is within 1e-5 of the true one, 0 otherwise; green counts the misses.
+TEST(WebglSemantics, AsinAndAcosAreAsPreciseAsInTheBrowser) {
+    EXPECT_EQ(redOf("asin_acos",
+                    "void mainImage(out vec4 o, in vec2 fc) { float one = iResolution.x / 160.0;\n"
+                    "  vec4 x = vec4(0.9, 0.5, -0.7, 0.999) * one;\n"
+                    "  vec4 s = vec4(1.11976951, 0.52359878, -0.77539750, 1.52607124);\n"
+                    "  vec4 c = vec4(0.45102681, 1.04719755, 2.34619382, 0.04472508);\n"
+                    "  float miss = 0.0;\n"
+                    "  miss += float(abs(asin(x.x) - s.x) > 1e-5) + float(abs(acos(x.x) - c.x) > 1e-5);\n"
+                    "  miss += float(any(greaterThan(abs(asin(x.yz) - s.yz), vec2(1e-5))));\n"
+                    "  miss += float(any(greaterThan(abs(acos(x.yzw) - c.yzw), vec3(1e-5))));\n"
+                    "  miss += float(any(greaterThan(abs(asin(x) - s), vec4(1e-5))));\n"
+                    "  miss += float(abs(acos(1.0 * one)) > 0.0) + float(abs(asin(1.0 * one) - 1.57079633) > 1e-6);\n"
+                    "  o = vec4(miss == 0.0 ? 1.0 : 0.0, miss / 8.0, 0.0, 1.0); }"),
+              255);
 }
 
 }  // namespace

@@ -117,3 +117,14 @@ TEST(GlslRewrite, WordsMesaReservesAreRenamedEverywhere) {
     EXPECT_EQ(webglOnlyIdentifierRename("dmat3x2"), "toyhost_dmat3x2");
     EXPECT_EQ(webglOnlyIdentifierRename("dvec2"), "");  // refused by browsers too
 }
+
+// Mesa's asin and acos are off by up to 4e-4 rad; the rewrite calls the header's precise versions
+// (shader/ShaderAssembly.cpp), in code and in macro bodies alike.
+TEST(GlslRewrite, AsinAndAcosCallThePreciseVersions) {
+    GlslRewriteOptions options;
+    options.zeroInit = options.rename = options.clampIndices = false;
+    EXPECT_EQ(rewriteLikeWebGL("#define LAT(p) asin(p.y)\nfloat f(vec2 p){ return acos(p.x) + LAT(p) + asinh(p.x); }", options),
+              "#define LAT(p) toyhost_asin(p.y)\nfloat f(vec2 p){ return toyhost_acos(p.x) + LAT(p) + asinh(p.x); }");
+    options.preciseInverseTrig = false;
+    EXPECT_EQ(rewriteLikeWebGL("float f(float x){ return asin(x); }", options), "float f(float x){ return asin(x); }");
+}

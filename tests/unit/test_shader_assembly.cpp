@@ -417,3 +417,18 @@ TEST(ShaderAssembly, OnlyTheImagePassReadsTheMovedFragCoordCopy) {
         }
     }
 }
+
+// The precise asin/acos (every overload) are in the header only when the user's text names them,
+// and the plain text (the fallback) calls the driver's own.
+TEST(ShaderAssembly, PreciseInverseTrigOnlyWhenNamed) {
+    const AssembledShader plain = assemble(PassId::Image);
+    EXPECT_EQ(plain.text.find("toyhost_asin"), std::string::npos);
+    const std::string code = "void mainImage(out vec4 o, in vec2 f) { o = vec4(asin(f.x), acos(f), 0.0); }\n";
+    const AssembledShader named = assemble(PassId::Image, nullptr, code);
+    for (const char* type : {"float", "vec2", "vec3", "vec4"}) {
+        EXPECT_NE(named.text.find(std::string(type) + " toyhost_asin(" + type + " x)"), std::string::npos) << type;
+        EXPECT_NE(named.text.find(std::string(type) + " toyhost_acos(" + type + " x)"), std::string::npos) << type;
+    }
+    EXPECT_NE(named.text.find("o = vec4(toyhost_asin(f.x), toyhost_acos(f), 0.0);"), std::string::npos);
+    EXPECT_NE(named.plainText.find("o = vec4(asin(f.x), acos(f), 0.0);"), std::string::npos);
+}
