@@ -32,6 +32,11 @@ Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media, 
     if (manifest.commonSource) checkShaderText(manifest.commonCode, manifest.commonName, "Common", textProblems);
     for (PassDesc& pass : manifest.passes) checkShaderText(pass.code, pass.sourceName, passName(pass.id), textProblems);
     if (!textProblems.empty()) return Error(std::move(textProblems));
+    // What the site refuses for its depth, refused here too; what it may refuse, a warning.
+    std::vector<Diagnostic> refused, depthWarnings;
+    for (Diagnostic& problem : siteDepthProblems(manifest))
+        (problem.severity == Severity::Error ? refused : depthWarnings).push_back(std::move(problem));
+    if (!refused.empty()) return Error(std::move(refused));
     // The shader texts first, each pass whose expansion needs a cpp child on its own thread, so
     // that those run while the media below load (a plan is made once per run or reload).
     const bool commonMacros = manifest.commonSource && definesFunctionMacro(manifest.commonCode);
@@ -52,7 +57,7 @@ Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media, 
     std::vector<Diagnostic> notices = manifest.notices;
     notices.insert(notices.end(), images->notices().begin(), images->notices().end());
     for (Diagnostic& warning : unboundChannelWarnings(manifest)) notices.push_back(std::move(warning));
-    for (Diagnostic& warning : deepExpressionWarnings(manifest)) notices.push_back(std::move(warning));
+    for (Diagnostic& warning : depthWarnings) notices.push_back(std::move(warning));
     std::vector<PassSource> sources;
     sources.reserve(preparing.size());
     for (std::future<PassSource>& source : preparing) sources.push_back(source.get());

@@ -212,7 +212,9 @@ private:
     std::optional<std::size_t> leftOperandStart(std::size_t op, int p) const {
         std::size_t start = op;
         std::size_t j = op;
+        constexpr std::size_t kLongestOperand = 4096;  // tokens; longer left operands are left alone
         while (true) {
+            if (op - j > kLongestOperand) return std::nullopt;
             // An operand: a primary with its call parentheses, then its unary operators.
             if (j == 0) return std::nullopt;
             --j;
@@ -221,7 +223,7 @@ private:
             if (last.text == ")") {
                 int depth = 0;
                 while (true) {
-                    if (t_[j].directive) return std::nullopt;
+                    if (t_[j].directive || op - j > kLongestOperand) return std::nullopt;
                     if (t_[j].text == ")") ++depth;
                     else if (t_[j].text == "(" && --depth == 0) break;
                     if (j == 0) return std::nullopt;
@@ -273,6 +275,14 @@ private:
 
     std::optional<Value> unary(std::size_t& at, std::size_t end) const {
         if (at >= end || t_[at].directive) return std::nullopt;
+        // Bounds on any text: the stack (nesting) and the time (steps: a few per token is plenty
+        // for real code; an adversarial text gets its remaining operations left to the driver).
+        if (nesting_ > kMostNesting || ++steps_ > stepBudget_) return std::nullopt;
+        struct Nested {
+            int& n;
+            explicit Nested(int& level) : n(++level) {}
+            ~Nested() { --n; }
+        } nested(nesting_);
         const GlslToken& t = t_[at];
         if (t.text == "-" || t.text == "+" || t.text == "~") {
             ++at;
@@ -322,7 +332,11 @@ private:
         return e;
     }
 
+    static constexpr int kMostNesting = 1024;
     const std::vector<GlslToken>& t_;
+    mutable int nesting_ = 0;
+    mutable std::size_t steps_ = 0;
+    std::size_t stepBudget_ = 64 * t_.size() + 100000;
     std::map<std::string_view, Value> constants_;
     std::set<std::string_view> ambiguous_;
 };

@@ -96,3 +96,14 @@ TEST(IntegerConstantFold, CompoundAssignmentsAndMembersAreNotOperations) {
     const std::string text = "const int N = 7; void f(){ int x = 1; x <<= 40; x /= 0; x = s.N / 0; }";
     EXPECT_EQ(foldOnly(text), text);
 }
+
+TEST(IntegerConstantFold, AnyTextStaysBoundedInStackAndTime) {
+    // 100000 nested parentheses around a division by zero, and 20000 divisions by a parenthesised
+    // operand: read up to the guards, never a crash or quadratic time.
+    const std::string open(100000, '('), close(100000, ')');
+    const std::string deep = "int a = " + open + "7 / 0" + close + ";";
+    EXPECT_EQ(foldOnly(deep).size(), deep.size() + std::string("2147483647").size() - std::string("7 / 0").size());
+    std::string chain = "int a = x";
+    for (int i = 0; i < 20000; ++i) chain = "(" + chain + ") / (1 + 2)";
+    EXPECT_EQ(foldOnly(chain + ";"), chain + ";");
+}
