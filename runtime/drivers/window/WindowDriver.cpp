@@ -45,8 +45,13 @@ public:
         reportScreenshots();
         if (events_.quitRequested()) return false;
         // Hot reload between frames: the watcher loaded and planned the files off this thread.
-        if (std::optional<ShadertoyChange> change = watcher_.take())
-            (void)s.reload(std::move(change->files), std::move(change->plan));
+        if (std::optional<ShadertoyChange> change = watcher_.take()) {
+            const ReloadOutcome outcome = s.reload(std::move(change->files), std::move(change->plan));
+            // The site's compile paints a frame even while paused; here the shown frame is painted
+            // again with the new code at the paused time, iFrame unchanged (docs/window.md).
+            if (outcome.applied && clock_.paused() && s.running() && s.frame() > 0)
+                (void)s.repaint(clock_.repaint(monotonicNow(), localWallClockNow()));
+        }
         const double now = monotonicNow();
         if (events_.takeControl(Control::Help)) observer_.notice(notice(controlsHelp(), Code::WindowHelp));
         if (events_.takeControl(Control::Inspector)) toggleInspector();
