@@ -492,6 +492,24 @@ TEST_F(WindowMode, AShaderThatFailsAtStartOpensTheWindowAndWaitsForTheFix) {
         << differingPixels(grab(), shot) << " pixels differ from the F12 screenshot";
 }
 
+// Paused while waiting for a shadertoy that compiles: the fix paints frame 0 at once, as the
+// site's first good compile starts its render loop, and the window stays paused.
+TEST_F(WindowMode, AFixWhilePausedBeforeTheFirstFrameShowsFrameZero) {
+    edit(dir_ / "probe/image.glsl", "vec4(10, 20, 30, 255)", "vec4(10, 20, broken_name, 255)");
+    start();
+    ASSERT_TRUE(within(20, [&] { return title().find("image.glsl:22:") != std::string::npos; })) << title() << toyhost_->log();
+    xdo("key --window " + window_ + " F6");
+    ASSERT_TRUE(within(10, [&] { return title().find("paused") != std::string::npos; })) << title();
+    edit(dir_ / "probe/image.glsl", "vec4(10, 20, broken_name, 255)", "vec4(10, 20, 30, 255)");
+    ASSERT_TRUE(within(20, [&] { return shownFrame() == 0; })) << title() << toyhost_->log();
+    const Image8 first = screenshot();
+    EXPECT_EQ(column(first, 5), (std::array<int, 4>{10, 20, 30, 255}));
+    EXPECT_EQ(column(first, 3)[0], 1) << "Buffer A ran once";
+    EXPECT_EQ(column(first, 3)[1], 0) << "iFrame 0";
+    EXPECT_EQ(shownFrame(), 0) << "still paused: " << title();
+    EXPECT_NE(title().find("paused"), std::string::npos) << title();
+}
+
 // A compile error while running is drawn over the canvas (the text stderr shows) for as long as it
 // lasts; the F12 screenshot and the frames captured meanwhile hold none of it: they equal a
 // headless run's byte for byte.
