@@ -2,7 +2,8 @@
 // counts rendered frames and goes back to 0 on a restart (the site's Effect.ResetTime). `step`
 // picks the ping-pong slots (graph/PassGraph.h): it goes up by one per rendered frame and never
 // goes back, not on a restart and not when time is rewound, so "the other slot" is always the
-// previous frame's output (a repeated frame included). Pure logic, no GL needed; checked by tests/unit/test_frame_sequence.cpp.
+// previous frame's output (a repeated frame included). Pure logic, no GL needed; checked by
+// tests/unit/test_diagnostics.cpp (FrameSequence.*).
 #pragma once
 
 #include <cstdint>
