@@ -2,7 +2,8 @@
 // counts rendered frames and goes back to 0 on a restart (the site's Effect.ResetTime). `step`
 // picks the ping-pong slots (graph/PassGraph.h): it goes up by one per rendered frame and never
 // goes back, not on a restart and not when time is rewound, so "the other slot" is always the
-// previous frame's output. Pure logic, no GL needed; checked by tests/unit/test_frame_sequence.cpp.
+// previous frame's output (a repeated frame included). Pure logic, no GL needed; checked by
+// tests/unit/test_diagnostics.cpp (FrameSequence.*).
 #pragma once
 
 #include <cstdint>
@@ -22,6 +23,12 @@ public:
     }
     // iFrame back to 0; the step goes on.
     void restart() { frame_ = 0; }
+    // The frame just rendered is rendered again (a paused window showing a recompile): iFrame back
+    // to that frame's, while the step goes on, so each buffer reads the frame's own output and
+    // takes one more step. Nothing rendered since the start or a restart: nothing to repeat.
+    void repeat() {
+        if (frame_ > 0) --frame_;
+    }
     // Both counters as a checkpoint saved them.
     void restore(int frame, std::uint64_t step) {
         frame_ = frame;

@@ -125,6 +125,13 @@ void Player::step(const FrameTime& time, std::span<const InputEvent> events, boo
     sequence_.advance();
 }
 
+bool Player::repaint(const FrameTime& time) {
+    if (sequence_.frame() == 0) return false;
+    sequence_.repeat();
+    step(time);
+    return true;
+}
+
 PlayerState Player::saveState() const {
     PlayerState state;
     state.frame = sequence_.frame();

@@ -75,6 +75,11 @@ public:
     void step(const FrameTime& time, std::span<const InputEvent> events = {}, bool renderImage = true);
 
     int frame() const { return sequence_.frame(); }  // iFrame of the next frame
+    // Renders the last frame again, at `time`, with the code that runs now (a paused window after a
+    // reload): the same iFrame, every pass, no new input. Buffers take one more step (each reads
+    // its own last output), as on the site, whose compile repaints every pass. False, and nothing
+    // rendered, when no frame was rendered since the start or a restart.
+    bool repaint(const FrameTime& time);
 
     // New canvas size; buffers keep their content bottom-left, iFrame goes on. All or nothing: on
     // failure (a size GL cannot hold) the old size and content stay.

@@ -215,6 +215,8 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     return okStatus();
 }
 
+bool SessionCore::repaint(const FrameTime& time) { return player_ && player_->repaint(time); }
+
 // Every buffer once: after every frame with --check-finite, else after the last one.
 void SessionCore::checkBuffers(int frame) {
     const FiniteCheck::Coverage coverage =

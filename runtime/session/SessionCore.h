@@ -101,6 +101,10 @@ public:
     // Applies `plan` (the shadertoy loaded and planned again after `changed` changed, or why it
     // could not be) with the reload rule above; a notice says what it did.
     ReloadOutcome reload(std::vector<std::filesystem::path> changed, Result<PlayerPlan> plan);
+    // A paused window after a reload: the shown frame rendered again at `time` with the code that
+    // runs now (Player::repaint: same iFrame, buffers one more step). Not captured, not checkpointed
+    // and not counted as a frame of the run. False when no frame was shown yet (or none runs).
+    bool repaint(const FrameTime& time);
     // A recording of the next frames of a session that records nothing (the library's
     // Session::record): `recording` is planRecording()'s plan (its output, frames, capture-every
     // and pass, frames numbered from 0 as a run's). renderFrame captures into it; endRecording()

@@ -35,14 +35,28 @@ FrameTime RealTimeClock::frame(double now, double wallClock) {
         t.frameRate = counter_.rate();
         ++framesSinceRestart_;
     }
-    t.wallClock = options_.wallClockStart ? *options_.wallClockStart + (t.time - options_.startTime) : wallClock;
-    t.date = options_.wallClockStart ? dateOfTime(*options_.wallClockStart, options_.startTime, t.time)
-                                     : dateAt(wallClock);
+    setDate(t, wallClock);
     lastTime_ = t.time;
     fresh_ = false;
     stepPending_ = false;
     forcePending_ = false;
     return t;
+}
+
+FrameTime RealTimeClock::repaint(double now, double wallClock) {
+    counter_.count(now);
+    FrameTime t;
+    t.time = lastTime_;
+    t.timeDelta = 1.0 / options_.nominalFps;
+    t.frameRate = options_.fixedFps ? *options_.fixedFps : counter_.rate();
+    setDate(t, wallClock);
+    return t;
+}
+
+void RealTimeClock::setDate(FrameTime& t, double wallClock) const {
+    t.wallClock = options_.wallClockStart ? *options_.wallClockStart + (t.time - options_.startTime) : wallClock;
+    t.date = options_.wallClockStart ? dateOfTime(*options_.wallClockStart, options_.startTime, t.time)
+                                     : dateAt(wallClock);
 }
 
 void RealTimeClock::setPaused(bool paused, double now) {

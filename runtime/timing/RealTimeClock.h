@@ -5,6 +5,7 @@
 // as headless runs do, whatever the display rate. Pause stops iTime: no frame is rendered while
 // paused, except that, as on the site, input while paused and a restart force one frame at the
 // paused time (iTimeDelta 1/60); stepOnce() lets exactly one frame through, one step later.
+// repaint() gives the shown frame's time again, for painting it anew (a recompile while paused).
 // Restart puts iTime back at the start.
 // The caller passes the monotonic time and the wall clock, so this is pure arithmetic (no GL, no
 // system calls) and tests drive it with made-up times.
@@ -47,6 +48,11 @@ public:
     // While paused: the next frame() renders one frame at the paused time, as the site does when
     // the mouse or a key is used, or the shader restarted, while paused.
     void forceFrame() { forcePending_ = paused_; }
+    // The time of the shown frame painted again at monotonic time `now` (a paused window after a
+    // recompile, drivers/window): the paused time with iTimeDelta 1/60, as the site paints a frame
+    // forced while paused, and counted by the site's frame counter as every painted frame. Pending
+    // steps and forced frames stay pending; the clock does not move.
+    FrameTime repaint(double now, double wallClock);
     // iTime back to the start; the next frame has the nominal iTimeDelta.
     void restart(double now);
 
@@ -58,6 +64,9 @@ public:
     }
 
 private:
+    // iDate (and the wall clock it came from) of a frame at iTime t.time.
+    void setDate(FrameTime& t, double wallClock) const;
+
     RealTimeClockOptions options_;
     double origin_;             // monotonic time that maps to startTime
     double pausedSince_ = 0;    // when paused: monotonic time of the pause

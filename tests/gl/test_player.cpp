@@ -1,6 +1,7 @@
 // The Player, the engine every driver runs: its own frame counter (restart, rewinds of time),
-// all-or-nothing resize, hot reload that keeps the last good program and the buffers, shader
-// errors that name the user's file and line, and EGL contexts that do not disturb each other.
+// all-or-nothing resize, hot reload that keeps the last good program and the buffers, a repaint of
+// the last frame (a paused window after an edit), shader errors that name the user's file and
+// line, and EGL contexts that do not disturb each other.
 #include "EglDevicePlatform.h"
 #include "GlTestSupport.h"
 
@@ -195,6 +196,30 @@ TEST_F(PlayerTest, ReloadKeepsTheLastGoodProgramAndTheBuffers) {
     stepAt(*p);
     EXPECT_EQ(texel(*p, 0, 0)[0], 13.0f) << "new code, buffer content and iFrame kept";
     EXPECT_EQ(texel(*p, 0, 0)[1], 3.0f);
+}
+
+// A paused window after a reload: the last frame again with the new code, at its own iFrame;
+// Buffer A reads its own last output, so it takes one more step.
+TEST_F(PlayerTest, ARepaintRendersTheLastFrameAgainWithTheNewCode) {
+    auto p = player();
+    ASSERT_TRUE(p);
+    EXPECT_FALSE(p->repaint(fixedStep(0))) << "no frame rendered yet";
+    EXPECT_EQ(p->frame(), 0);
+    for (int i = 0; i < 3; ++i) stepAt(*p);
+    writeFile(dir_ / "buffer_a.glsl", counterCode("10.0"));
+    auto next = plan();
+    ASSERT_TRUE(next.ok()) << next.error().text();
+    ASSERT_TRUE(p->reload(std::move(*next)).applied);
+    ASSERT_TRUE(p->repaint(fixedStep(2)));
+    EXPECT_EQ(p->frame(), 3) << "the next frame is still frame 3";
+    EXPECT_EQ(texel(*p, 0, 0)[0], 13.0f) << "the new code ran on the last frame's output";
+    EXPECT_EQ(texel(*p, 0, 0)[1], 2.0f) << "at the shown frame's iFrame";
+    stepAt(*p);
+    EXPECT_EQ(texel(*p, 0, 0)[0], 23.0f) << "the next frame reads the repainted one";
+    EXPECT_EQ(texel(*p, 0, 0)[1], 3.0f);
+    p->restart();
+    EXPECT_FALSE(p->repaint(fixedStep(0))) << "nothing rendered since the restart";
+    EXPECT_EQ(p->frame(), 0);
 }
 
 TEST_F(PlayerTest, AStructuralReloadCarriesTheBuffersItStillHas) {

@@ -98,6 +98,27 @@ TEST(FrameSequence, ThePreviousSlotAfterARestartIsTheLastFrameWritten) {
     EXPECT_EQ(slotRead(FrameAge::Previous, static_cast<std::uint64_t>(sequence.frame())), slotWritten(written));
 }
 
+TEST(FrameSequence, ARepeatedFrameHasTheSameIFrameAndReadsItsOwnOutput) {
+    FrameSequence sequence;
+    sequence.repeat();
+    EXPECT_EQ(sequence.frame(), 0) << "nothing rendered yet: nothing to repeat";
+    EXPECT_EQ(sequence.step(), 0u);
+    for (int i = 0; i < 4; ++i) sequence.advance();  // frames 0..3 rendered, frame 3 shown
+    const std::uint64_t shown = sequence.step() - 1;
+    sequence.repeat();
+    EXPECT_EQ(sequence.frame(), 3) << "the shown frame's iFrame again";
+    EXPECT_EQ(sequence.step(), 4u) << "the step goes on";
+    // The repeat reads what the shown frame wrote (one more step of each buffer), not what the
+    // frame before it wrote.
+    EXPECT_EQ(slotRead(FrameAge::Previous, sequence.step()), slotWritten(shown));
+    sequence.advance();
+    EXPECT_EQ(sequence.frame(), 4) << "the next frame comes after the shown one";
+    EXPECT_EQ(sequence.step(), 5u);
+    sequence.restart();
+    sequence.repeat();
+    EXPECT_EQ(sequence.frame(), 0) << "nothing rendered since the restart";
+}
+
 TEST(DiagnosticCode, EveryCodeHasItsOwnTextAndTheCategoryDecidesTheKind) {
     std::set<std::string_view> texts;
     int count = 0;

@@ -147,6 +147,38 @@ TEST(RealTimeClock, InputOrARestartWhilePausedForcesOneFrameAtThePausedTime) {
     EXPECT_NEAR(clock.frame(5.25, 0).time, 0.25, 1e-9) << "not paused: forcing changes nothing";
 }
 
+TEST(RealTimeClock, ARepaintWhilePausedIsAtThePausedTimeAndLeavesTheClockAlone) {
+    RealTimeClock clock(RealTimeClockOptions{}, 0.0);
+    clock.frame(0.0, 0);
+    clock.frame(0.4, 0);
+    clock.setPaused(true, 0.5);
+    clock.stepOnce();
+    FrameTime t = clock.repaint(3.0, 0);
+    EXPECT_DOUBLE_EQ(t.time, 0.4) << "the shown frame's time";
+    EXPECT_DOUBLE_EQ(t.timeDelta, 1.0 / 60.0) << "as the site paints a frame forced while paused";
+    EXPECT_TRUE(clock.shouldRender()) << "the pending step stays pending";
+    EXPECT_NEAR(clock.frame(4.0, 0).time, 0.4 + 1.0 / 60.0, 1e-9) << "and steps from the paused time";
+    EXPECT_FALSE(clock.shouldRender());
+    t = clock.repaint(5.0, 0);
+    EXPECT_NEAR(t.time, 0.4 + 1.0 / 60.0, 1e-9) << "a repaint does not move the time";
+    EXPECT_NEAR(clock.repaint(6.0, 0).time, t.time, 1e-12);
+    EXPECT_FALSE(clock.shouldRender()) << "a repaint forces no frame";
+    clock.setPaused(false, 7.0);
+    EXPECT_NEAR(clock.frame(7.25, 0).time, 0.5 + 1.0 / 60.0 + 0.25, 1e-9) << "repaints take no time from the run";
+
+    RealTimeClockOptions fixed;
+    fixed.fixedFps = 30.0;
+    RealTimeClock stepped(fixed, 0.0);
+    stepped.frame(0.0, 0);
+    stepped.frame(0.0, 0);
+    stepped.setPaused(true, 1.0);
+    t = stepped.repaint(2.0, 0);
+    EXPECT_DOUBLE_EQ(t.time, 1.0 / 30.0);
+    EXPECT_DOUBLE_EQ(t.frameRate, 30.0);
+    stepped.setPaused(false, 3.0);
+    EXPECT_DOUBLE_EQ(stepped.frame(3.0, 0).time, 2.0 / 30.0) << "the repaint was not a step";
+}
+
 TEST(RealTimeClock, StepWhilePausedRendersExactlyOneFrame) {
     RealTimeClock clock(RealTimeClockOptions{}, 0.0);
     clock.frame(0.5, 0);

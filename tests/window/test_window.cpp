@@ -305,6 +305,49 @@ TEST_F(WindowMode, PauseRestartAndStepGiveFrameZeroWithClearedBuffers) {
     waitFrames();
 }
 
+// An edit while paused: the shown frame is painted again with the new code at once, at the same
+// iFrame (the title's and the one the shader sees), and Buffer A takes one more step, as the
+// site's compile repaints every pass (docs/window.md); an edit that does not compile changes
+// nothing; F7 then steps on from there.
+TEST_F(WindowMode, AnEditWhilePausedRepaintsTheShownFrameWithoutAdvancingIFrame) {
+    start();
+    waitFrames();
+    xdo("key --window " + window_ + " F6");
+    ASSERT_TRUE(within(10, [&] { return title().find("paused") != std::string::npos; })) << title();
+    const int frame = shownFrame();
+    const Image8 before = screenshot();
+    ASSERT_EQ(column(before, 5), (std::array<int, 4>{10, 20, 30, 255}));
+    ASSERT_EQ(sinceClear(before), 1);
+    ASSERT_EQ(column(before, 3)[1], frame % 256) << "the title and the shader agree on iFrame";
+
+    const fs::path image = dir_ / "probe/image.glsl";
+    edit(image, "vec4(10, 20, 30, 255)", "vec4(40, 50, 60, 255)");
+    ASSERT_TRUE(toyhost_->waitForLog("image.glsl changed: recompiled Image", 20)) << toyhost_->log();
+    // The repaint comes with the reload, before the F12 that follows is handled.
+    const Image8 repainted = screenshot();
+    EXPECT_EQ(column(repainted, 5), (std::array<int, 4>{40, 50, 60, 255})) << "the new code's picture";
+    EXPECT_EQ(column(repainted, 3)[1], column(before, 3)[1]) << "iFrame did not advance";
+    EXPECT_EQ(sinceClear(repainted), 2) << "Buffer A took one more step, as on the site";
+    EXPECT_EQ(shownFrame(), frame) << title();
+    EXPECT_NE(title().find("paused"), std::string::npos) << title();
+    // What the window shows (polled: the paused window presents the canvas a few times a second).
+    EXPECT_TRUE(within(10, [&] { return near(at(grab(), 5, 99), {40, 50, 60}, 0); })) << "the window shows it";
+
+    edit(image, "vec4(40, 50, 60, 255)", "vec4(40, 50, undefined_name, 255)");
+    ASSERT_TRUE(toyhost_->waitForLog("undefined_name", 20)) << toyhost_->log();
+    ASSERT_TRUE(within(10, [&] { return title().find("image.glsl:22:") != std::string::npos; })) << title();
+    const Image8 failed = screenshot();
+    EXPECT_EQ(differingPixels(failed, repainted), 0) << "a failed compile while paused changes nothing";
+    EXPECT_EQ(column(failed, 3), column(repainted, 3));
+    EXPECT_EQ(shownFrame(), frame) << title();
+
+    xdo("key --window " + window_ + " F7");
+    ASSERT_TRUE(within(10, [&] { return shownFrame() == frame + 1; })) << title();
+    const Image8 stepped = screenshot();
+    EXPECT_EQ(column(stepped, 3)[1], (frame + 1) % 256);
+    EXPECT_EQ(sinceClear(stepped), 2) << "the extra step stays in the buffer";
+}
+
 TEST_F(WindowMode, TheCanvasFollowsTheWindowSize) {
     start();
     waitFrames();
@@ -447,6 +490,24 @@ TEST_F(WindowMode, AShaderThatFailsAtStartOpensTheWindowAndWaitsForTheFix) {
     const Image8 shot = screenshot();
     EXPECT_TRUE(within(20, [&] { return differingPixels(grab(), shot) == 0; }))
         << differingPixels(grab(), shot) << " pixels differ from the F12 screenshot";
+}
+
+// Paused while waiting for a shadertoy that compiles: the fix paints frame 0 at once, as the
+// site's first good compile starts its render loop, and the window stays paused.
+TEST_F(WindowMode, AFixWhilePausedBeforeTheFirstFrameShowsFrameZero) {
+    edit(dir_ / "probe/image.glsl", "vec4(10, 20, 30, 255)", "vec4(10, 20, broken_name, 255)");
+    start();
+    ASSERT_TRUE(within(20, [&] { return title().find("image.glsl:22:") != std::string::npos; })) << title() << toyhost_->log();
+    xdo("key --window " + window_ + " F6");
+    ASSERT_TRUE(within(10, [&] { return title().find("paused") != std::string::npos; })) << title();
+    edit(dir_ / "probe/image.glsl", "vec4(10, 20, broken_name, 255)", "vec4(10, 20, 30, 255)");
+    ASSERT_TRUE(within(20, [&] { return shownFrame() == 0; })) << title() << toyhost_->log();
+    const Image8 first = screenshot();
+    EXPECT_EQ(column(first, 5), (std::array<int, 4>{10, 20, 30, 255}));
+    EXPECT_EQ(column(first, 3)[0], 1) << "Buffer A ran once";
+    EXPECT_EQ(column(first, 3)[1], 0) << "iFrame 0";
+    EXPECT_EQ(shownFrame(), 0) << "still paused: " << title();
+    EXPECT_NE(title().find("paused"), std::string::npos) << title();
 }
 
 // A compile error while running is drawn over the canvas (the text stderr shows) for as long as it

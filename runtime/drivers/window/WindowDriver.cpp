@@ -45,8 +45,17 @@ public:
         reportScreenshots();
         if (events_.quitRequested()) return false;
         // Hot reload between frames: the watcher loaded and planned the files off this thread.
-        if (std::optional<ShadertoyChange> change = watcher_.take())
-            (void)s.reload(std::move(change->files), std::move(change->plan));
+        if (std::optional<ShadertoyChange> change = watcher_.take()) {
+            const ReloadOutcome outcome = s.reload(std::move(change->files), std::move(change->plan));
+            // The site's compile paints a frame even while paused; here the shown frame is painted
+            // again with the new code at the paused time, iFrame unchanged (docs/window.md). With
+            // no frame shown yet (the first code that compiles), frame 0 is painted, as the site's
+            // first good compile starts its render loop.
+            if (outcome.applied && clock_.paused() && s.running()) {
+                if (s.frame() > 0) (void)s.repaint(clock_.repaint(monotonicNow(), localWallClockNow()));
+                else clock_.forceFrame();
+            }
+        }
         const double now = monotonicNow();
         if (events_.takeControl(Control::Help)) observer_.notice(notice(controlsHelp(), Code::WindowHelp));
         if (events_.takeControl(Control::Inspector)) toggleInspector();
