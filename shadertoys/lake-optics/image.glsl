@@ -28,7 +28,7 @@
 //   dragged) turns the camera. The preset indicator (1-3 squares, top left) shows for 2 s after
 //   a preset key, so captured frames carry no overlay unless a key was pressed.
 //   TRUTH (`toyhost run --define TRUTH`): the scene itself, for ../shared/tools/gallery_truth.py
-//   to average 16 samples of: no distance calming of the normal, no footprint fade of the waves.
+//   to average 16 samples of: no distance calming of the normal, no pixel filter of the waves.
 //   (Buffer A only keeps the preset and the key time, the same at any canvas size.)
 
 const vec3 SUN_DIR = vec3(-0.38, 0.70, -0.60);   // behind-left of the camera: no glint in view
@@ -136,19 +136,25 @@ vec3 sky(vec3 rd) {
 // sum of directional waves with deep-water dispersion w = sqrt(g k); returns the normal.
 // Nine waves, turned by the golden angle and x1.37 in wavenumber (no common period in view), each
 // modulated by slow value noise of its own so the pattern comes in patches instead of a visibly
-// repeating sheet; a wave whose phase changes by more than ~3 rad per pixel along the view
-// (`footprint`: the length of water a pixel covers, the long axis of its strip) fades out instead
-// of aliasing into moire. The threshold is past Nyquist on purpose: waves that cross the view
-// still resolve across it, and against the 16-sample truth (issue 29) fading at 1 rad and a
-// distance calming of the normal left 0.13 of the far detail (now 0.38, and 31.1 -> 33.1 dB).
-vec3 waterNormal(vec2 p, float t, float footprint) {
+// repeating sheet. Each wave is filtered by the pixel it is seen through: `dPx`, `dPy` are the
+// steps on the water from this pixel to its right and upper neighbours, and a box that wide turns
+// cos(phase) into cos(phase) * sin(h) / h with h half the phase change across it, per axis (the
+// average of a wave over a pixel, exactly, for a plane; zero past two lobes). A wave that crosses
+// the view keeps the detail the pixel resolves across it; one seen along its own direction far away
+// averages out. (Issue 29: fading by the strip's long axis at 3-8 rad left 0.37 of the truth's far
+// detail; this gives 0.42, and every PSNR rises; docs/gallery.md.)
+float boxResponse(float phaseChange) {
+    float h = 0.5 * abs(phaseChange);
+    return h < 1e-3 ? 1.0 : (h < 6.2831853 ? sin(h) / h : 0.0);
+}
+vec3 waterNormal(vec2 p, float t, vec2 dPx, vec2 dPy) {
     vec2 g = vec2(0.0);
     float ang = 0.4, k = 1.3, amp = 0.020;
     for (int i = 0; i < 9; i++) {
         vec2 dir = vec2(cos(ang), sin(ang));
         float w = sqrt(9.81 * k);
         float patchy = 0.35 + 1.3 * vnoise(p * 0.13 + vec2(float(i) * 7.1, 0.05 * t));
-        float keep = 1.0 - smoothstep(3.0, 8.0, k * footprint);
+        float keep = boxResponse(k * dot(dir, dPx)) * boxResponse(k * dot(dir, dPy));
         g += dir * (amp * k * patchy * keep * cos(dot(p, dir) * k - w * t + float(i) * 1.7));
         ang += 2.39996;
         k *= 1.37;
@@ -245,7 +251,8 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     vec3 fw = normalize(fw0);
     vec3 rt = normalize(cross(vec3(0.0, 1.0, 0.0), fw));
     vec3 up = cross(fw, rt);
-    vec3 rd = normalize(uv.x * rt + uv.y * up + 1.7 * fw);
+    vec3 rd0 = uv.x * rt + uv.y * up + 1.7 * fw;   // before normalising: the neighbours' rays below
+    vec3 rd = normalize(rd0);
 
     vec3 col;
     vec3 L = normalize(SUN_DIR);
@@ -260,12 +267,17 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         } else {
             vec3 P = ro + rd * tW;
 #ifdef TRUTH
-            float fade = 1.0, footprint = 0.0;   // the scene itself (see the header)
+            float fade = 1.0;                    // the scene itself (see the header)
+            vec2 dPx = vec2(0.0), dPy = vec2(0.0);
 #else
             float fade = 1.0 / (1.0 + tW * 0.04);           // the foam line's texture calms far away
-            float footprint = tW * 2.0 / (1.7 * iResolution.y) / max(-rd.y, 0.05);
+            // where the rays of the right and upper neighbours meet the water
+            vec3 rdx = normalize(rd0 + 2.0 / iResolution.y * rt);
+            vec3 rdy = normalize(rd0 + 2.0 / iResolution.y * up);
+            vec2 dPx = (ro + rdx * (ro.y / max(-rdx.y, 1e-4))).xz - P.xz;
+            vec2 dPy = (ro + rdy * (ro.y / max(-rdy.y, 1e-4))).xz - P.xz;
 #endif
-            vec3 n = waterNormal(P.xz, t, footprint);
+            vec3 n = waterNormal(P.xz, t, dPx, dPy);
             vec3 rr = refract(rd, n, 1.0 / WATER_IOR);
 
             // march the refracted ray to the bottom (at most 45 m of water)
