@@ -282,10 +282,89 @@ std::size_t expressionEnd(const std::vector<GlslToken>& tokens, std::size_t begi
     return tokens.size();
 }
 
+// The argument ranges of the call or signature whose `(` is at `open`, and the index of its `)`.
+struct ArgumentRanges {
+    std::vector<std::pair<std::size_t, std::size_t>> ranges;
+    std::size_t close = 0;
+};
+ArgumentRanges argumentRanges(const std::vector<GlslToken>& tokens, std::size_t open) {
+    ArgumentRanges out;
+    std::size_t start = open + 1;
+    int depth = 0;
+    for (std::size_t i = open + 1; i < tokens.size(); ++i) {
+        const std::string_view w = tokens[i].text;
+        if (w == "(" || w == "[") ++depth;
+        else if ((w == ")" || w == "]") && depth > 0) --depth;
+        else if (depth == 0 && (w == "," || w == ")")) {
+            if (i > start) out.ranges.emplace_back(start, i);
+            start = i + 1;
+            if (w == ")") {
+                out.close = i;
+                return out;
+            }
+        }
+    }
+    out.close = tokens.size();
+    return out;
+}
+
+// What a helper's parameters hold, from its call sites in the pass: `float cell(vec2 o)` called
+// as cell(vec2(1, 0)) and cell(vec2(x, y)) has `o` an integer offset. A parameter whose calls
+// disagree, or that no call site gives, is left out (unknown).
+std::map<std::string_view, Value> parameterValues(const std::vector<GlslToken>& tokens,
+                                                  const std::map<std::string_view, Value>& names) {
+    std::map<std::string_view, std::vector<std::string_view>> parameters;  // function -> parameter names
+    std::set<std::size_t> signatures;
+    int braces = 0;
+    for (std::size_t i = 0; i + 1 < tokens.size(); ++i) {
+        const std::string_view w = tokens[i].text;
+        if (w == "{") ++braces;
+        else if (w == "}") braces = std::max(0, braces - 1);
+        else if (braces == 0 && tokens[i].kind == Kind::Identifier && tokens[i + 1].text == "(") {
+            const ArgumentRanges signature = argumentRanges(tokens, i + 1);
+            if (signature.close + 1 >= tokens.size() || tokens[signature.close + 1].text != "{") continue;
+            std::vector<std::string_view>& names_ = parameters[w];
+            names_.clear();
+            for (const auto& [begin, end] : signature.ranges)
+                names_.push_back(tokens[end - 1].kind == Kind::Identifier ? tokens[end - 1].text : std::string_view());
+            signatures.insert(i);
+        }
+    }
+    std::map<std::string_view, Value> values;
+    std::set<std::string_view> disagreeing;
+    for (std::size_t i = 0; i + 1 < tokens.size(); ++i) {
+        const auto function = parameters.find(tokens[i].text);
+        if (function == parameters.end() || tokens[i + 1].text != "(" || signatures.count(i)) continue;
+        const ArgumentRanges call = argumentRanges(tokens, i + 1);
+        if (call.ranges.size() != function->second.size()) continue;
+        for (std::size_t a = 0; a < call.ranges.size(); ++a) {
+            const std::string_view name = function->second[a];
+            Reader reader(tokens, names);
+            const Value v = reader.read(call.ranges[a].first, call.ranges[a].second);
+            const auto seen = values.find(name);
+            if (seen == values.end()) {
+                values[name] = v;
+                continue;
+            }
+            // An offset given as vec2(0) at one call and vec2(x, y) of loop integers at another is
+            // an integer number of texels either way.
+            const auto offsetLike = [](const Value& x) { return x.unit == Value::Unit::Texel || x.unit == Value::Unit::Const; };
+            if (offsetLike(seen->second) && offsetLike(v) && seen->second.phase == v.phase) seen->second = texel(v.phase);
+            else if (seen->second.unit != v.unit || seen->second.phase != v.phase || seen->second.uvSum != v.uvSum)
+                disagreeing.insert(name);
+        }
+    }
+    for (std::string_view name : disagreeing) values.erase(name);
+    std::erase_if(values, [](const auto& entry) { return entry.second.unit == Value::Unit::Unknown; });
+    return values;
+}
+
 // What each name means for the whole pass: integer-typed names count texels; a float name set once
 // (declared with an initializer and never assigned again) has its initializer's value; fragCoord
-// (mainImage's second parameter, whatever it is called) is a texel centre unless assigned.
-std::map<std::string_view, Value> nameValues(const std::vector<GlslToken>& tokens) {
+// (mainImage's second parameter, whatever it is called) is a texel centre unless assigned;
+// a helper's parameter has what `parameters` says its call sites pass.
+std::map<std::string_view, Value> nameValues(const std::vector<GlslToken>& tokens,
+                                             const std::map<std::string_view, Value>& parameters) {
     std::map<std::string_view, Value> names;
     std::set<std::string_view> spoiled;  // assigned after their declaration, or declared twice differently
     std::set<std::string_view> integers;
@@ -306,7 +385,9 @@ std::map<std::string_view, Value> nameValues(const std::vector<GlslToken>& token
         if (declared && isFloatType(tokens[i - 1].text) && !integers.count(t.text)) {
             if (tokens[i + 1].text != "=" && fragCoords.count(t.text)) continue;  // its parameter declaration
             Value v = unknown();
-            if (tokens[i + 1].text == "=") {
+            if (const auto given = parameters.find(t.text); given != parameters.end() && tokens[i + 1].text != "=") {
+                v = given->second;
+            } else if (tokens[i + 1].text == "=") {
                 Reader reader(tokens, names);
                 v = reader.read(i + 2, expressionEnd(tokens, i + 2));
             }
@@ -338,7 +419,8 @@ int lineAt(std::string_view code, std::size_t offset) {
 std::vector<TexelRead> texelReads(std::string_view code) {
     std::vector<GlslToken> tokens = tokenizeGlsl(code);
     std::erase_if(tokens, [](const GlslToken& t) { return t.directive; });
-    const std::map<std::string_view, Value> names = nameValues(tokens);
+    // Twice: the first reading gives what the call sites pass to helpers' parameters.
+    const std::map<std::string_view, Value> names = nameValues(tokens, parameterValues(tokens, nameValues(tokens, {})));
     std::vector<TexelRead> reads;
     for (std::size_t i = 0; i + 4 < tokens.size(); ++i) {
         const std::string_view w = tokens[i].text;

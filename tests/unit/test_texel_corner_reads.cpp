@@ -79,6 +79,16 @@ TEST(TexelCornerReads, GolfedParameterNamesAreFollowed) {
     EXPECT_EQ(landings("void mainImage(out vec4 o, vec2 u) { o = texture(iChannel0, u / iResolution.xy); }"), L{});
 }
 
+TEST(TexelCornerReads, HelperParametersHaveWhatTheirCallSitesPass) {
+    const std::string helper = "float cell(vec2 p, vec2 o) { return texture(iChannel0, (p + o) / iResolution.xy).x; }\n";
+    EXPECT_EQ(landings(helper + mainImage("float n = cell(fragCoord, vec2(1, 0)) + cell(fragCoord, vec2(0, -1));")), L{});
+    EXPECT_EQ(landings(helper + mainImage("vec2 q = floor(fragCoord);\n"
+                                          "float n = cell(q, vec2(1, 0)) + cell(q, vec2(0, -1));")),
+              L{kCorner});
+    // Call sites that disagree (a corner here, a centre there) leave the parameter unknown.
+    EXPECT_EQ(landings(helper + mainImage("float n = cell(floor(fragCoord), vec2(1, 0)) + cell(fragCoord, vec2(0));")), L{});
+}
+
 TEST(TexelCornerReads, UvStepsAreListedApartFromCorners) {
     EXPECT_EQ(landings(mainImage("vec2 uv = fragCoord / iResolution.xy;\n"
                                  "fragColor = texture(iChannel0, uv + vec2(1, 0) / iResolution.xy);")),
