@@ -323,10 +323,10 @@ std::map<std::string_view, Value> parameterValues(const std::vector<GlslToken>& 
         else if (braces == 0 && tokens[i].kind == Kind::Identifier && tokens[i + 1].text == "(") {
             const ArgumentRanges signature = argumentRanges(tokens, i + 1);
             if (signature.close + 1 >= tokens.size() || tokens[signature.close + 1].text != "{") continue;
-            std::vector<std::string_view>& names_ = parameters[w];
-            names_.clear();
+            std::vector<std::string_view>& list = parameters[w];
+            list.clear();
             for (const auto& [begin, end] : signature.ranges)
-                names_.push_back(tokens[end - 1].kind == Kind::Identifier ? tokens[end - 1].text : std::string_view());
+                list.push_back(tokens[end - 1].kind == Kind::Identifier ? tokens[end - 1].text : std::string_view());
             signatures.insert(i);
         }
     }
@@ -479,7 +479,7 @@ std::vector<Diagnostic> texelCornerWarnings(const ManifestDesc& manifest) {
             if (!count) continue;
             const std::string filter = std::string("\"filter\": \"") + filterName(channel.sampler.filter) + "\"";
             const std::string what = passName(bufferPass(channel.buffer));
-            const std::string reads_ = count == 1 ? "1 read" : std::to_string(count) + " reads";
+            const std::string howMany = count == 1 ? "1 read" : std::to_string(count) + " reads";
             Diagnostic d;
             d.severity = Severity::Warning;
             d.code = Code::ChannelFilter;
@@ -488,11 +488,11 @@ std::vector<Diagnostic> texelCornerWarnings(const ManifestDesc& manifest) {
             d.channel = c;
             d.line = first;
             d.message = corner
-                ? "reads " + what + " with texture() on texel corners (" + reads_ + ", the first here): with " + filter +
+                ? "reads " + what + " with texture() on texel corners (" + howMany + ", the first here): with " + filter +
                       " each such read averages the four texels around it; for a pixel-exact shader (a cellular "
                       "automaton, a state buffer) set \"filter\": \"nearest\" in this channel of the manifest, as the "
                       "site's channel settings show"
-                : "reads neighbours of " + what + " stepped in uv units (uv + k / resolution; " + reads_ +
+                : "reads neighbours of " + what + " stepped in uv units (uv + k / resolution; " + howMany +
                       ", the first here) and compares values exactly (==): with " + filter +
                       " the step's float rounding mixes a little of the next texel into each value, so exact "
                       "comparisons fail; set \"filter\": \"nearest\" in this channel of the manifest, as the site's "
