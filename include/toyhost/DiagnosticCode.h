@@ -47,6 +47,7 @@ enum class Category : std::uint8_t {
     X(CaptureSize,             12, "capture.size",              Output) \
     X(CaptureStopped,          13, "capture.stopped",           Output) \
     X(CaptureWav,              14, "capture.wav",               Output) \
+    X(ChannelFilter,          115, "channel.filter",            Report) \
     X(ChannelUnbound,          15, "channel.unbound",           Report) \
     X(CheckpointFormat,        16, "checkpoint.format",         Input) \
     X(CheckpointMismatch,      17, "checkpoint.mismatch",       Input) \

@@ -89,7 +89,10 @@ std::string readme(const ManifestDesc& desc) {
            "toyhost run " + desc.name + " --headless --watch --out frame_%04d.png --frames 60   # again after every edit\n"
            "```\n\n"
            "## Files\n\n" + passes +
-           "- `manifest.json`: the passes and what each `iChannelN` reads (see toyhost's docs/manifest.md)\n\n"
+           "- `manifest.json`: the passes and what each `iChannelN` reads (see toyhost's docs/manifest.md); each "
+           "channel spells out its `filter`, `wrap` (and `vflip` for pictures and videos): copy them from the "
+           "site's settings under each iChannel, as a pixel-exact buffer (a cellular automaton) needs "
+           "`\"filter\": \"nearest\"`\n\n"
            "## Inputs and controls\n\n"
            "iMouse, keys, textures: say what this shader reads and what a user can do.\n";
 }

@@ -9,6 +9,7 @@
 #include "shader/ChannelUse.h"
 #include "shader/ExpressionDepth.h"
 #include "shader/SourceText.h"
+#include "shader/TexelCornerReads.h"
 
 namespace toyhost {
 
@@ -58,6 +59,7 @@ Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media, 
     notices.insert(notices.end(), images->notices().begin(), images->notices().end());
     for (Diagnostic& warning : unboundChannelWarnings(manifest)) notices.push_back(std::move(warning));
     for (Diagnostic& warning : depthWarnings) notices.push_back(std::move(warning));
+    for (Diagnostic& warning : texelCornerWarnings(manifest)) notices.push_back(std::move(warning));
     std::vector<PassSource> sources;
     sources.reserve(preparing.size());
     for (std::future<PassSource>& source : preparing) sources.push_back(source.get());

@@ -59,6 +59,12 @@ TEST_F(PortTools, NewImageStarterRunsWithTheSiteDefaultCode) {
 TEST_F(PortTools, NewBufferStarterIsATwoPassFeedbackThatRuns) {
     auto made = runToyhost("new " + quoted(dir_ / "two") + " --passes buffers");
     ASSERT_EQ(made.exitCode, 0) << made.output;
+    // Both channels spell out the sampler the loader would give them, for the author to edit.
+    std::ifstream manifestFile(dir_ / "two" / "manifest.json");
+    const std::string manifest((std::istreambuf_iterator<char>(manifestFile)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(count(manifest, "\"filter\": \"linear\""), 2u) << manifest;
+    EXPECT_EQ(count(manifest, "\"wrap\": \"clamp\""), 2u) << manifest;
+    EXPECT_EQ(count(manifest, "\"vflip\""), 0u) << manifest;  // buffers take none
     auto run = runToyhost("run " + quoted(dir_ / "two") + " --size 96x54 --frames 40 --capture-every 39 --quiet --out " +
                           quoted(dir_ / "f_%02d.png"));
     ASSERT_EQ(run.exitCode, 0) << run.output;
@@ -191,6 +197,70 @@ TEST_F(PortTools, SamplingAnUnboundChannelWarnsOncePerPass) {
               std::string::npos)
         << run.output;
     EXPECT_EQ(run.output.find("iChannel3"), std::string::npos) << run.output;
+}
+
+// A Game of Life pasted from the site, whose channel there is nearest: its neighbour reads land on
+// texel corners (vec2 of an ivec, no + 0.5), so with the starter's linear every read averages four
+// cells and the board dies out. The run says so, naming file, pass, channel, line and the fix; with
+// nearest, or with reads at exact centres (where linear and nearest agree), it says nothing.
+namespace {
+std::string pastedLife(const std::string& coordinate) {
+    return "float cell(ivec2 p) { return texture(iChannel0, " + coordinate + ").x; }\n"
+           "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+           "    ivec2 p = ivec2(fragCoord);\n"
+           "    if (iFrame == 0) { fragColor = vec4(step(0.6, fract(sin(dot(vec2(p), vec2(12.9898, 78.233))) * 43758.5453))); return; }\n"
+           "    float n = 0.0;\n"
+           "    for (int y = -1; y <= 1; y++) for (int x = -1; x <= 1; x++) if (x != 0 || y != 0) n += cell(p + ivec2(x, y));\n"
+           "    float alive = (n == 3.0 || (cell(p) == 1.0 && n == 2.0)) ? 1.0 : 0.0;\n"
+           "    fragColor = vec4(alive, alive, alive, 1.0);\n"
+           "}\n";
+}
+}  // namespace
+
+TEST_F(PortTools, ALinearBufferReadOnTexelCornersWarnsAndNearestOrCentresDoNot) {
+    auto run = [&](const std::string& name, const std::string& coordinate, const char* filter) {
+        writeFile(dir_ / name / "buffer_a.glsl", pastedLife(coordinate));
+        writeFile(dir_ / name / "image.glsl",
+                  "void mainImage(out vec4 c, in vec2 f) { c = texelFetch(iChannel0, ivec2(f), 0); }\n");
+        writeFile(dir_ / name / "manifest.json",
+                  std::string(R"({"passes": {"Buffer A": {"source": "buffer_a.glsl", "channels": {"iChannel0": {"buffer": "A", "filter": ")") +
+                      filter + R"(", "wrap": "clamp"}}}, "Image": {"source": "image.glsl", "channels": {"iChannel0": {"buffer": "A"}}}}})");
+        return runToyhost("run " + quoted(dir_ / name) + " --size 32x24 --frames 12 --capture-every 12 --out " +
+                          quoted(dir_ / (name + "_%02d.png")));
+    };
+    auto lit = [&](const std::string& name) {
+        auto image = loadImageFile(dir_ / (name + "_11.png"));
+        EXPECT_TRUE(image.ok()) << name;
+        int count = 0;
+        if (image.ok())
+            for (int y = 0; y < image->height; ++y)
+                for (int x = 0; x < image->width; ++x) count += pixel(*image, x, y)[0] > 127;
+        return count;
+    };
+    const std::string corners = "vec2(p) / iResolution.xy";
+    auto linear = run("corner-linear", corners, "linear");
+    ASSERT_EQ(linear.exitCode, 0) << linear.output;
+    EXPECT_EQ(count(linear.output, "[channel.filter]"), 1u) << linear.output;
+    EXPECT_NE(linear.output.find((dir_ / "corner-linear" / "buffer_a.glsl").string() +
+                                 ":1: warning: Buffer A / iChannel0: reads Buffer A with texture() on texel corners"),
+              std::string::npos)
+        << linear.output;
+    EXPECT_NE(linear.output.find("set \"filter\": \"nearest\" in this channel of the manifest"), std::string::npos) << linear.output;
+    auto nearest = run("corner-nearest", corners, "nearest");
+    ASSERT_EQ(nearest.exitCode, 0) << nearest.output;
+    EXPECT_EQ(count(nearest.output, "[channel.filter]"), 0u) << nearest.output;
+    // The warning is about a real difference: the automaton lives with nearest and dies with linear.
+    EXPECT_GT(lit("corner-nearest"), 20);
+    EXPECT_EQ(lit("corner-linear"), 0);
+
+    auto centres = run("centre-linear", "(vec2(p) + 0.5) / iResolution.xy", "linear");
+    ASSERT_EQ(centres.exitCode, 0) << centres.output;
+    EXPECT_EQ(count(centres.output, "[channel.filter]"), 0u) << centres.output;
+    EXPECT_EQ(lit("centre-linear"), lit("corner-nearest"));
+    auto a = loadImageFile(dir_ / "centre-linear_11.png");
+    auto b = loadImageFile(dir_ / "corner-nearest_11.png");
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_EQ(a->rgba, b->rgba) << "reads at centres: linear gives nearest's picture";
 }
 
 // ---- NaN / Inf --------------------------------------------------------------------------------

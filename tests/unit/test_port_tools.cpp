@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "DiagnosticText.h"
 #include "ManifestFolder.h"
 #include "TestFolder.h"
@@ -892,6 +894,7 @@ TEST(PortToolsStarter, ReadmeNamesTheFolder) {
     EXPECT_NE(readme.find("toyhost run toy "), std::string::npos) << readme;
     EXPECT_NE(readme.find("- `buffer_a.glsl`: Buffer A (reads its own previous frame)\n"), std::string::npos) << readme;
     EXPECT_NE(readme.find("- `image.glsl`: Image (shows Buffer A)\n"), std::string::npos) << readme;
+    EXPECT_NE(readme.find("copy them from the site's settings under each iChannel"), std::string::npos) << readme;
 }
 
 TEST(PortToolsStarter, SecondWriteWithoutOverwriteFailsAndWritesNothing) {
@@ -914,6 +917,50 @@ TEST(PortToolsStarter, SecondWriteWithoutOverwriteFailsAndWritesNothing) {
     ASSERT_TRUE(writeStarter(s.dir, *layout, true).ok());
     EXPECT_NE(readFile(s.dir / "image.glsl"), "// my own work\n");
     EXPECT_EQ(folderContents(s.dir).size(), before.size());
+}
+
+// Every channel the starter writes spells out its sampler (filter, wrap, and vflip where the kind
+// takes it), so an author who pastes code sees what to copy from the site's channel settings; the
+// values are the loader's defaults, so the folder runs exactly as it would without them.
+TEST(PortToolsStarter, EveryChannelWrittenSpellsOutTheLoadersDefaultSampler) {
+    for (const char* layout : {"image", "buffers", "common,a,b,c,d,image"}) {
+        StarterFolder s;
+        auto manifest = s.writeAndLoad(layout);
+        ASSERT_TRUE(manifest.ok()) << layout << ": " << manifest.error().text();
+        nlohmann::json json = nlohmann::json::parse(readFile(s.dir / "manifest.json"));
+        int written = 0;
+        for (const PassDesc& pass : manifest->passes)
+            for (int c = 0; c < kChannelCount; ++c) {
+                const ChannelDesc& channel = pass.channels[c];
+                if (channel.kind == ChannelKind::None) continue;
+                ++written;
+                const nlohmann::json& object = json["passes"][passName(pass.id)]["channels"]["iChannel" + std::to_string(c)];
+                const SamplerDesc defaults = defaultSampler(channel.kind);
+                EXPECT_EQ(object.value("filter", ""), filterName(defaults.filter)) << layout << " " << object.dump();
+                EXPECT_EQ(object.value("wrap", ""), wrapName(defaults.wrap)) << layout << " " << object.dump();
+                EXPECT_EQ(object.contains("vflip"), takesVflip(channel.kind)) << layout << " " << object.dump();
+                if (takesVflip(channel.kind)) EXPECT_EQ(object["vflip"].get<bool>(), defaults.vflip) << layout;
+                EXPECT_EQ(channel.sampler.filter, defaults.filter);
+                EXPECT_EQ(channel.sampler.wrap, defaults.wrap);
+                EXPECT_EQ(channel.sampler.vflip, defaults.vflip);
+            }
+        EXPECT_EQ(written, std::string(layout) == "image" ? 0 : 2) << layout;
+        // Without the spelled-out settings the loader gives the same channels.
+        for (auto& [name, body] : json["passes"].items())
+            if (body.contains("channels"))
+                for (auto& [channelName, object] : body["channels"].items())
+                    for (const char* key : {"filter", "wrap", "vflip"}) object.erase(key);
+        s.root.write("toy/manifest.json", json.dump(2));
+        auto bare = loadManifest(s.dir);
+        ASSERT_TRUE(bare.ok()) << bare.error().text();
+        ASSERT_EQ(bare->passes.size(), manifest->passes.size());
+        for (std::size_t p = 0; p < bare->passes.size(); ++p)
+            for (int c = 0; c < kChannelCount; ++c) {
+                const SamplerDesc& a = bare->passes[p].channels[c].sampler;
+                const SamplerDesc& b = manifest->passes[p].channels[c].sampler;
+                EXPECT_TRUE(a.filter == b.filter && a.wrap == b.wrap && a.vflip == b.vflip) << layout << " pass " << p << " " << c;
+            }
+    }
 }
 
 TEST(PortToolsStarter, RefusesAFolderHoldingOneOfItsPassFiles) {
