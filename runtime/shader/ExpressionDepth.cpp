@@ -111,14 +111,6 @@ Node operation(std::initializer_list<Node> operands) {
     return n;
 }
 
-int binaryStrength(std::string_view op) {
-    static const std::map<std::string_view, int> strengths = {
-        {"||", 1}, {"^^", 2}, {"&&", 3}, {"|", 4},  {"^", 5},  {"&", 6},  {"==", 7}, {"!=", 7}, {"<", 8}, {">", 8},
-        {"<=", 8}, {">=", 8}, {"<<", 9}, {">>", 9}, {"+", 10}, {"-", 10}, {"*", 11}, {"/", 11}, {"%", 11}};
-    const auto found = strengths.find(op);
-    return found == strengths.end() ? 0 : found->second;
-}
-
 bool isAssignment(std::string_view op) {
     return op == "=" || op == "+=" || op == "-=" || op == "*=" || op == "/=" || op == "%=" || op == "&=" || op == "|=" ||
            op == "^=";
@@ -180,7 +172,7 @@ private:
     std::optional<Node> binary(std::size_t& at, int minStrength) const {
         std::optional<Node> left = unary(at);
         while (left && at < t_.size() && !t_[at].directive) {
-            const int strength = binaryStrength(t_[at].text);
+            const int strength = glslBinaryStrength(t_[at].text);
             if (strength == 0 || strength < minStrength) break;
             ++at;
             std::optional<Node> right = binary(at, strength + 1);

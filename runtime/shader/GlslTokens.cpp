@@ -1,8 +1,17 @@
 #include "shader/GlslTokens.h"
 
 #include <cctype>
+#include <map>
 
 namespace toyhost {
+
+int glslBinaryStrength(std::string_view op) {
+    static const std::map<std::string_view, int> strengths = {
+        {"||", 1}, {"^^", 2}, {"&&", 3}, {"|", 4},  {"^", 5},  {"&", 6},  {"==", 7}, {"!=", 7}, {"<", 8}, {">", 8},
+        {"<=", 8}, {">=", 8}, {"<<", 9}, {">>", 9}, {"+", 10}, {"-", 10}, {"*", 11}, {"/", 11}, {"%", 11}};
+    const auto found = strengths.find(op);
+    return found == strengths.end() ? 0 : found->second;
+}
 
 bool isIdentifierStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }

@@ -20,6 +20,13 @@ struct GlslToken {
 
 std::vector<GlslToken> tokenizeGlsl(std::string_view text);
 
+// How tightly a GLSL binary operator binds (11 `* / %`, 10 `+ -`, 9 `<< >>`, 8 relational,
+// 7 `== !=`, 6 `&`, 5 `^`, 4 `|`, 3 `&&`, 2 `^^`, 1 `||`); 0 for every other token. For the
+// precedence-climbing readers of shader/ (IntegerConstantFold, ExpressionDepth).
+int glslBinaryStrength(std::string_view op);
+inline constexpr int kGlslMultiplicative = 11;
+inline constexpr int kGlslShift = 9;
+
 bool isIdentifierStart(char c);
 bool isIdentifierChar(char c);
 

@@ -19,18 +19,6 @@ struct Value {
     std::int32_t asInt() const { return static_cast<std::int32_t>(bits); }
 };
 
-// Binding strength of the binary operators this module evaluates (higher binds tighter); 0 for
-// every other token.
-int precedence(std::string_view op) {
-    if (op == "*" || op == "/" || op == "%") return 6;
-    if (op == "+" || op == "-") return 5;
-    if (op == "<<" || op == ">>") return 4;
-    if (op == "&") return 3;
-    if (op == "^") return 2;
-    if (op == "|") return 1;
-    return 0;
-}
-
 bool isKeyword(std::string_view word) {
     static const std::set<std::string_view> kKeywords = {"return", "case", "else", "do", "if", "while", "for",
                                                          "switch", "break", "continue", "discard", "default"};
@@ -145,8 +133,8 @@ public:
         for (std::size_t i = 0; i < t_.size(); ++i) {
             const GlslToken& op = t_[i];
             if (op.directive || op.kind != Kind::Punct) continue;
-            const int p = precedence(op.text);
-            if (p != 6 && p != 4) continue;
+            const int p = glslBinaryStrength(op.text);
+            if (p != kGlslMultiplicative && p != kGlslShift) continue;
             if (op.text == "*") continue;
             if (i + 1 < t_.size() && t_[i + 1].text == "=" && t_[i + 1].offset == op.offset + op.text.size())
                 continue;  // `<<=`, `>>=`: an assignment, never constant
@@ -244,7 +232,7 @@ private:
             // A binary operator binding at least as tightly continues the operand.
             if (j == 0) return start;
             const GlslToken& before = t_[j - 1];
-            if (before.directive || before.kind != Kind::Punct || precedence(before.text) < p) return start;
+            if (before.directive || before.kind != Kind::Punct || glslBinaryStrength(before.text) < p) return start;
             --j;
         }
     }
@@ -256,7 +244,7 @@ private:
         if (!left) return std::nullopt;
         while (at < end && !t_[at].directive && t_[at].kind == Kind::Punct) {
             const std::string_view op = t_[at].text;
-            const int p = precedence(op);
+            const int p = glslBinaryStrength(op);
             if (p == 0 || p < minP) break;
             if (at + 1 < end && t_[at + 1].text == "=" && t_[at + 1].offset == t_[at].offset + op.size())
                 return std::nullopt;  // a compound assignment
