@@ -10,18 +10,22 @@
 //   Later, smaller waves are thereby pulled into the crests of earlier ones, which bunches
 //   ripples on the crests and leaves the troughs smooth.
 // - The normalised sum lies in (0, 1]; the surface is 0 .. -DEPTH below y = 0, so the ray is only
-//   marched between the planes y = 0 and y = -DEPTH, stepping by the vertical gap (stretched for
-//   shallow rays), with a final linear refinement. The march uses 12 waves, the normal 32 (extra detail only in shading).
+//   marched between the planes y = 0 and y = -DEPTH, in steps of the vertical gap over the
+//   steepest rise the water is assumed to have, then refined by false position once it is under
+//   the water. The march meets 16 waves near the horizon and 12 below, the slope 24 (extra detail
+//   only in shading), computed exactly through the drag's chain rule.
 // - Filtering that converges to the scene (checked against ../shared/tools/gallery_truth.py,
-//   TRUTH below): each wave of the normal fades to its mean once the phase one pixel step
-//   crosses nears Nyquist, from the pixel's anisotropic footprint (a grazing pixel is a long
-//   strip along the view and a narrow one across it, so waves that cross the view keep their
-//   detail to the horizon). The slopes so lost (their covariance), the slope variation still
-//   inside the pixel (screen derivatives) and the capillary ripples shorter than any modelled
-//   wave (Cox & Munk) make the reflection a lobe: Fresnel x sky is averaged over four normals
-//   spread by that variance, weighted by the area each shows the eye; and the sun's glitter is a
-//   LEAN-style Gaussian in slope space widened by the same covariance (a dim, wide glitter path
-//   to the horizon instead of a vanished or flickering one).
+//   TRUTH below). Near the horizon a pixel covers a long strip of water along the view and a
+//   narrow one across it, and which crest each part of the strip shows is beyond any prefilter:
+//   there 3 (6 in the top rows) samples stacked along the pixel's vertical axis average it, the
+//   later ones marching on from where the steeper one below met the water. Across the view, and
+//   everywhere in the one-sample water below, each wave of the slope fades to its mean once the
+//   phase one pixel step crosses nears Nyquist. The slopes so lost (their covariance), the
+//   slope variation still inside a one-sample pixel (screen derivatives) and the capillary
+//   ripples shorter than any modelled wave (Cox & Munk) make the reflection a lobe: Fresnel x
+//   sky is averaged over four normals spread by that variance, weighted by the area each shows
+//   the eye; and the sun's glitter is a LEAN-style Gaussian in slope space widened by the same
+//   covariance.
 // - Sky: single-scattering air with a per-channel Rayleigh optical depth along an air mass of
 //   1 / (sin(elevation) + 0.1): deep blue overhead, whitening towards the horizon, plus a sun glow.
 // - Shading: Schlick's Fresnel with F0 = 0.04 mixes a sky reflection (which carries a bright HDR
@@ -37,14 +41,27 @@
 const float DEPTH        = 1.0;    // wave range: the surface stays within [-DEPTH, 0]
 const float DRAG         = 0.38;
 #ifdef TRUTH
-const int   MARCH_WAVES  = 16;
+const int   FAR_WAVES    = 16;     // waves the march meets in the far band (see FAR_STRIP) ...
+const int   NEAR_WAVES   = 16;     // ... and below it
 const int   NORMAL_WAVES = 40;
 const int   MARCH_STEPS  = 160;
+const float MARCH_SLOPE  = 0.6;    // the steepest rise of the water a step assumes (see marchWater)
+const float MARCH_MIN_PIXELS = 0.0; // the shortest step, in pixels of footprint along the ray
+const float FAR_STRIP    = 1e30;   // one sample a pixel everywhere (the tool averages 16)
 #else
-const int   MARCH_WAVES  = 12;
-const int   NORMAL_WAVES = 32;
+const int   FAR_WAVES    = 16;     // the truth's: a grazing ray's hit moves with every wave
+const int   NEAR_WAVES   = 12;     // steeper rays (the seed's count): 16 cost 1.4x the frame for +1 dB
+const int   NORMAL_WAVES = 24;     // more only alias in the far band (the truth keeps 40)
 const int   MARCH_STEPS  = 48;
+const float MARCH_SLOPE  = 0.2;
+const float MARCH_MIN_PIXELS = 0.1;
+const float FAR_STRIP    = 0.15;   // pixels whose strip of water along the view (units of DEPTH) is
+                                   // longer take FAR_SAMPLES (-rd.y < 0.2 at 640x360)
 #endif
+const int   FAR_SAMPLES  = 3;      // samples stacked along the view in the far band ...
+const float HORIZON_STRIP = 1.6;   // ... and its top rows, strips longer than this (3 samples
+const int   HORIZON_SAMPLES = 6;   // alias there: detail 1.5-2 against the truth)
+const int   MARCH_REFINE = 3;      // false-position steps once the ray has crossed the surface
 const float CAMERA_Y     = 1.2;    // above the top plane
 const float GLINT_SLOPE_VAR = 2.8e-4; // the near glitter lobe: slope variance per axis (~1 degree)
 const float FADE_START   = 1.0;    // a wave fades to its mean between these radians of phase
@@ -81,99 +98,112 @@ float phasePerPixel(vec2 dir, float freq, mat2 fp) {
     return freq * max(abs(dot(dir, fp[0])), abs(dot(dir, fp[1])));
 }
 
-// Normalised wave sum at xz in [0, 1] (1 = highest crest), using n waves, each faded by what the
-// pixel's footprint `fp` can hold (zero footprint: exact). The footprint is anisotropic: at a
-// grazing view a pixel covers a long strip of water along the view and a narrow one across it,
-// so waves whose crests run across the view fade long before waves whose crests point at the
-// eye (a single width, the strip's length, erased the far water's detail).
-float waveSum(vec2 xz, int n, mat2 fp) {
+// Height of the water at xz in [-DEPTH, 0], from the first n waves at full strength (what the
+// march meets): the normalised sum of the waves, 1 = highest crest.
+float surfaceY(vec2 xz, int n) {
     vec2 dir = vec2(1.0, 0.0);
-    float freq = 1.0;
-    float speed = 2.0;
-    float weight = 1.0;
-    float sum = 0.0;
-    float total = 0.0;
-    float t = iTime;
+    float freq = 1.0, speed = 2.0, weight = 1.0, sum = 0.0, total = 0.0;
     for (int i = 0; i < n; i++) {
-        float x = dot(dir, xz) * freq + t * speed;
-        float keep = keepWave(phasePerPixel(dir, freq, fp));
+        float x = dot(dir, xz) * freq + iTime * speed;
         float w = exp(sin(x) - 1.0);
-        float slope = w * cos(x);
-        xz += dir * slope * weight * DRAG * keep; // drag: pull later waves toward this crest
-        sum += mix(WAVE_MEAN, w, keep) * weight;
+        xz += dir * w * cos(x) * weight * DRAG;   // drag: pull later waves toward this crest
+        sum += w * weight;
         total += weight;
         weight *= 0.8;
         freq *= 1.18;
         speed *= 1.07;
         dir = GOLDEN_TURN * dir;
     }
-    return sum / total;
+    return (sum / total - 1.0) * DEPTH;
 }
 
-// Slope covariance (xz) that the waves of waveSum lose at footprint `fp`: each wave's slope
-// amplitude is weight x frequency / total weight along its direction, and a wave faded by
-// `keep` keeps keep^2 of its variance.
-mat2 lostSlopeCovariance(mat2 fp) {
+// The slope (dy/dx, dy/dz) of the water at xz from the NORMAL_WAVES waves, each faded by what the
+// pixel's footprint `fp` can hold (zero footprint: exact), and the slope covariance the faded
+// waves lose. The footprint is anisotropic: at a grazing view a pixel covers a long strip of
+// water along the view and a narrow one across it, so waves whose crests run across the view
+// fade long before waves whose crests point at the eye (a single width, the strip's length,
+// erased the far water's detail). The slope is exact (no finite differences): the chain rule
+// through the drag, whose Jacobian `warp` (d xz / d xz at the start) grows with every wave.
+// Lost covariance: each wave's slope amplitude is weight x frequency / total weight along its
+// direction, and a wave faded by `keep` keeps keep^2 of its variance.
+vec2 waterSlope(vec2 xz, mat2 fp, out mat2 lost) {
     vec2 dir = vec2(1.0, 0.0);
-    float freq = 1.0, weight = 1.0, total = 0.0;
-    mat2 lost = mat2(0.0);
+    float freq = 1.0, speed = 2.0, weight = 1.0, total = 0.0;
+    vec2 grad = vec2(0.0);
+    mat2 warp = mat2(1.0);
+    lost = mat2(0.0);
     for (int i = 0; i < NORMAL_WAVES; i++) {
+        float x = dot(dir, xz) * freq + iTime * speed;
         float keep = keepWave(phasePerPixel(dir, freq, fp));
+        float sx = sin(x), cx = cos(x);
+        float w = exp(sx - 1.0);
+        vec2 dx = freq * (dir * warp);            // d x / d xz at the start
+        grad += weight * keep * w * cx * dx;      // d w / d x = w cos x
+        float drag = weight * DRAG * keep;
+        xz += dir * (w * cx * drag);
+        warp += outerProduct(dir, (w * (cx * cx - sx) * drag) * dx);   // d (w cos x) / d x
         lost += weight * weight * freq * freq * (1.0 - keep * keep) * outerProduct(dir, dir);
         total += weight;
         weight *= 0.8;
         freq *= 1.18;
+        speed *= 1.07;
         dir = GOLDEN_TURN * dir;
     }
-    return lost * (WAVE_SLOPE_VAR / (total * total));
+    lost *= WAVE_SLOPE_VAR / (total * total);
+    return grad * (DEPTH / total);
 }
 
-float surfaceY(vec2 xz, int n, mat2 fp) { return (waveSum(xz, n, fp) - 1.0) * DEPTH; }
-
-// March between the planes y = 0 and y = -DEPTH. Steps are the vertical gap (a little
-// lengthened for shallow rays, which otherwise crawl), capped at MARCH_STEPS; the final
-// answer interpolates linearly between the last sample above and the first one below.
-float marchWater(vec3 ro, vec3 rd) {
-    float tTop = (ro.y) / -rd.y;
+// March between the planes y = 0 and y = -DEPTH. A step is the vertical gap over the steepest rise
+// of the water it assumes (MARCH_SLOPE) plus the ray's own descent: at grazing angles the ray runs
+// almost parallel to the water, and a gap-sized step (the seed's) crawls, so 48 of them ended above
+// the far water. A rarer steeper face is crossed, not missed: once the ray is below the surface,
+// MARCH_REFINE false-position steps between the last point above and the first below find it.
+// Steps are also at least MARCH_MIN_PIXELS of the pixel's footprint along the ray (no crest
+// thinner than that is missed in a way a pixel could show). `hStart`: the horizontal distance of a
+// hit already known nearer on this ray's vertical plane (a steeper ray of the same pixel column
+// meets the height field no further away), where the march may begin; 0: from the top plane.
+// `waves`: how many waves of the height field the march meets.
+float marchWater(vec3 ro, vec3 rd, float hStart, int waves) {
+    float tTop = ro.y / -rd.y;
     float tBot = (ro.y + DEPTH) / -rd.y;
-    float t = tTop;
-    float gapPrev = ro.y + rd.y * t - surfaceY((ro + rd * t).xz, MARCH_WAVES, mat2(0.0));
-    float tPrev = t;
-    float stretch = 1.0 / (0.6 + abs(rd.y));
+    float t = clamp(hStart / length(rd.xz), tTop, tBot);
+    float gapPrev = ro.y + rd.y * t - surfaceY((ro + rd * t).xz, waves);
+    if (gapPrev < 0.0) {                                   // under a crest already: from the top
+        t = tTop;
+        gapPrev = ro.y + rd.y * t - surfaceY((ro + rd * t).xz, waves);
+    }
+    float tPrev = t, gap = gapPrev;
+    float stretch = 1.0 / (MARCH_SLOPE + abs(rd.y));
+    float pixelAngle = 2.0 / (iResolution.y * 1.6);
+    float minStep = max(0.001, MARCH_MIN_PIXELS * pixelAngle / max(-rd.y, 0.005));   // x t
     for (int i = 0; i < MARCH_STEPS; i++) {
-        t = min(t + max(gapPrev * stretch, 0.001 * t), tBot);
-        vec3 p = ro + rd * t;
-        float gap = p.y - surfaceY(p.xz, MARCH_WAVES, mat2(0.0));
-        if (gap < 0.001 || t >= tBot) {
-            // the surface lies between tPrev and t: take the linear root
-            return mix(tPrev, t, gapPrev / max(gapPrev - gap, 1e-5));
-        }
+        t = min(t + max(gapPrev * stretch, minStep * t), tBot);
+        gap = ro.y + rd.y * t - surfaceY((ro + rd * t).xz, waves);
+        if (gap < 0.0 || t >= tBot) break;
         tPrev = t;
         gapPrev = gap;
     }
-    return t;
-}
-
-// The normal from the waves a pixel of footprint `fp` can show, by differences over a small
-// stencil (the waves it cannot show are already faded to their mean).
-vec3 waterNormal(vec2 xz, mat2 fp) {
-    const float e = 0.01;
-    float h = surfaceY(xz, NORMAL_WAVES, fp);
-    float hx = surfaceY(xz + vec2(e, 0.0), NORMAL_WAVES, fp);
-    float hz = surfaceY(xz + vec2(0.0, e), NORMAL_WAVES, fp);
-    return normalize(vec3(h - hx, e, h - hz));
+    if (gap >= 0.0) return t;
+    float a = tPrev, ga = gapPrev, b = t, gb = gap;
+    for (int k = 0; k < MARCH_REFINE; k++) {
+        float m = mix(a, b, ga / max(ga - gb, 1e-6));
+        float gm = ro.y + rd.y * m - surfaceY((ro + rd * m).xz, waves);
+        if (gm < 0.0) { b = m; gb = gm; } else { a = m; ga = gm; }
+    }
+    return mix(a, b, ga / max(ga - gb, 1e-6));
 }
 
 // The water one pixel step covers at distance `dist` along `rd`, as two xz vectors (columns):
 // across the view (the camera's right axis) and along it (its up axis, projected onto the water
-// plane, stretched by the grazing angle). TRUTH: none.
-mat2 pixelFootprint(float dist, vec3 rd, mat3 cam) {
+// plane, stretched by the grazing angle), the latter scaled by `along` (0 where samples stacked
+// along the view already average that axis). TRUTH: none.
+mat2 pixelFootprint(float dist, vec3 rd, mat3 cam, float along) {
 #ifdef TRUTH
     return mat2(0.0);
 #else
     float pixelAngle = 2.0 / (iResolution.y * 1.6);
     vec3 up = cam[1] - rd * (cam[1].y / min(rd.y, -0.02));
-    return dist * pixelAngle * mat2(cam[0].xz, up.xz);
+    return dist * pixelAngle * mat2(cam[0].xz, along * up.xz);
 #endif
 }
 
@@ -228,57 +258,40 @@ mat3 viewBasis(float yaw, float pitch) {
     return mat3(r, cross(f, r), f);
 }
 
-void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+vec3 viewRay(vec2 fragCoord, mat3 cam) {
     vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
+    return normalize(cam * vec3(uv, 1.6));
+}
 
-    // Before the first click iMouse is all zeros: default horizon view, which is also what the
-    // mouse at the centre of the canvas gives.
-    vec2 m = vec2(0.5);
-    if (iMouse.z > 0.0 || any(notEqual(iMouse, vec4(0.0)))) m = iMouse.xy / iResolution.xy;
-    float yaw = (m.x - 0.5) * 6.2831853;
-    float pitch = clamp((m.y - 0.5) * 2.6 - 0.1, -1.4, 1.4);
+// What one sample sees: the view ray, where it meets the water, the slope there that the pixel's
+// footprint leaves (the waves it cannot show faded to their mean) and the slope covariance lost.
+struct Sample { vec3 rd; bool water; float dist; vec3 p; vec2 slope; mat2 lost; };
 
-    vec3 ro = vec3(0.0, CAMERA_Y, 0.0);
-    mat3 cam = viewBasis(yaw, pitch);
-    vec3 rd = normalize(cam * vec3(uv, 1.6));
-
-    // The water's hit point and slope come first, in uniform control flow, so that the slope's
-    // screen derivatives (below) are defined in every pixel of a quad.
-    bool water = rd.y < 0.0;
-    float dist = 0.0;
-    vec3 p = ro;
-    mat2 fp = mat2(0.0);
-    vec2 slope = vec2(0.0);
-    vec3 n = vec3(0.0, 1.0, 0.0);
-    if (water) {
-        dist = marchWater(ro, rd);
-        p = ro + rd * dist;
-        fp = pixelFootprint(dist, rd, cam);
-        n = waterNormal(p.xz, fp);
-        slope = -n.xz / n.y;
+Sample traceSample(vec3 ro, vec3 rd, mat3 cam, bool far, float hStart) {
+    Sample s = Sample(rd, rd.y < 0.0, 0.0, ro, vec2(0.0), mat2(0.0));
+    if (s.water) {
+        s.dist = marchWater(ro, rd, hStart, far ? FAR_WAVES : NEAR_WAVES);
+        s.p = ro + rd * s.dist;
+        s.slope = waterSlope(s.p.xz, pixelFootprint(s.dist, rd, cam, far ? 0.0 : 1.0), s.lost);
     }
-    // Specular anti-aliasing (after Kaplanyan et al.'s screen-space normal filtering): the slopes
-    // the kept waves still vary by across one pixel, from their screen derivatives, are slopes
-    // one sample cannot show either; they join the lost variance. Bounded, because a quad that
-    // straddles a crest's silhouette differences two unrelated surfaces.
-    vec2 dsx = dFdx(slope), dsy = dFdy(slope);
-#ifdef TRUTH
-    float pixelVar = 0.0;
-#else
-    float pixelVar = min(PIXEL_VAR_SCALE * (dot(dsx, dsx) + dot(dsy, dsy)), 0.1);
-#endif
+    return s;
+}
 
+// The sample's colour after the tone curve (display light, before gamma). `pixelVar`: the slope
+// variance still inside the pixel.
+vec3 shadeSample(Sample s, float pixelVar) {
+    mat2 lost = s.lost;
+    vec3 rd = s.rd;
     vec3 col;
-    if (!water) {
+    if (!s.water) {
         col = sky(rd);
     } else {
-        // Fresnel x sky over the slopes this pixel does not resolve (the faded waves' covariance,
+        // Fresnel x sky over the slopes this sample does not resolve (the faded waves' covariance,
         // the variation inside the pixel and the capillaries): four normals, the slopes moved by
         // +-sigma along and across the view. Each is weighted by the area it shows the eye (cos
         // to the eye / cos to the vertical): at grazing views the faces turned towards the eye
         // fill the pixel, and their Fresnel is lower than a flat sheet's. The sun disc is left to
         // the glitter lobe below (four taps cannot sample a disc this small).
-        mat2 lost = lostSlopeCovariance(fp);
         vec2 along = normalize(rd.xz + vec2(1e-6, 0.0));
         vec2 across = vec2(-along.y, along.x);
         float lostAlong = dot(along, lost * along) + 0.5 * pixelVar;
@@ -288,7 +301,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         vec3 refl = vec3(0.0);
         for (int k = 0; k < 4; k++) {
             vec2 o = vec2(k & 1, k >> 1) * 2.0 - 1.0;
-            vec2 sk = slope + o.x * sigma.x * along + o.y * sigma.y * across;
+            vec2 sk = s.slope + o.x * sigma.x * along + o.y * sigma.y * across;
             vec3 nk = normalize(vec3(-sk.x, 1.0, -sk.y));
             float seen = max(dot(nk, -rd), 0.0) / nk.y;
             float Fk = 0.04 + 0.96 * pow(1.0 - max(dot(nk, -rd), 0.0), 5.0);   // Schlick, F0 = 0.04
@@ -303,25 +316,72 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
 
         // The sun's glitter, LEAN-style: a wave facet mirrors the sun where its slope equals the
         // half vector's; the lobe is a Gaussian in slope space around that slope, of the near
-        // lobe's variance (GLINT_SLOPE_VAR) plus every slope this pixel does not show (the faded
+        // lobe's variance (GLINT_SLOPE_VAR) plus every slope this sample does not show (the faded
         // waves' covariance and the variation inside the pixel). Its peak falls as the lobe
-        // widens (unit integral), so the glitter path keeps its energy: a dim wide band to the
-        // horizon where the truth has many tiny glints, never a vanished path or a clipped smear.
+        // widens (unit integral), so the glitter path keeps its energy.
         vec3 h = normalize(normalize(SUN_DIR) - rd);
-        vec2 toSun = -h.xz / h.y - slope;
+        vec2 toSun = -h.xz / h.y - s.slope;
         mat2 lobe = lost + (GLINT_SLOPE_VAR + 0.5 * pixelVar) * mat2(1.0);
         float glint = GLINT_SLOPE_VAR / sqrt(determinant(lobe)) * exp(-0.5 * dot(toSun, inverse(lobe) * toSun));
         refl += vec3(1.0, 0.75, 0.45) * 30.0 * glint;
 
         // subsurface: light scattered back out of the water, deepest in the troughs
-        float crest = clamp((p.y + DEPTH) / DEPTH, 0.0, 1.0);
+        float crest = clamp((s.p.y + DEPTH) / DEPTH, 0.0, 1.0);
         vec3 sss = TROUGH_TINT * mix(1.0, CREST_TINT, crest);
 
         col = F * refl + (1.0 - F) * sss;
         // faraway water fades into the horizon haze
-        col = mix(col, sky(normalize(vec3(rd.x, 0.0, rd.z))), 1.0 - exp(-dist * 0.002));
+        col = mix(col, sky(normalize(vec3(rd.x, 0.0, rd.z))), 1.0 - exp(-s.dist * 0.002));
     }
+    return acesFitted(col * 1.1);
+}
 
-    col = acesFitted(col * 1.1);
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    // Before the first click iMouse is all zeros: default horizon view, which is also what the
+    // mouse at the centre of the canvas gives.
+    vec2 m = vec2(0.5);
+    if (iMouse.z > 0.0 || any(notEqual(iMouse, vec4(0.0)))) m = iMouse.xy / iResolution.xy;
+    float yaw = (m.x - 0.5) * 6.2831853;
+    float pitch = clamp((m.y - 0.5) * 2.6 - 0.1, -1.4, 1.4);
+    vec3 ro = vec3(0.0, CAMERA_Y, 0.0);
+    mat3 cam = viewBasis(yaw, pitch);
+
+    // The far band, just under the horizon: a pixel there covers a long strip of water along the
+    // view, and which crest each part of it shows is beyond any prefilter (the footprint fades
+    // and lobes gave a darker, blurrier band than the truth). FAR_SAMPLES rays stacked along the
+    // pixel's vertical axis sample it instead, footprint-filtered across the view only; each
+    // starts its march where the steeper one below met the water. Elsewhere one sample.
+    vec3 rdCentre = viewRay(fragCoord, cam);
+    // The strip a pixel covers along the view on flat water at the mean level, of the ray's
+    // distance x pixel angle / grazing sine: the same strip takes the same samples at any size.
+    float grazing = max(-rdCentre.y, 1e-4);
+    float strip = (CAMERA_Y + 0.5 * DEPTH) / grazing * (2.0 / (iResolution.y * 1.6)) / grazing;
+    bool far = rdCentre.y < 0.0 && strip > FAR_STRIP;
+    int samples = far ? (strip > HORIZON_STRIP ? HORIZON_SAMPLES : FAR_SAMPLES) : 1;
+    float step = 1.0 / float(samples);
+
+    // The first sample comes in uniform control flow, so that its slope's screen derivatives
+    // (below) are defined in every pixel of a quad.
+    Sample s = traceSample(ro, viewRay(fragCoord + vec2(0.0, 0.5 * step - 0.5), cam), cam, far, 0.0);
+    // Specular anti-aliasing (after Kaplanyan et al.'s screen-space normal filtering): the slopes
+    // the kept waves still vary by across one pixel, from their screen derivatives, are slopes
+    // one sample cannot show either; they join the lost variance. Bounded, because a quad that
+    // straddles a crest's silhouette differences two unrelated surfaces. Not in the far band,
+    // whose samples show that variation themselves.
+    vec2 dsx = dFdx(s.slope), dsy = dFdy(s.slope);
+#ifdef TRUTH
+    float pixelVar = 0.0;
+#else
+    float pixelVar = far ? 0.0 : min(PIXEL_VAR_SCALE * (dot(dsx, dsx) + dot(dsy, dsy)), 0.1);
+#endif
+    vec3 col = shadeSample(s, pixelVar);
+    float reach = length(s.p.xz - ro.xz);
+    for (int k = 1; k < samples; k++) {
+        vec3 rd = viewRay(fragCoord + vec2(0.0, (float(k) + 0.5) * step - 0.5), cam);
+        Sample sk = traceSample(ro, rd, cam, far, reach);
+        reach = length(sk.p.xz - ro.xz);
+        col += shadeSample(sk, 0.0);
+    }
+    col /= float(samples);
     fragColor = vec4(pow(col, vec3(1.0 / 2.2)) + ditherNoise(fragCoord), 1.0);
 }

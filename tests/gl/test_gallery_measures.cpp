@@ -75,8 +75,10 @@ INSTANTIATE_TEST_SUITE_P(
     Gallery, GalleryMeasures,
     ::testing::Values(
         // before issue 20 at 320x180: ratio 4.70, clipped 0.03%; footprint filtering alone 2.3
-        // (the issue's goal: 1.5; today 1.18)
-        PortBounds{"exp-sine-ocean", 1.5, 0, 255},
+        // (issue 20's goal: 1.5, met at 1.11 by a band that had gone flat, with the horizon found 9
+        // rows low). Issue 29 samples the far band against the 16-sample truth instead (far band
+        // 25 -> 33 dB at 640x360): 1.56, where the truth itself has 1.26.
+        PortBounds{"exp-sine-ocean", 1.7, 0, 255},
         // before: ratio 2.28, clipped 2.1%, black 33 (issue 20's goal: ratio <= 1.5, met at 1.10 by
         // flattening the far water to a grey mirror). Issue 29 filters against the 16-sample truth
         // instead (far band 17 -> 30 dB, detail 0.5 -> 1.05): the far water moves again, 1.55.
