@@ -81,7 +81,8 @@ INSTANTIATE_TEST_SUITE_P(
         PortBounds{"exp-sine-ocean", 1.7, 0, 255},
         // before: ratio 2.28, clipped 2.1%, black 33 (issue 20's goal: ratio <= 1.5, met at 1.10 by
         // flattening the far water to a grey mirror). Issue 29 filters against the 16-sample truth
-        // instead (far band 17 -> 30 dB, detail 0.5 -> 1.05): the far water moves again, 1.55.
+        // instead (far band 17 -> 30 dB, detail 0.5 -> 1.05): the far water moves again, 1.55 (1.60
+        // with the band of samples stacked along the view).
         PortBounds{"raymarched-sea", 1.7, 0, 24},
         // before: band 5.87 (the issue's goal: 0.6x of 5.7 = 3.4), black 39 (rock in shadow; the goal
         // and today: <= 10)
