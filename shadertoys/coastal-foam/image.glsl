@@ -630,7 +630,8 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
             for (int k = 0; k < FOAM_POINTS; k++) {
                 float o = FOAM_POINTS == 1 ? 0.0 : (k == 0 ? 0.25 : -0.25);
                 float ft = foamTex(p.xz + o * dpy, t, footprint);
-                float foam = foamCover(density, ft, footprint) * fade;
+                float foam = foamCover(density, ft, footprint);
+                foam *= fade;
                 paint += foamCol * (0.82 + 0.25 * ft) * foam;
                 cover += foam;
             }
