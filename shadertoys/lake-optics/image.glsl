@@ -28,12 +28,15 @@
 //   dragged) turns the camera. The preset indicator (1-3 squares, top left) shows for 2 s after
 //   a preset key, so captured frames carry no overlay unless a key was pressed.
 //   TRUTH (`toyhost run --define TRUTH`): the scene itself, for ../shared/tools/gallery_truth.py
-//   to average 16 samples of: no distance calming of the normal, no pixel filter of the waves.
+//   to average 16 samples of: no distance calming of the normal, no pixel filter of the waves,
+//   and TRUTH_SAMPLES samples stacked along each truth pixel's height (64 a port pixel in all:
+//   the tool's 16 leave moire in the far water, see mainImage and docs/gallery.md).
 //   (Buffer A only keeps the preset and the key time, the same at any canvas size.)
 
 const vec3 SUN_DIR = vec3(-0.38, 0.70, -0.60);   // behind-left of the camera: no glint in view
 const vec3 SUN_COL = vec3(1.25, 1.15, 1.00);
 const float WATER_IOR = 1.33;
+const int   TRUTH_SAMPLES = 4;    // TRUTH: samples stacked along each pixel's height (see mainImage)
 
 // ---------------------------------------------------------------- noise (hash-based, own) --
 float hash2i(ivec2 c) {
@@ -233,24 +236,8 @@ vec3 ditherNoise(vec2 fragCoord) {
     return (a + b - 1.0) / 255.0;
 }
 
-void mainImage(out vec4 fragColor, in vec2 fragCoord) {
-    int preset = int(clamp(texelFetch(iChannel0, ivec2(0), 0).x + 0.5, 0.0, 2.0));
-    vec3 K, Cs; float b;
-    getPreset(preset, K, b, Cs);
-
-    float t = iTime;
-    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
-
-    // camera: 11 m above the water, looking down ~22 degrees across the shore, the horizon in view
-    float yaw = 0.0;
-    if (iMouse.z > 0.0) yaw = (iMouse.x / iResolution.x - 0.5) * 1.2;
-    vec3 ro = vec3(-1.0, 11.0, -11.0);
-    vec3 ta = vec3(6.5, 4.0, 4.5);
-    vec3 fw0 = ta - ro;
-    fw0.xz = mat2(cos(yaw), -sin(yaw), sin(yaw), cos(yaw)) * fw0.xz;
-    vec3 fw = normalize(fw0);
-    vec3 rt = normalize(cross(vec3(0.0, 1.0, 0.0), fw));
-    vec3 up = cross(fw, rt);
+// One sample of the scene along the camera ray through uv.
+vec3 sceneSample(vec2 uv, vec3 ro, vec3 rt, vec3 up, vec3 fw, float t, vec3 K, float b, vec3 Cs) {
     vec3 rd0 = uv.x * rt + uv.y * up + 1.7 * fw;   // before normalising: the neighbours' rays below
     vec3 rd = normalize(rd0);
 
@@ -323,9 +310,44 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         }
     }
 
+    return col;
+}
+
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    int preset = int(clamp(texelFetch(iChannel0, ivec2(0), 0).x + 0.5, 0.0, 2.0));
+    vec3 K, Cs; float b;
+    getPreset(preset, K, b, Cs);
+
+    float t = iTime;
+    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
+
+    // camera: 11 m above the water, looking down ~22 degrees across the shore, the horizon in view
+    float yaw = 0.0;
+    if (iMouse.z > 0.0) yaw = (iMouse.x / iResolution.x - 0.5) * 1.2;
+    vec3 ro = vec3(-1.0, 11.0, -11.0);
+    vec3 ta = vec3(6.5, 4.0, 4.5);
+    vec3 fw0 = ta - ro;
+    fw0.xz = mat2(cos(yaw), -sin(yaw), sin(yaw), cos(yaw)) * fw0.xz;
+    vec3 fw = normalize(fw0);
+    vec3 rt = normalize(cross(vec3(0.0, 1.0, 0.0), fw));
+    vec3 up = cross(fw, rt);
+#ifdef TRUTH
+    // The truth's far water: its waves change phase by far more than a pixel holds there, and 16
+    // samples a pixel (the tool's) leave moire; TRUTH_SAMPLES more, stacked along each pixel's
+    // vertical axis (the long axis of its strip of water), make the average converge.
+    vec3 col = vec3(0.0);
+    for (int k = 0; k < TRUTH_SAMPLES; k++) {
+        float dy = (float(k) + 0.5) / float(TRUTH_SAMPLES) - 0.5;
+        vec3 c = sceneSample(uv + vec2(0.0, 2.0 * dy / iResolution.y), ro, rt, up, fw, t, K, b, Cs);
+        col += c * (1.0 + c / 4.0) / (1.0 + c);
+    }
+    col /= float(TRUTH_SAMPLES);
+#else
+    vec3 col = sceneSample(uv, ro, rt, up, fw, t, K, b, Cs);
     // tone map (extended Reinhard, white at 2): highlights roll off instead of clipping, the
     // dark water keeps its colour
     col = col * (1.0 + col / 4.0) / (1.0 + col);
+#endif
     col = pow(clamp(col, 0.0, 1.0), vec3(1.0 / 2.2)) + ditherNoise(fragCoord);
 
     // preset indicator: 1-3 small squares in the top-left corner, for 2 s after a preset key
