@@ -67,7 +67,6 @@ const float GLINT_SLOPE_VAR = 2.8e-4; // the near glitter lobe: slope variance p
 const float FADE_START   = 1.0;    // a wave fades to its mean between these radians of phase
 const float FADE_END     = 3.0;    // per pixel step (keepWave)
 const float PIXEL_VAR_SCALE = 0.25; // slope variance inside a pixel per (slope step per pixel)^2
-const float WAVE_MEAN    = 0.4658; // mean of exp(sin x - 1) over a period (I0(1) / e)
 const float WAVE_SLOPE_VAR = 0.1076; // variance of d/dx exp(sin x - 1) over a period
 // Slope variance (both axes) of the capillary ripples no wave here models: Cox & Munk's clean
 // minus slick sea surface (0.0033 per m/s of wind) at a fresh breeze of ~9 m/s.
@@ -348,9 +347,10 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
 
     // The far band, just under the horizon: a pixel there covers a long strip of water along the
     // view, and which crest each part of it shows is beyond any prefilter (the footprint fades
-    // and lobes gave a darker, blurrier band than the truth). FAR_SAMPLES rays stacked along the
-    // pixel's vertical axis sample it instead, footprint-filtered across the view only; each
-    // starts its march where the steeper one below met the water. Elsewhere one sample.
+    // and lobes gave a darker, blurrier band than the truth). FAR_SAMPLES rays (HORIZON_SAMPLES in
+    // its top rows) stacked along the pixel's vertical axis sample it instead, footprint-filtered
+    // across the view only; each starts its march where the steeper one below met the water.
+    // Elsewhere one sample.
     vec3 rdCentre = viewRay(fragCoord, cam);
     // The strip a pixel covers along the view on flat water at the mean level, of the ray's
     // distance x pixel angle / grazing sine: the same strip takes the same samples at any size.
