@@ -50,7 +50,7 @@ const float MARCH_MIN_PIXELS = 0.0; // the shortest step, in pixels of footprint
 const float FAR_STRIP    = 1e30;   // one sample a pixel everywhere (the tool averages 16)
 #else
 const int   FAR_WAVES    = 16;     // the truth's: a grazing ray's hit moves with every wave
-const int   NEAR_WAVES   = 12;     // steeper rays (the seed's count): 16 cost 1.4x the frame for +1 dB
+const int   NEAR_WAVES   = 12;     // steeper rays (the seed's count): 16 cost 1.4x the frame for +1.3 dB
 const int   NORMAL_WAVES = 24;     // more only alias in the far band (the truth keeps 40)
 const int   MARCH_STEPS  = 48;
 const float MARCH_SLOPE  = 0.2;
