@@ -29,14 +29,18 @@
 //   a preset key, so captured frames carry no overlay unless a key was pressed.
 //   TRUTH (`toyhost run --define TRUTH`): the scene itself, for ../shared/tools/gallery_truth.py
 //   to average 16 samples of: no distance calming of the normal, no pixel filter of the waves,
-//   and TRUTH_SAMPLES samples stacked along each truth pixel's height (64 a port pixel in all:
+//   and PIXEL_SAMPLES (4) samples stacked along each truth pixel's height (64 a port pixel in all:
 //   the tool's 16 leave moire in the far water, see mainImage and docs/gallery.md).
 //   (Buffer A only keeps the preset and the key time, the same at any canvas size.)
 
 const vec3 SUN_DIR = vec3(-0.38, 0.70, -0.60);   // behind-left of the camera: no glint in view
 const vec3 SUN_COL = vec3(1.25, 1.15, 1.00);
 const float WATER_IOR = 1.33;
-const int   TRUTH_SAMPLES = 4;    // TRUTH: samples stacked along each pixel's height (see mainImage)
+#ifdef TRUTH
+const int   PIXEL_SAMPLES = 4;    // samples stacked along each pixel's height (see mainImage)
+#else
+const int   PIXEL_SAMPLES = 1;
+#endif
 
 // ---------------------------------------------------------------- noise (hash-based, own) --
 float hash2i(ivec2 c) {
@@ -331,23 +335,18 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     vec3 fw = normalize(fw0);
     vec3 rt = normalize(cross(vec3(0.0, 1.0, 0.0), fw));
     vec3 up = cross(fw, rt);
-#ifdef TRUTH
-    // The truth's far water: its waves change phase by far more than a pixel holds there, and 16
-    // samples a pixel (the tool's) leave moire; TRUTH_SAMPLES more, stacked along each pixel's
-    // vertical axis (the long axis of its strip of water), make the average converge.
+    // One sample a pixel; the truth's far water takes more: its waves change phase by far more
+    // than a pixel holds there, and 16 samples a pixel (the tool's) leave moire; PIXEL_SAMPLES,
+    // stacked along each pixel's vertical axis (the long axis of its strip of water), make the
+    // average converge. Tone map (extended Reinhard, white at 2) per sample: highlights roll off
+    // instead of clipping, the dark water keeps its colour.
     vec3 col = vec3(0.0);
-    for (int k = 0; k < TRUTH_SAMPLES; k++) {
-        float dy = (float(k) + 0.5) / float(TRUTH_SAMPLES) - 0.5;
+    for (int k = 0; k < PIXEL_SAMPLES; k++) {
+        float dy = (float(k) + 0.5) / float(PIXEL_SAMPLES) - 0.5;
         vec3 c = sceneSample(uv + vec2(0.0, 2.0 * dy / iResolution.y), ro, rt, up, fw, t, K, b, Cs);
         col += c * (1.0 + c / 4.0) / (1.0 + c);
     }
-    col /= float(TRUTH_SAMPLES);
-#else
-    vec3 col = sceneSample(uv, ro, rt, up, fw, t, K, b, Cs);
-    // tone map (extended Reinhard, white at 2): highlights roll off instead of clipping, the
-    // dark water keeps its colour
-    col = col * (1.0 + col / 4.0) / (1.0 + col);
-#endif
+    col /= float(PIXEL_SAMPLES);
     col = pow(clamp(col, 0.0, 1.0), vec3(1.0 / 2.2)) + ditherNoise(fragCoord);
 
     // preset indicator: 1-3 small squares in the top-left corner, for 2 s after a preset key
