@@ -564,10 +564,20 @@ vec3 pictureSample(vec2 fragCoord) {
         if (ro.y < RMAX || rd.y < 0.0) tr = marchRock(ro, rd, tr0, min(min(tw, 120.0), tr1), edge);
     }
 
-    if (tr > 0.0) {
-        vec3 p = ro + rd * tr;
+    // The rock, shaded once: where the ray met it, or at the silhouette it just missed (that one
+    // takes its share of the pixel below; a silhouette faces the sun or the eye, so its shadow march
+    // is skipped: it cost 45 ms a frame). One call site: a second inlined copy of the rock's
+    // shading cost llvmpipe ~8% of the frame although only the silhouettes' few pixels ran it.
+    vec3 rockCol = vec3(0.0);
+    if (tr > 0.0 || edge.x > 0.0) {
+        float tq = tr > 0.0 ? tr : edge.y;
+        vec3 p = ro + rd * tq;
+        if (tr < 0.0) p.y = rockH(p.xz, 4);
         float hw = waterH(p.xz, t, 3);
-        col = aerial(shadeWetRock(p, rd, hw, true), rd, tr);
+        rockCol = aerial(shadeWetRock(p, rd, hw, tr > 0.0), rd, tq);
+    }
+    if (tr > 0.0) {
+        col = rockCol;
     } else if (tw < FAR && rd.y < 0.0) {
         vec3 p = ro + rd * tw;
         // the width of water one pixel covers: pixel angle x distance / grazing sine is the
@@ -662,12 +672,7 @@ vec3 pictureSample(vec2 fragCoord) {
     }
 
     // the rock's silhouette over the water or the sky it just missed, by the share it covers
-    // (a silhouette faces the sun or the eye: its shadow march is skipped, it cost 45 ms a frame)
-    if (tr < 0.0 && edge.x > 0.0) {
-        vec3 q = ro + rd * edge.y;
-        q.y = rockH(q.xz, 4);
-        col = mix(col, aerial(shadeWetRock(q, rd, waterH(q.xz, t, 3), false), rd, edge.y), edge.x);
-    }
+    if (tr < 0.0 && edge.x > 0.0) col = mix(col, rockCol, edge.x);
     return 1.0 - exp(-1.1 * col);           // gentle tone map
 }
 

@@ -119,9 +119,10 @@ TEST(GalleryDither, ExpSineOceanLookingDownIsDithered) {
 // 2.0% and 1.8% of the wet pixels above luma 140.
 TEST(GalleryMeasures, CoastalFoamWetRockIsDarkRockNotFoam) {
     const std::vector<SourceEdit> mask = {
-        {"image.glsl", "    if (tr > 0.0) {\n", "    float cls = 4.0;\n    if (tr > 0.0) {\n"},
+        {"image.glsl", "    vec3 rockCol = vec3(0.0);\n", "    float cls = 4.0;\n    vec3 rockCol = vec3(0.0);\n"},
         {"image.glsl", "        float hw = waterH(p.xz, t, 3);",
-         "        float hw = waterH(p.xz, t, 3);\n        cls = p.y - hw < 0.2 ? 1.0 : (p.y - hw > 1.0 ? 0.0 : 4.0);"},
+         "        float hw = waterH(p.xz, t, 3);\n"
+         "        cls = tr < 0.0 ? 4.0 : (p.y - hw < 0.2 ? 1.0 : (p.y - hw > 1.0 ? 0.0 : 4.0));"},
         {"image.glsl", "        foam *= fade;", "        foam *= fade;\n        cls = foam > 0.6 ? 2.0 : 3.0;"},
         {"image.glsl", "    return 1.0 - exp(-1.1 * col);           // gentle tone map",
          "    return vec3(float(cls == 1.0), float(cls == 0.0), float(cls == 2.0));"},
