@@ -246,33 +246,36 @@ float waterH(vec2 p, float t, int oct) { return waterHf(p, t, oct, 0.0); }
 // the pixel the rock's silhouette covers (x) and where along the ray it passed closest (y): the
 // ray's clearance over the rock as an angle, against the pixel's angle (a straight edge across a
 // box pixel covers 0.5 - clearance / pixel). Only rock above the mean water (0.2 m) counts.
+// Both marches refine a crossing by bisection in the same loop (5 halvings of the last step for
+// the rock, 4 for the water): one inlined copy of the height field each, not two (each copy costs
+// llvmpipe time wherever it runs).
 float marchRock(vec3 ro, vec3 rd, float t0, float t1, out vec2 edge) {
     float t = t0, tp = t0;
     float pix = 2.0 / (1.6 * iResolution.y);
     float best = 0.5 * pix;
     edge = vec2(0.0, -1.0);
-    for (int i = 0; i < ROCK_STEPS; i++) {
-        if (t > t1) break;
-        vec3 p = ro + rd * t;
+    int steps = 0, halvings = -1;       // halvings >= 0: bisecting [tp, t]
+    for (int i = 0; i < ROCK_STEPS + 5; i++) {
+        if (halvings < 0 && (t > t1 || steps == ROCK_STEPS)) break;
+        float m = halvings < 0 ? t : 0.5 * (tp + t);
+        vec3 p = ro + rd * m;
         float hr = rockH(p.xz, 4);
         float d = p.y - hr;
+        if (halvings >= 0) {
+            if (d < 0.0) t = m; else tp = m;
+            if (++halvings == 5) return 0.5 * (tp + t);
+            continue;
+        }
 #ifndef TRUTH
         if (d < best * t && d > 0.0 && hr > 0.2) { best = d / t; edge.y = t; }
 #endif
-        if (d < 0.0) {
-            float a = tp, b = t;
-            for (int j = 0; j < 5; j++) {
-                float m = 0.5 * (a + b);
-                vec3 q = ro + rd * m;
-                if (q.y - rockH(q.xz, 4) < 0.0) b = m; else a = m;
-            }
-            return 0.5 * (a + b);
-        }
+        if (d < 0.0) { halvings = 0; continue; }
         tp = t;
         // out at sea (shoreS < -16) the rock lies at -5 m, under any water: step to where the
         // shore zone may begin (shoreS changes by at most 1.25 m per metre across the ground)
         float sea = (-16.0 - shoreS(p.xz)) / 1.25;
         t += max(max(0.02 + 0.004 * t, 0.45 * d), sea / max(length(rd.xz), 1e-3));
+        steps++;
     }
     if (edge.y > 0.0) edge.x = 0.5 - best / pix;
     return -1.0;
@@ -280,21 +283,21 @@ float marchRock(vec3 ro, vec3 rd, float t0, float t1, out vec2 edge) {
 
 float marchWater(vec3 ro, vec3 rd, float t0, float t1, float time) {
     float t = t0, tp = t0;
-    for (int i = 0; i < WATER_STEPS; i++) {
-        if (t > t1) break;
-        vec3 p = ro + rd * t;
+    int steps = 0, halvings = -1;       // halvings >= 0: bisecting [tp, t]
+    for (int i = 0; i < WATER_STEPS + 4; i++) {
+        if (halvings < 0 && (t > t1 || steps == WATER_STEPS)) break;
+        float m = halvings < 0 ? t : 0.5 * (tp + t);
+        vec3 p = ro + rd * m;
         float d = p.y - waterH(p.xz, time, 2);
-        if (d < 0.0) {
-            float a = tp, b = t;
-            for (int j = 0; j < 4; j++) {
-                float m = 0.5 * (a + b);
-                vec3 q = ro + rd * m;
-                if (q.y - waterH(q.xz, time, 2) < 0.0) b = m; else a = m;
-            }
-            return 0.5 * (a + b);
+        if (halvings >= 0) {
+            if (d < 0.0) t = m; else tp = m;
+            if (++halvings == 4) return 0.5 * (tp + t);
+            continue;
         }
+        if (d < 0.0) { halvings = 0; continue; }
         tp = t;
         t += max(0.03 + 0.005 * t, 0.6 * d / max(-rd.y, 0.05));
+        steps++;
     }
     return t1;   // near the horizon: take the lower bound plane
 }
