@@ -248,8 +248,9 @@ float waterH(vec2 p, float t, int oct) { return waterHf(p, t, oct, 0.0); }
 // ray's clearance over the rock as an angle, against the pixel's angle (a straight edge across a
 // box pixel covers 0.5 - clearance / pixel). Only rock above the mean water (0.2 m) counts.
 // Both marches refine a crossing by bisection in the same loop (5 halvings of the last step for
-// the rock, 4 for the water): one inlined copy of the height field each, not two (each copy costs
-// llvmpipe time wherever it runs).
+// the rock, 4 for the water), not in a loop of their own nested in the step loop: llvmpipe runs
+// an if's body for every pixel and a loop's at least once, so a nested bisection cost one more
+// height-field evaluation at every step (docs/performance.md: 257 -> 203 ms a frame).
 float marchRock(vec3 ro, vec3 rd, float t0, float t1, float sy, out vec2 edge) {
     float t = t0, tp = t0;
     float pix = sy * 2.0 / (1.6 * iResolution.y);       // the sample's height as an angle
@@ -580,8 +581,8 @@ vec3 pictureSample(vec2 fragCoord, float sy, inout vec2 starts) {
 
     // The rock, shaded once: where the ray met it, or at the silhouette it just missed (that one
     // takes its share of the pixel below; a silhouette faces the sun or the eye, so its shadow march
-    // is skipped: it cost 45 ms a frame). One call site: a second inlined copy of the rock's
-    // shading cost llvmpipe ~8% of the frame although only the silhouettes' few pixels ran it.
+    // is skipped: it cost 45 ms a frame). One call site: llvmpipe runs an if's body for every
+    // pixel, and a second copy of the rock's shading for the silhouettes cost ~8% of the frame.
     vec3 rockCol = vec3(0.0);
     if (tr > 0.0 || edge.x > 0.0) {
         float tq = tr > 0.0 ? tr : edge.y;
