@@ -184,25 +184,28 @@ float caustic(vec2 p, float t) {
 
 // ---------------------------------------------------------------------------- march --
 // march a ray (ro, rd) against the height field from t0 to t1; returns t of the hit or -1
+// Once below, it bisects between the last point above and this one (5 halvings) in the same loop,
+// not in a loop of its own nested in the step loop: llvmpipe runs an if's body for every pixel and
+// a loop's at least once, so a nested bisection cost one more height evaluation at every step
+// (docs/performance.md).
 float marchTerrain(vec3 ro, vec3 rd, float t0, float t1, int steps) {
     float t = t0;
     float tPrev = t0;
-    for (int i = 0; i < 96; i++) {
-        if (i >= steps || t > t1) break;
-        vec3 p = ro + rd * t;
+    int i = 0, halvings = -1;           // halvings >= 0: bisecting [tPrev, t]
+    for (int n = 0; n < 96 + 5; n++) {
+        if (halvings < 0 && (i >= steps || i >= 96 || t > t1)) break;
+        float m = halvings < 0 ? t : 0.5 * (tPrev + t);
+        vec3 p = ro + rd * m;
         float dh = p.y - terrainH(p.xz);
-        if (dh < 0.0) {
-            // bisection between the last point above and this one below
-            float a = tPrev, b = t;
-            for (int j = 0; j < 5; j++) {
-                float m = 0.5 * (a + b);
-                vec3 q = ro + rd * m;
-                if (q.y - terrainH(q.xz) < 0.0) b = m; else a = m;
-            }
-            return 0.5 * (a + b);
+        if (halvings >= 0) {
+            if (dh < 0.0) t = m; else tPrev = m;
+            if (++halvings == 5) return 0.5 * (tPrev + t);
+            continue;
         }
+        if (dh < 0.0) { halvings = 0; continue; }
         tPrev = t;
         t += max(0.04, 0.45 * dh);
+        i++;
     }
     return -1.0;
 }
