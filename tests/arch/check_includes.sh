@@ -6,7 +6,8 @@
 # include the public headers (<toyhost/...>) and only the runtime modules its CLIENTS_TXT line
 # declares ("tools/compat: core player ...", written from toyhost_include_rules() calls at
 # configure time); a folder without a line may include the public headers only. Prints every
-# violation.
+# violation. No engine module (all but api) includes a facade header of the public API, and no other
+# public header does (facade_headers, below, with the known exceptions).
 # Usage: check_includes.sh SOURCE_DIR MODULES_TXT [CLIENTS_TXT]
 set -euo pipefail
 src="$1" graph="$2" clients="${3:-}"
@@ -40,6 +41,58 @@ for module in "${!deps[@]}"; do
       status=1
     fi
   done < <(grep -HE '^\s*#include "[^/"]+/' "$src/runtime/$module"/*.h "$src/runtime/$module"/*.cpp 2>/dev/null || true)
+done
+
+# The public API's facade headers: classes and functions that the api module implements over the
+# engine (Shadertoy holds the engine's ManifestDesc, Session runs a SessionCore, compareShadertoys
+# two Sessions). No engine module (every module but api) includes one: it would depend on the layer
+# built on it. The engine uses the public vocabulary headers (Result.h, Diagnostic.h, Input.h,
+# Defaults.h, ...), and those include no facade header, so none reaches the engine through them.
+facade_headers=(toyhost/Session.h toyhost/Compare.h toyhost/Shadertoy.h)
+# Known includes of a facade header in the engine, "FILE HEADER", each with its reason. An entry
+# whose include is gone fails the check, so the list only shrinks.
+facade_exceptions=(
+  # issue 41: moving to toyhost/Settings.h / CompareTypes.h (SessionSettings; the compare
+  # result and tolerance types). ImageDifference.cpp defines compareImages, which Compare.h declares.
+  "runtime/session/SessionOptions.h toyhost/Session.h"
+  "runtime/compare/CompareChecks.h toyhost/Compare.h"
+  "runtime/compare/ImageDifference.cpp toyhost/Compare.h"
+)
+declare -A facade_excepted
+for entry in "${facade_exceptions[@]}"; do facade_excepted[$entry]=0; done
+# facade_includes WHO FILE...: every include of a facade header in the files fails, unless excepted.
+facade_includes() {
+  local who="$1" line file included entry
+  shift
+  while IFS= read -r line; do
+    [[ -z "$line" ]] && continue
+    file="${line%%:*}"
+    [[ "${line#*:}" =~ $include_re ]] || continue
+    included="${BASH_REMATCH[1]}"
+    [[ " ${facade_headers[*]} " == *" $included "* ]] || continue
+    entry="${file#"$src"/} $included"
+    if [[ -n "${facade_excepted[$entry]+x}" ]]; then
+      facade_excepted[$entry]=1
+    else
+      echo "layering: ${file#"$src"/} includes the facade header <$included>, which $who may not (the vocabulary headers only)"
+      status=1
+    fi
+  done < <(grep -HE '^\s*#\s*include\s*["<]toyhost/' "$@" 2>/dev/null || true)
+}
+for module in "${!deps[@]}"; do
+  [[ "$module" == api ]] && continue
+  facade_includes "an engine module ($module)" "$src/runtime/$module"/*.h "$src/runtime/$module"/*.cpp
+done
+vocabulary=()
+for header in "$src"/include/toyhost/*; do
+  [[ " ${facade_headers[*]} " == *" toyhost/${header##*/} "* ]] || vocabulary+=("$header")
+done
+facade_includes "a public header that is not a facade" "${vocabulary[@]}"
+for entry in "${!facade_excepted[@]}"; do
+  if (( ! facade_excepted[$entry] )); then
+    echo "layering: check_includes.sh excepts \"$entry\", an include that is gone: remove it from facade_exceptions"
+    status=1
+  fi
 done
 
 # Every runtime folder holding sources is a declared module (folders such as drivers/ only group
@@ -115,6 +168,6 @@ for folder in "${client_folders[@]}"; do
 done
 
 if (( status == 0 )); then
-  echo "layering: ${#deps[@]} modules, every include follows the declared graph; $clients_checked users of the runtime include only what they declare"
+  echo "layering: ${#deps[@]} modules, every include follows the declared graph, no engine module includes a facade header (${#facade_exceptions[@]} known exceptions); $clients_checked users of the runtime include only what they declare"
 fi
 exit $status
