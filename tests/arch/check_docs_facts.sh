@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # Checks what docs/architecture.md says about the tree against the tree:
 # - every path it names exists: a backticked word holding a slash and no space, parenthesis or
-#   quote, from the source directory or, as the includes name them, from runtime/ (`core/Defaults.h`);
-#   placeholders (a `<build>`, `...`, `*`, or a capitals-only segment such as `runtime/M/`) are not paths;
+#   quote, from the source directory or, as the includes name them, from runtime/
+#   (`core/Defaults.h`); placeholders (a `<build>`, `...`, `*`, or a capitals-only segment such as
+#   `runtime/M/`) are not paths;
 # - the module table ("## The modules") has one row per module of MODULES_TXT (the graph the
 #   configure step writes from runtime/CMakeLists.txt, "module: dep dep ..." lines), and its "uses"
 #   column lists exactly that module's DEPS: module names, comma-separated, "-" for none;
 # - the layers table ("## The seams") names every module in exactly one layer;
 # - every size claim holds. A claim names its file just before it: "`PATH` is under N lines"
 #   (fewer than N), "`PATH` is N lines" (exactly N, as `wc -l` counts) or "`PATH` is limited to N
-#   lines" (the limit arch.file_sizes applies to it, tests/arch/check_sizes.sh --limit-of). Any
-#   other number of lines in the page ("about 300 lines") is a claim nobody checks, and fails.
+#   lines" (the limit arch.file_sizes applies to it, a runtime source file; check_sizes.sh
+#   --limit-of says which). Any other number of lines in the page ("about 300 lines") is a claim
+#   nobody checks, and fails.
 # Prints every violation. Usage: check_docs_facts.sh SOURCE_DIR MODULES_TXT
 set -euo pipefail
 src="$1" graph="$2"
@@ -36,6 +38,7 @@ sort_into() {
   for word in "${ordered[@]}"; do out+="$word "; done
 }
 
+sorted="" listed=""  # set by sort_into
 declare -A deps
 while IFS=: read -r module list; do
   [[ -z "$module" ]] && continue
@@ -94,7 +97,7 @@ for module in "${!deps[@]}"; do
   [[ -n "${rows[$module]+x}" ]] || fail "the module table has no row for $module"
 done
 
-# --- the layers table: every module in exactly one layer -------------------------------------------
+# --- the layers table: every module in exactly one layer ----------------------------------------
 declare -A layer_of
 layer_rows=0
 while IFS='|' read -r _ layer cell _; do
@@ -130,6 +133,9 @@ while IFS= read -r claim; do
   case "$kind" in
     "under ") (( actual < n )) || fail "\"$claim\", but it has $actual lines" ;;
     "limited to ")
+      if [[ "$path" != runtime/*.cpp && "$path" != runtime/*.h ]]; then
+        fail "\"$claim\", but arch.file_sizes limits runtime source files only"; continue
+      fi
       limit="$("$src/tests/arch/check_sizes.sh" --limit-of "$path")"
       (( limit == n )) || fail "\"$claim\", but arch.file_sizes limits it to $limit (tests/arch/check_sizes.sh)" ;;
     *) (( actual == n )) || fail "\"$claim\", but it has $actual lines" ;;

@@ -4,7 +4,8 @@
 # fails, naming the defect, with a path that does not exist (in the index and in the prose), a
 # module row whose uses has a module more or one less than its DEPS, or prose instead of modules,
 # a module's row gone, a row for a module that is not declared, a module in no layer, a false size
-# claim of each form (one wrapped over two lines), and a number of lines in no checked form.
+# claim of each form (one wrapped over two lines), a limit claimed for a file arch.file_sizes does
+# not check, and a number of lines in no checked form.
 # Usage: check_docs_facts_selftest.sh SOURCE_DIR MODULES_TXT WORK_DIR
 set -euo pipefail
 src="$(cd "$1" && pwd)" graph="$2" work="$3"
@@ -99,6 +100,10 @@ expect_failure false_exact "\"\`$small\` is $((n + 1)) lines\", but it has $n li
 make_tree false_limit
 change 's#`runtime/session/SessionCore.cpp`$#`runtime/session/SessionCore.cpp` is limited to 9999 lines, and#'
 expect_failure false_limit "\"\`runtime/session/SessionCore.cpp\` is limited to 9999 lines\", but arch.file_sizes limits it to"
+
+make_tree unchecked_limit
+echo "\`README.md\` is limited to 600 lines." >> "$doc"
+expect_failure unchecked_limit "\"\`README.md\` is limited to 600 lines\", but arch.file_sizes limits runtime source files only"
 
 make_tree unchecked_claim
 echo "The loop is about 300 lines." >> "$doc"

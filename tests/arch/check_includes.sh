@@ -52,8 +52,8 @@ facade_headers=(toyhost/Session.h toyhost/Compare.h toyhost/Shadertoy.h)
 # Known includes of a facade header in the engine, "FILE HEADER", each with its reason. An entry
 # whose include is gone fails the check, so the list only shrinks.
 facade_exceptions=(
-  # issue 41: moving to toyhost/Settings.h / CompareTypes.h (SessionSettings; the compare
-  # result and tolerance types). ImageDifference.cpp defines compareImages, which Compare.h declares.
+  # issue 41: moving to toyhost/Settings.h / CompareTypes.h (SessionSettings; the compare result
+  # and tolerance types). ImageDifference.cpp defines compareImages, which Compare.h declares.
   "runtime/session/SessionOptions.h toyhost/Session.h"
   "runtime/compare/CompareChecks.h toyhost/Compare.h"
   "runtime/compare/ImageDifference.cpp toyhost/Compare.h"

@@ -20,8 +20,8 @@ if ! output="$("$check" "$copy" "$graph" "$clients" 2>&1)"; then
   echo "the unchanged copy fails the check already:"; echo "$output"; exit 1
 fi
 
-# plant FILE LINE [RULE]: the check must fail and name FILE (with RULE's words, when given); the file
-# goes again afterwards.
+# plant FILE LINE [RULE]: the check must fail and name FILE (with RULE's words, when given); the
+# file goes again afterwards.
 plant() {
   local file="$1" line="$2" rule="${3:-}" output
   mkdir -p "$(dirname "$copy/$file")"

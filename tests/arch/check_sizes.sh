@@ -4,10 +4,10 @@
 # (tests/arch/size-allowlist.txt) gives it a higher one and says why. An allow-list line that is no
 # longer needed (the file is back within its limit, or gone) fails too, so the list cannot rot.
 # Prints every violation.
-# Usage: check_sizes.sh SOURCE_DIR [ALLOWLIST]   check the tree (ALLOWLIST defaults to the tree's)
-#        check_sizes.sh --limit-of PATH          print the limit of PATH (relative to the source
-#                                                directory), the allow-list aside: docs/architecture.md's
-#                                                "is limited to N lines" claims are checked against it
+# Usage: check_sizes.sh SOURCE_DIR [ALLOWLIST]  check the tree (ALLOWLIST: the tree's by default)
+#        check_sizes.sh --limit-of PATH         print the limit of PATH (from the source directory),
+#                                               the allow-list aside (docs/architecture.md's "is
+#                                               limited to N lines" claims are checked against it)
 set -euo pipefail
 
 # The limits, written here only. A file passes its limit when it has more lines than this.
