@@ -25,7 +25,7 @@ Status ImageSequenceSink::write(const CapturedFrame& frame, EncodeScratch& scrat
     constexpr ParentFolders parents = ParentFolders::MustExist;
     Status written = okStatus();
     scratch.image.encodeSeconds = scratch.image.writeSeconds = 0;  // a file refused early took none
-    if (pattern_.format() == OutputFormat::Exr) {
+    if (pattern_.kind().floats) {
         if (frame.format != PixelFormat::Rgba32f)
             return fileError(path.string(), "EXR capture needs a float readback", Code::CaptureFormat);
         written = writeExr(path, frame.width, frame.height, frame.rgba32f(), &scratch.image, exr_, parents);

@@ -8,9 +8,10 @@ namespace toyhost {
 Result<OutputPattern> OutputPattern::parse(const std::string& pattern) {
     OutputPattern out;
     out.pattern_ = pattern;
-    if (pattern == "-") {
+    if (pattern == kRawStreamPattern) {
         out.prefix_ = pattern;
-        out.format_ = OutputFormat::RawStream;
+        for (const OutputKind& kind : outputKinds())
+            if (!kind.toFile) out.kind_ = &kind;
         return out;
     }
     auto bad = [&](const std::string& why) { return Error("--out " + pattern + ": " + why, Code::UsageOut); };
@@ -43,12 +44,11 @@ Result<OutputPattern> OutputPattern::parse(const std::string& pattern) {
     std::string ext = dot == std::string::npos || name.find('/', dot) != std::string::npos ? "" : name.substr(dot);
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     out.extension_ = ext;
-    if (ext == ".png") out.format_ = OutputFormat::Png;
-    else if (ext == ".exr") out.format_ = OutputFormat::Exr;
-    else if (ext == ".mp4" || ext == ".webm" || ext == ".mov" || ext == ".mkv") out.format_ = OutputFormat::Video;
-    else return bad("unsupported format \"" + ext + "\" (use .png, .exr, a video .mp4/.webm/.mov/.mkv, or - for raw RGBA on stdout)");
-    if (out.format_ == OutputFormat::Video && out.numbered())
-        return bad("a video is one file: remove the frame number placeholder");
+    const OutputKind* kind = outputKindOfExtension(ext);
+    if (!kind) return bad("unsupported format \"" + ext + "\" (use " + outputKindsOffered() + ")");
+    out.kind_ = kind;
+    if (kind->oneFile() && out.numbered())
+        return bad("a " + std::string(kind->name) + " is one file: remove the frame number placeholder");
     return out;
 }
 

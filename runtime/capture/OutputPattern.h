@@ -6,24 +6,24 @@
 #include <filesystem>
 #include <string>
 
+#include "capture/OutputKinds.h"
 #include "core/Result.h"
 
 namespace toyhost {
 
-// Png/Exr: one file per captured frame. Video: one file encoded by ffmpeg (.mp4, .webm, .mov,
-// .mkv). RawStream: "-", every captured frame's RGBA8 bytes on stdout.
-enum class OutputFormat { Png, Exr, Video, RawStream };
-
 class OutputPattern {
 public:
-    // Accepts "%d", "%0Nd" (one of them at most) and "%%"; the extension must be .png or .exr,
-    // or a video container (no placeholder: a video is one file); "-" alone is the raw stream.
+    // Accepts "%d", "%0Nd" (one of them at most) and "%%"; the extension must be one of a file
+    // kind's (capture/OutputKinds.h; no placeholder for a kind that is one file); "-" alone is
+    // the raw stream.
     static Result<OutputPattern> parse(const std::string& pattern);
 
-    OutputFormat format() const { return format_; }
+    // The kind's row of capture/OutputKinds.h: every fact that depends on what is written.
+    const OutputKind& kind() const { return *kind_; }
+    OutputFormat format() const { return kind_->format; }
     bool numbered() const { return width_ >= 0; }
     // True when every captured frame goes into one output (a video or the raw stream).
-    bool streamed() const { return format_ == OutputFormat::Video || format_ == OutputFormat::RawStream; }
+    bool streamed() const { return kind_->streamed; }
     // Lower-case extension with its dot (".mp4"); empty for the raw stream.
     const std::string& extension() const { return extension_; }
     std::filesystem::path pathFor(int frame) const;
@@ -35,7 +35,7 @@ private:
     std::string suffix_;
     std::string extension_;
     int width_ = -1;  // -1: no placeholder
-    OutputFormat format_ = OutputFormat::Png;
+    const OutputKind* kind_ = &outputKinds().front();
 };
 
 }  // namespace toyhost

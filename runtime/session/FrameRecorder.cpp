@@ -1,6 +1,5 @@
 #include "session/FrameRecorder.h"
 
-#include "capture/FileSinks.h"
 #include "core/Defaults.h"
 
 #include <algorithm>
@@ -13,10 +12,10 @@ namespace toyhost {
 class FrameRecorder::Reads final : public FrameReads {
 public:
     explicit Reads(FrameRecorder& recorder) : recorder_(recorder) {}
-    const Player* player = nullptr;  // the one that rendered the frame start() reads
+    const RenderedFrame* rendered = nullptr;  // the frame start() reads
 
     int pending() const override { return recorder_.ring_ ? recorder_.ring_->pending() : 0; }
-    Status start(int frame) override { return recorder_.capture(*player, frame); }
+    Status start(int) override { return recorder_.capture(*rendered); }
     bool oldestDone() const override { return recorder_.ring_->oldestReady(); }
     Status handOverOldest() override { return recorder_.collectOldest(); }
     void dropAll() override {
@@ -43,24 +42,14 @@ Result<std::unique_ptr<FrameRecorder>> FrameRecorder::create(const RecorderSetti
         recorder->format_ = PixelFormat::Rgba32f;
     }
 
-    switch (settings.output.format()) {
-        case OutputFormat::Png:
-        case OutputFormat::Exr:
-            recorder->sink_ = std::make_unique<ImageSequenceSink>(settings.output, settings.pngLevel, settings.exr);
-            break;
-        case OutputFormat::RawStream:
-            recorder->sink_ = std::make_unique<RawStreamSink>(settings.rawStreamFd, "stdout");
-            break;
-        case OutputFormat::Video: {
-            Result<std::unique_ptr<VideoSink>> video = VideoSink::start(
-                settings.output.pathFor(0), recorder->width_, recorder->height_, settings.fps, settings.video);
-            if (!video) return video.error();
-            recorder->videoEncoder_ = (*video)->encoder();
-            recorder->videoEncoderChoice_ = (*video)->autoExplanation();
-            recorder->sink_ = std::move(*video);
-            break;
-        }
-    }
+    OutputSinkRequest request = settings.sink;
+    request.width = recorder->width_;
+    request.height = recorder->height_;
+    Result<OutputSink> sink = makeOutputSink(request);
+    if (!sink) return sink.error();
+    recorder->sink_ = std::move(sink->sink);
+    recorder->videoEncoder_ = std::move(sink->videoEncoder);
+    recorder->videoEncoderChoice_ = std::move(sink->videoEncoderChoice);
     const int threads = settings.synchronous ? 0
                         : settings.encoderThreads > 0 ? settings.encoderThreads
                                                       : defaultEncoderThreads();
@@ -90,18 +79,18 @@ FrameRecorder::~FrameRecorder() {
 RecorderSettings recorderSettings(const SessionPlan& run, RunActivity* activity, std::function<bool()> stopRequested) {
     const SessionOptions& o = run.options;
     RecorderSettings settings;
-    settings.output = *run.output;
+    settings.sink.output = *run.output;
+    settings.sink.pngLevel = *o.pngLevel;
+    settings.sink.exr = o.exr;
+    settings.sink.video = o.video;
+    settings.sink.fps = o.settings.fps.value_or(defaults::kFps);
+    settings.sink.rawStreamFd = o.rawStreamFd;
     settings.pass = o.capturePass;
     settings.frames = *o.frames;
     settings.captureEvery = *o.captureEvery;
     settings.synchronous = o.syncCapture;
-    settings.pngLevel = *o.pngLevel;
-    settings.exr = o.exr;
     settings.encoderThreads = o.encoderThreads;
     settings.memoryCapBytes = *o.captureMemoryBytes;
-    settings.video = o.video;
-    settings.fps = o.settings.fps.value_or(defaults::kFps);
-    settings.rawStreamFd = o.rawStreamFd;
     settings.dropWhenBusy = o.interactive && !o.settings.fps;
     settings.activity = activity;
     settings.stopRequested = std::move(stopRequested);
@@ -139,9 +128,10 @@ struct Stopwatch {
 };
 }  // namespace
 
-Status FrameRecorder::capture(const Player& player, int frame) {
-    if (settings_.pass == PassId::CubeA) return captureCube(player, frame);
-    const PassOutput output = player.output(settings_.pass);
+Status FrameRecorder::capture(const RenderedFrame& rendered) {
+    const int frame = rendered.frame;
+    if (settings_.pass == PassId::CubeA) return captureCube(rendered.player, frame);
+    const PassOutput& output = rendered.output;
     if (output.width != width_ || output.height != height_)
         return Error("capture: the canvas changed size during a recording (" + std::to_string(width_) + "x" +
                          std::to_string(height_) + " -> " + std::to_string(output.width) + "x" +
@@ -171,9 +161,11 @@ Status FrameRecorder::capture(const Player& player, int frame) {
     return okStatus();
 }
 
-Status FrameRecorder::rendered(const Player& player, int frame) {
-    reads_->player = &player;
-    return stream_->rendered(frame, *reads_);
+Status FrameRecorder::rendered(const RenderedFrame& frame) {
+    reads_->rendered = &frame;
+    Status handed = stream_->rendered(frame.frame, *reads_);
+    reads_->rendered = nullptr;
+    return handed;
 }
 
 Result<std::optional<std::vector<std::byte>>> FrameRecorder::takeBuffer(std::size_t bytes) {
@@ -216,7 +208,16 @@ Status FrameRecorder::dropped(int frame) {
     return okStatus();
 }
 
-FrameRecorder::Abandoned FrameRecorder::abandon() {
+ConsumedFrames FrameRecorder::consumed() const {
+    return {pool_->bytesWritten(),
+            pool_->threads(),
+            videoEncoder_,
+            CaptureTimes{0, readbackSeconds_, waitSeconds_, sink_->encodeSeconds(), sink_->writeSeconds()},
+            droppedFrames_,
+            firstNonFinite_};
+}
+
+FrameConsumer::Abandoned FrameRecorder::abandon() {
     if (settings_.activity) settings_.activity->begin(RunActivity::Phase::Abandoning);
     pool_->abandon();
     if (settings_.activity) settings_.activity->idle();

@@ -1,5 +1,6 @@
-// Recording: what a run writes with --out, round by round: the FrameRecorder (readback, encoders,
-// sink) of the round, which frames it captures (the capture-every rule), the files it completed,
+// Recording: what a run writes with --out, round by round: the FrameConsumer of the round (the CPU
+// readback adapter: readback, encoders, sink), which frames it captures (the capture-every rule),
+// the files it completed,
 // and the rules for a run that does not complete (complete image files stay, a video or a raw
 // stream being written is discarded, dropped frames are counted). The session's loop asks it
 // whether a frame is captured and hands it the frames; the report's output facts come from here.
@@ -14,7 +15,7 @@
 
 #include "core/Result.h"
 #include "player/Player.h"
-#include "session/FrameRecorder.h"
+#include "session/FrameConsumer.h"
 #include "session/SessionObserver.h"
 #include "session/SessionOptions.h"
 
@@ -25,12 +26,12 @@ class FiniteCheck;
 class Recording {
 public:
     // A recording of `plan`'s output (plan.output must be set).
-    // `stopRequested`: asked while the render thread waits for the encoders (RecorderSettings).
+    // `stopRequested`: asked while the render thread waits for the consumer (the encoders).
     Recording(const SessionPlan& plan, RunActivity* activity, std::function<bool()> stopRequested = {});
     ~Recording();
 
-    // Starts a round's recorder for `player`'s canvas (ffmpeg for a video); a notice says which
-    // video encoder --codec auto chose. A round already begun is kept.
+    // Starts a round's consumer for `player`'s canvas (a video's ffmpeg command line); a notice
+    // says which video encoder --codec auto chose. A round already begun is kept.
     Status begin(const Player& player, SessionObserver& observer);
     bool begun() const { return recorder_ != nullptr; }
     // Whether frame `frame` of the run is captured (the capture-every rule and the last frame).
@@ -58,7 +59,7 @@ private:
     RunActivity* activity_;
     std::function<bool()> stopRequested_;
     PassId pass_;
-    std::unique_ptr<FrameRecorder> recorder_;
+    std::unique_ptr<FrameConsumer> recorder_;
     std::vector<int> captured_;  // frame numbers captured this round
 };
 

@@ -76,7 +76,7 @@ Result<std::unique_ptr<SessionCore>> SessionCore::start(SessionPlan plan, std::s
     s->report_.context = s->context_->describe();
     s->report_.interactive = o.interactive;
     s->report_.outputAsked = o.outPattern.has_value() || o.sound.has_value();
-    s->report_.toStdout = s->plan_.output && s->plan_.output->format() == OutputFormat::RawStream;
+    s->report_.toStdout = s->plan_.output && !s->plan_.output->kind().toFile;
     if (o.sound) return s;  // `toyhost sound`: the Sound pass only
 
     SoundJob sound(*s->context_, *s->writer_, s->activity(), [core = s.get()] { return core->stopRequested(); });
@@ -109,7 +109,7 @@ Status SessionCore::createPlayer(PlayerPlan shadertoy) {
     desc.height = *o.settings.height;
     if (plan_.tile) TiledStill::fitPlayer(desc, plan_);  // the targets are one tile
     desc.floatImage = o.settings.floatImage ||
-                      (plan_.output && plan_.output->format() == OutputFormat::Exr && o.capturePass == PassId::Image);
+                      (plan_.output && plan_.output->kind().floats && o.capturePass == PassId::Image);
     desc.sampling = plan_.sampling;
     Result<std::unique_ptr<Player>> made = Player::create(context_, std::move(shadertoy), desc);
     if (!made) return made.error();

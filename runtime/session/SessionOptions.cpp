@@ -134,7 +134,7 @@ Result<OutputPattern> checkedOutput(const SessionOptions& o, int first, int end)
     if (!pattern->numbered() && !pattern->streamed() && countCaptured(first, end, *o.frames, *o.captureEvery) > 1)
         return usage("--out " + *o.outPattern + ": more than one frame is captured, so the "
                      "pattern needs a frame number placeholder such as %04d");
-    if (pattern->format() != OutputFormat::RawStream) {
+    if (pattern->kind().toFile) {
         const std::string name = pattern->pathFor(end - 1).filename().string();
         if (name.size() > 255)
             return usage("--out " + *o.outPattern + ": the file name is " + std::to_string(name.size()) +
@@ -142,11 +142,11 @@ Result<OutputPattern> checkedOutput(const SessionOptions& o, int first, int end)
     }
     // A video has one frame rate; a window in real time renders at whatever rate it manages,
     // so its recording would play at the wrong speed: ask for the step it should have.
-    if (pattern->format() == OutputFormat::Video && o.interactive && !s.fps)
+    if (pattern->kind().fixedRate && o.interactive && !s.fps)
         return usage("--out " + *o.outPattern + ": a video recorded from a window needs --fps (each frame then "
                      "advances iTime by exactly 1/fps, and the video plays at that rate); image files need none");
-    if (pattern->format() == OutputFormat::Video && !findExecutable("ffmpeg"))
-        return Error("--out " + *o.outPattern + ": video needs ffmpeg, which is not in PATH "
+    if (pattern->kind().ffmpeg && !findExecutable("ffmpeg"))
+        return Error("--out " + *o.outPattern + ": " + pattern->kind().name + " needs ffmpeg, which is not in PATH "
                      "(Debian: apt-get install ffmpeg)",
                      Code::CaptureFfmpeg);
     return std::move(*pattern);
@@ -169,10 +169,10 @@ Result<SessionPlan> planRecording(const SessionPlan& session, const std::string&
     recording.sampling = session.sampling;
     Result<OutputPattern> pattern = checkedOutput(o, 0, frames);
     if (!pattern) return pattern.error();
-    if (pattern->format() == OutputFormat::RawStream)
+    if (!pattern->kind().toFile)
         return settingError("out", "a recording is written to files (frames or a video), not to stdout");
     recording.output = std::move(*pattern);
-    if (recording.output->format() == OutputFormat::Video && o.video.codec == "auto")
+    if (recording.output->kind().ffmpeg && o.video.codec == "auto")
         (void)chooseAutoVideoEncoder(recording.output->extension());
     return recording;
 }
@@ -311,17 +311,18 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
         run.output = std::move(*pattern);
     }
     if (tiled) {
-        if (run.output && run.output->format() != OutputFormat::Png && run.output->format() != OutputFormat::Exr)
-            return settingError("size", "a tiled canvas is written as PNG or EXR files, not " +
+        if (run.output && !run.output->kind().tiles)
+            return settingError("size", "a tiled canvas is written as " + tiledKindNames() + " files, not " +
                                             std::string(run.output->streamed() ? "a stream or video" : "this format"));
         if (o.capturePass != PassId::Image) return settingError("size", "a tiled canvas captures the Image pass only");
         run.tile = o.tile.value_or(defaults::kTileSide);
     }
     const bool exrAsked = o.exr.half || o.exr.compression != ExrCompression::None;
-    if (exrAsked && (!run.output || run.output->format() != OutputFormat::Exr))
+    if (exrAsked && (!run.output || !run.output->kind().exrSettings))
         return usage("--exr-compression and --exr-half apply only to an EXR --out (frame_%04d.exr)");
-    if ((o.video.codec || o.video.quality || o.video.preset) && (!run.output || run.output->format() != OutputFormat::Video))
-        return usage("--codec, --video-quality and --video-preset apply only to a video --out (.mp4, .webm, .mov, .mkv)");
+    if ((o.video.codec || o.video.quality || o.video.preset) && (!run.output || !run.output->kind().ffmpeg))
+        return usage("--codec, --video-quality and --video-preset apply only to a video --out (" +
+                     extensionsWhere(&OutputKind::ffmpeg) + ")");
     if (o.mouse) run.mouse = mouseHeldAt(o.mouse->x, o.mouse->y);
     if (s.mouseScript) {
         Result<std::string> text = readTextFile(*s.mouseScript);
@@ -349,7 +350,7 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     run.shadertoy = std::move(*plan);
     // --codec auto tries the hardware encoders with short ffmpeg runs; the choice is kept for the
     // process, so made here, off the GL thread, the recorder (made on it) finds it ready.
-    if (run.output && run.output->format() == OutputFormat::Video && o.video.codec == "auto")
+    if (run.output && run.output->kind().ffmpeg && o.video.codec == "auto")
         (void)chooseAutoVideoEncoder(run.output->extension());
     return run;
 }

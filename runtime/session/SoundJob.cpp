@@ -67,7 +67,7 @@ Result<SessionReport> SoundJob::writeFile(const PlayerPlan& shadertoy, const Sou
 Result<std::shared_ptr<TemporaryFiles>> SoundJob::soundTrack(SessionPlan& plan, SessionObserver& observer) {
     const SessionOptions& o = plan.options;
     if (!plan.shadertoy.manifest.sound) return std::shared_ptr<TemporaryFiles>();
-    const bool video = plan.output && plan.output->format() == OutputFormat::Video;
+    const bool video = plan.output && plan.output->kind().soundTrack;
     const double fps = o.settings.fps.value_or(defaults::kFps);
     const double end = std::min(o.settings.startTime + *o.frames / fps, defaults::kSoundSeconds);
     if (!video || *o.frames <= 0 || end <= o.settings.startTime) {
@@ -75,8 +75,9 @@ Result<std::shared_ptr<TemporaryFiles>> SoundJob::soundTrack(SessionPlan& plan, 
         skipped.severity = Severity::Notice;
         skipped.code = Code::SoundSkipped;
         skipped.message = video ? "the Sound pass ends at 180 s, before this run starts: the video has no sound"
-                                : "the Sound pass is not rendered: only a video --out (.mp4, .webm, .mov, .mkv) carries "
-                                  "sound; `toyhost sound` writes it to an audio file";
+                                : "the Sound pass is not rendered: only a video --out (" +
+                                      extensionsWhere(&OutputKind::soundTrack) +
+                                      ") carries sound; `toyhost sound` writes it to an audio file";
         skipped.pass = "Sound";
         observer.notice(skipped);
         return std::shared_ptr<TemporaryFiles>();

@@ -13,7 +13,7 @@ namespace fs = std::filesystem;
 
 TiledStill::TiledStill(const SessionPlan& plan)
     : plan_(plan), width_(*plan.options.settings.width), height_(*plan.options.settings.height),
-      floats_(plan.output && plan.output->format() == OutputFormat::Exr), thread_([this] { loop(); }) {}
+      floats_(plan.output && plan.output->kind().floats), thread_([this] { loop(); }) {}
 
 TiledStill::~TiledStill() {
     {

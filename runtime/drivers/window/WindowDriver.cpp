@@ -156,7 +156,7 @@ private:
     Status screenshot(SessionCore& s) {
         if (!s.running() || s.frame() == 0) return Error("nothing is shown yet: no screenshot", Code::WindowScreenshot);
         fs::path folder = ".";
-        if (plan_.output && plan_.output->format() != OutputFormat::RawStream) {
+        if (plan_.output && plan_.output->kind().toFile) {
             const fs::path parent = plan_.output->pathFor(0).parent_path();
             if (!parent.empty()) folder = parent;
         }
