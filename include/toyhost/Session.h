@@ -6,8 +6,8 @@
 //
 // Threads: a session is used from the thread that created it, with its GL context current there
 // (a headless session makes its own context current at creation and at every call). A call from
-// another thread does nothing and returns a Code::Usage error saying so (restart() and
-// dropQueuedReads(), which return nothing, only do nothing; nextQueuedReadDone() says false).
+// another thread does nothing and returns a Code::Usage error saying so (restart(), which returns
+// nothing, only does nothing).
 // Hand the calls to the session's thread instead (Python's sessions do). Mesa's GLSL
 // compiler recurses deeply on large shaders: create sessions on a thread with a large stack
 // (toyhost uses 1 GiB: runOnGlThread() below), or small shaders only.
@@ -171,39 +171,12 @@ public:
     Status read(std::string_view pass, std::span<std::uint8_t> out, RowOrder order = RowOrder::TopFirst) const;
     Status read(std::string_view pass, std::span<float> out, RowOrder order = RowOrder::TopFirst) const;
 
-    // Queued reads, for rendering many frames into memory (what toyhost's own recording does):
-    // queueRead() starts reading a pass's latest output back and returns at once; takeRead() waits
-    // for the oldest queued read and copies it into `out`. Step the next frame in between and it
-    // renders while the previous one is read back, instead of after it as with step(); read().
-    // The values equal what read() gives for the same frame and type (a buffer's floats clamped
-    // and rounded for 8-bit, Image's levels / 255 as floats). Reads are taken in the order they
-    // were queued; at most kMaxQueuedReads wait at once; each keeps the size it was queued at
-    // (resize(), restart() and reload() in between do not change it). Added as new members only:
-    // programs built against the header without them keep working with this library.
-    struct QueuedRead {
-        int frame = 0;  // iFrame of the frame read (-1: queued before the first frame)
-        int width = 0;
-        int height = 0;
-    };
-    static constexpr int kMaxQueuedReads = 4;
-    Result<QueuedRead> queueRead(std::string_view pass);
-    int queuedReads() const;
-    // The read takeRead() gives next, if any, and whether it is complete (takeRead() would not
-    // wait for the GPU).
-    std::optional<QueuedRead> nextQueuedRead() const;
-    bool nextQueuedReadDone() const;
-    // `out` must hold exactly width * height * 4 values of that read.
-    Result<QueuedRead> takeRead(std::span<std::uint8_t> out, RowOrder order = RowOrder::TopFirst);
-    Result<QueuedRead> takeRead(std::span<float> out, RowOrder order = RowOrder::TopFirst);
-    // Forgets every queued read not taken.
-    void dropQueuedReads();
-
     // Rendering a sequence of frames into memory through toyhost's frame stream, the one its own
     // recordings use: `frames` frames stepped as step() steps them (`events` applied before the
     // first), frames 0, every, 2 * every, ... and the last read back while the later frames render,
     // each handed to the callback as soon as its read is complete (checked after every frame: a
     // frame never waits for a later one to be rendered or read), at most kRenderReadsInFlight
-    // reads in flight. The reads are the rendering's own (queueRead()'s queue is not touched).
+    // reads in flight.
     // Frames are submitted at most two ahead of the GPU's drawing (a GPU would otherwise queue
     // dozens), so that frame() stays near the pictures and a stop leaves little to finish.
     struct RenderRequest {

@@ -11,8 +11,9 @@
 
 namespace toyhost {
 
-// The reads a FrameStream queues and hands over: a recording's readback ring, a library Session's
-// queued reads, or (in tests) a fake. Called on the thread that renders.
+// The reads a FrameStream queues and hands over: a recording's readback ring, the memory frame
+// stream's reads (session/MemoryFrameStream.h), or (in tests) a fake. Called on the thread that
+// renders.
 class FrameReads {
 public:
     virtual ~FrameReads() = default;

@@ -124,6 +124,8 @@ public:
     void readCubeFace(int face, std::vector<float>& out, int& size) const { renderer_->readCubeFace(face, out, size); }
     // Waits for the GPU (glFinish); never needed per frame.
     void finish() { renderer_->finish(); }
+    // Submits the frame drawn without waiting for it (Renderer::submit).
+    void submit() { renderer_->submit(); }
 
     int width() const { return renderer_->width(); }
     int height() const { return renderer_->height(); }

@@ -1,6 +1,6 @@
 // PendingReads: framebuffer reads queued without waiting (each into a pixel-pack buffer, followed
 // by a fence) and taken in the order they were queued, each with its own size and format; the
-// buffers are reused. The library Session's queued reads (queueRead / takeRead), and under a
+// buffers are reused. The memory frame stream's reads (session/MemoryFrameStream.h), and under a
 // recording's ReadbackRing. Needs its GL context current for its whole life.
 #pragma once
 

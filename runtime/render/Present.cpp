@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gl/GlContext.h"
+
 namespace toyhost {
 
 PresentRect presentRect(int canvasW, int canvasH, int framebufferW, int framebufferH) {
@@ -14,6 +16,20 @@ PresentRect presentRect(int canvasW, int canvasH, int framebufferW, int framebuf
     return {(framebufferW - w) / 2, (framebufferH - h) / 2, w, h};
 }
 
+void blitOutput(const PassOutput& output, unsigned int framebuffer, const PresentRect& r) {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, output.framebuffer);
+    const bool same = r.width == output.width && r.height == output.height;
+    glBlitFramebuffer(0, 0, output.width, output.height, r.x, r.y, r.x + r.width, r.y + r.height, GL_COLOR_BUFFER_BIT,
+                      same ? GL_NEAREST : GL_LINEAR);
+}
+
+Status drawOutput(const PassOutput& output, unsigned int framebuffer, const PresentRect& rect) {
+    blitOutput(output, framebuffer, rect);
+    if (GLenum error = glGetError(); error != GL_NO_ERROR) return Error(glErrorName(error), Code::GlSetup);
+    return okStatus();
+}
+
 void presentToDefaultFramebuffer(const PassOutput& output, int framebufferW, int framebufferH) {
     const PresentRect r = presentRect(output.width, output.height, framebufferW, framebufferH);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
@@ -22,10 +38,7 @@ void presentToDefaultFramebuffer(const PassOutput& output, int framebufferW, int
         glClearColor(0, 0, 0, 1);
         glClear(GL_COLOR_BUFFER_BIT);
     }
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, output.framebuffer);
-    const bool same = r.width == output.width && r.height == output.height;
-    glBlitFramebuffer(0, 0, output.width, output.height, r.x, r.y, r.x + r.width, r.y + r.height, GL_COLOR_BUFFER_BIT,
-                      same ? GL_NEAREST : GL_LINEAR);
+    blitOutput(output, 0, r);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }
 

@@ -1,7 +1,8 @@
-// Present: draws a pass's output (usually Image) into the default framebuffer of a window. Same
-// size: a 1:1 copy, so the window shows exactly the pixels headless runs write. Different size (a
-// canvas kept at the recording size while the window is resized): scaled to fit with its aspect
-// ratio kept, black bars around it. Needs the window's context current.
+// Present: draws a pass's output (usually Image) into the default framebuffer of a window, or into
+// any framebuffer at a given place (the library's Session::drawImage). Same size: a 1:1 copy, so
+// the window shows exactly the pixels headless runs write. Different size (a canvas kept at the
+// recording size while the window is resized): scaled (linear filtering); a window's is fitted with
+// its aspect ratio kept, black bars around it. Needs the context current.
 #pragma once
 
 #include "render/Renderer.h"
@@ -14,6 +15,13 @@ struct PresentRect {
 
 // Where a canvas of canvasW x canvasH is shown in a framebuffer of framebufferW x framebufferH.
 PresentRect presentRect(int canvasW, int canvasH, int framebufferW, int framebufferH);
+
+// Copies `output` into `framebuffer` (0: the default one) at `rect`; leaves both framebuffers
+// bound.
+void blitOutput(const PassOutput& output, unsigned int framebuffer, const PresentRect& rect);
+// The same into a framebuffer that is not toyhost's (a caller's): GL's error, if the copy made one
+// (a framebuffer that is not complete, a bad name), is returned.
+Status drawOutput(const PassOutput& output, unsigned int framebuffer, const PresentRect& rect);
 
 void presentToDefaultFramebuffer(const PassOutput& output, int framebufferW, int framebufferH);
 // A dark grey default framebuffer: what a window shows before its shadertoy has a frame.

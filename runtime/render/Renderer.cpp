@@ -390,6 +390,8 @@ void Renderer::finish() {
     glFinish();
 }
 
+void Renderer::submit() { glFlush(); }
+
 const std::vector<Diagnostic>& Renderer::compileNotices() const { return impl_->compileNotices; }
 
 PassOutput Renderer::output(PassId pass) const {

@@ -137,6 +137,9 @@ public:
     // Waits until the GPU has executed everything submitted (glFinish). Runs call it once at the
     // end so that their measured time includes the GPU's work; never per frame.
     void finish();
+    // Submits what was drawn without waiting (glFlush), so that the GPU works on it while the
+    // caller goes on (the library's step(): llvmpipe would start a frame only once it is read).
+    void submit();
 
     // A pass's latest output (a buffer's last rendered slot, or the Image target).
     PassOutput output(PassId pass) const;

@@ -2,6 +2,7 @@
 
 #include "core/Defaults.h"
 #include "core/TemporaryFiles.h"
+#include "render/Present.h"
 #include "session/BackgroundWriter.h"
 #include "session/Checkpoint.h"
 #include "session/FiniteCheck.h"
@@ -255,6 +256,10 @@ void SessionCore::restart() {
 }
 
 Status SessionCore::resize(int width, int height) { return player_ ? player_->resize(width, height) : okStatus(); }
+
+Status SessionCore::drawImage(unsigned int framebuffer, int x, int y, int w, int h) const {
+    return drawOutput(player_->output(PassId::Image), framebuffer, PresentRect{x, y, w, h});
+}
 
 ReloadOutcome SessionCore::reload(std::vector<fs::path> changed, Result<PlayerPlan> plan) {
     ReloadOutcome outcome;

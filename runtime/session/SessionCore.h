@@ -144,6 +144,12 @@ public:
     glm::vec4 mouse() const { return player_->mouse().uniform(); }
     // Waits for the GPU (the watchdog sees which pass it still draws).
     void finish() { player_->finish(); }
+    // Submits the frame just rendered without waiting for it (Player::submit): the GPU works on it
+    // while the caller goes on. The library's step() does, after each frame.
+    void submit() { player_->submit(); }
+    // Image drawn into a framebuffer that is not toyhost's (0: the default one) at x, y, w, h
+    // (bottom-left origin; linear filtering when the size differs); GL's error if the copy made one.
+    Status drawImage(unsigned int framebuffer, int x, int y, int w, int h) const;
     // A program's pixels in a channel from the next frame on (Player::setChannelArray).
     Status setChannelArray(PassId pass, int channel, const PixelArray& pixels, const SamplerDesc& sampler) {
         return player_->setChannelArray(pass, channel, pixels, sampler);

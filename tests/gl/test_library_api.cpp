@@ -60,89 +60,55 @@ TEST(LibraryApi, AHeadlessFrameEqualsTheClisPng) {
     });
 }
 
-// queueRead()/takeRead(): the values read() gives for the same frame and type (8-bit and float,
-// of an 8-bit Image and a float buffer), in the order queued, each at the size it was queued at.
-TEST(LibraryApi, QueuedReadsEqualSynchronousReads) {
+// render()'s frames: the values read() gives for the same frame and type (8-bit and float, of an
+// 8-bit Image and a float buffer), in either row order.
+TEST(LibraryApi, RenderedFramesEqualSynchronousReads) {
     Result<Shadertoy> probe = Shadertoy::load(sourceDir() / "shadertoys/pingpong-probe");
     ASSERT_TRUE(probe.ok()) << probe.error().text();
     SessionSettings settings;
     settings.width = 16;
     settings.height = 8;
     runOnGlThread([&] {
-        Result<std::unique_ptr<Session>> made = Session::createHeadless(*probe, settings);
-        ASSERT_TRUE(made.ok()) << made.error().text();
-        Session& session = **made;
+        Result<std::unique_ptr<Session>> reference = Session::createHeadless(*probe, settings);
+        Result<std::unique_ptr<Session>> rendering = Session::createHeadless(*probe, settings);
+        ASSERT_TRUE(reference.ok() && rendering.ok());
         const std::size_t values = 16 * 8 * 4;
-        std::vector<std::uint8_t> none;
-        EXPECT_FALSE(session.takeRead(std::span<std::uint8_t>(none)).ok()) << "nothing queued";
         struct Expected {
-            std::vector<std::uint8_t> image8, buffer8;
-            std::vector<float> imageF, bufferF;
+            std::vector<std::uint8_t> bytes = std::vector<std::uint8_t>(16 * 8 * 4);
+            std::vector<std::uint8_t> topFirst = std::vector<std::uint8_t>(16 * 8 * 4);
+            std::vector<float> floats = std::vector<float>(16 * 8 * 4);
         };
-        std::vector<Expected> expected;
-        int taken = 0;
-        auto takeFrame = [&](int frame) {
-            const Expected& e = expected[static_cast<std::size_t>(frame)];
-            std::vector<std::uint8_t> bytes(values);
-            std::vector<float> floats(values);
-            ASSERT_EQ(session.nextQueuedRead()->frame, frame);
-            // Even frames: Image as bytes, Buffer A as floats; odd frames the other way round.
-            if (frame % 2 == 0) {
-                Result<Session::QueuedRead> image = session.takeRead(std::span<std::uint8_t>(bytes), RowOrder::BottomFirst);
-                ASSERT_TRUE(image.ok()) << image.error().text();
-                EXPECT_EQ(image->frame, frame);
-                EXPECT_EQ(bytes, e.image8) << "Image, 8-bit, frame " << frame;
-                ASSERT_TRUE(session.takeRead(std::span<float>(floats), RowOrder::BottomFirst).ok());
-                EXPECT_EQ(floats, e.bufferF) << "Buffer A, floats, frame " << frame;
-            } else {
-                ASSERT_TRUE(session.takeRead(std::span<float>(floats), RowOrder::BottomFirst).ok());
-                EXPECT_EQ(floats, e.imageF) << "Image as floats, frame " << frame;
-                ASSERT_TRUE(session.takeRead(std::span<std::uint8_t>(bytes), RowOrder::BottomFirst).ok());
-                EXPECT_EQ(bytes, e.buffer8) << "Buffer A, 8-bit, frame " << frame;
-            }
-            ++taken;
-        };
-        for (int frame = 0; frame < 6; ++frame) {
-            ASSERT_TRUE(session.step().ok());
-            Expected e{std::vector<std::uint8_t>(values), std::vector<std::uint8_t>(values), std::vector<float>(values),
-                       std::vector<float>(values)};
-            ASSERT_TRUE(session.read("Image", e.image8, RowOrder::BottomFirst).ok());
-            ASSERT_TRUE(session.read("Buffer A", e.buffer8, RowOrder::BottomFirst).ok());
-            ASSERT_TRUE(session.read("Image", e.imageF, RowOrder::BottomFirst).ok());
-            ASSERT_TRUE(session.read("Buffer A", e.bufferF, RowOrder::BottomFirst).ok());
-            expected.push_back(std::move(e));
-            ASSERT_TRUE(session.queueRead("Image").ok());
-            ASSERT_TRUE(session.queueRead("Buffer A").ok());
-            if (session.queuedReads() == Session::kMaxQueuedReads) {
-                EXPECT_FALSE(session.queueRead("Image").ok()) << "more than kMaxQueuedReads";
-                takeFrame(taken);
-            }
+        // Frames 0-3 of Image, then frames 4-7 of Buffer A, as read() gives them.
+        auto passOf = [](int frame) { return frame < 4 ? "Image" : "Buffer A"; };
+        std::vector<Expected> expected(8);
+        for (int frame = 0; frame < 8; ++frame) {
+            ASSERT_TRUE((*reference)->step().ok());
+            Expected& e = expected[static_cast<std::size_t>(frame)];
+            ASSERT_TRUE((*reference)->read(passOf(frame), e.bytes, RowOrder::BottomFirst).ok());
+            ASSERT_TRUE((*reference)->read(passOf(frame), e.topFirst, RowOrder::TopFirst).ok());
+            ASSERT_TRUE((*reference)->read(passOf(frame), e.floats, RowOrder::BottomFirst).ok());
         }
-        EXPECT_FALSE(session.queueRead("Buffer C").ok()) << "the probe has no Buffer C";
-        // A resize does not change a read queued before it; a destination of the wrong size is
-        // refused and the read stays.
-        ASSERT_EQ(session.queuedReads(), 2);
-        ASSERT_TRUE(session.resize(8, 4).ok());
-        std::vector<std::uint8_t> small(8 * 4 * 4);
-        EXPECT_FALSE(session.takeRead(std::span<std::uint8_t>(small)).ok());
-        EXPECT_EQ(session.nextQueuedRead()->width, 16);
-        takeFrame(taken);
-        EXPECT_EQ(taken, 6);
-        EXPECT_EQ(session.queuedReads(), 0);
-        // Top row first (the default) is the bottom-first rows reversed; dropQueuedReads forgets.
-        ASSERT_TRUE(session.step().ok());
-        std::vector<std::uint8_t> bottomFirst(small.size()), topFirst(small.size());
-        ASSERT_TRUE(session.read("Image", bottomFirst, RowOrder::BottomFirst).ok());
-        ASSERT_TRUE(session.queueRead("Image").ok());
-        ASSERT_TRUE(session.takeRead(std::span<std::uint8_t>(topFirst)).ok());
-        for (int y = 0; y < 4; ++y)
-            EXPECT_TRUE(std::equal(topFirst.begin() + y * 32, topFirst.begin() + y * 32 + 32,
-                                   bottomFirst.begin() + (3 - y) * 32))
-                << "row " << y;
-        ASSERT_TRUE(session.queueRead("Image").ok());
-        session.dropQueuedReads();
-        EXPECT_EQ(session.queuedReads(), 0);
-        EXPECT_FALSE(session.nextQueuedRead().has_value());
+        std::vector<int> handed;
+        for (const char* pass : {"Image", "Buffer A"}) {
+            Session::RenderRequest request;
+            request.frames = 4;
+            request.pass = pass;
+            Status done = (*rendering)->render(request, [&](const Session::RenderedFrame& frame) {
+                handed.push_back(frame.frame);
+                const Expected& e = expected[static_cast<std::size_t>(frame.frame)];
+                std::vector<std::uint8_t> bytes(values), topFirst(values);
+                std::vector<float> floats(values);
+                EXPECT_TRUE(frame.read(std::span<std::uint8_t>(bytes), RowOrder::BottomFirst).ok());
+                EXPECT_TRUE(frame.read(std::span<std::uint8_t>(topFirst)).ok());
+                EXPECT_TRUE(frame.read(std::span<float>(floats), RowOrder::BottomFirst).ok());
+                EXPECT_EQ(bytes, e.bytes) << pass << ", 8-bit, frame " << frame.frame;
+                EXPECT_EQ(topFirst, e.topFirst) << pass << ", 8-bit top first, frame " << frame.frame;
+                EXPECT_EQ(floats, e.floats) << pass << ", floats, frame " << frame.frame;
+                return true;
+            });
+            ASSERT_TRUE(done.ok()) << done.error().text();
+        }
+        EXPECT_EQ(handed, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
     });
 }
 
@@ -225,12 +191,19 @@ TEST_F(LibraryOnCurrentContext, RendersAndKeepsTheCallersGlState) {
     std::vector<float> a(16 * 8 * 4);
     ASSERT_TRUE((*session)->read("Buffer A", a, RowOrder::BottomFirst).ok());
     EXPECT_EQ(state(), before) << "reading changed the caller's state";
-    ASSERT_TRUE((*session)->queueRead("Buffer A").ok());
-    EXPECT_EQ(state(), before) << "queueing a read changed the caller's state";
-    std::vector<float> queued(a.size());
-    ASSERT_TRUE((*session)->takeRead(std::span<float>(queued), RowOrder::BottomFirst).ok());
-    EXPECT_EQ(queued, a) << "a queued read differs from read()";
-    EXPECT_EQ(state(), before) << "taking a queued read changed the caller's state";
+    Session::RenderRequest request;
+    request.frames = 2;
+    request.pass = "Buffer A";
+    std::vector<float> rendered(a.size());
+    ASSERT_TRUE((*session)
+                    ->render(request,
+                             [&](const Session::RenderedFrame& frame) {
+                                 return frame.read(std::span<float>(rendered), RowOrder::BottomFirst).ok();
+                             })
+                    .ok());
+    EXPECT_EQ(state(), before) << "rendering into memory changed the caller's state";
+    ASSERT_TRUE((*session)->read("Buffer A", a, RowOrder::BottomFirst).ok());
+    EXPECT_EQ(rendered, a) << "the last frame handed over differs from read()";
     EXPECT_NE((*session)->imageTexture(), 0u);
     ASSERT_TRUE((*session)->drawImage(framebuffer, 0, 0, 4, 4).ok());
     EXPECT_EQ(state(), before) << "drawing into the caller's framebuffer changed its state";

@@ -54,7 +54,6 @@ TEST(LibraryRender, HandsOverTheCapturedFramesEachEqualToRead) {
         ASSERT_TRUE(done.ok()) << done.error().text();
         EXPECT_EQ(handed, (std::vector<int>{0, 4, 8, 9})) << "0, every 4th, and the last";
         EXPECT_EQ((*rendering)->frame(), 10);
-        EXPECT_EQ((*rendering)->queuedReads(), 0) << "the rendering's reads are its own";
 
         // A buffer as floats, frames 10 and 11 (iFrame goes on).
         request = Session::RenderRequest{};
@@ -154,8 +153,6 @@ TEST(LibraryRender, ASessionUsedOffItsThreadIsAUsageErrorThatSaysSo) {
         std::thread([&] {
             answers.push_back(session.step());
             answers.push_back(session.read("Image", pixels));
-            Result<Session::QueuedRead> queued = session.queueRead("Image");
-            answers.push_back(queued ? okStatus() : Status(queued.error()));
             answers.push_back(session.resize(8, 8));
             Result<std::unique_ptr<Session::Rendering>> rendering = session.startRendering({});
             answers.push_back(rendering ? okStatus() : Status(rendering.error()));
