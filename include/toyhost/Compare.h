@@ -3,8 +3,8 @@
 // difference, differing pixels, the first differing frame and pixel, and difference images. For
 // ports ("does my port still match the original?") and for scoring generated shader code.
 // compareShadertoys needs no GL context of the caller's (it renders headless, like
-// Session::createHeadless: call it on a thread with a large stack, see runOnGlThread);
-// compareImages is plain arithmetic.
+// Session::createHeadless: call it on a thread with a large stack, see runOnGlThread); the
+// tolerance, the measures of a frame and compareImages, plain arithmetic, are toyhost/CompareTypes.h.
 #pragma once
 
 #include <cstdint>
@@ -15,45 +15,14 @@
 #include <string>
 #include <vector>
 
+#include <toyhost/CompareTypes.h>
 #include <toyhost/Export.h>
 #include <toyhost/Input.h>
 #include <toyhost/Result.h>
-#include <toyhost/Session.h>
+#include <toyhost/Settings.h>
+#include <toyhost/Shadertoy.h>
 
 namespace toyhost {
-
-// When two frames count as equal. Neither set: only identical frames are equal. Both set: both
-// must hold.
-struct CompareTolerance {
-    std::optional<double> minPsnr;  // equal when PSNR >= minPsnr (dB)
-    std::optional<int> maxDiff;     // equal when no sample differs by more than maxDiff levels;
-                                    // a pixel counts as differing only beyond it
-};
-
-// One frame of two images compared. Samples are 8-bit levels; the Image pass is compared on R, G
-// and B (its alpha is always 1), a buffer on R, G, B and A.
-struct FrameDifference {
-    int frame = 0;      // iFrame
-    double time = 0;    // iTime
-    double psnr = 0;    // dB over the compared samples, peak 255; +infinity when identical
-    int maxDiff = 0;    // largest |a - b| of one sample, 0..255
-    double meanDiff = 0;             // mean |a - b| over the compared samples
-    std::int64_t differingPixels = 0;  // pixels with a sample differing by more than the tolerance's maxDiff (else 0)
-    int firstX = -1;    // the first differing pixel, scanning rows from the top row, left to right:
-    int firstY = -1;    // x from the left, y from the top (-1 when none)
-    bool withinTolerance = true;
-    // |a - b| * gain per R, G, B (clamped to 255), alpha 255, rows top first, width * height * 4
-    // bytes; filled only when asked for (CompareSettings::keepDiffImages) and the frame is not
-    // within tolerance.
-    std::vector<std::uint8_t> diffImage;
-};
-
-// Compares two RGBA8 images of width * height * 4 bytes (any row order, the same for both; firstY
-// counts rows in that order). `channels` is 3 (R, G, B) or 4. Writes the difference image into
-// `diffImage` (resized) when given. Errors: sizes that do not match, channels other than 3 or 4.
-TOYHOST_API Result<FrameDifference> compareImages(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b,
-                                                  int width, int height, int channels, const CompareTolerance& tolerance = {},
-                                                  std::vector<std::uint8_t>* diffImage = nullptr, int diffGain = 0);
 
 // One compared frame as it is rendered, for callers that write files or stop early: the two
 // frames and the difference image (empty when within tolerance), rows top first.

@@ -30,55 +30,10 @@
 #include <toyhost/Export.h>
 #include <toyhost/Input.h>
 #include <toyhost/Result.h>
+#include <toyhost/Settings.h>
 #include <toyhost/Shadertoy.h>
 
 namespace toyhost {
-
-// How a session runs. An absent setting takes the default (the shadertoy manifest's "defaults",
-// else toyhost's own: toyhost/Defaults.h); a value given is checked, and refused with an error
-// naming the setting (Diagnostic::field "size", "fps", ...) when out of range: width = 0 is an
-// error, not the default.
-struct SessionSettings {
-    // Canvas (iResolution); give both or neither. Absent: the manifest's, else 800x450.
-    std::optional<int> width;
-    std::optional<int> height;
-    // step(): frame n at iTime = startTime + n / fps, iTimeDelta = 1 / fps. Absent: the
-    // manifest's, else 60.
-    std::optional<double> fps;
-    double startTime = 0;
-    // iDate at time 0 as "YYYY-MM-DDTHH:MM:SS" (local time); absent: now. Fixed dates make runs
-    // repeatable.
-    std::optional<std::string> date;
-    // Real files for Shadertoy's stock media (by hash or name), else deterministic stand-ins.
-    std::vector<std::filesystem::path> mediaFolders;
-    std::vector<std::pair<std::string, std::filesystem::path>> mediaFiles;  // stock id or name -> file
-    // Render Image into RGBA32F instead of RGBA8 (what the screen shows): read(..., float) then
-    // gives Image's unclamped floats.
-    bool floatImage = false;
-    // Limits in seconds (0: none): a pass drawing one frame, or compiling, for longer makes the
-    // call that was running return an error once it returns (GL cannot be interrupted). Absent:
-    // none for a Session; the toyhost commands' own defaults for them.
-    std::optional<double> frameTimeout;
-    std::optional<double> compileTimeout;
-    // Input scripts (the CLI's --mouse-script / --key-script JSON files) that step() replays by
-    // frame number before the caller's own events, as a headless run does; absent: none.
-    std::optional<std::filesystem::path> mouseScript;
-    std::optional<std::filesystem::path> keyScript;
-    // Better pixels than the site (docs/sampling.md): the Image pass drawn supersample x
-    // supersample times with fragCoord on a regular grid inside each pixel, at motionBlur times
-    // inside the shutter interval (shutterDegrees / 360 of the frame step, opening at the frame's
-    // time), every pair drawn and the draws averaged; buffers, Cube A and Sound still run once per
-    // frame. `dither`: an 8x8 ordered dither before the average is rounded to 8 bits. 1, 1: the
-    // site's pixels, byte for byte. Absent: runDefaults()' (1, 1, 180); a value given is checked.
-    std::optional<int> supersample;
-    std::optional<int> motionBlur;
-    std::optional<double> shutterDegrees;
-    bool dither = false;
-    // Macros added to every pass after the site's header, before Common: "NAME" (defined as 1) or
-    // "NAME=VALUE", as the CLI's --define. A name is a GLSL identifier without GLSL ES's reserved
-    // GL_ prefix or "__"; a name given twice with different values is refused (field "defines").
-    std::vector<std::string> defines;
-};
 
 enum class RowOrder { TopFirst, BottomFirst };
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <toyhost/Compare.h>
+#include <toyhost/Session.h>
 
 #include "Errors.h"
 #include "Gil.h"

@@ -119,26 +119,15 @@ PYBIND11_MODULE(_toyhost, m) {
     toyhost::python::bindSession(m);
     toyhost::python::bindCompare(m);
     m.def("version_string", [] { return std::string(versionString()); });
-    // The defaults a session uses for what the caller leaves out (toyhost::runDefaults), a new dict
-    // at every call so that a caller changing it changes nothing else.
+    // The defaults a session uses for what the caller leaves out (toyhost::runDefaults), by the keys
+    // of toyhost/Defaults.h's list; a new dict at every call so that a caller changing it changes
+    // nothing else.
     m.def("defaults", [] {
         const Defaults d = runDefaults();
         py::dict out;
-        out["width"] = d.width;
-        out["height"] = d.height;
-        out["fps"] = d.fps;
-        out["min_fps"] = d.minFps;
-        out["max_fps"] = d.maxFps;
-        out["max_canvas_side"] = d.maxCanvasSide;
-        out["frames"] = d.frames;
-        out["compare_frames"] = d.compareFrames;
-        out["capture_every"] = d.captureEvery;
-        out["png_level"] = d.pngLevel;
-        out["capture_memory_mib"] = d.captureMemoryMiB;
-        out["sample_rate"] = d.sampleRate;
-        out["sound_seconds"] = d.soundSeconds;
-        out["frame_timeout"] = d.frameTimeoutSeconds;
-        out["compile_timeout"] = d.compileTimeoutSeconds;
+#define TOYHOST_DEFAULT_TO_PYTHON(Type, member, key, value, what) out[key] = d.member;
+        TOYHOST_DEFAULTS(TOYHOST_DEFAULT_TO_PYTHON)
+#undef TOYHOST_DEFAULT_TO_PYTHON
         return out;
     });
 }

@@ -263,40 +263,43 @@ py::object nextRendered(RenderStream& stream) {
     return arrayOwning(frame->frame, frame->width, frame->height, std::move(frame->bytes));
 }
 
-// Python's None is an absent setting (the default); every value given is checked by the session.
-SessionSettings settingsFrom(std::optional<int> width, std::optional<int> height, std::optional<double> fps,
-                             double startTime, const std::optional<std::string>& date,
-                             const std::vector<std::filesystem::path>& mediaFolders,
-                             const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
-                             bool floatImage, std::optional<double> frameTimeout, std::optional<double> compileTimeout,
-                             const std::optional<std::filesystem::path>& mouseScript,
-                             const std::optional<std::filesystem::path>& keyScript, std::optional<int> supersample,
-                             std::optional<int> motionBlur, std::optional<double> shutter, bool dither,
-                             const std::vector<std::string>& defines) {
+// What Python's layer converts a setting's value to before it comes here (python/toyhost/_args.py),
+// by the C++ type of its row: a trailing "?" means None is "not given".
+template <class T> struct SettingKind;
+template <> struct SettingKind<bool> { static constexpr const char* name = "flag"; };
+template <> struct SettingKind<double> { static constexpr const char* name = "real"; };
+template <> struct SettingKind<std::optional<int>> { static constexpr const char* name = "int?"; };
+template <> struct SettingKind<std::optional<double>> { static constexpr const char* name = "real?"; };
+template <> struct SettingKind<std::optional<std::string>> { static constexpr const char* name = "text?"; };
+template <> struct SettingKind<std::optional<std::filesystem::path>> { static constexpr const char* name = "path?"; };
+template <> struct SettingKind<std::vector<std::filesystem::path>> { static constexpr const char* name = "paths"; };
+template <> struct SettingKind<std::vector<std::string>> { static constexpr const char* name = "macros"; };
+template <> struct SettingKind<TOYHOST_SETTINGS_MEDIA_FILES> { static constexpr const char* name = "named_paths"; };
+
+// The settings Python gives, by member name (its layer checked and converted each value and split
+// size into width and height); a member left out is not given.
+SessionSettings settingsFrom(const py::dict& given) {
     SessionSettings settings;
-    settings.width = width;
-    settings.height = height;
-    settings.fps = fps;
-    settings.startTime = startTime;
-    settings.date = date;
-    settings.mediaFolders = mediaFolders;
-    settings.mediaFiles = mediaFiles;
-    settings.floatImage = floatImage;
-    settings.frameTimeout = frameTimeout;
-    settings.compileTimeout = compileTimeout;
-    settings.mouseScript = mouseScript;
-    settings.keyScript = keyScript;
-    settings.supersample = supersample;
-    settings.motionBlur = motionBlur;
-    settings.shutterDegrees = shutter;
-    settings.dither = dither;
-    settings.defines = defines;
+#define TOYHOST_SETTING_FROM_PYTHON(Type, member, key, initial, fallback) \
+    if (given.contains(#member)) settings.member = given[#member].cast<Type>();
+    TOYHOST_SESSION_SETTINGS(TOYHOST_SETTING_FROM_PYTHON)
+#undef TOYHOST_SETTING_FROM_PYTHON
     return settings;
 }
 
 }  // namespace
 
 void bindSession(py::module_& module) {
+    // The settings' list (toyhost/Settings.h) as (member, key, kind, fallback) rows: Python's
+    // Session keywords, their checks and toyhost.defaults()' link are made from it.
+    module.def("setting_fields", [] {
+        py::list rows;
+#define TOYHOST_SETTING_ROW(Type, member, key, initial, fallback) \
+    rows.append(py::make_tuple(#member, key, SettingKind<Type>::name, #fallback));
+        TOYHOST_SESSION_SETTINGS(TOYHOST_SETTING_ROW)
+#undef TOYHOST_SETTING_ROW
+        return rows;
+    });
     py::class_<Reloaded>(module, "Reloaded", "What a reload did (Session.reload).")
         .def_readonly("applied", &Reloaded::applied)
         .def_readonly("structure_changed", &Reloaded::structureChanged)
@@ -312,25 +315,10 @@ void bindSession(py::module_& module) {
         .def("next", &nextRendered, "The next (iframe, array), or None after the last.")
         .def("cancel", &RenderStream::cancel, "Stops rendering; frames not taken are dropped.");
     py::class_<NativeSession>(module, "NativeSession")
-        .def(py::init([](const Shadertoy& shadertoy, std::optional<int> width, std::optional<int> height,
-                         std::optional<double> fps, double startTime, const std::optional<std::string>& date,
-                         const std::vector<std::filesystem::path>& mediaFolders,
-                         const std::vector<std::pair<std::string, std::filesystem::path>>& mediaFiles,
-                         bool floatImage, std::optional<double> frameTimeout, std::optional<double> compileTimeout,
-                         const std::optional<std::filesystem::path>& mouseScript,
-                         const std::optional<std::filesystem::path>& keyScript, std::optional<int> supersample,
-                         std::optional<int> motionBlur, std::optional<double> shutter, bool dither,
-                         const std::vector<std::string>& defines) {
-                 return std::make_unique<NativeSession>(
-                     shadertoy, settingsFrom(width, height, fps, startTime, date, mediaFolders, mediaFiles,
-                                             floatImage, frameTimeout, compileTimeout, mouseScript, keyScript,
-                                             supersample, motionBlur, shutter, dither, defines));
+        .def(py::init([](const Shadertoy& shadertoy, const py::dict& settings) {
+                 return std::make_unique<NativeSession>(shadertoy, settingsFrom(settings));
              }),
-             py::arg("shadertoy"), py::arg("width"), py::arg("height"), py::arg("fps"), py::arg("start_time"),
-             py::arg("date"), py::arg("media_folders"), py::arg("media_files"), py::arg("float_image"),
-             py::arg("frame_timeout"), py::arg("compile_timeout"), py::arg("mouse_script"), py::arg("key_script"),
-             py::arg("supersample"), py::arg("motion_blur"), py::arg("shutter"), py::arg("dither"),
-             py::arg("defines"))
+             py::arg("shadertoy"), py::arg("settings"))
         .def("close", &NativeSession::close)
         .def_property_readonly("closed", &NativeSession::closed)
         .def("step", &NativeSession::step, py::arg("events"), py::arg("time"), py::arg("time_delta"),

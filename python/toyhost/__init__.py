@@ -24,6 +24,7 @@ import numpy
 from . import _args as args
 from . import _code
 from . import _notebook
+from . import _settings
 from . import _toyhost
 from ._compare import CompareReport, FrameDifference, compare, compare_images
 from ._errors import (CompileError, Error, GlError, InputError, InternalError, ManifestError, OutputError,
@@ -125,18 +126,11 @@ class Session:
                  dither: bool = False, defines: Defines = ()) -> None:
         if not isinstance(shadertoy, Shadertoy):
             shadertoy = load(shadertoy)
-        width, height = (None, None) if size is None else args.size("size", size)
-        fps = args.optional(args.real, "fps", fps)
-        self._fps = fps if fps is not None else _toyhost.defaults()["fps"]
-        self._native = _toyhost.NativeSession(
-            shadertoy, width, height, fps, args.real("start_time", start_time), args.optional(args.text, "date", date),
-            args.paths("media_folders", media_folders), args.named_paths("media_files", media_files or {}),
-            args.flag("float_image", float_image), args.optional(args.real, "frame_timeout", frame_timeout),
-            args.optional(args.real, "compile_timeout", compile_timeout),
-            args.optional(args.path, "mouse_script", mouse_script), args.optional(args.path, "key_script", key_script),
-            args.optional(args.integer, "supersample", supersample),
-            args.optional(args.integer, "motion_blur", motion_blur), args.optional(args.real, "shutter", shutter),
-            args.flag("dither", dither), args.defines("defines", defines))
+        # The keywords are spelled here for type checkers and help(); what each becomes and how it is
+        # checked is the settings' one list (_settings.py), and a test keeps the two equal.
+        given = _settings.native({key: value for key, value in locals().items() if key in _settings.KEYWORDS})
+        self._fps = given["fps"] if "fps" in given else _toyhost.defaults()["fps"]
+        self._native = _toyhost.NativeSession(shadertoy, given)
         self.shadertoy = shadertoy
         self._drawn = False  # frame() has nothing to show before the first step (restart keeps the picture)
         self._mouse_held = False

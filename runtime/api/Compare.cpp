@@ -3,6 +3,7 @@
 // and compared by compareImages (runtime/compare). Needs no GL context of the caller's: each
 // session has its own headless one.
 #include <toyhost/Compare.h>
+#include <toyhost/Session.h>
 
 #include <algorithm>
 #include <ctime>

@@ -4,7 +4,7 @@
 // naming the setting ("min_psnr", "max_diff", "diff_gain"). Pure, no GL.
 #pragma once
 
-#include <toyhost/Compare.h>
+#include <toyhost/CompareTypes.h>
 
 namespace toyhost {
 

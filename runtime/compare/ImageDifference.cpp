@@ -1,8 +1,8 @@
-// ImageDifference: toyhost::compareImages (include/toyhost/Compare.h), the arithmetic of comparing
+// ImageDifference: toyhost::compareImages (include/toyhost/CompareTypes.h), the arithmetic of comparing
 // two RGBA8 frames: PSNR, largest and mean sample difference, differing pixels, the first one, and
 // the difference image. Pure, no GL (tests/unit/test_image_difference.cpp checks it on hand-made
 // images).
-#include <toyhost/Compare.h>
+#include <toyhost/CompareTypes.h>
 
 #include <algorithm>
 #include <cmath>

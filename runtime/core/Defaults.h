@@ -1,28 +1,35 @@
-// Defaults: every default value of a run, in one place. Descriptions (PlayerDesc, SessionOptions)
-// leave a field at zero/absent to mean "the default", and one function per description
-// (withDefaults) fills them from here; the CLI shows these same numbers in --help. No GL needed.
+// Defaults: every default value of a run. The ones a library user sees are written once, in the
+// public list (toyhost/Defaults.h), and named here after it; the engine's own follow. Descriptions
+// (PlayerDesc, SessionOptions) leave a field at zero/absent to mean "the default", and one function
+// per description (withDefaults) fills them from here; the CLI shows these same numbers in --help.
+// No GL needed.
 #pragma once
 
 #include <cstddef>
 
+#include <toyhost/Defaults.h>
+
 namespace toyhost::defaults {
 
-inline constexpr int kCanvasWidth = 800;
-inline constexpr int kCanvasHeight = 450;
-inline constexpr int kFrames = 1;
-inline constexpr double kFps = 60.0;             // fixed time step: iTime = start + n / fps
-inline constexpr int kPngLevel = 1;              // --png-level of captured PNG files (fastest compression)
-inline constexpr std::size_t kCaptureMemoryMiB = 256;  // frames waiting for the encoders
-inline constexpr int kCaptureEvery = 1;
-inline constexpr int kMaxCanvasSide = 16384;     // --size limit, before asking GL for its own
+// The public list's values (toyhost/Defaults.h).
+inline constexpr Defaults kPublic{};
+
+inline constexpr int kCanvasWidth = kPublic.width;
+inline constexpr int kCanvasHeight = kPublic.height;
+inline constexpr int kFrames = kPublic.frames;
+inline constexpr double kFps = kPublic.fps;             // fixed time step: iTime = start + n / fps
+inline constexpr int kPngLevel = kPublic.pngLevel;              // --png-level of captured PNG files (fastest compression)
+inline constexpr std::size_t kCaptureMemoryMiB = kPublic.captureMemoryMiB;  // frames waiting for the encoders
+inline constexpr int kCaptureEvery = kPublic.captureEvery;
+inline constexpr int kMaxCanvasSide = kPublic.maxCanvasSide;     // --size limit, before asking GL for its own
 // Better pixels than the site (timing/SamplePattern.h): one sample per pixel at one instant unless
 // asked; a shutter of 180 degrees (open half the frame step) is the film convention.
-inline constexpr int kSupersample = 1;
-inline constexpr int kMotionBlurSamples = 1;
-inline constexpr double kShutterDegrees = 180.0;
-inline constexpr int kMaxSupersample = 16;         // --supersample limit (256 samples per pixel)
-inline constexpr int kMaxMotionBlurSamples = 256;  // --motion-blur limit
-inline constexpr int kMaxSamplesPerFrame = 4096;   // supersample^2 x motion-blur samples
+inline constexpr int kSupersample = kPublic.supersample;
+inline constexpr int kMotionBlurSamples = kPublic.motionBlur;
+inline constexpr double kShutterDegrees = kPublic.shutterDegrees;
+inline constexpr int kMaxSupersample = kPublic.maxSupersample;         // --supersample limit (256 samples per pixel)
+inline constexpr int kMaxMotionBlurSamples = kPublic.maxMotionBlur;  // --motion-blur limit
+inline constexpr int kMaxSamplesPerFrame = kPublic.maxSamplesPerFrame;   // supersample^2 x motion-blur samples
 // A tiled still (session/TiledStill.h): tiles of this side unless --tile says, and the largest
 // canvas side it takes (PNG and EXR hold more; two bands of rows stay in memory).
 inline constexpr int kTileSide = 1024;
@@ -32,16 +39,16 @@ inline constexpr int kMaxTiledCanvasSide = 65536;
 // dark but visible, 32 levels and more are white).
 inline constexpr int kCompareDiffGain = 8;
 // Frames `toyhost compare` renders when neither --frames nor a manifest's "defaults" say.
-inline constexpr int kCompareFrames = 10;
+inline constexpr int kCompareFrames = kPublic.compareFrames;
 // Numbers a user may give: beyond these a float uniform is no longer a usable number (iTime, iMouse
 // become Inf or lose every fraction), so they are usage errors, not silent Inf in the shader.
-inline constexpr double kMinFps = 0.001;
-inline constexpr double kMaxFps = 1e6;
+inline constexpr double kMinFps = kPublic.minFps;
+inline constexpr double kMaxFps = kPublic.maxFps;
 inline constexpr double kMaxSeconds = 1e9;          // --start-time, script "time"
 inline constexpr double kMaxPixelCoordinate = 1e6;  // --mouse, script "x"/"y"
 // iTimeDelta the site uses on the frame after a restart and while paused (1/60 s).
 inline constexpr double kRestartTimeDelta = 1.0 / 60.0;
-inline constexpr double kSampleRate = 44100.0;   // iSampleRate in every pass
+inline constexpr double kSampleRate = kPublic.sampleRate;   // iSampleRate in every pass
 // Cube A: six square faces of this side (the site's), RGBA16F.
 inline constexpr int kCubeBufferSize = 1024;
 // Stand-ins for inputs toyhost does not have: stock cubemap faces of unknown size, videos
@@ -68,14 +75,14 @@ inline constexpr std::size_t kMaxManifestProblems = 50;
 inline constexpr int kMaxJpegScans = 500;
 inline constexpr double kImageDecodeSeconds = 30.0;
 // The Sound pass: the site renders 180 s, in blocks of 512x512 samples.
-inline constexpr double kSoundSeconds = 180.0;
+inline constexpr double kSoundSeconds = kPublic.soundSeconds;
 inline constexpr double kMaxSoundSeconds = 3600.0;  // `toyhost sound --seconds` limit
 inline constexpr int kSoundBlockSide = 512;
 // The watchdog (headless runs; a window has no frame limit): a frame whose passes take longer
 // than this ends the run (--frame-timeout), and so does a pass that takes longer to compile
 // (--compile-timeout). 0 turns either off.
-inline constexpr double kFrameTimeoutSeconds = 60.0;
-inline constexpr double kCompileTimeoutSeconds = 120.0;
+inline constexpr double kFrameTimeoutSeconds = kPublic.frameTimeoutSeconds;
+inline constexpr double kCompileTimeoutSeconds = kPublic.compileTimeoutSeconds;
 // A library Session (toyhost/Session.h) has neither limit unless its settings give one.
 inline constexpr double kSessionTimeoutSeconds = 0.0;
 // A limit other than 0 (off) is at least 0.1 s: shorter limits measure the watchdog's own polling

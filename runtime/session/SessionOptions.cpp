@@ -13,6 +13,7 @@
 #include "timing/FrameClock.h"
 
 #include <algorithm>
+#include <type_traits>
 #include <cctype>
 
 namespace toyhost {
@@ -29,17 +30,34 @@ int countCaptured(int first, int end, int frames, int every) {
 Error usage(std::string message) { return Error(std::move(message), Code::Usage); }
 }  // namespace
 
+namespace {
+// A row's fallback (toyhost/Settings.h): a toyhost::Defaults member, or `initial`, the field's own
+// initial value. A fallback that names no member does not compile.
+struct NoFallback {};
+struct Fallbacks : Defaults {
+    NoFallback initial;
+};
+template <class Setting, class V>
+void fillFallback(Setting& setting, const V& value) {
+    if constexpr (!std::is_same_v<V, NoFallback>)
+        if (!setting) setting = value;
+}
+}  // namespace
+
 SessionOptions withDefaults(SessionOptions o) {
     SessionSettings& s = o.settings;
-    if (!s.width) s.width = defaults::kCanvasWidth;
-    if (!s.height) s.height = defaults::kCanvasHeight;
+    // A window: no fps means real time, and a frame has no time limit.
+    const bool realTime = o.interactive && !s.fps;
+    if (o.interactive && !s.frameTimeout) s.frameTimeout = 0.0;
+    const Fallbacks fallbacks{};
+#define TOYHOST_FILL_FALLBACK(Type, member, key, initial, fallback) fillFallback(s.member, fallbacks.fallback);
+    TOYHOST_SESSION_SETTINGS(TOYHOST_FILL_FALLBACK)
+#undef TOYHOST_FILL_FALLBACK
+    if (realTime) s.fps.reset();
     if (!o.frames) o.frames = o.interactive ? 0 : defaults::kFrames;
-    if (!s.fps && !o.interactive) s.fps = defaults::kFps;
     if (!o.captureEvery) o.captureEvery = defaults::kCaptureEvery;
     if (!o.pngLevel) o.pngLevel = defaults::kPngLevel;
     if (!o.captureMemoryBytes) o.captureMemoryBytes = defaults::kCaptureMemoryMiB << 20;
-    if (!s.frameTimeout) s.frameTimeout = o.interactive ? 0.0 : defaults::kFrameTimeoutSeconds;
-    if (!s.compileTimeout) s.compileTimeout = defaults::kCompileTimeoutSeconds;
     return o;
 }
 
@@ -223,39 +241,20 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     // otherwise; a window shows the live date.
     if (!o.interactive && !wallClock) wallClock = localWallClockNow();
     const bool tiled = o.tile || *s.width > defaults::kMaxCanvasSide || *s.height > defaults::kMaxCanvasSide;
-    if (Status size = tiled ? checkTiledSize(*s.width, *s.height, o.tile, *manifest, o.interactive)
-                            : checkSizeSetting(*s.width, *s.height);
-        !size)
-        return size.error();
+    if (tiled)
+        if (Status size = checkTiledSize(*s.width, *s.height, o.tile, *manifest, o.interactive); !size)
+            return size.error();
+    // Every setting's check (the validation table of toyhost/Settings.h's list).
+    if (Status checked = checkSessionSettings(s, SettingContext{tiled}); !checked) return checked.error();
     if (o.checkpoint) {
         std::error_code ec;
         if (fs::is_directory(*o.checkpoint, ec))
             return usage("--checkpoint " + o.checkpoint->string() + ": is a folder; give a file name");
     }
-    for (const fs::path& folder : s.mediaFolders) {
-        std::error_code ec;
-        if (!fs::is_directory(folder, ec))
-            return fileError(folder.string(),
-                             fs::exists(folder, ec) ? "is not a folder (--media or $TOYHOST_MEDIA)"
-                                                    : "media folder not found (--media or $TOYHOST_MEDIA)",
-                             Code::IoNotFound);
-    }
-    if (s.fps)
-        if (Status fps = checkFpsSetting(*s.fps); !fps) return fps.error();
-    if (Status start = checkStartTimeSetting(s.startTime); !start) return start.error();
     if (o.mouse)
         if (Status mouse = checkMouseSetting(o.mouse->x, o.mouse->y); !mouse) return mouse.error();
-    const SamplingDesc sampling{s.supersample.value_or(defaults::kSupersample),
-                                s.motionBlur.value_or(defaults::kMotionBlurSamples),
-                                s.shutterDegrees.value_or(defaults::kShutterDegrees), s.dither};
-    if (Status checked = checkSamplingSettings(sampling.supersample, sampling.motionBlur, sampling.shutterDegrees);
-        !checked)
-        return checked.error();
-    if (sampling.dither && isSingleSample(sampling))
-        return settingError("dither", "dithers an average of samples: give supersample or motion_blur too");
+    const SamplingDesc sampling{*s.supersample, *s.motionBlur, *s.shutterDegrees, s.dither};
     if (*o.captureEvery < 1) return usage("--capture-every must be at least 1");
-    for (const auto& [name, value] : {std::pair{"frame_timeout", *s.frameTimeout}, {"compile_timeout", *s.compileTimeout}})
-        if (Status limit = checkTimeoutSetting(name, value); !limit) return limit.error();
     if (*o.captureMemoryBytes == 0) return usage("--capture-memory must be at least 1 (MiB)");
     if (o.mouse && s.mouseScript) return usage("--mouse and --mouse-script cannot be combined");
     if (*o.pngLevel < 0 || *o.pngLevel > 9) return usage("--png-level must be 0..9");
@@ -337,13 +336,6 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
         Result<KeyScript> script = parseKeyScript(*text, s.keyScript->string());
         if (!script) return script.error();
         run.keys = std::move(*script);
-    }
-    for (const auto& [id, file] : s.mediaFiles) {
-        if (Status regular = checkRegularFile(file); !regular) {
-            Error error = regular.error();
-            error.diagnostics.front().message += " (--media-file " + id + ")";
-            return error;
-        }
     }
     Result<PlayerPlan> plan = planPlayer(std::move(*manifest), run.media, run.defines);
     if (!plan) return plan.error();

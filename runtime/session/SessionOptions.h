@@ -15,7 +15,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
-#include <toyhost/Session.h>
+#include <toyhost/Settings.h>
 
 #include "capture/OutputPattern.h"
 #include "capture/VideoSink.h"

@@ -2,9 +2,14 @@
 
 #include <cmath>
 #include <string>
+#include <system_error>
 
+#include "core/AtomicFile.h"
 #include "core/Defaults.h"
 #include "player/PlayerDesc.h"
+#include "shader/MacroDefines.h"
+#include "timing/SamplePattern.h"
+#include "timing/FrameClock.h"
 
 namespace toyhost {
 
@@ -92,6 +97,108 @@ Status checkSamplingSettings(int supersample, int motionBlur, double shutterDegr
                                                std::to_string(motionBlur) + " motion samples = " +
                                                std::to_string(draws) + " draws a frame, more than " +
                                                std::to_string(kMaxSamplesPerFrame));
+    return okStatus();
+}
+
+// --- the validation table: one check per row of toyhost/Settings.h ------------------------------
+
+Status settingCheck_width(const SessionSettings& s, const SettingContext& context) {
+    if (context.tiled || !s.width || !s.height) return okStatus();
+    return checkSizeSetting(*s.width, *s.height);
+}
+
+Status settingCheck_height(const SessionSettings& s, const SettingContext& context) {
+    return settingCheck_width(s, context);  // one setting, "size"
+}
+
+Status settingCheck_fps(const SessionSettings& s, const SettingContext&) {
+    return s.fps ? checkFpsSetting(*s.fps) : okStatus();  // absent in a window: real time
+}
+
+Status settingCheck_startTime(const SessionSettings& s, const SettingContext&) { return checkStartTimeSetting(s.startTime); }
+
+Status settingCheck_date(const SessionSettings& s, const SettingContext&) {
+    if (!s.date) return okStatus();
+    Result<double> parsed = parseWallClock(*s.date);
+    if (!parsed) return settingError("date", parsed.error().first().message);
+    return okStatus();
+}
+
+Status settingCheck_mediaFolders(const SessionSettings& s, const SettingContext&) {
+    namespace fs = std::filesystem;
+    for (const fs::path& folder : s.mediaFolders) {
+        std::error_code ec;
+        if (!fs::is_directory(folder, ec))
+            return fileError(folder.string(),
+                             fs::exists(folder, ec) ? "is not a folder (--media or $TOYHOST_MEDIA)"
+                                                    : "media folder not found (--media or $TOYHOST_MEDIA)",
+                             Code::IoNotFound);
+    }
+    return okStatus();
+}
+
+Status settingCheck_mediaFiles(const SessionSettings& s, const SettingContext&) {
+    for (const auto& [id, file] : s.mediaFiles) {
+        if (Status regular = checkRegularFile(file); !regular) {
+            Error error = regular.error();
+            error.diagnostics.front().message += " (--media-file " + id + ")";
+            return error;
+        }
+    }
+    return okStatus();
+}
+
+// Both values are meaningful; nothing to refuse.
+Status settingCheck_floatImage(const SessionSettings&, const SettingContext&) { return okStatus(); }
+
+Status settingCheck_frameTimeout(const SessionSettings& s, const SettingContext&) {
+    return s.frameTimeout ? checkTimeoutSetting("frame_timeout", *s.frameTimeout) : okStatus();
+}
+
+Status settingCheck_compileTimeout(const SessionSettings& s, const SettingContext&) {
+    return s.compileTimeout ? checkTimeoutSetting("compile_timeout", *s.compileTimeout) : okStatus();
+}
+
+// The scripts' contents are parsed where they are read (prepareSession), with line and column.
+Status settingCheck_mouseScript(const SessionSettings& s, const SettingContext&) {
+    return s.mouseScript ? checkRegularFile(*s.mouseScript) : okStatus();
+}
+
+Status settingCheck_keyScript(const SessionSettings& s, const SettingContext&) {
+    return s.keyScript ? checkRegularFile(*s.keyScript) : okStatus();
+}
+
+namespace {
+Status checkSampling(const SessionSettings& s) {
+    return checkSamplingSettings(s.supersample.value_or(defaults::kSupersample),
+                                 s.motionBlur.value_or(defaults::kMotionBlurSamples),
+                                 s.shutterDegrees.value_or(defaults::kShutterDegrees));
+}
+}  // namespace
+
+Status settingCheck_supersample(const SessionSettings& s, const SettingContext&) { return checkSampling(s); }
+Status settingCheck_motionBlur(const SessionSettings& s, const SettingContext&) { return checkSampling(s); }
+Status settingCheck_shutterDegrees(const SessionSettings& s, const SettingContext&) { return checkSampling(s); }
+
+Status settingCheck_dither(const SessionSettings& s, const SettingContext&) {
+    const SamplingDesc sampling{s.supersample.value_or(defaults::kSupersample),
+                                s.motionBlur.value_or(defaults::kMotionBlurSamples),
+                                s.shutterDegrees.value_or(defaults::kShutterDegrees), s.dither};
+    if (sampling.dither && isSingleSample(sampling))
+        return settingError("dither", "dithers an average of samples: give supersample or motion_blur too");
+    return okStatus();
+}
+
+Status settingCheck_defines(const SessionSettings& s, const SettingContext&) {
+    Result<MacroDefines> defines = parseMacroDefines(s.defines);
+    return defines ? okStatus() : Status(defines.error());
+}
+
+Status checkSessionSettings(const SessionSettings& settings, const SettingContext& context) {
+#define TOYHOST_RUN_SETTING_CHECK(Type, member, key, initial, fallback) \
+    if (Status checked = settingCheck_##member(settings, context); !checked) return checked;
+    TOYHOST_SESSION_SETTINGS(TOYHOST_RUN_SETTING_CHECK)
+#undef TOYHOST_RUN_SETTING_CHECK
     return okStatus();
 }
 

@@ -9,6 +9,8 @@
 
 #include <string>
 
+#include <toyhost/Settings.h>
+
 #include "core/Result.h"
 
 namespace toyhost {
@@ -34,5 +36,22 @@ Status checkSoundSecondsSetting(double seconds);
 // Supersample 1..kMaxSupersample, motion blur 1..kMaxMotionBlurSamples, a shutter in (0, 360] and
 // at most kMaxSamplesPerFrame draws a frame: "supersample", "motion_blur", "shutter".
 Status checkSamplingSettings(int supersample, int motionBlur, double shutterDegrees);
+
+// The validation table of SessionSettings: one check per row of the list (toyhost/Settings.h),
+// declared from it, so that a row without its check does not link. Each sees the settings as the
+// session will run them (given values, then the manifest's and toyhost's defaults) and returns the
+// error naming its setting. Shared checks (size: width and height; sampling: supersample,
+// motion_blur, shutter) run for each of their rows and give the same message.
+struct SettingContext {
+    // A canvas drawn in tiles (beyond one GL target): its size is checked with the manifest and
+    // --tile by checkTiledSize (session/SessionOptions.cpp), not by the size rows.
+    bool tiled = false;
+};
+#define TOYHOST_SETTING_CHECK(Type, member, key, initial, fallback) \
+    Status settingCheck_##member(const SessionSettings& settings, const SettingContext& context);
+TOYHOST_SESSION_SETTINGS(TOYHOST_SETTING_CHECK)
+#undef TOYHOST_SETTING_CHECK
+// Every row's check, in the list's order: the first error.
+Status checkSessionSettings(const SessionSettings& settings, const SettingContext& context);
 
 }  // namespace toyhost
