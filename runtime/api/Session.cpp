@@ -309,6 +309,17 @@ Status Session::Impl::render(const FrameTime& t, std::span<const InputEvent> eve
     return rendered;
 }
 
+Status Session::seek(int target) {
+    if (Status made = impl_->usable("seek"); !made) return made;
+    Status simulated = impl_->withGl([&] {
+        Status done = impl_->core->seek(target, *impl_->timeline);
+        glFlush();  // the buffers' frames drawn while the caller goes on, as step()'s
+        return done;
+    });
+    if (Status limit = impl_->expired(); !limit) return limit;
+    return simulated;
+}
+
 int Session::frame() const { return impl_->core->frame(); }
 int Session::width() const { return impl_->core->width(); }
 int Session::height() const { return impl_->core->height(); }
@@ -490,7 +501,7 @@ public:
           s(*session.impl_),
           request(std::move(request)),
           pass(pass),
-          stream(FrameStreamSettings{this->request.frames, this->request.every, kRenderReadsInFlight}),
+          stream(FrameStreamSettings{this->request.frames, this->request.every, kRenderReadsInFlight, session.frame()}),
           reads(&s.context->gpuActivity()) {}
 
     Session& session;
