@@ -105,7 +105,7 @@ def main():
     os.environ["PYTHONPATH"] = str(python_dir) + (os.pathsep + env_path if env_path else "")
     with LocalCluster(n_workers=a.workers, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
             Client(cluster) as client:
-        pids = [info["pid"] for info in client.scheduler_info()["workers"].values()]
+        pids = list(client.run(os.getpid).values())
         workers = [psutil.Process(pid) for pid in pids]
         singles, shards = [], []
         for rep in range(a.reps):
