@@ -113,6 +113,14 @@ public:
     // A non-finite time, a negative or non-finite timeDelta or frameRate is refused naming
     // `time`, `time_delta` or `frame_rate`.
     Status stepAt(double time, double timeDelta, double frameRate, std::span<const InputEvent> events = {});
+    // Goes on until iFrame `frame` is the next frame, reading nothing back: the frames before it
+    // are simulated at the fixed step (with the input scripts' events) as `toyhost run
+    // --frame-range` and `--shard` reach their first frame: buffers and Cube A run, Image is not
+    // rendered; a shadertoy without them renders nothing at all (only iFrame and the input
+    // advance), unless its Image may discard (it keeps earlier frames' pixels: then it is drawn). From `frame` on, step() and render() give the frames of a session that stepped
+    // there, byte for byte. `frame` before frame() is refused with a Code::Usage error (a session
+    // only goes forward; restart() goes back to 0); frame() itself does nothing. New member only.
+    Status seek(int frame);
     int frame() const;  // iFrame of the next frame
     // The iTime step() gives frame `frame` (settings.startTime + frame / settings.fps).
     double timeOf(int frame) const;
@@ -128,7 +136,9 @@ public:
 
     // Rendering a sequence of frames into memory through toyhost's frame stream, the one its own
     // recordings use: `frames` frames stepped as step() steps them (`events` applied before the
-    // first), frames 0, every, 2 * every, ... and the last read back while the later frames render,
+    // first), the frames whose iFrame is a multiple of `every` (counted on iFrame, not from the
+    // rendering's start: from iFrame 100, every 30 gives 120, 150, ..., the frames a run from 0
+    // captures) and the last read back while the later frames render,
     // each handed to the callback as soon as its read is complete (checked after every frame: a
     // frame never waits for a later one to be rendered or read), at most kRenderReadsInFlight
     // reads in flight.

@@ -1,5 +1,5 @@
 // The native module `toyhost._toyhost`: toyhost's public C++ API (include/toyhost/) as Python
-// sees it: diagnostics, input events, loading a shadertoy, the version, the session
+// sees it: diagnostics, input events, loading a shadertoy, the version, shard spans, the session
 // (SessionBinding) and comparisons (CompareBinding). The Pythonic layer on top is
 // toyhost/__init__.py. No GL here.
 #include <pybind11/pybind11.h>
@@ -12,6 +12,7 @@
 #include <toyhost/Diagnostic.h>
 #include <toyhost/Input.h>
 #include <toyhost/Shadertoy.h>
+#include <toyhost/Shards.h>
 #include <toyhost/Version.h>
 
 #include "CompareBinding.h"
@@ -119,6 +120,14 @@ PYBIND11_MODULE(_toyhost, m) {
     toyhost::python::bindSession(m);
     toyhost::python::bindCompare(m);
     m.def("version_string", [] { return std::string(versionString()); });
+    // toyhost.farm.shard_spans' arithmetic: the split of `toyhost run --shard i/n` (toyhost/Shards.h).
+    m.def(
+        "shard_span",
+        [](int frames, int shards, int index) {
+            const FrameSpan span = valueOrThrow(shardSpan(frames, shards, index));
+            return py::make_tuple(span.first, span.end);
+        },
+        py::arg("frames"), py::arg("shards"), py::arg("index"));
     // The defaults a session uses for what the caller leaves out (toyhost::runDefaults), by the keys
     // of toyhost/Defaults.h's list; a new dict at every call so that a caller changing it changes
     // nothing else.

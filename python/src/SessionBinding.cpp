@@ -92,6 +92,12 @@ public:
         });
     }
 
+    // Simulates the frames before iFrame `frame` without reading anything back (Session::seek).
+    void seek(int frame) {
+        Session& s = open();
+        throwIfFailed(onGlThread([&] { return s.seek(frame); }));
+    }
+
     // render(): frames rendered ahead on the worker, taken by RenderStream.next().
     std::shared_ptr<RenderStream> render(std::vector<InputEvent> events, int frames, int every, const std::string& pass,
                                          bool floats) {
@@ -323,6 +329,7 @@ void bindSession(py::module_& module) {
         .def_property_readonly("closed", &NativeSession::closed)
         .def("step", &NativeSession::step, py::arg("events"), py::arg("time"), py::arg("time_delta"),
              py::arg("frame_rate"))
+        .def("seek", &NativeSession::seek, py::arg("frame"))
         .def("render", &NativeSession::render, py::arg("events"), py::arg("frames"), py::arg("every"),
              py::arg("pass_"), py::arg("floats"), py::keep_alive<0, 1>())
         .def("read_uint8", &NativeSession::read<std::uint8_t>, py::arg("pass_"))

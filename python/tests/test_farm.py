@@ -1,6 +1,7 @@
 """toyhost.farm on dask.distributed: a LocalCluster of 2 worker processes (each with its own GL
-context) renders 4 shards, byte-identical to one run, for a shadertoy without buffers and one
-with a simulation buffer and a mouse script; toyhost.farm.map renders several shadertoys and
+context) renders 4 shards, each seeking to its first frame (Session.seek), byte-identical to one
+run, for a shadertoy without buffers and one with a simulation buffer and a mouse script, with
+`every` too (a shard renders only from the first to the last frame it keeps); toyhost.farm.map renders several shadertoys and
 brings back only what `reduce` returns. Debian's python3-distributed (scripts/install-deps.sh):
 the test fails, it does not skip, when it is missing."""
 
@@ -46,11 +47,15 @@ def test_four_shards_on_two_workers_equal_one_run(client, path, options):
     assert len(client.scheduler_info()["workers"]) == 2
 
 
-def test_every_keeps_the_single_runs_frames(client):
+@pytest.mark.parametrize("every, kept", [
+    (5, [0, 5, 10, 15, 20, 22]),
+    (10, [0, 10, 20, 22]),  # shard 2 (frames 11-16) keeps none: it renders nothing
+], ids=["every-5", "a-shard-keeps-none"])
+def test_every_keeps_the_single_runs_frames(client, every, kept):
     options = dict(size=(32, 18), date=DATE, mouse_script=POOL / "drag.json")
-    expected = single_run(POOL, 23, every=5, **options)
-    got = list(toyhost.farm.render(POOL, 23, client=client, shards=4, every=5, **options))
-    assert [i for i, _ in got] == [i for i, _ in expected] == [0, 5, 10, 15, 20, 22]
+    expected = single_run(POOL, 23, every=every, **options)
+    got = list(toyhost.farm.render(POOL, 23, client=client, shards=4, every=every, **options))
+    assert [i for i, _ in got] == [i for i, _ in expected] == kept
     assert all(numpy.array_equal(a, b) for (_, a), (_, b) in zip(got, expected))
 
 
@@ -67,9 +72,22 @@ def test_map_renders_each_shadertoy_and_returns_what_reduce_keeps(client):
         assert level == pytest.approx(float(numpy.mean(frames[-1][1][..., :3])), abs=0)
 
 
-def test_shard_spans_match_the_cli_and_refuse_bad_counts():
+def test_shard_spans_match_the_cli_and_refuse_bad_counts(monkeypatch):
     assert toyhost.farm.shard_spans(10, 3) == [(0, 3), (3, 6), (6, 10)]
+    assert toyhost.farm.shard_spans(2000000000, 16)[-1] == (1875000000, 2000000000)
+    # The arithmetic is the library's (toyhost::shardSpan, as --shard and farm plan split), not a copy.
+    assert toyhost._toyhost.shard_span(10, 3, 1) == (3, 6)
     with pytest.raises(toyhost.UsageError):
+        toyhost._toyhost.shard_span(10, 3, 3)
+    asked = []
+    real = toyhost._toyhost.shard_span
+    monkeypatch.setattr(toyhost._toyhost, "shard_span", lambda *a: asked.append(a) or real(*a))
+    assert toyhost.farm.shard_spans(7, 2) == [(0, 3), (3, 7)]
+    assert asked == [(7, 2, 0), (7, 2, 1)]
+    monkeypatch.undo()
+    with pytest.raises(toyhost.UsageError, match="expected 1 <= shards <= frames"):
         toyhost.farm.shard_spans(3, 4)
+    with pytest.raises(toyhost.UsageError):
+        toyhost.farm.shard_spans(2**31, 2)
     with pytest.raises(toyhost.UsageError):
         toyhost.farm.render(12345, 4, client=None).__next__()

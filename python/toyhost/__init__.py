@@ -163,6 +163,17 @@ class Session:
         self._drawn = True
         return iframe
 
+    def seek(self, frame: int) -> None:
+        """Goes on until iFrame ``frame`` is the next frame, reading nothing back, as the CLI's
+        ``--frame-range`` and ``--shard`` reach their first frame: the frames before it are simulated
+        at the fixed step (with the mouse and key scripts' events), buffers and Cube A running and
+        Image not rendered; a shadertoy without them renders nothing (only iFrame and the input
+        advance; an Image that may ``discard`` is drawn, as it keeps earlier frames' pixels). From
+        there step() and render() give the frames of a session that stepped there, byte for byte.
+        A frame before ``next_frame`` raises UsageError (a session only goes forward; restart()
+        goes back to 0); ``next_frame`` itself does nothing."""
+        self._native.seek(args.integer("frame", frame))
+
     def frame(self, pass_: str = "Image", dtype: Any = "uint8", out: Optional[numpy.ndarray] = None) -> numpy.ndarray:
         """The latest output of a pass ("Image", "Buffer A".."Buffer D") as a numpy array of shape
         (height, width, 4), RGBA, top row first. ``uint8``: what the screen shows (a buffer's floats
@@ -184,9 +195,11 @@ class Session:
 
     def render(self, frames: int, *, every: int = 1, pass_: str = "Image", dtype: Any = "uint8",
                mouse: Union[Point, bool, None] = None, keys: Optional[Keys] = None) -> Iterator[Tuple[int, numpy.ndarray]]:
-        """Renders ``frames`` frames and yields ``(iframe, array)`` for the 0th, every-th and last of
-        them (as the CLI's --capture-every), each array as frame() gives it. ``mouse`` and ``keys``
-        are applied before the first frame, as step() takes them, and stay.
+        """Renders ``frames`` frames and yields ``(iframe, array)`` for those whose iFrame is a
+        multiple of ``every`` and the last of them (as the CLI's --capture-every: counted on
+        iFrame, so a render from iFrame 100 with every=30 yields 120, 150, ... and its last), each
+        array as frame() gives it. ``mouse`` and ``keys`` are applied before the first frame, as
+        step() takes them, and stay.
 
         The frames go through the same frame stream as the CLI's recordings, rendered ahead of the
         loop as the CLI renders ahead of its encoders: while your loop handles a frame, the next

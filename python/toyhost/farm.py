@@ -9,10 +9,11 @@
 
 Each shard is one Dask task: the worker loads the shadertoy itself and renders in a Session of its
 own (its own GL context, on the worker process's GL thread), so give paths every worker can read.
-A shard renders the frames before its range without reading them back, then its range; a
-shadertoy with buffers therefore simulates its past in every shard (the CLI's `toyhost farm plan`
-starts shards from checkpoints instead). The frames are the single run's, byte for byte: shard
-boundaries are those of `toyhost run --shard i/n`. Session options (size, fps, date, mouse_script,
+A shard seeks to its first frame (Session.seek, as `toyhost run --frame-range` does): a shadertoy
+without buffers renders nothing before it, one with buffers (or Cube A) simulates its past with
+Image skipped in every shard (the CLI's `toyhost farm plan` starts shards from checkpoints
+instead). The frames are the single run's, byte for byte: shard boundaries are those of
+`toyhost run --shard i/n` (toyhost::shardSpan, through the native module). Session options (size, fps, date, mouse_script,
 ...) are passed on to every shard's Session; fix ``date`` where iDate matters, as the workers'
 clocks differ. dask.distributed is imported only by the functions that take a client.
 """
@@ -24,10 +25,11 @@ __all__ = ["shard_spans", "render", "map"]
 
 def shard_spans(frames, shards):
     """The (first, end) frame ranges of `shards` shards of `frames` frames, as --shard i/n splits them."""
+    from . import UsageError, _args, _toyhost
     if not isinstance(frames, int) or not isinstance(shards, int) or frames < 1 or not 1 <= shards <= frames:
-        from . import UsageError
         raise UsageError(f"shards: expected 1 <= shards <= frames, got {shards} shards of {frames} frames")
-    return [(frames * i // shards, frames * (i + 1) // shards) for i in range(shards)]
+    _args.integer("frames", frames)  # a run's frames are a 32-bit count, as the CLI's --frames
+    return [_toyhost.shard_span(frames, shards, i) for i in range(shards)]
 
 
 def _source(shadertoy):
@@ -41,14 +43,19 @@ def _source(shadertoy):
 
 
 def _render_shard_task(source, first, end, last, every, pass_, dtype, options):
-    """On a worker: frames first .. end-1 of one run (frame 0, every every-th and the run's last
-    among them), after rendering the frames before `first` without reading them back."""
+    """On a worker: the frames of first .. end-1 that the single run yields (iFrame a multiple of
+    `every`, and the run's last frame `last`). The session seeks to the first of them and renders
+    to the last of them: render() counts `every` on iFrame and yields its own last frame, which is
+    one of those."""
     import toyhost
+    start = -(-first // every) * every  # the first multiple of every from `first` on
+    stop = end if end - 1 == last else min(end, (end - 1) // every * every + 1)
+    start = min(start, last)  # the run's last frame is handed over whatever its number
+    if start >= stop:
+        return []  # nothing of the run's frames falls in this shard: no session needed
     with toyhost.Session(toyhost.load(source), **options) as session:
-        for _ in range(first):
-            session.step()
-        return [(iframe, array) for iframe, array in session.render(end - first, every=1, pass_=pass_, dtype=dtype)
-                if iframe % every == 0 or iframe == last]
+        session.seek(start)
+        return list(session.render(stop - start, every=every, pass_=pass_, dtype=dtype))
 
 
 def render(shadertoy, frames, client, shards=None, every=1, pass_="Image", dtype="uint8", **session_options):

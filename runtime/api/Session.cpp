@@ -104,6 +104,14 @@ int Session::frame() const { return impl_->core().frame(); }
 int Session::width() const { return impl_->core().width(); }
 int Session::height() const { return impl_->core().height(); }
 
+Status Session::seek(int target) {
+    return impl_->render("seek", [&] {
+        Status done = impl_->core().seek(target, impl_->timeline());
+        impl_->core().submit();  // the buffers' frames drawn while the caller goes on, as step()'s
+        return done;
+    });
+}
+
 Status Session::setChannel(std::string_view name, int channel, const ChannelArray& pixels) {
     std::optional<PassId> pass = name == passName(PassId::CubeA) ? std::optional<PassId>(PassId::CubeA) : passNamed(name);
     if (!pass || !impl_->core().manifest().find(*pass))
@@ -261,7 +269,7 @@ Result<std::unique_ptr<Session::Rendering>> Session::startRendering(const Render
         return Error("render: every must be 1 or more, got " + std::to_string(request.every), Code::Usage);
     Result<PassId> pass = impl_->pass(request.pass);
     if (!pass) return pass.error();
-    const MemoryStreamRequest wanted{request.frames, request.every, *pass, kRenderReadsInFlight};
+    const MemoryStreamRequest wanted{request.frames, request.every, *pass, kRenderReadsInFlight, frame()};
     Result<std::unique_ptr<MemoryFrameStream>> stream =
         impl_->withGl([&] { return MemoryFrameStream::open(impl_->core(), wanted); });
     if (!stream) return stream.error();

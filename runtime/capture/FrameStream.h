@@ -33,8 +33,12 @@ public:
 
 struct FrameStreamSettings {
     int frames = 0;    // frames in the run, the last of which is handed over; 0: no end
-    int every = 1;     // frames 0, every, 2 * every, ... are handed over
+    int every = 1;     // frames numbered 0, every, 2 * every, ... are handed over
     int inFlight = 3;  // reads queued at once; the next waits for the oldest (a readback ring's slots)
+    // The number of the stream's frame 0, which `every` counts on: a rendering that starts at
+    // iFrame 100 with every 30 hands over iFrames 120, 150, ... (the frames a run from iFrame 0
+    // captures), not its own 0th, 30th, ...
+    int first = 0;
 };
 
 class FrameStream {
@@ -47,7 +51,11 @@ public:
     explicit FrameStream(const FrameStreamSettings& settings) : settings_(settings) {}
 
     const FrameStreamSettings& settings() const { return settings_; }
-    bool captures(int frame) const { return captured(frame, settings_.frames, settings_.every); }
+    // Whether the stream's frame `frame` (0 .. frames - 1, counted from settings.first) is handed over.
+    bool captures(int frame) const {
+        const int end = settings_.frames > 0 ? settings_.first + settings_.frames : 0;
+        return captured(settings_.first + frame, end, settings_.every);
+    }
 
     // After frame `frame` was rendered (submitted, not necessarily drawn): its read starts when the
     // frame is captured (the oldest handed over first when inFlight are pending), then every read

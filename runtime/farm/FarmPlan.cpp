@@ -2,6 +2,8 @@
 // options live only in run-shard.sh, so every scheduler runs the same command. No GL needed.
 #include "farm/FarmPlan.h"
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -33,12 +35,9 @@ std::string yamlQuoted(const std::string& text) {
     return nlohmann::json(text).dump();
 }
 
-std::string farmJson(const PlanRequest& r) {
+std::string farmJson(const PlanRequest& r, const std::vector<FrameSpan>& shardSpans) {
     nlohmann::json spans = nlohmann::json::array();
-    for (int i = 0; i < r.shards; ++i) {
-        const FrameSpan span = shardSpan(r.frames, r.shards, i);
-        spans.push_back({span.first, span.end});
-    }
+    for (const FrameSpan& span : shardSpans) spans.push_back({span.first, span.end});
     const char* scheduler = r.scheduler == Scheduler::Slurm ? "slurm" : r.scheduler == Scheduler::Kubernetes ? "k8s" : "parallel";
     nlohmann::json plan = {{"target", r.target}, {"frames", r.frames},    {"shards", r.shards},
                            {"frameName", r.frameName}, {"spans", spans}, {"scheduler", scheduler},
@@ -59,10 +58,9 @@ std::string bashArray(const std::vector<int>& values) {
 // run-shard.sh INDEX: the one place the run's command and options are written. It resumes from the
 // shard's own checkpoint when a previous attempt left one (a requeued task), else from the chain's
 // checkpoint at the shard's first frame (stateful), else starts at the first frame directly.
-std::string runShardScript(const PlanRequest& r) {
+std::string runShardScript(const PlanRequest& r, const std::vector<FrameSpan>& spans) {
     std::vector<int> firsts, ends;
-    for (int i = 0; i < r.shards; ++i) {
-        const FrameSpan span = shardSpan(r.frames, r.shards, i);
+    for (const FrameSpan& span : spans) {
         firsts.push_back(span.first);
         ends.push_back(span.end);
     }
@@ -104,7 +102,7 @@ std::string runShardScript(const PlanRequest& r) {
 }
 
 // checkpoints.sh: one sequential pass over the boundaries, each step simulating only its part.
-std::string chainScript(const PlanRequest& r) {
+std::string chainScript(const PlanRequest& r, const std::vector<FrameSpan>& spans) {
     std::ostringstream s;
     s << "#!/bin/bash\n"
       << "# The checkpoint at each shard's first frame, for " << r.target << ": one sequential pass, each\n"
@@ -115,7 +113,7 @@ std::string chainScript(const PlanRequest& r) {
       << "mkdir -p \"$job/checkpoints\"\n"
       << "previous=()\n";
     for (int i = 1; i < r.shards; ++i) {
-        const FrameSpan span = shardSpan(r.frames, r.shards, i);
+        const FrameSpan& span = spans[static_cast<std::size_t>(i)];
         const std::string file = "\"$job/checkpoints/start-" + std::to_string(i) + ".ckpt\"";
         s << "if [ ! -s " << file << " ]; then\n"
           << "  " << shellQuoted(r.toyhost) << " run " << shellQuoted(r.target) << " --headless --quiet --frames "
@@ -242,11 +240,6 @@ std::optional<Scheduler> schedulerNamed(const std::string& name) {
     return std::nullopt;
 }
 
-FrameSpan shardSpan(int frames, int shards, int index) {
-    return {static_cast<int>(static_cast<long long>(frames) * index / shards),
-            static_cast<int>(static_cast<long long>(frames) * (index + 1) / shards)};
-}
-
 std::optional<std::string> frameNameProblem(const std::string& name) {
     static const std::regex shape(R"(^[^%/]*%(0[1-9][0-9]?)?d[^%/]*\.(png|exr)$)");
     if (std::regex_match(name, shape)) return std::nullopt;
@@ -264,9 +257,14 @@ std::string shellQuoted(const std::string& text) {
 
 Result<std::vector<PlanFile>> planFarm(const PlanRequest& r) {
     if (r.frames < 1) return Error("--frames must be at least 1", Code::Usage);
-    if (r.shards < 1 || r.shards > r.frames)
-        return Error("--shards " + std::to_string(r.shards) + ": expected 1 .. --frames (" + std::to_string(r.frames) + ")",
-                     Code::Usage);
+    std::vector<FrameSpan> spans;
+    for (int i = 0; i < std::max(r.shards, 1); ++i) {
+        Result<FrameSpan> span = shardSpan(r.frames, r.shards, i);
+        if (!span)
+            return Error("--shards " + std::to_string(r.shards) + ": expected 1 .. --frames (" + std::to_string(r.frames) + ")",
+                         Code::Usage);
+        spans.push_back(*span);
+    }
     if (r.jobDir.empty() || r.jobDir.front() != '/')
         return Error("the job folder must be an absolute path (every node finds it there): " + r.jobDir, Code::Usage);
     if (std::optional<std::string> problem = frameNameProblem(r.frameName))
@@ -280,9 +278,9 @@ Result<std::vector<PlanFile>> planFarm(const PlanRequest& r) {
     c.stateful = r.stateful && r.shards > 1;
     const std::string dir = shellQuoted(r.jobDir);
     std::vector<PlanFile> files;
-    files.push_back({"farm.json", farmJson(r), false});
-    files.push_back({"run-shard.sh", runShardScript(c), true});
-    if (c.stateful) files.push_back({"checkpoints.sh", chainScript(c), true});
+    files.push_back({"farm.json", farmJson(r, spans), false});
+    files.push_back({"run-shard.sh", runShardScript(c, spans), true});
+    if (c.stateful) files.push_back({"checkpoints.sh", chainScript(c, spans), true});
     switch (r.scheduler) {
     case Scheduler::Slurm:
         files.push_back({"job.sbatch", slurmArray(c), true});

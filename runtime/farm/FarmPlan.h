@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <toyhost/Shards.h>
+
 #include "core/Result.h"
 
 namespace toyhost::farm {
@@ -15,13 +17,7 @@ enum class Scheduler { Slurm, Kubernetes, Parallel };
 // "slurm", "k8s" (or "kubernetes"), "parallel".
 std::optional<Scheduler> schedulerNamed(const std::string& name);
 
-// Frames first .. end-1: shard `index` of `shards`, exactly as `toyhost run --shard index/shards`.
-struct FrameSpan {
-    int first = 0;
-    int end = 0;
-};
-FrameSpan shardSpan(int frames, int shards, int index);
-
+// A shard's frames are toyhost::shardSpan's (toyhost/Shards.h), as `toyhost run --shard i/n` splits.
 struct PlanRequest {
     Scheduler scheduler = Scheduler::Parallel;
     std::string toyhost = "toyhost";  // the program as every node finds it

@@ -81,7 +81,8 @@ Result<FrameLayout> layoutFromPlan(const std::string& json, const std::filesyste
         return fileError(where, "expected \"frames\", \"shards\" and \"frameName\" as `toyhost farm plan` writes them",
                          Code::Usage);
     }
-    if (layout.frames < 1 || layout.shards < 1 || layout.shards > layout.frames || frameNameProblem(layout.frameName))
+    // shardSpan refuses counts that do not split into shards (fewer frames than shards, none).
+    if (!shardSpan(layout.frames, layout.shards, 0) || frameNameProblem(layout.frameName))
         return fileError(where, "frames, shards or frameName out of range", Code::Usage);
     layout.frameDir = jobDir / "frames";
     layout.exitDir = jobDir / "exit";

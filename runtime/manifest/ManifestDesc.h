@@ -86,6 +86,10 @@ struct ManifestDesc {
             if (isBuffer(pass.id)) return true;
         return false;
     }
+    // Buffers or Cube A: passes drawn into ping-pong targets, whose content carries from frame to
+    // frame, so a frame depends on every frame before it (a frame range simulates them; a farm
+    // starts its shards from checkpoints).
+    bool hasStatefulPasses() const { return hasBuffers() || find(PassId::CubeA) != nullptr; }
 };
 
 }  // namespace toyhost

@@ -77,7 +77,9 @@ farm::FarmStatus checkFarm(const farm::FrameLayout& layout) {
     for (int i = 0; i < layout.shards; ++i) {
         farm::ShardStatus shard;
         shard.index = i;
-        shard.span = farm::shardSpan(layout.frames, layout.shards, i);
+        Result<FrameSpan> span = shardSpan(layout.frames, layout.shards, i);
+        if (!span) break;  // layouts are checked when made (layoutFromPlan, farm status's options)
+        shard.span = *span;
         for (int frame = shard.span.first; frame < shard.span.end; ++frame) {
             if (!layout.captured(frame, shard.span)) continue;
             std::string reason;

@@ -9,7 +9,7 @@ namespace toyhost {
 MemoryFrameStream::MemoryFrameStream(SessionCore& core, const MemoryStreamRequest& request)
     : core_(core),
       request_(request),
-      stream_(FrameStreamSettings{request.frames, request.every, request.inFlight}),
+      stream_(FrameStreamSettings{request.frames, request.every, request.inFlight, request.first}),
       reads_(&core.context().gpuActivity()),
       drawing_(&core.context().gpuActivity()) {}
 

@@ -24,9 +24,10 @@ class SessionCore;
 
 struct MemoryStreamRequest {
     int frames = 0;  // frames to step (0 or more)
-    int every = 1;   // frames 0, every, 2 * every, ... and the last are handed over (1 or more)
+    int every = 1;   // iFrames 0, every, 2 * every, ... and the last are handed over (1 or more)
     PassId pass = PassId::Image;  // a pass the shadertoy has
     int inFlight = 3;             // reads in flight at once; the next waits for the oldest
+    int first = 0;                // iFrame of the stream's frame 0, which `every` counts on (FrameStreamSettings)
 };
 
 // A frame handed over: its read complete, mapped until the consumer returns.

@@ -10,6 +10,7 @@
 #include "session/TiledStill.h"
 #include "session/SoundJob.h"
 #include "shader/ImageCoverage.h"
+#include "timing/Timeline.h"
 
 namespace toyhost {
 
@@ -161,14 +162,7 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     const int frame = frameNumber_;
     auto checkpointDue = [&] { return o.checkpointEvery && (frame + 1) % *o.checkpointEvery == 0; };
     if (frame < plan_.first) {
-        // Before the frame range: buffers must still run (their state carries over); a shadertoy
-        // without buffers only needs its inputs and counters to advance.
-        // An Image that may discard keeps what earlier frames drew (the site's canvas is preserved),
-        // so it is drawn on every frame, these included.
-        if (imageKeepsPixels_ && !tiled_) player_->step(time, events, /*renderImage=*/true);
-        else if (player_->manifest().hasBuffers()) player_->step(time, events, /*renderImage=*/false);
-        else player_->skipFrame(events);
-        ++frameNumber_;
+        simulateFrame(time, events);
         if (checkpointDue()) return saveCheckpoint();
         return okStatus();
     }
@@ -213,6 +207,31 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     progress.bytesWritten = recording_ ? recording_->bytesWritten() : 0;
     progress.samplesPerFrame = report_.samplesPerFrame;
     observer_.progress(progress);
+    return okStatus();
+}
+
+void SessionCore::simulateFrame(const FrameTime& time, std::span<const InputEvent> events) {
+    // Buffers and Cube A must still run (their state carries over); a shadertoy without them only
+    // needs its inputs and counters to advance. An Image that may discard keeps what earlier frames
+    // drew (the site's canvas is preserved), so it is drawn on every frame, these included.
+    if (imageKeepsPixels_ && !tiled_) player_->step(time, events, /*renderImage=*/true);
+    else if (player_->manifest().hasStatefulPasses()) player_->step(time, events, /*renderImage=*/false);
+    else player_->skipFrame(events);
+    ++frameNumber_;
+}
+
+Status SessionCore::seek(int frame, Timeline& timeline) {
+    if (!player_) return Error("no shadertoy runs yet (it did not compile)", Code::Internal);
+    if (frame < player_->frame())
+        return Error("seek: frame " + std::to_string(frame) + " is before the next frame (" +
+                         std::to_string(player_->frame()) +
+                         "): a session only goes forward (restart() goes back to frame 0)",
+                     Code::Usage);
+    while (player_->frame() < frame) {
+        events_.clear();
+        const FrameTime time = timeline.next(player_->frame(), events_);  // fills events_ first
+        simulateFrame(time, events_);
+    }
     return okStatus();
 }
 

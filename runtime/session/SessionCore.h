@@ -42,6 +42,7 @@ class TiledStill;
 class BackgroundWriter;
 class FiniteCheck;
 class TemporaryFiles;
+class Timeline;
 
 // What differs between ways of running a session (SessionCore::run()).
 class SessionDriver {
@@ -96,8 +97,13 @@ public:
 
     // --- the building blocks run() is made of (for programs that own their loop) ---
     // Renders the run's next frame with `time` and `events` (captured, checkpointed and checked
-    // as the options say); frames before a --frame-range are simulated without rendering Image.
+    // as the options say); frames before a --frame-range are simulated (simulateFrame) without
+    // rendering Image.
     Status renderFrame(const FrameTime& time, std::span<const InputEvent> events);
+    // The library's Session::seek: frames simulated (simulateFrame) until iFrame `frame` is the
+    // next, each at `timeline`'s time with its scripted events, as step() would have rendered
+    // them. A frame before frame() is a Code::Usage error.
+    Status seek(int frame, Timeline& timeline);
     // Applies `plan` (the shadertoy loaded and planned again after `changed` changed, or why it
     // could not be) with the reload rule above; a notice says what it did.
     ReloadOutcome reload(std::vector<std::filesystem::path> changed, Result<PlayerPlan> plan);
@@ -159,6 +165,11 @@ private:
     friend struct SessionCoreAccess;  // tests: the Player itself
     SessionCore(SessionPlan plan, std::shared_ptr<GlContext> context, SessionObserver& observer, Watchdog* watchdog);
     Status createPlayer(PlayerPlan shadertoy);
+    // The next frame simulated as the frames before a --frame-range are: buffers and Cube A run
+    // (their state carries over) and Image is not rendered (unless it may discard: then it keeps
+    // earlier frames' pixels, and is drawn); a shadertoy without them only advances its inputs and
+    // counters. Nothing is captured or checked.
+    void simulateFrame(const FrameTime& time, std::span<const InputEvent> events);
     Result<SessionReport> finishRound();
     Error interrupted();
     bool quitRequested();

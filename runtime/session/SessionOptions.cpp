@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <toyhost/Shards.h>
+
 #include "capture/FrameStream.h"
 #include "core/AtomicFile.h"
 #include "core/ChildProcess.h"
@@ -281,11 +283,12 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     }
     if (o.shard) {
         const auto [index, count] = *o.shard;
-        if (count < 1 || index < 0 || index >= count || count > *o.frames)
+        Result<FrameSpan> span = shardSpan(*o.frames, count, index);
+        if (!span)
             return usage("--shard " + std::to_string(index) + "/" + std::to_string(count) +
                          ": expected i/n with 0 <= i < n <= --frames (" + std::to_string(*o.frames) + ")");
-        run.first = static_cast<int>(static_cast<long long>(*o.frames) * index / count);
-        run.end = static_cast<int>(static_cast<long long>(*o.frames) * (index + 1) / count);
+        run.first = span->first;
+        run.end = span->end;
     }
     if (resume) {
         // Without a range, a resumed run renders from the checkpoint's frame on.

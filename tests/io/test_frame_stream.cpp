@@ -59,6 +59,24 @@ TEST(FrameStream, CapturesEveryNthAndTheLast) {
     EXPECT_TRUE(FrameStream::captured(4, 5, 3)) << "the last frame";
 }
 
+// A stream that starts at iFrame 100 (a render after a seek, or after earlier frames) counts `every`
+// on iFrame: it hands over the frames a run from frame 0 would, and its own last one.
+TEST(FrameStream, EveryCountsFromTheFirstFramesNumber) {
+    FrameStream stream({.frames = 70, .every = 30, .inFlight = 3, .first = 100});
+    std::vector<int> captured;
+    for (int n = 0; n < 70; ++n)
+        if (stream.captures(n)) captured.push_back(100 + n);
+    EXPECT_EQ(captured, (std::vector<int>{120, 150, 169}));
+    FakeReads reads;
+    for (int n = 0; n < 70; ++n) ASSERT_TRUE(stream.rendered(n, reads).ok());
+    reads.completeAll();
+    ASSERT_TRUE(stream.finish(reads).ok());
+    EXPECT_EQ(reads.handed, (std::vector<int>{20, 50, 69})) << "reads are started by the stream's own index";
+    FrameStream endless({.frames = 0, .every = 7, .first = 5});
+    EXPECT_TRUE(endless.captures(2)) << "iFrame 7";
+    EXPECT_FALSE(endless.captures(0)) << "iFrame 5, and no end: no last frame";
+}
+
 // render(every=100) gave frame 0 only once frame 100 was read: the stream hands it over at the
 // first frame boundary after its read completed.
 TEST(FrameStream, AFrameIsHandedOverAtTheFirstBoundaryAfterItsReadCompletes) {

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <tuple>
+#include <utility>
 
 #include "farm/FarmPlan.h"
 #include "farm/FarmStatus.h"
@@ -40,20 +42,45 @@ std::size_t count(const std::string& text, const std::string& part) {
 }  // namespace
 
 TEST(FarmPlan, ShardSpansAreThoseOfRunShardAndCoverEveryFrameOnce) {
-    // toyhost run --shard i/n: frames * i / n .. frames * (i + 1) / n (session/SessionOptions.cpp).
-    EXPECT_EQ(shardSpan(10, 3, 0).first, 0);
-    EXPECT_EQ(shardSpan(10, 3, 0).end, 3);
-    EXPECT_EQ(shardSpan(10, 3, 1).first, 3);
-    EXPECT_EQ(shardSpan(10, 3, 1).end, 6);
-    EXPECT_EQ(shardSpan(10, 3, 2).end, 10);
+    // toyhost::shardSpan (toyhost/Shards.h), the one split of --shard i/n, farm plan and Python:
+    // frames * i / n .. frames * (i + 1) / n.
+    auto span = [](int frames, int shards, int index) {
+        Result<FrameSpan> s = shardSpan(frames, shards, index);
+        EXPECT_TRUE(s.ok()) << frames << " " << shards << " " << index;
+        return s.ok() ? std::pair{s->first, s->end} : std::pair{-1, -1};
+    };
+    EXPECT_EQ(span(10, 3, 0), (std::pair{0, 3}));
+    EXPECT_EQ(span(10, 3, 1), (std::pair{3, 6}));
+    EXPECT_EQ(span(10, 3, 2), (std::pair{6, 10}));
     int next = 0;
     for (int i = 0; i < 7; ++i) {
-        EXPECT_EQ(shardSpan(100, 7, i).first, next);
-        next = shardSpan(100, 7, i).end;
+        const auto [first, end] = span(100, 7, i);
+        EXPECT_EQ(first, next);
+        EXPECT_GE(end - first, 14);
+        EXPECT_LE(end - first, 15);
+        next = end;
     }
     EXPECT_EQ(next, 100);
+    EXPECT_EQ(span(5, 5, 4), (std::pair{4, 5})) << "as many shards as frames: one frame each";
     // No overflow for long runs.
-    EXPECT_EQ(shardSpan(2000000000, 16, 15).end, 2000000000);
+    EXPECT_EQ(span(2000000000, 16, 15), (std::pair{1875000000, 2000000000}));
+    // Counts that do not split: more shards than frames, none, an index outside 0 .. shards - 1.
+    for (auto [frames, shards, index] : {std::tuple{3, 4, 0}, {0, 1, 0}, {10, 0, 0}, {10, -1, 0}, {10, 3, 3},
+                                         {10, 3, -1}, {-5, 1, 0}}) {
+        Result<FrameSpan> refused = shardSpan(frames, shards, index);
+        ASSERT_FALSE(refused.ok()) << frames << " " << shards << " " << index;
+        EXPECT_EQ(refused.error().first().code, Code::Usage);
+    }
+}
+
+TEST(FarmPlan, RefusesShardCountsThatDoNotSplitItsFrames) {
+    PlanRequest r = request(Scheduler::Parallel, false);
+    for (int shards : {0, -2, 11}) {
+        r.shards = shards;
+        Result<std::vector<PlanFile>> files = planFarm(r);
+        ASSERT_FALSE(files.ok()) << shards;
+        EXPECT_NE(files.error().first().message.find("--shards " + std::to_string(shards)), std::string::npos);
+    }
 }
 
 TEST(FarmPlan, RunOptionsAppearOnceInRunShardAndEverySchedulerCallsIt) {
@@ -209,7 +236,7 @@ TEST(FarmStatus, CaptureEveryCountsTheFramesEachShardWrites) {
     // frame is written too, besides frames 0, 4 and 8.
     std::vector<int> written;
     for (int i = 0; i < 3; ++i) {
-        const FrameSpan span = shardSpan(10, 3, i);
+        const FrameSpan span = *shardSpan(10, 3, i);
         for (int f = span.first; f < span.end; ++f)
             if (layout->captured(f, span)) written.push_back(f);
     }

@@ -52,6 +52,15 @@ std::string thisProgram() {
     return ec ? std::string("toyhost") : self.string();
 }
 
+// `layout` when its shards split its frames (toyhost::shardSpan's rule), else --shards' error.
+Result<farm::FrameLayout> withShardsChecked(farm::FrameLayout layout) {
+    if (!shardSpan(layout.frames, layout.shards, 0))
+        return Error("--shards " + std::to_string(layout.shards) + ": expected 1 .. --frames (" +
+                         std::to_string(layout.frames) + ")",
+                     Code::Usage);
+    return layout;
+}
+
 // The layout of DIR: its farm.json, or a plain folder of numbered frames.
 Result<farm::FrameLayout> layoutOf(const fs::path& dir, std::optional<int> frames, std::optional<int> shards,
                                    const std::string& pattern) {
@@ -65,7 +74,7 @@ Result<farm::FrameLayout> layoutOf(const fs::path& dir, std::optional<int> frame
                              " renders " + std::to_string(layout->frames),
                          Code::Usage);
         if (shards) layout->shards = *shards;
-        return layout;
+        return withShardsChecked(std::move(*layout));
     }
     if (!frames) return Error(dir.string() + " has no farm.json (from farm plan): give --frames", Code::Usage);
     farm::FrameLayout layout;
@@ -83,9 +92,7 @@ Result<farm::FrameLayout> layoutOf(const fs::path& dir, std::optional<int> frame
         if (!found) return inFile(dir.string(), found.error());
         layout.frameName = *found;
     }
-    if (layout.shards < 1 || layout.shards > layout.frames)
-        return Error("--shards " + std::to_string(layout.shards) + ": expected 1 .. --frames", Code::Usage);
-    return layout;
+    return withShardsChecked(std::move(layout));
 }
 
 // `--fps X` or `--fps=X` among the plan's run options.
@@ -186,7 +193,7 @@ int FarmCommand::plan() {
     request.shards = shards_;
     request.frameName = frameName_;
     request.runOptions = runOptions;
-    request.stateful = shadertoy->hasBuffers() || shadertoy->find(PassId::CubeA) != nullptr;
+    request.stateful = shadertoy->hasStatefulPasses();
     request.slurmTime = time_;
     request.cpusPerTask = cpusPerTask_;
     request.parallelism = parallelism_;
