@@ -1,5 +1,7 @@
 #include "session/Checkpoint.h"
 
+#include "session/BackgroundWriter.h"
+
 #include <algorithm>
 #include <bit>
 #include <cerrno>
@@ -202,6 +204,24 @@ Result<Checkpoint> readCheckpoint(const fs::path& path) {
             return bad(path, "it is truncated");
     }
     return c;
+}
+
+Result<std::filesystem::path> writeCheckpointOffThread(BackgroundWriter& writer, const std::filesystem::path& path,
+                                                       Checkpoint checkpoint) {
+    auto shared = std::make_shared<Checkpoint>(std::move(checkpoint));
+    writer.submit([path, shared]() -> Result<std::filesystem::path> {
+        if (Status written = writeCheckpoint(path, *shared); !written) return written.error();
+        return path;
+    });
+    // The next checkpoint reads the buffers again: this one is written first.
+    writer.drain();
+    std::optional<std::filesystem::path> last;
+    for (Result<std::filesystem::path>& written : writer.takeFinished()) {
+        if (!written) return written.error();
+        last = *written;
+    }
+    if (!last) return Error("the checkpoint " + path.string() + " was not written", Code::Internal);
+    return *last;
 }
 
 }  // namespace toyhost

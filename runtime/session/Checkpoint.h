@@ -21,6 +21,8 @@
 
 namespace toyhost {
 
+class BackgroundWriter;
+
 struct Checkpoint {
     PlayerState state;
     double fps = 0;
@@ -38,6 +40,10 @@ std::string codeHash(const ManifestDesc& manifest, std::span<const MacroDefine> 
 std::vector<std::string> channelMedia(const ManifestDesc& manifest);
 
 Status writeCheckpoint(const std::filesystem::path& path, const Checkpoint& checkpoint);
+// `checkpoint` written to `path` on `writer`'s thread (the GL thread goes on meanwhile), waited
+// for so that at most one copy of the state is in memory: the path written, or why not.
+Result<std::filesystem::path> writeCheckpointOffThread(BackgroundWriter& writer, const std::filesystem::path& path,
+                                                       Checkpoint checkpoint);
 // Errors name the file and what is wrong with it (not a checkpoint, truncated, inconsistent).
 Result<Checkpoint> readCheckpoint(const std::filesystem::path& path);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/ByteText.h"
 #include "session/FiniteCheck.h"
 
 namespace toyhost {
@@ -9,8 +10,6 @@ namespace toyhost {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string plural(int n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); }
 
 Diagnostic notice(std::string message, Code code) {
     Diagnostic d;
@@ -25,7 +24,32 @@ Diagnostic notice(std::string message, Code code) {
 Recording::Recording(const SessionPlan& plan, RunActivity* activity, std::function<bool()> stopRequested)
     : plan_(plan), activity_(activity), stopRequested_(std::move(stopRequested)), pass_(plan.options.capturePass) {}
 
+Recording::Recording(std::unique_ptr<SessionPlan> plan, int firstFrame, RunActivity* activity,
+                     std::function<bool()> stopRequested)
+    : ownedPlan_(std::move(plan)), plan_(*ownedPlan_), first_(firstFrame), activity_(activity),
+      stopRequested_(std::move(stopRequested)), pass_(plan_.options.capturePass) {}
+
 Recording::~Recording() = default;
+
+Result<std::unique_ptr<Recording>> Recording::ofNextFrames(SessionPlan plan, int firstFrame, RunActivity* activity,
+                                                           std::function<bool()> stopRequested, const Player& player,
+                                                           SessionObserver& observer) {
+    std::unique_ptr<Recording> recording(new Recording(std::make_unique<SessionPlan>(std::move(plan)), firstFrame,
+                                                       activity, std::move(stopRequested)));
+    if (Status begun = recording->begin(player, observer); !begun) return begun.error();
+    return recording;
+}
+
+Result<std::vector<fs::path>> Recording::end(double renderSeconds, SessionObserver& observer, FiniteCheck& finite) {
+    Status completed = complete();
+    if (!completed) {
+        (void)abandon();
+        return completed.error();
+    }
+    SessionReport done;
+    report(done, renderSeconds, observer, finite);
+    return std::move(done.files);
+}
 
 Status Recording::begin(const Player& player, SessionObserver& observer) {
     if (recorder_) return okStatus();

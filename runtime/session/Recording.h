@@ -29,6 +29,17 @@ public:
     // `stopRequested`: asked while the render thread waits for the consumer (the encoders).
     Recording(const SessionPlan& plan, RunActivity* activity, std::function<bool()> stopRequested = {});
     ~Recording();
+    // A recording of the next frames of a session that records nothing (the library's
+    // Session::record), begun: it owns `plan` (planRecording's: output, frames, capture-every,
+    // pass) and numbers the run's frames from `firstFrame`, as a run's files are numbered from 0.
+    static Result<std::unique_ptr<Recording>> ofNextFrames(SessionPlan plan, int firstFrame, RunActivity* activity,
+                                                           std::function<bool()> stopRequested, const Player& player,
+                                                           SessionObserver& observer);
+    // The recording's own number of the run's frame `frame` (0 from the frame it began at).
+    int captureFrame(int frame) const { return frame - first_; }
+    // ofNextFrames' end: completes it and gives the files written, or leaves nothing unfinished
+    // (an unfinished video removed) and gives the error.
+    Result<std::vector<std::filesystem::path>> end(double renderSeconds, SessionObserver& observer, FiniteCheck& finite);
 
     // Starts a round's consumer for `player`'s canvas (a video's ffmpeg command line); a notice
     // says which video encoder --codec auto chose. A round already begun is kept.
@@ -55,7 +66,10 @@ public:
     void discardVideo();
 
 private:
+    Recording(std::unique_ptr<SessionPlan> plan, int firstFrame, RunActivity* activity, std::function<bool()> stopRequested);
+    std::unique_ptr<SessionPlan> ownedPlan_;  // ofNextFrames' plan (plan_ refers to it)
     const SessionPlan& plan_;
+    int first_ = 0;
     RunActivity* activity_;
     std::function<bool()> stopRequested_;
     PassId pass_;

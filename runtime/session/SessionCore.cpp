@@ -1,6 +1,6 @@
 #include "session/SessionCore.h"
 
-#include "core/Defaults.h"
+#include "core/ByteText.h"
 #include "core/TemporaryFiles.h"
 #include "render/Present.h"
 #include "session/BackgroundWriter.h"
@@ -15,20 +15,9 @@
 namespace toyhost {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-namespace {
-
-double secondsBetween(Clock::time_point from, Clock::time_point to) {
-    return std::chrono::duration<double>(to - from).count();
-}
-
-std::string plural(int n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); }
-
-}  // namespace
 
 SessionCore::SessionCore(SessionPlan plan, std::shared_ptr<GlContext> context, SessionObserver& observer, Watchdog* watchdog)
-    : plan_(std::move(plan)), context_(std::move(context)), observer_(observer), watchdog_(watchdog) {
+    : plan_(std::move(plan)), context_(std::move(context)), observer_(observer), watchdog_(watchdog), stop_(watchdog) {
     // Everything that renders or waits on the context publishes there for the watchdog.
     if (context_) context_->gpuActivity().attach(activity(), watchdog_ && watchdog_->watchesDraws());
 }
@@ -43,30 +32,13 @@ SessionCore::~SessionCore() {
 
 RunActivity* SessionCore::activity() { return watchdog_ ? &watchdog_->activity() : nullptr; }
 
-void SessionCore::requestStop(StopReason reason) {
-    if (watchdog_) watchdog_->requestStop(reason);
-    else localStop_.store(static_cast<int>(reason));
-}
-
-bool SessionCore::stopRequested() const {
-    return watchdog_ ? watchdog_->stopRequested() : localStop_.load() != static_cast<int>(StopReason::None);
-}
-
-// A stop that means "the user closed the window": the run ends as complete.
-bool SessionCore::quitRequested() {
-    if (!watchdog_) return localStop_.load() == static_cast<int>(StopReason::Quit);
-    if (watchdog_->stop().reason != StopReason::Quit) return false;
-    watchdog_->quitHonoured();
-    return true;
-}
-
 Result<std::unique_ptr<SessionCore>> SessionCore::start(SessionPlan plan, std::shared_ptr<GlContext> context,
                                                         SessionObserver& observer, Watchdog* watchdog) {
     if (!context) return Error("a session needs a GL context", Code::Internal);
     if (Status current = context->makeCurrent(); !current) return current.error();
     std::unique_ptr<SessionCore> s(new SessionCore(std::move(plan), std::move(context), observer, watchdog));
     const SessionOptions& o = s->plan_.options;
-    s->startedAt_ = o.startedAt.value_or(Clock::now());
+    s->clock_.startCommand(o.startedAt.value_or(RoundClock::Clock::now()));
     s->name_ = s->plan_.shadertoy.manifest.name;
     s->writer_ = std::make_unique<BackgroundWriter>();
     s->finite_ = std::make_unique<FiniteCheck>();
@@ -131,30 +103,20 @@ Result<std::vector<float>> SessionCore::renderSound(double seconds) {
 
 Result<SessionReport> SessionCore::writeSound() {
     report_.name = name_;
-    report_.startupSeconds = secondsBetween(startedAt_, Clock::now());
+    report_.startupSeconds = clock_.secondsSinceCommand();
     SoundJob sound(*context_, *writer_, activity(), [this] { return stopRequested(); });
     return sound.writeFile(plan_.shadertoy, *plan_.options.sound, report_);
 }
 
 Status SessionCore::beginRound() {
     frameNumber_ = plan_.resume && plan_.resume->state.frame > 0 ? plan_.resume->state.frame : 0;
-    framesRendered_ = 0;
-    renderSeconds_ = 0;
-    roundStartedAt_ = Clock::now();
-    SessionReport fresh;
-    fresh.mode = report_.mode;
-    fresh.context = report_.context;
-    fresh.interactive = report_.interactive;
-    fresh.outputAsked = report_.outputAsked;
-    fresh.toStdout = report_.toStdout;
-    fresh.samplesPerFrame = report_.samplesPerFrame;
-    report_ = std::move(fresh);
-    report_.startupSeconds = secondsBetween(startedAt_, roundStartedAt_);
+    report_ = report_.nextRound();
+    report_.startupSeconds = clock_.beginRound();
     // Each round writes its own files; a window that waits for a shadertoy begins on the first frame.
     return recording_ && player_ ? recording_->begin(*player_, observer_) : okStatus();
 }
 
-void SessionCore::beginNextRound() { startedAt_ = Clock::now(); }
+void SessionCore::beginNextRound() { clock_.startCommand(); }
 
 Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEvent> events) {
     if (!player_) return Error("no shadertoy runs yet (it did not compile)", Code::Internal);
@@ -173,16 +135,11 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
     // it, and a run without --out renders every pass (a dry run, the render-only benchmark). An
     // Image that may `discard` leaves pixels as the previous frame drew them, as the site's
     // preserved canvas does, so it is drawn on every frame (shader/ImageCoverage.h).
-    const int captureFrame = frame - recordingFirst_;  // a recording's own numbering (beginRecording)
+    const int captureFrame = recording_ ? recording_->captureFrame(frame) : frame;
     const bool renderImage =
         !tiled_ && (live_ || !recording_ || imageKeepsPixels_ || recording_->needsImage(captureFrame));
-    if (framesRendered_ == 0) {
-        roundStartedAt_ = Clock::now();
-        report_.startupSeconds = secondsBetween(startedAt_, roundStartedAt_);
-    }
-    const Clock::time_point stepStarted = Clock::now();
-    player_->step(time, events, renderImage);
-    renderSeconds_ += secondsBetween(stepStarted, Clock::now());
+    if (std::optional<double> startup = clock_.frameStarting()) report_.startupSeconds = *startup;
+    clock_.timed([&] { player_->step(time, events, renderImage); });
 
     if (recording_)
         if (Status recorded = recording_->rendered(*player_, captureFrame); !recorded) return recorded;
@@ -190,20 +147,15 @@ Status SessionCore::renderFrame(const FrameTime& time, std::span<const InputEven
         if (Status drawn = tiled_->render(*player_, frame); !drawn) return drawn;
     if (o.checkFinite) checkBuffers(frame);
     // The first frame waits for the GPU once, so that its time is real.
-    if (o.finishEachFrame || framesRendered_ == 0) {
-        const Clock::time_point finishStarted = Clock::now();
-        player_->finish();
-        renderSeconds_ += secondsBetween(finishStarted, Clock::now());
-    }
-    if (framesRendered_ == 0) firstFrameEndedAt_ = Clock::now();
-    ++framesRendered_;
+    if (o.finishEachFrame || clock_.frames() == 0) clock_.timed([&] { player_->finish(); });
+    clock_.frameDone();
     ++frameNumber_;
     if (checkpointDue())
         if (Status saved = saveCheckpoint(); !saved) return saved;
     RunProgress progress;
     progress.frames = *o.frames > 0 ? plan_.end - plan_.first : 0;
-    progress.framesDone = framesRendered_;
-    progress.seconds = secondsBetween(roundStartedAt_, Clock::now());
+    progress.framesDone = clock_.frames();
+    progress.seconds = clock_.roundSeconds();
     progress.bytesWritten = recording_ ? recording_->bytesWritten() : 0;
     progress.samplesPerFrame = report_.samplesPerFrame;
     observer_.progress(progress);
@@ -235,8 +187,6 @@ Status SessionCore::seek(int frame, Timeline& timeline) {
     return okStatus();
 }
 
-bool SessionCore::repaint(const FrameTime& time) { return player_ && player_->repaint(time); }
-
 // Every buffer once: after every frame with --check-finite, else after the last one.
 void SessionCore::checkBuffers(int frame) {
     const FiniteCheck::Coverage coverage =
@@ -252,29 +202,14 @@ void SessionCore::checkBuffers(int frame) {
 Status SessionCore::saveCheckpoint() {
     const SessionOptions& o = plan_.options;
     if (!o.checkpoint || !player_) return okStatus();
-    auto checkpoint = std::make_shared<Checkpoint>(Checkpoint{player_->saveState(), *o.settings.fps, o.settings.startTime, *plan_.wallClock,
-                                                              player_->manifest().name, codeHash(player_->manifest(), plan_.defines),
-                                                              channelMedia(player_->manifest())});
-    const fs::path path = *o.checkpoint;
-    writer_->submit([path, checkpoint]() -> Result<fs::path> {
-        if (Status written = writeCheckpoint(path, *checkpoint); !written) return written.error();
-        return path;
-    });
-    // The next checkpoint reads the buffers again: let this one be written first, so that at
-    // most one copy of the state waits in memory.
-    writer_->drain();
-    for (Result<fs::path>& written : writer_->takeFinished()) {
-        if (!written) return written.error();
-        checkpointWritten_ = *written;
-    }
+    Result<fs::path> written = writeCheckpointOffThread(
+        *writer_, *o.checkpoint,
+        Checkpoint{player_->saveState(), *o.settings.fps, o.settings.startTime, *plan_.wallClock, player_->manifest().name,
+                   codeHash(player_->manifest(), plan_.defines), channelMedia(player_->manifest())});
+    if (!written) return written.error();
+    checkpointWritten_ = *written;
     return okStatus();
 }
-
-void SessionCore::restart() {
-    if (player_) player_->restart();
-}
-
-Status SessionCore::resize(int width, int height) { return player_ ? player_->resize(width, height) : okStatus(); }
 
 Status SessionCore::drawImage(unsigned int framebuffer, int x, int y, int w, int h) const {
     return drawOutput(player_->output(PassId::Image), framebuffer, PresentRect{x, y, w, h});
@@ -314,7 +249,7 @@ ReloadOutcome SessionCore::reload(std::vector<fs::path> changed, Result<PlayerPl
 
 Error SessionCore::interrupted() {
     const int frame = frameNumber_;
-    std::string message = frame < plan_.end || plan_.end == 0 ? "interrupted after " + plural(framesRendered_, "frame")
+    std::string message = frame < plan_.end || plan_.end == 0 ? "interrupted after " + plural(clock_.frames(), "frame")
                                                               : "interrupted while the last captured frames were written";
     if (plan_.end > 0 && frame < plan_.end) message += " of " + std::to_string(plan_.end - plan_.first);
     (void)saveCheckpoint();  // best effort: the run is ending anyway
@@ -327,7 +262,7 @@ Error SessionCore::interrupted() {
 Result<SessionReport> SessionCore::finishRound() {
     const SessionOptions& o = plan_.options;
     report_.name = name_;
-    report_.frames = framesRendered_;
+    report_.frames = clock_.frames();
     if (recording_ && recording_->begun()) {
         Status completed = recording_->complete();
         // A signal during the final writes still ends the run as interrupted (exit 130/143),
@@ -338,11 +273,11 @@ Result<SessionReport> SessionCore::finishRound() {
             return interrupted();
         }
         if (!completed) return completed.error();
-        recording_->report(report_, renderSeconds_, observer_, *finite_);
+        recording_->report(report_, clock_.renderSeconds(), observer_, *finite_);
     }
     if (Status written = tiled_ ? tiled_->complete() : okStatus(); !written) return written.error();
     if (tiled_) tiled_->report(report_);
-    if (player_ && !o.checkFinite && framesRendered_ > 0) checkBuffers(frameNumber_ - 1);
+    if (player_ && !o.checkFinite && clock_.frames() > 0) checkBuffers(frameNumber_ - 1);
     if (!o.interactive)
         if (Status saved = saveCheckpoint(); !saved) return saved.error();
     writer_->drain();
@@ -350,39 +285,25 @@ Result<SessionReport> SessionCore::finishRound() {
     report_.checkpoint = checkpointWritten_;
     report_.width = player_ && !plan_.tile ? player_->width() : *o.settings.width;
     report_.height = player_ && !plan_.tile ? player_->height() : *o.settings.height;
-    if (framesRendered_ > 0) {
-        report_.firstFrameSeconds = secondsBetween(roundStartedAt_, firstFrameEndedAt_);
-        report_.restSeconds = secondsBetween(firstFrameEndedAt_, Clock::now());
-    }
+    clock_.fill(report_);
     return report_;
 }
 
 Status SessionCore::beginRecording(SessionPlan recording) {
     if (!player_) return Error("no shadertoy runs yet (it did not compile)", Code::Internal);
     if (recording_ || tiled_) return Error("this session records already", Code::Usage);
-    recordingPlan_ = std::make_unique<SessionPlan>(std::move(recording));
-    recordingFirst_ = frameNumber_;
-    recording_ = std::make_unique<Recording>(*recordingPlan_, activity(), [this] { return stopRequested(); });
-    if (Status begun = recording_->begin(*player_, observer_); !begun) {
-        recording_.reset();
-        recordingPlan_.reset();
-        recordingFirst_ = 0;
-        return begun;
-    }
+    Result<std::unique_ptr<Recording>> begun = Recording::ofNextFrames(
+        std::move(recording), frameNumber_, activity(), [this] { return stopRequested(); }, *player_, observer_);
+    if (!begun) return begun.error();
+    recording_ = std::move(*begun);
     return okStatus();
 }
 
 Result<std::vector<fs::path>> SessionCore::endRecording() {
     if (!recording_) return Error("no recording to end", Code::Internal);
-    Status completed = recording_->complete();
-    SessionReport report;
-    if (completed) recording_->report(report, renderSeconds_, observer_, *finite_);
-    else (void)recording_->abandon();
+    Result<std::vector<fs::path>> files = recording_->end(clock_.renderSeconds(), observer_, *finite_);
     recording_.reset();
-    recordingPlan_.reset();
-    recordingFirst_ = 0;
-    if (!completed) return completed.error();
-    return std::move(report.files);
+    return files;
 }
 
 std::string SessionCore::abandonRecording() {
@@ -390,8 +311,6 @@ std::string SessionCore::abandonRecording() {
     std::string left = recording_->abandon();
     recording_->discardVideo();
     recording_.reset();
-    recordingPlan_.reset();
-    recordingFirst_ = 0;
     return left;
 }
 

@@ -29,6 +29,7 @@
 #include "input/InputEvent.h"
 #include "player/Player.h"
 #include "session/Reload.h"
+#include "session/RoundClock.h"
 #include "session/SessionObserver.h"
 #include "session/SessionOptions.h"
 #include "session/Watchdog.h"
@@ -110,7 +111,7 @@ public:
     // A paused window after a reload: the shown frame rendered again at `time` with the code that
     // runs now (Player::repaint: same iFrame, buffers one more step). Not captured, not checkpointed
     // and not counted as a frame of the run. False when no frame was shown yet (or none runs).
-    bool repaint(const FrameTime& time);
+    bool repaint(const FrameTime& time) { return player_ && player_->repaint(time); }
     // A recording of the next frames of a session that records nothing (the library's
     // Session::record): `recording` is planRecording()'s plan (its output, frames, capture-every
     // and pass, frames numbered from 0 as a run's). renderFrame captures into it; endRecording()
@@ -120,12 +121,14 @@ public:
     Result<std::vector<std::filesystem::path>> endRecording();
     std::string abandonRecording();
     // iFrame back to 0 and every buffer cleared (the site's restart); the driver resets its clock.
-    void restart();
+    void restart() {
+        if (player_) player_->restart();
+    }
     // New canvas size (window resize); buffers keep their content bottom-left.
-    Status resize(int width, int height);
+    Status resize(int width, int height) { return player_ ? player_->resize(width, height) : okStatus(); }
     // Asks the run to stop before its next frame (any thread).
-    void requestStop(StopReason reason = StopReason::Request);
-    bool stopRequested() const;
+    void requestStop(StopReason reason = StopReason::Request) { stop_.request(reason); }
+    bool stopRequested() const { return stop_.requested(); }
 
     // False while waiting for a shadertoy that compiles (window, --watch).
     bool running() const { return player_ != nullptr; }
@@ -172,7 +175,7 @@ private:
     void simulateFrame(const FrameTime& time, std::span<const InputEvent> events);
     Result<SessionReport> finishRound();
     Error interrupted();
-    bool quitRequested();
+    bool quitRequested() { return stop_.quitRequested(); }
     Status saveCheckpoint();
     void checkBuffers(int frame);
     Status beginRound();
@@ -182,12 +185,10 @@ private:
     std::shared_ptr<GlContext> context_;  // declared before everything that holds GL objects
     SessionObserver& observer_;
     Watchdog* watchdog_;
-    std::atomic<int> localStop_{0};  // a StopReason, without a watchdog
+    SessionStop stop_;  // the one stop state (the watchdog's, when there is one)
     std::string name_;
     std::unique_ptr<BackgroundWriter> writer_;
     std::unique_ptr<Player> player_;
-    std::unique_ptr<SessionPlan> recordingPlan_;  // beginRecording's plan, which recording_ reads
-    int recordingFirst_ = 0;                      // the frame number its frame 0 is
     std::unique_ptr<Recording> recording_;
     std::unique_ptr<TiledStill> tiled_;  // a canvas drawn in tiles (instead of recording_)
     std::unique_ptr<FiniteCheck> finite_;
@@ -197,10 +198,8 @@ private:
     bool imageKeepsPixels_ = false;  // the Image may discard: drawn on every frame (shader/ImageCoverage.h)
     bool live_ = false;          // a window: frames without an end, waiting for a shadertoy that compiles
     int frameNumber_ = 0;
-    int framesRendered_ = 0;     // this round
-    double renderSeconds_ = 0;   // this round: in the player's frame calls and GPU waits
+    RoundClock clock_;  // this round's counts and times
     SessionReport report_;
-    std::chrono::steady_clock::time_point startedAt_, roundStartedAt_, firstFrameEndedAt_;
     std::optional<std::filesystem::path> checkpointWritten_;
     std::shared_ptr<TemporaryFiles> soundTrack_;  // a video's sound track, while ffmpeg reads it
 };

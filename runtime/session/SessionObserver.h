@@ -54,6 +54,18 @@ struct SessionReport {
     bool toStdout = false;     // raw frames went to stdout
     bool outputAsked = false;  // --out was given
     double soundSeconds = 0;   // `toyhost sound`: the length of the audio written
+
+    // A next round's report: the session's facts (mode, context, samples, what was asked), no results.
+    SessionReport nextRound() const {
+        SessionReport fresh;
+        fresh.mode = mode;
+        fresh.context = context;
+        fresh.interactive = interactive;
+        fresh.outputAsked = outputAsked;
+        fresh.toStdout = toStdout;
+        fresh.samplesPerFrame = samplesPerFrame;
+        return fresh;
+    }
 };
 
 // The summary a command prints after a run, one line each ("ocean: 60 frames at 1280x720 ...",

@@ -96,4 +96,29 @@ private:
     std::thread thread_;
 };
 
+// A session's one stop state: its watchdog's, which signals and limits set too, when it has one;
+// else a request kept here (a session without limits, as the GL tests make). Any thread.
+class SessionStop {
+public:
+    explicit SessionStop(Watchdog* watchdog) : watchdog_(watchdog) {}
+    void request(StopReason reason) {
+        if (watchdog_) watchdog_->requestStop(reason);
+        else local_.store(static_cast<int>(reason));
+    }
+    bool requested() const {
+        return watchdog_ ? watchdog_->stopRequested() : local_.load() != static_cast<int>(StopReason::None);
+    }
+    // A stop that means "the user closed the window": the run ends as complete.
+    bool quitRequested() {
+        if (!watchdog_) return local_.load() == static_cast<int>(StopReason::Quit);
+        if (watchdog_->stop().reason != StopReason::Quit) return false;
+        watchdog_->quitHonoured();
+        return true;
+    }
+
+private:
+    Watchdog* watchdog_;
+    std::atomic<int> local_{0};
+};
+
 }  // namespace toyhost
