@@ -8,6 +8,7 @@
 #include "core/Defaults.h"
 #include "shader/ChannelUse.h"
 #include "shader/ExpressionDepth.h"
+#include "shader/LoopCap.h"
 #include "shader/SourceText.h"
 #include "shader/TexelCornerReads.h"
 
@@ -60,6 +61,7 @@ Result<PlayerPlan> planPlayer(ManifestDesc manifest, const MediaOptions& media, 
     for (Diagnostic& warning : unboundChannelWarnings(manifest)) notices.push_back(std::move(warning));
     for (Diagnostic& warning : depthWarnings) notices.push_back(std::move(warning));
     for (Diagnostic& warning : texelCornerWarnings(manifest)) notices.push_back(std::move(warning));
+    for (Diagnostic& warning : loopCapWarnings(manifest)) notices.push_back(std::move(warning));
     std::vector<PassSource> sources;
     sources.reserve(preparing.size());
     for (std::future<PassSource>& source : preparing) sources.push_back(source.get());

@@ -158,6 +158,9 @@ void setChannelUniforms(const UniformLocations& u, const PassBindings& bindings)
         glUniform1f(u.chTime[i], 0.0f);
     }
     glUniform1f(u.sampleRate, static_cast<float>(defaults::kSampleRate));
+    // A program keeps its uniforms' values: this 0 is set once per program, and only Mesa's
+    // constant folder, which compiled the program before, cannot know it (shader/OpaqueDivisors.h).
+    glUniform1ui(u.zero, 0u);
     const float zeros[kChannelCount] = {0, 0, 0, 0};
     glUniform1fv(u.channelTime, kChannelCount, zeros);  // no video or audio inputs
     std::array<float, 3 * kChannelCount> resolutions{};

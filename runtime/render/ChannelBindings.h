@@ -86,8 +86,8 @@ Result<PassBindings> bindChannels(const PassDesc& pass, const std::array<Sampler
                                   const ChannelMedia& media, InputTextures& textures, const BindOptions& options = {});
 
 // The uniforms that change only with the program, the bindings or the canvas: texture units
-// (iChannelN and the Image pass's iChN on unit N), iChannelResolution, iSampleRate, and
-// iChannelTime 0. The program must be in use.
+// (iChannelN and the Image pass's iChN on unit N), iChannelResolution, iSampleRate,
+// iChannelTime 0, and toyhost_zero (shader/OpaqueDivisors.h). The program must be in use.
 void setChannelUniforms(const UniformLocations& uniforms, const PassBindings& bindings);
 // iChannelTime of the video and audio channels (after InputTextures::updateTimed).
 void setTimedUniforms(const UniformLocations& uniforms, const PassBindings& bindings);

@@ -7,6 +7,7 @@
 #include "gl/ShaderProgram.h"
 #include "shader/CompileMessages.h"
 #include "shader/CompilerLog.h"
+#include "shader/OpaqueDivisors.h"
 #include "shader/ShaderAssembly.h"
 
 namespace toyhost {
@@ -31,6 +32,7 @@ UniformLocations locate(GLuint program) {
     u.timeOffset = at("iTimeOffset");
     u.sampleOffset = at("iSampleOffset");
     u.fragOffset = at(kFragOffsetUniform);
+    u.zero = at(kZeroUniform);
     for (int i = 0; i < kChannelCount; ++i) {
         const std::string ch = "iCh" + std::to_string(i);
         u.channel[i] = at("iChannel" + std::to_string(i));

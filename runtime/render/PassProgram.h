@@ -23,6 +23,7 @@ struct UniformLocations {
     GLint viewport = -1, corners = -1;         // Cube A: unViewport, unCorners
     GLint timeOffset = -1, sampleOffset = -1;  // Sound: iTimeOffset, iSampleOffset
     GLint fragOffset = -1;  // Image: the sample's offset of fragCoord (shader/ShaderAssembly.h)
+    GLint zero = -1;        // toyhost_zero, 0u: hides divisors from Mesa's folder (shader/OpaqueDivisors.h)
 };
 
 struct PassProgram {

@@ -8,6 +8,7 @@
 #include "shader/GlslTokens.h"
 #include "shader/IndexClamp.h"
 #include "shader/IntegerConstantFold.h"
+#include "shader/OpaqueDivisors.h"
 
 namespace toyhost {
 
@@ -301,6 +302,12 @@ std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions promote) 
     if (promote.foldIntegerConstants)
         for (ConstantFoldEdit& fold : foldUndefinedIntegerConstants(tokens))
             edits.push_back({fold.offset, fold.erase, std::move(fold.text)});
+    if (promote.opaqueDivisors) {
+        std::vector<Edit> opening;
+        for (DivisorInsertion& divisor : opaqueDivisors(tokens))
+            (divisor.closes ? edits : opening).push_back({divisor.offset, 0, std::move(divisor.text)});
+        edits.insert(edits.begin(), opening.begin(), opening.end());
+    }
     std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) {
         return a.offset != b.offset ? a.offset < b.offset : a.erase < b.erase;  // insertions first
     });

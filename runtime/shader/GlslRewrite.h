@@ -23,7 +23,9 @@ namespace toyhost {
 // (shader/IntegerConstantFold.h).
 // With `preciseInverseTrig`, every `asin` and `acos` is `toyhost_asin` / `toyhost_acos`, the
 // header's versions (shader/ShaderAssembly.cpp: preciseInverseTrigFunctions) through atan.
-// Without `zeroInit`, `rename`, `clampIndices`, `foldIntegerConstants` and `preciseInverseTrig` only the promotion is done (the text a driver gets when it
+// With `opaqueDivisors`, every divisor inside a function body is hidden from Mesa's constant folder
+// (shader/OpaqueDivisors.h), so a division by a zero it could see is the IEEE one, as in the browser.
+// Without `zeroInit`, `rename`, `clampIndices`, `foldIntegerConstants`, `preciseInverseTrig` and `opaqueDivisors` only the promotion is done (the text a driver gets when it
 // refuses the full rewrite).
 // With `fragCoord`, every `gl_FragCoord` of the text (directives included) is that name instead: the
 // Image pass reads a copy moved by the sample's or tile's offset (shader/ShaderAssembly.h).
@@ -35,6 +37,7 @@ struct GlslRewriteOptions {
     bool clampIndices = true;
     bool foldIntegerConstants = true;
     bool preciseInverseTrig = true;
+    bool opaqueDivisors = true;
     std::string_view fragCoord;
 };
 std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions options = {});

@@ -2,6 +2,7 @@
 
 #include "shader/GlslRewrite.h"
 #include "shader/GlslTokens.h"
+#include "shader/OpaqueDivisors.h"
 
 #include <algorithm>
 #include <cctype>
@@ -222,12 +223,13 @@ AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     // the rewrite (of the user's text, Common and pass together) keeps every line where it was.
     // The text without it is kept for a driver that refuses the rewritten one (a declaration the
     // rewrite misread).
-    const std::string header = headerStart + hideTexture2D(user) + preciseInverseTrigFunctions(user);
+    const std::string header = headerStart + hideTexture2D(user) + preciseInverseTrigFunctions(user) +
+                               opaqueDivisorDeclarations(user);
     GlslRewriteOptions options = promotion(inputs);
     if (inputs.pass == PassId::Image && !inputs.sound) options.fragCoord = kFragCoordCopy;
     out.text = header + rewriteLikeWebGL(user, options);
     options.zeroInit = options.rename = options.clampIndices = options.foldIntegerConstants = false;
-    options.preciseInverseTrig = false;
+    options.preciseInverseTrig = options.opaqueDivisors = false;
     out.plainText = header + rewriteLikeWebGL(user, options);
     return out;
 }

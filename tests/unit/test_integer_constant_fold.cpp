@@ -14,7 +14,7 @@ namespace {
 
 std::string foldOnly(const std::string& text) {
     GlslRewriteOptions options;
-    options.zeroInit = options.rename = options.clampIndices = false;
+    options.zeroInit = options.rename = options.clampIndices = options.opaqueDivisors = false;
     return rewriteLikeWebGL(text, options);
 }
 
