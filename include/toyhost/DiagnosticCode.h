@@ -108,6 +108,7 @@ enum class Category : std::uint8_t {
     X(ScriptKey,               72, "script.key",                Input) \
     X(ShaderCompile,           73, "shader.compile",            Shader) \
     X(ShaderLink,              74, "shader.link",               Shader) \
+    X(ShaderLoopCap,          116, "shader.loop-cap",           Report) \
     X(ShaderNonAscii,          75, "shader.non-ascii",          Shader) \
     X(ShaderNul,               76, "shader.nul",                Shader) \
     X(ShaderPreprocess,        77, "shader.preprocess",         Shader) \

@@ -259,9 +259,8 @@ std::vector<Diagnostic> loopCapWarnings(const ManifestDesc& manifest) {
             if (loop.total <= kLlvmpipeLoopIterations) continue;
             Diagnostic d;
             d.severity = Severity::Warning;
-            // [shader.compile], a warning, like the site-depth warnings: the driver compiles the loop
-            // and runs it differently. (Issue 42 asks for a code of its own, shader.loop-cap.)
-            d.code = Code::ShaderCompile;
+            // [shader.loop-cap], a warning: the driver compiles the loop and runs it differently.
+            d.code = Code::ShaderLoopCap;
             d.file = file;
             d.pass = pass;
             d.line = loop.line;

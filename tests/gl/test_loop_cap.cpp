@@ -31,6 +31,7 @@ TEST(LoopCapGl, AHundredThousandIterationsWarnAndLlvmpipeCounts65535) {
               std::string::npos)
         << run.output;
     EXPECT_NE(run.output.find("the site runs them all"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("[shader.loop-cap]"), std::string::npos) << run.output;
 
     // The warning's premise: llvmpipe stops the loop at 65535 (0x00FFFF); the browser counts
     // 100000 (0x0186A0). Should a Mesa lift the limit, this fails and the warning must go.
