@@ -48,10 +48,12 @@ __all__ = [
 
 
 def defaults() -> dict:
-    """toyhost's defaults as a new dict: what a Session takes for what it is not given ("width",
-    "height", "fps"), the bounds settings are checked against ("min_fps", "max_fps",
-    "max_canvas_side"), and the CLI's ("frames", "capture_every", "png_level", "capture_memory_mib",
-    "frame_timeout", "compile_timeout" in seconds, "compare_frames", "sample_rate", "sound_seconds")."""
+    """toyhost's defaults as a new dict, made from its one list (C++ toyhost/Defaults.h): what a
+    Session takes for what it is not given ("width", "height", "fps", "supersample", "motion_blur",
+    "shutter"), the bounds settings are checked against ("min_fps", "max_fps", "max_canvas_side",
+    "max_supersample", "max_motion_blur", "max_samples_per_frame"), and the CLI's ("frames",
+    "capture_every", "png_level", "capture_memory_mib", "frame_timeout", "compile_timeout" in
+    seconds, "compare_frames", "sample_rate", "sound_seconds")."""
     return _toyhost.defaults()
 
 
