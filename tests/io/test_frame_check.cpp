@@ -10,8 +10,8 @@
 #include "TestFolder.h"
 #include "capture/WavFile.h"
 #include "image/ImageWriters.h"
-#include "sequence/FrameCheck.h"
-#include "sequence/JoinFrames.h"
+#include "farm/frames/FrameCheck.h"
+#include "farm/frames/JoinFrames.h"
 
 using namespace toyhost;
 namespace fs = std::filesystem;

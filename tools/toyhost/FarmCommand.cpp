@@ -16,8 +16,8 @@
 #include "export/LoadShadertoy.h"
 #include "farm/FarmPlan.h"
 #include "farm/FarmStatus.h"
-#include "sequence/FrameCheck.h"
-#include "sequence/JoinFrames.h"
+#include "farm/frames/FrameCheck.h"
+#include "farm/frames/JoinFrames.h"
 
 namespace toyhost::cli {
 

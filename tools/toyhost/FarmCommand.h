@@ -1,5 +1,5 @@
 // `toyhost farm plan|status|join`: parses their options and prints what runtime/farm and
-// runtime/sequence decide (the scheduler files, the frames' states, the joined video). No GL.
+// runtime/farm/frames decide (the scheduler files, the frames' states, the joined video). No GL.
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -1,5 +1,5 @@
 // JoinFrames: PNG frames, decoded one at a time, into VideoSink (see JoinFrames.h). No GL needed.
-#include "sequence/JoinFrames.h"
+#include "farm/frames/JoinFrames.h"
 
 #include <cstring>
 

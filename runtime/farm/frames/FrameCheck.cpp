@@ -1,6 +1,6 @@
 // FrameCheck: decodes each frame with image/PngDecode or image/ImageWriters' readExr (see
 // FrameCheck.h). No GL needed.
-#include "sequence/FrameCheck.h"
+#include "farm/frames/FrameCheck.h"
 
 #include <cstring>
 #include <fstream>
