@@ -197,6 +197,113 @@ Result<SessionPlan> planRecording(const SessionPlan& session, const std::string&
     return recording;
 }
 
+namespace {
+
+// prepareSession's parts, in the order it runs them; each fills its part of `run` (whose options
+// are final) or says why it cannot.
+
+// The frames: --frame-range, --shard and a --resume checkpoint's place.
+Status planFrames(SessionPlan& run, const ManifestDesc& manifest, std::optional<Checkpoint> resume) {
+    const SessionOptions& o = run.options;
+    if (o.frameRange) {
+        const auto [first, end] = *o.frameRange;
+        if (first < 0 || end <= first || end > *o.frames)
+            return usage("--frame-range " + std::to_string(first) + ":" + std::to_string(end) +
+                         ": expected A:B with 0 <= A < B <= --frames (" + std::to_string(*o.frames) + ")");
+        run.first = first;
+        run.end = end;
+    }
+    if (o.shard) {
+        const auto [index, count] = *o.shard;
+        Result<FrameSpan> span = shardSpan(*o.frames, count, index);
+        if (!span)
+            return usage("--shard " + std::to_string(index) + "/" + std::to_string(count) +
+                         ": expected i/n with 0 <= i < n <= --frames (" + std::to_string(*o.frames) + ")");
+        run.first = span->first;
+        run.end = span->end;
+    }
+    if (resume) {
+        // Without a range, a resumed run renders from the checkpoint's frame on.
+        if (!o.frameRange && !o.shard) run.first = std::min(resume->state.frame, run.end);
+        if (resume->state.frame > run.first)
+            return fileError(o.resume->string(),
+                             "the checkpoint is at frame " + std::to_string(resume->state.frame) +
+                                 ", after the first frame this run must render (" + std::to_string(run.first) + ")",
+                             Code::UsageResume);
+        if (resume->shadertoy != manifest.name || resume->codeHash != codeHash(manifest, run.defines))
+            return fileError(o.resume->string(),
+                             "the checkpoint was made from other code (shadertoy \"" + resume->shadertoy +
+                                 "\"): a resumed run would not continue the same frames",
+                             Code::CheckpointMismatch);
+        if (resume->media != channelMedia(manifest))
+            return fileError(o.resume->string(), "the checkpoint was made with other channel inputs", Code::CheckpointMismatch);
+        run.resume = std::move(resume);
+    }
+    return okStatus();
+}
+
+// The output: --out's pattern, a tiled canvas's, and the options that apply to one kind only.
+Status planOutput(SessionPlan& run, bool tiled) {
+    const SessionOptions& o = run.options;
+    if (o.outPattern) {
+        Result<OutputPattern> pattern = checkedOutput(o, run.first, run.end);
+        if (!pattern) return pattern.error();
+        run.output = std::move(*pattern);
+    }
+    if (tiled) {
+        if (run.output && !run.output->kind().tiles)
+            return settingError("size", "a tiled canvas is written as " + tiledKindNames() + " files, not " +
+                                            std::string(run.output->streamed() ? "a stream or video" : "this format"));
+        if (o.capturePass != PassId::Image) return settingError("size", "a tiled canvas captures the Image pass only");
+        run.tile = o.tile.value_or(defaults::kTileSide);
+    }
+    const bool exrAsked = o.exr.half || o.exr.compression != ExrCompression::None;
+    if (exrAsked && (!run.output || !run.output->kind().exrSettings))
+        return usage("--exr-compression and --exr-half apply only to an EXR --out (frame_%04d.exr)");
+    if ((o.video.codec || o.video.quality || o.video.preset) && (!run.output || !run.output->kind().ffmpeg))
+        return usage("--codec, --video-quality and --video-preset apply only to a video --out (" +
+                     extensionsWhere(&OutputKind::ffmpeg) + ")");
+    return okStatus();
+}
+
+// The timeline's input: a held --mouse, the mouse and key scripts.
+Status planInput(SessionPlan& run) {
+    const SessionOptions& o = run.options;
+    const SessionSettings& s = o.settings;
+    if (o.mouse) run.mouse = mouseHeldAt(o.mouse->x, o.mouse->y);
+    if (s.mouseScript) {
+        Result<std::string> text = readTextFile(*s.mouseScript);
+        if (!text) return text.error();
+        Result<MouseScript> script = parseMouseScript(*text, s.mouseScript->string());
+        if (!script) return script.error();
+        run.mouse = std::move(*script);
+    }
+    if (s.keyScript) {
+        Result<std::string> text = readTextFile(*s.keyScript);
+        if (!text) return text.error();
+        Result<KeyScript> script = parseKeyScript(*text, s.keyScript->string());
+        if (!script) return script.error();
+        run.keys = std::move(*script);
+    }
+    return okStatus();
+}
+
+// The media: every image decoded and every video and audio source opened (planPlayer), and the
+// video encoder --codec auto picks.
+Status planMedia(SessionPlan& run, ManifestDesc manifest) {
+    const SessionOptions& o = run.options;
+    Result<PlayerPlan> plan = planPlayer(std::move(manifest), run.media, run.defines);
+    if (!plan) return plan.error();
+    run.shadertoy = std::move(*plan);
+    // --codec auto tries the hardware encoders with short ffmpeg runs; the choice is kept for the
+    // process, so made here, off the GL thread, the recorder (made on it) finds it ready.
+    if (run.output && run.output->kind().ffmpeg && o.video.codec == "auto")
+        (void)chooseAutoVideoEncoder(run.output->extension());
+    return okStatus();
+}
+
+}  // namespace
+
 Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     SessionOptions options = asked;
     if (!options.startedAt) options.startedAt = std::chrono::steady_clock::now();
@@ -273,80 +380,10 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     Result<MacroDefines> defines = parseMacroDefines(s.defines);
     if (!defines) return defines.error();
     run.defines = std::move(*defines);
-    if (o.frameRange) {
-        const auto [first, end] = *o.frameRange;
-        if (first < 0 || end <= first || end > *o.frames)
-            return usage("--frame-range " + std::to_string(first) + ":" + std::to_string(end) +
-                         ": expected A:B with 0 <= A < B <= --frames (" + std::to_string(*o.frames) + ")");
-        run.first = first;
-        run.end = end;
-    }
-    if (o.shard) {
-        const auto [index, count] = *o.shard;
-        Result<FrameSpan> span = shardSpan(*o.frames, count, index);
-        if (!span)
-            return usage("--shard " + std::to_string(index) + "/" + std::to_string(count) +
-                         ": expected i/n with 0 <= i < n <= --frames (" + std::to_string(*o.frames) + ")");
-        run.first = span->first;
-        run.end = span->end;
-    }
-    if (resume) {
-        // Without a range, a resumed run renders from the checkpoint's frame on.
-        if (!o.frameRange && !o.shard) run.first = std::min(resume->state.frame, run.end);
-        if (resume->state.frame > run.first)
-            return fileError(o.resume->string(),
-                             "the checkpoint is at frame " + std::to_string(resume->state.frame) +
-                                 ", after the first frame this run must render (" + std::to_string(run.first) + ")",
-                             Code::UsageResume);
-        if (resume->shadertoy != manifest->name || resume->codeHash != codeHash(*manifest, run.defines))
-            return fileError(o.resume->string(),
-                             "the checkpoint was made from other code (shadertoy \"" + resume->shadertoy +
-                                 "\"): a resumed run would not continue the same frames",
-                             Code::CheckpointMismatch);
-        if (resume->media != channelMedia(*manifest))
-            return fileError(o.resume->string(), "the checkpoint was made with other channel inputs", Code::CheckpointMismatch);
-        run.resume = std::move(resume);
-    }
-    if (o.outPattern) {
-        Result<OutputPattern> pattern = checkedOutput(o, run.first, run.end);
-        if (!pattern) return pattern.error();
-        run.output = std::move(*pattern);
-    }
-    if (tiled) {
-        if (run.output && !run.output->kind().tiles)
-            return settingError("size", "a tiled canvas is written as " + tiledKindNames() + " files, not " +
-                                            std::string(run.output->streamed() ? "a stream or video" : "this format"));
-        if (o.capturePass != PassId::Image) return settingError("size", "a tiled canvas captures the Image pass only");
-        run.tile = o.tile.value_or(defaults::kTileSide);
-    }
-    const bool exrAsked = o.exr.half || o.exr.compression != ExrCompression::None;
-    if (exrAsked && (!run.output || !run.output->kind().exrSettings))
-        return usage("--exr-compression and --exr-half apply only to an EXR --out (frame_%04d.exr)");
-    if ((o.video.codec || o.video.quality || o.video.preset) && (!run.output || !run.output->kind().ffmpeg))
-        return usage("--codec, --video-quality and --video-preset apply only to a video --out (" +
-                     extensionsWhere(&OutputKind::ffmpeg) + ")");
-    if (o.mouse) run.mouse = mouseHeldAt(o.mouse->x, o.mouse->y);
-    if (s.mouseScript) {
-        Result<std::string> text = readTextFile(*s.mouseScript);
-        if (!text) return text.error();
-        Result<MouseScript> script = parseMouseScript(*text, s.mouseScript->string());
-        if (!script) return script.error();
-        run.mouse = std::move(*script);
-    }
-    if (s.keyScript) {
-        Result<std::string> text = readTextFile(*s.keyScript);
-        if (!text) return text.error();
-        Result<KeyScript> script = parseKeyScript(*text, s.keyScript->string());
-        if (!script) return script.error();
-        run.keys = std::move(*script);
-    }
-    Result<PlayerPlan> plan = planPlayer(std::move(*manifest), run.media, run.defines);
-    if (!plan) return plan.error();
-    run.shadertoy = std::move(*plan);
-    // --codec auto tries the hardware encoders with short ffmpeg runs; the choice is kept for the
-    // process, so made here, off the GL thread, the recorder (made on it) finds it ready.
-    if (run.output && run.output->kind().ffmpeg && o.video.codec == "auto")
-        (void)chooseAutoVideoEncoder(run.output->extension());
+    if (Status planned = planFrames(run, *manifest, std::move(resume)); !planned) return planned.error();
+    if (Status planned = planOutput(run, tiled); !planned) return planned.error();
+    if (Status planned = planInput(run); !planned) return planned.error();
+    if (Status planned = planMedia(run, std::move(*manifest)); !planned) return planned.error();
     return run;
 }
 

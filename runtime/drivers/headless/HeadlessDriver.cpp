@@ -1,7 +1,7 @@
 #include "drivers/headless/HeadlessDriver.h"
 
 #include "gl/HeadlessContext.h"
-#include "session/AllProblems.h"
+#include "session/CompileProblems.h"
 #include "session/ShadertoyWatcher.h"
 
 #include <csignal>

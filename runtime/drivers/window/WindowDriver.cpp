@@ -12,7 +12,7 @@
 #include "render/Present.h"
 #include "session/BackgroundWriter.h"
 #include "session/ShadertoyWatcher.h"
-#include "session/AllProblems.h"
+#include "session/CompileProblems.h"
 #include "timing/FrameClock.h"
 #include "timing/FramePacer.h"
 #include "timing/RealTimeClock.h"

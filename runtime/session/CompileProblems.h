@@ -1,4 +1,4 @@
-// AllProblems: a run that cannot start because of its inputs (an image that does not decode, a
+// CompileProblems: a run that cannot start because of its inputs (an image that does not decode, a
 // missing stock file) still compiles its passes, so that one run reports every problem: the two
 // bad textures and the two passes that do not compile together, not one stage at a time. Needs
 // to create a headless GL context (only on this failure path).

@@ -1,4 +1,4 @@
-#include "session/AllProblems.h"
+#include "session/CompileProblems.h"
 
 #include "export/LoadShadertoy.h"
 #include "gl/HeadlessContext.h"
