@@ -20,7 +20,7 @@
 #include "Errors.h"
 #include "Gil.h"
 #include "GlWorker.h"
-#include "RenderStream.h"
+#include "PythonFrameStream.h"
 #include "Signals.h"
 
 namespace py = pybind11;
@@ -71,8 +71,8 @@ public:
             return;
         }
         // Frames being rendered ahead stop first (their jobs never touch the session after this).
-        for (std::weak_ptr<RenderStream>& stream : streams_)
-            if (std::shared_ptr<RenderStream> alive = stream.lock()) alive->cancel();
+        for (std::weak_ptr<PythonFrameStream>& stream : streams_)
+            if (std::shared_ptr<PythonFrameStream> alive = stream.lock()) alive->cancel();
         streams_.clear();
         // A destructor may run without the GIL held (interpreter shutdown); release only when held.
         // Then the thread goes too (joined: its 1 GiB stack with it), not at garbage collection.
@@ -98,13 +98,13 @@ public:
         throwIfFailed(onGlThread([&] { return s.seek(frame); }));
     }
 
-    // render(): frames rendered ahead on the worker, taken by RenderStream.next().
-    std::shared_ptr<RenderStream> render(std::vector<InputEvent> events, int frames, int every, const std::string& pass,
+    // render(): frames rendered ahead on the worker, taken by PythonFrameStream.next().
+    std::shared_ptr<PythonFrameStream> render(std::vector<InputEvent> events, int frames, int every, const std::string& pass,
                                          bool floats) {
         Session& s = open();
-        std::erase_if(streams_, [](const std::weak_ptr<RenderStream>& stream) { return stream.expired(); });
+        std::erase_if(streams_, [](const std::weak_ptr<PythonFrameStream>& stream) { return stream.expired(); });
         RenderRequest request{Session::RenderRequest{frames, every, pass, std::move(events)}, floats};
-        std::shared_ptr<RenderStream> stream = RenderStream::start(worker_, s, std::move(request));
+        std::shared_ptr<PythonFrameStream> stream = PythonFrameStream::start(worker_, s, std::move(request));
         streams_.push_back(stream);
         return stream;
     }
@@ -235,7 +235,7 @@ private:
 
     GlWorker worker_;
     std::unique_ptr<Session> session_;  // created, used and destroyed on worker_
-    std::vector<std::weak_ptr<RenderStream>> streams_;  // render() iterations, cancelled at close()
+    std::vector<std::weak_ptr<PythonFrameStream>> streams_;  // render() iterations, cancelled at close()
     int width_ = 0;  // the canvas, kept here so that allocating a frame's array needs no round trip
     int height_ = 0;
 };
@@ -249,7 +249,7 @@ py::object arrayOwning(int frame, int width, int height, std::unique_ptr<T[]> va
     return py::make_tuple(frame, py::array_t<T>({height, width, 4}, data, owner));
 }
 
-py::object nextRendered(RenderStream& stream) {
+py::object nextRendered(PythonFrameStream& stream) {
     std::optional<RenderedFrame> frame;
     const bool mainThread = onMainThread();
     const std::function<bool()> interrupted = mainThread ? std::function<bool()>(signalRaised) : nullptr;
@@ -259,9 +259,9 @@ py::object nextRendered(RenderStream& stream) {
         std::optional<WakeupFdGuard> wakeup;
         if (mainThread) wakeup.emplace(stream.signalWakeupFd(), [&stream] { return stream.takeSignalBytes(); });
         // A signal that came before the pipe was there is seen now, not a frame later.
-        if (interrupted && signalRaised()) throw RenderStream::Interrupted{};
+        if (interrupted && signalRaised()) throw PythonFrameStream::Interrupted{};
         frame = withoutGil([&] { return stream.next(interrupted); });
-    } catch (const RenderStream::Interrupted&) {
+    } catch (const PythonFrameStream::Interrupted&) {
         throw py::error_already_set();  // the handler's exception (KeyboardInterrupt)
     }
     if (!frame) return py::none();
@@ -316,10 +316,10 @@ void bindSession(py::module_& module) {
                    " structure_changed=" + (r.structureChanged ? "True" : "False") + " recompiled=" +
                    std::to_string(r.recompiled.size()) + " problems=" + std::to_string(r.problems.size()) + ">";
         });
-    py::class_<RenderStream, std::shared_ptr<RenderStream>>(module, "RenderStream",
+    py::class_<PythonFrameStream, std::shared_ptr<PythonFrameStream>>(module, "FrameStream",
                                                             "Session.render()'s frames, rendered ahead.")
         .def("next", &nextRendered, "The next (iframe, array), or None after the last.")
-        .def("cancel", &RenderStream::cancel, "Stops rendering; frames not taken are dropped.");
+        .def("cancel", &PythonFrameStream::cancel, "Stops rendering; frames not taken are dropped.");
     py::class_<NativeSession>(module, "NativeSession")
         .def(py::init([](const Shadertoy& shadertoy, const py::dict& settings) {
                  return std::make_unique<NativeSession>(shadertoy, settingsFrom(settings));

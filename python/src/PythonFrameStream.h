@@ -1,4 +1,4 @@
-// RenderStream: Session.render()'s frames, rendered ahead of the Python loop that takes them,
+// PythonFrameStream: Session.render()'s frames, rendered ahead of the Python loop that takes them,
 // through the library's frame stream (Session::Rendering: the capture-every rule, the reads in
 // flight, each frame handed over as soon as its read completes). On the GL worker, one job per
 // frame (Rendering::advance), so that jobs of other calls run between frames; frames are read
@@ -41,7 +41,7 @@ struct RenderedFrame {
     std::unique_ptr<float[]> floats;        // width * height * 4, when floats
 };
 
-class RenderStream : public std::enable_shared_from_this<RenderStream> {
+class PythonFrameStream : public std::enable_shared_from_this<PythonFrameStream> {
 public:
     // Frames rendered ahead of the one Python takes: enough to keep the worker busy while Python
     // handles a frame; each costs its pixels' memory.
@@ -56,10 +56,10 @@ public:
     struct Interrupted {};
 
     // `session` lives on `worker` and outlives the stream's jobs (cancel() before closing it).
-    static std::shared_ptr<RenderStream> start(GlWorker& worker, Session& session, RenderRequest request);
-    ~RenderStream();
-    RenderStream(const RenderStream&) = delete;
-    RenderStream& operator=(const RenderStream&) = delete;
+    static std::shared_ptr<PythonFrameStream> start(GlWorker& worker, Session& session, RenderRequest request);
+    ~PythonFrameStream();
+    PythonFrameStream(const PythonFrameStream&) = delete;
+    PythonFrameStream& operator=(const PythonFrameStream&) = delete;
 
     // The write end of the stream's signal pipe (non-blocking), for Python's wakeup fd
     // (PySignal_SetWakeupFd) while the main thread waits in next(): a signal's byte written there
@@ -81,7 +81,7 @@ public:
     void cancel();
 
 private:
-    RenderStream(GlWorker& worker, Session& session, RenderRequest request);
+    PythonFrameStream(GlWorker& worker, Session& session, RenderRequest request);
     void post();       // the next job
     void resume();           // under mutex_: the next job, unless running, ended or enough frames wait
     void renderOne();  // on the worker: one frame, then the next job when there is room

@@ -1,5 +1,5 @@
-// RenderStream: the worker's side (one Rendering::advance per job) and Python's (next, cancel).
-#include "RenderStream.h"
+// PythonFrameStream: the worker's side (one Rendering::advance per job) and Python's (next, cancel).
+#include "PythonFrameStream.h"
 
 #include <new>
 #include <span>
@@ -9,30 +9,30 @@
 
 namespace toyhost::python {
 
-std::shared_ptr<RenderStream> RenderStream::start(GlWorker& worker, Session& session, RenderRequest request) {
-    std::shared_ptr<RenderStream> stream(new RenderStream(worker, session, std::move(request)));
+std::shared_ptr<PythonFrameStream> PythonFrameStream::start(GlWorker& worker, Session& session, RenderRequest request) {
+    std::shared_ptr<PythonFrameStream> stream(new PythonFrameStream(worker, session, std::move(request)));
     std::lock_guard<std::mutex> lock(stream->mutex_);
     stream->running_ = true;
     stream->post();
     return stream;
 }
 
-RenderStream::RenderStream(GlWorker& worker, Session& session, RenderRequest request)
+PythonFrameStream::PythonFrameStream(GlWorker& worker, Session& session, RenderRequest request)
     : worker_(worker), session_(session), request_(std::move(request)) {}
 
-std::string RenderStream::takeSignalBytes() {
+std::string PythonFrameStream::takeSignalBytes() {
     std::lock_guard<std::mutex> lock(mutex_);
     return signals_.take();
 }
 
-void RenderStream::resume() {
+void PythonFrameStream::resume() {
     if (!running_ && !finished_ && !failed_ && !cancelled_ && !signalled_ && ready_.size() < kReady) {
         running_ = true;
         post();
     }
 }
 
-RenderStream::~RenderStream() {
+PythonFrameStream::~PythonFrameStream() {
     // The rendering's GL buffers go on the session's thread (jobs run there before the session is
     // closed, and a closed worker runs nothing: then the session freed its context already).
     if (rendering_)
@@ -41,11 +41,11 @@ RenderStream::~RenderStream() {
         });
 }
 
-void RenderStream::post() {
+void PythonFrameStream::post() {
     worker_.post([self = shared_from_this()] { self->renderOne(); });
 }
 
-bool RenderStream::take(const Session::RenderedFrame& read) {
+bool PythonFrameStream::take(const Session::RenderedFrame& read) {
     RenderedFrame frame;
     frame.frame = read.frame;
     frame.width = read.width;
@@ -69,7 +69,7 @@ bool RenderStream::take(const Session::RenderedFrame& read) {
     return true;
 }
 
-void RenderStream::renderOne() {
+void PythonFrameStream::renderOne() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         if (signals_.drain()) signalled_ = true;
@@ -126,7 +126,7 @@ void RenderStream::renderOne() {
     }
 }
 
-std::optional<RenderedFrame> RenderStream::next(const std::function<bool()>& interrupted) {
+std::optional<RenderedFrame> PythonFrameStream::next(const std::function<bool()>& interrupted) {
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
         if (cancelled_) return std::nullopt;
@@ -171,7 +171,7 @@ std::optional<RenderedFrame> RenderStream::next(const std::function<bool()>& int
     }
 }
 
-void RenderStream::cancel() {
+void PythonFrameStream::cancel() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         if (cancelled_) return;
