@@ -171,10 +171,9 @@ public:
     // frame is rendered or handed over).
     using FrameCallback = std::function<bool(const RenderedFrame&)>;
 
-    // A rendering in steps, for a loop that does other work between frames (Python's render()
-    // runs one step per job of its GL thread): the public handle of toyhost's frame stream into
-    // memory (the name stays for programs built against it). Made by startRendering(); used, like
-    // the session, on the session's thread, and destroyed before the session.
+    // The public handle of toyhost's frame stream into memory, in steps, for a loop that does other
+    // work between frames (Python's render() runs one step per GL job). Made by startRendering();
+    // used, like the session, on the session's thread, and destroyed before the session.
     class TOYHOST_API Rendering {
     public:
         ~Rendering();  // reads not handed over are dropped
