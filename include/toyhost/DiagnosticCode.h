@@ -113,6 +113,7 @@ enum class Category : std::uint8_t {
     X(ShaderNul,               76, "shader.nul",                Shader) \
     X(ShaderPreprocess,        77, "shader.preprocess",         Shader) \
     X(ShaderPreprocessed,      78, "shader.preprocessed",       Report) \
+    X(ShaderRuleSkipped,      117, "shader.rule-skipped",       Report) \
     X(SoundChannel,            79, "sound.channel",             Input) \
     X(SoundEncode,             80, "sound.encode",              Output) \
     X(SoundFfmpegMissing,      81, "sound.ffmpeg-missing",      Output) \

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "core/Result.h"
 #include "gl/GlObjects.h"
@@ -32,6 +33,9 @@ struct PassProgram {
     // Compiled from the browser-style preprocessed text (shader/BrowserPreprocess.h) because the
     // driver refused the original.
     bool browserPreprocessed = false;
+    // One warning (Code::ShaderRuleSkipped) for each rule of the WebGL rewrite left out because the
+    // driver refused the text it made (compilePassProgram): never silent.
+    std::vector<Diagnostic> warnings;
 };
 
 // Builds `pass` of `manifest` from its texts prepared off the GL thread (shader/PassSource.h:

@@ -69,6 +69,8 @@ struct Renderer::Impl {
                              "browsers do";
             compileNotices.push_back(std::move(notice));
         }
+        if (program)
+            for (const Diagnostic& warning : program->warnings) compileNotices.push_back(warning);
         return program;
     }
 

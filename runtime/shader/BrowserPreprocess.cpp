@@ -1,5 +1,6 @@
 #include "shader/BrowserPreprocess.h"
 
+#include <algorithm>
 #include <cctype>
 #include <optional>
 #include <span>
@@ -8,6 +9,7 @@
 #include "core/AtomicFile.h"
 #include "core/ChildProcess.h"
 #include "core/TemporaryFiles.h"
+#include "shader/GlslTokens.h"
 
 namespace toyhost {
 namespace fs = std::filesystem;
@@ -156,6 +158,25 @@ Result<std::string> preprocessLikeBrowsers(std::string_view shader) {
         expanded += '\n';
     }
     return expanded;
+}
+
+std::string neutraliseUnknownDirectives(std::string_view text) {
+    static const std::vector<std::string_view> known = {"define", "undef",  "if",    "ifdef",     "ifndef",  "else", "elif",
+                                                        "endif",  "error",  "pragma", "extension", "version", "line"};
+    std::string out;
+    std::size_t at = 0;
+    const std::vector<GlslToken> tokens = tokenizeGlsl(text);
+    for (std::size_t i = 0; i + 1 < tokens.size(); ++i) {
+        const GlslToken& name = tokens[i + 1];
+        if (!tokens[i].directiveStart || !name.directive || name.directiveStart || name.kind != GlslToken::Kind::Identifier)
+            continue;
+        if (std::find(known.begin(), known.end(), name.text) != known.end()) continue;
+        out.append(text.substr(at, name.offset - at));
+        out += "error invalid directive ";
+        at = name.offset;
+    }
+    out.append(text.substr(at));
+    return out;
 }
 
 }  // namespace toyhost

@@ -21,4 +21,13 @@ namespace toyhost {
 // defined again with another body, an undefined name in an #if or #elif that is evaluated. `#version`, `#extension` and `#pragma` lines are kept as they are.
 Result<std::string> preprocessLikeBrowsers(std::string_view shader);
 
+// `text` with every directive whose name is not GLSL's (`#elseif 1`, a typo of `#elif`) written as
+// `#error invalid directive elseif 1`, on its line. C's rule, which browsers follow: in a group
+// skipped by a conditional only conditional directives are read, so the browser ignores such a
+// line there and refuses it elsewhere. Mesa's preprocessor reads it in a skipped group too
+// (`#elseif` as `#else` then `if`: "syntax error, unexpected IDENTIFIER, expecting NEWLINE");
+// `#error` is ignored in a skipped group and refuses the shader elsewhere, as the browser does.
+// Pure text work, done on every pass's text (shader/ShaderAssembly.cpp).
+std::string neutraliseUnknownDirectives(std::string_view text);
+
 }  // namespace toyhost

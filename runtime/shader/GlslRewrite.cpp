@@ -1,8 +1,13 @@
 #include "shader/GlslRewrite.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
+#include <optional>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "shader/GlslTokens.h"
@@ -55,8 +60,12 @@ public:
         declaration(0);
         for (std::size_t k = 0; k < code_.size(); ++k) {
             const std::string_view t = code_[k].text;
-            if (t == "(" || t == "[") ++nesting;
-            else if (t == ")" || t == "]") {
+            if (t == "(" || t == "[") {
+                ++nesting;
+                // A for-init declaration is executed at every execution of the loop, as the
+                // browser zeroes it (a `for (float t; ...)` in a function called 3 times).
+                if (t == "(" && k > 0 && code_[k - 1].text == "for" && inCode()) declaration(k + 1, true);
+            } else if (t == ")" || t == "]") {
                 if (--nesting < 0) return false;
             } else if (t == "{") {
                 const std::string_view prev = k > 0 ? code_[k - 1].text : std::string_view{};
@@ -74,7 +83,8 @@ public:
                 if (stack_.empty()) return false;
                 const Frame closed = stack_.back();
                 stack_.pop_back();
-                if (closed.scope == Scope::Struct && !closed.name.empty() && stack_.empty()) zeroFunction(closed, k);
+                if (closed.scope == Scope::Struct && !closed.name.empty() && (stack_.empty() || inCode()))
+                    zeroFunction(closed, k);
                 if ((inCode() || (stack_.empty() && closed.scope == Scope::Function)) && nesting == 0) declaration(k + 1);
             } else if ((t == ";" || t == ":") && nesting == 0 && inCode()) {
                 declaration(k + 1);
@@ -100,12 +110,16 @@ private:
 
     static std::string zeroName(std::string_view structName) { return "toyhost_z" + std::string(structName); }
 
-    // A global struct whose `}` is at `close`: when every member's type is known, a function
-    // returning its zero value is defined right after the declaration's `;`, and the struct
-    // becomes a known type. (The driver's zero-initialisation of a global struct cannot be
-    // relied on: llvmpipe leaves one undefined.)
+    // A struct whose `}` is at `close`: when every member's type is known, it becomes a known type.
+    // A global one gets a function returning its zero value, defined right after the
+    // declaration's `;` (the driver's zero-initialisation of a global struct cannot be relied on:
+    // llvmpipe leaves one undefined). A struct defined in a function body, where no function can
+    // be defined, is zeroed by its constructor with every member zero; one with an array member
+    // is left to the driver.
     void zeroFunction(const Frame& frame, std::size_t close) {
         std::string body;
+        std::string constructor;
+        bool hasArray = false;
         for (std::size_t k = frame.open + 1; k < close;) {
             while (k < close && isPrecision(code_[k].text)) ++k;
             if (k >= close) break;
@@ -121,22 +135,29 @@ private:
                 if (k < close && code_[k].text == "[") array = true, k = skipBrackets(k);
                 if (k >= close) return;
                 body += array ? zeroLoop(member, zero) : member + "=" + zero + ";";
+                constructor += (constructor.empty() ? "" : ",") + zero;
+                hasArray = hasArray || array;
                 if (code_[k++].text == ";") break;
             }
+        }
+        const std::string name(frame.name);
+        if (!stack_.empty()) {
+            if (hasArray || constructor.empty()) return;
+            structs_[frame.name] = name + "(" + constructor + ")";
+            return;
         }
         std::size_t semicolon = close + 1;
         while (semicolon < code_.size() && code_[semicolon].text != ";") ++semicolon;
         if (semicolon >= code_.size()) return;
-        const std::string name(frame.name);
         add(end(semicolon), " " + name + " " + zeroName(name) + "(){" + name + " z;" + body + "return z;}");
-        structs_.insert(frame.name);
+        structs_[frame.name] = zeroName(name) + "()";
     }
 
     // The zero value of a type, or empty when the type is not known.
     std::string zeroOf(std::string_view type) const {
         if (auto alias = aliases_.find(type); alias != aliases_.end()) type = alias->second;
         if (builtinTypes().count(type)) return std::string(type) + "(0)";
-        if (structs_.count(type)) return zeroName(type) + "()";
+        if (auto known = structs_.find(type); known != structs_.end()) return known->second;
         return {};
     }
 
@@ -161,14 +182,15 @@ private:
 
     // A declaration statement starting at `k` (`[precision] TYPE[[n]] name[[n]] [= init], ...;`):
     // each declarator without an initialiser gets one. Anything else is left alone.
-    void declaration(std::size_t k) {
+    // In a for-init (`forInit`), arrays, whose zeroing loop cannot go there, are left alone.
+    void declaration(std::size_t k, bool forInit = false) {
         const std::size_t n = code_.size();
         while (k < n && (isPrecision(code_[k].text) || code_[k].text == "precise")) ++k;
         if (k >= n || code_[k].kind != Kind::Identifier) return;
         const std::string zero = zeroOf(code_[k].text);
         if (zero.empty()) return;
         const bool global = stack_.empty();
-        const bool builtin = zero.compare(0, 9, "toyhost_z") != 0;
+        const bool builtin = builtinTypes().count(zero.substr(0, zero.find('('))) > 0;
         std::string pending;  // for globals_, once the statement reads as a declaration
         ++k;
         bool typeArray = false;
@@ -203,6 +225,7 @@ private:
             if (code_[k].text == ";") break;
             ++k;
         }
+        if (forInit && !arrays.empty()) return;
         std::string loops;
         for (std::string_view a : arrays) loops += zeroLoop(a, zero);
         if (!loops.empty()) found.push_back({end(k), 0, loops});
@@ -256,13 +279,122 @@ private:
 
     std::vector<GlslToken> code_;
     std::map<std::string_view, std::string_view> aliases_;
-    std::set<std::string_view> structs_;
+    std::map<std::string_view, std::string> structs_;  // a known struct's zero value
     std::vector<Frame> stack_;
     std::vector<Edit> edits_;
     std::string globals_;  // zeroing of the global arrays and structs declared so far
 };
 
+// True for each token that is, or may be, part of an expression GLSL requires to be constant:
+// everything outside function bodies (global initialisers, which GLSL ES 3.00 requires to be
+// constant, and array sizes of globals, members and parameters), a `const` declaration in a body,
+// and the array size of a local declaration (`float a[...]`, `T a[...]`). A call of a user
+// function is never constant, so there the precise asin/acos cannot be called.
+std::vector<bool> constantContexts(const std::vector<GlslToken>& tokens) {
+    std::vector<bool> constant(tokens.size(), false);
+    int braces = 0;
+    bool constStatement = false;
+    int parens = 0;         // ( depth inside a const statement
+    std::size_t sizeUntil = 0;  // inside an array size up to this token
+    auto isWord = [&](std::size_t j) {
+        const std::string_view w = tokens[j].text;
+        return tokens[j].kind == Kind::Identifier && w != "return" && w != "else" && w != "case" && w != "do";
+    };
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+        const GlslToken& t = tokens[i];
+        if (t.directive) continue;
+        if (t.text == "{") ++braces;
+        else if (t.text == "}") braces = std::max(0, braces - 1);
+        if (braces == 0 || i < sizeUntil) {
+            constant[i] = true;
+            continue;
+        }
+        if (t.text == "const") constStatement = true, parens = 0;
+        if (constStatement) {
+            constant[i] = true;
+            if (t.text == "(") ++parens;
+            else if (t.text == ")") --parens;
+            else if ((t.text == ";" && parens <= 0) || t.text == "{" || t.text == "}") constStatement = false;
+            continue;
+        }
+        if (t.text == "[" && i > 0 && (builtinTypes().count(tokens[i - 1].text) || (i > 1 && isWord(i - 1) && isWord(i - 2)))) {
+            int depth = 0;
+            std::size_t j = i;
+            for (; j < tokens.size(); ++j) {
+                if (tokens[j].text == "[") ++depth;
+                else if (tokens[j].text == "]" && --depth == 0) break;
+            }
+            sizeUntil = j;
+            constant[i] = true;
+        }
+    }
+    return constant;
+}
+
+// `asin(x)` / `acos(x)` of a float literal at `i` (the name's index): the value ANGLE's constant
+// folder gives it (C's asinf / acosf), as a literal, and the index of the `)`; nothing when the
+// call is not of that shape or x is outside [-1, 1] (left to the driver).
+std::optional<std::pair<std::string, std::size_t>> foldedInverseTrig(const std::vector<GlslToken>& tokens, std::size_t i) {
+    std::size_t k = i + 1;
+    if (k >= tokens.size() || tokens[k].text != "(") return std::nullopt;
+    ++k;
+    bool negative = false;
+    if (k < tokens.size() && (tokens[k].text == "-" || tokens[k].text == "+")) negative = tokens[k++].text == "-";
+    if (k + 1 >= tokens.size() || tokens[k].kind != Kind::Number || tokens[k + 1].text != ")") return std::nullopt;
+    const std::string literal(tokens[k].text);
+    if (literal.find_first_of("xX") != std::string::npos || literal.find_first_of(".eE") == std::string::npos)
+        return std::nullopt;  // an int: no implicit conversion in GLSL ES, the driver says so
+    float x = std::strtof(literal.c_str(), nullptr);
+    if (negative) x = -x;
+    if (!(x >= -1.0f && x <= 1.0f)) return std::nullopt;
+    const float value = tokens[i].text == "asin" ? std::asin(x) : std::acos(x);
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
+    std::string out = text;
+    if (out.find_first_of(".e") == std::string::npos) out += ".0";
+    if (value < 0.0f || std::signbit(value)) out = "(" + out + ")";  // never `x--0.5`
+    return std::make_pair(out, k + 1);
+}
+
 }  // namespace
+
+const char* rewriteRuleName(RewriteRule rule) {
+    switch (rule) {
+        case RewriteRule::ZeroInit: return "zeroInit";
+        case RewriteRule::ClampIndices: return "clampIndices";
+        case RewriteRule::FoldIntegerConstants: return "foldIntegerConstants";
+        case RewriteRule::PreciseInverseTrig: return "preciseInverseTrig";
+        case RewriteRule::OpaqueDivisors: return "opaqueDivisors";
+        case RewriteRule::Rename: return "rename";
+    }
+    return "";
+}
+
+const char* rewriteRuleEffect(RewriteRule rule) {
+    switch (rule) {
+        case RewriteRule::ZeroInit: return "locals, out parameters and globals are not zeroed as WebGL zeroes them";
+        case RewriteRule::ClampIndices: return "dynamic indices are not clamped into range as WebGL clamps them";
+        case RewriteRule::FoldIntegerConstants:
+            return "undefined integer constant operations keep the driver's values, not the browser's";
+        case RewriteRule::PreciseInverseTrig: return "asin and acos are the driver's, less precise than the browser's";
+        case RewriteRule::OpaqueDivisors:
+            return "a division by a zero the compiler can see gives the driver's folded value, not IEEE's";
+        case RewriteRule::Rename: return "words Mesa reserves (packed, dmat2...) are not renamed";
+    }
+    return "";
+}
+
+bool& ruleSwitch(GlslRewriteOptions& options, RewriteRule rule) {
+    switch (rule) {
+        case RewriteRule::ZeroInit: return options.zeroInit;
+        case RewriteRule::ClampIndices: return options.clampIndices;
+        case RewriteRule::FoldIntegerConstants: return options.foldIntegerConstants;
+        case RewriteRule::PreciseInverseTrig: return options.preciseInverseTrig;
+        case RewriteRule::OpaqueDivisors: return options.opaqueDivisors;
+        case RewriteRule::Rename: break;
+    }
+    return options.rename;
+}
 
 // Every GLSL ES 3.00 reserved and extension word compiled as a local's name on both sides
 // (webref, headless Chromium with ANGLE, against Mesa 22.3): these are the ones browsers accept
@@ -281,6 +413,8 @@ std::string_view webglOnlyIdentifierRename(std::string_view word) {
 std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions promote) {
     const std::vector<GlslToken> tokens = tokenizeGlsl(text);
     std::vector<Edit> edits;
+    std::vector<bool> constant;
+    if (promote.preciseInverseTrig) constant = constantContexts(tokens);
     std::size_t directiveAt = 0;  // the index of the `#` of the current directive line
     for (std::size_t i = 0; i < tokens.size(); ++i) {
         const GlslToken& t = tokens[i];
@@ -288,8 +422,15 @@ std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions promote) 
         if (t.kind != Kind::Identifier) continue;
         if (std::string_view to = webglOnlyIdentifierRename(t.text); promote.rename && !to.empty())
             edits.push_back({t.offset, t.text.size(), std::string(to)});
-        if (promote.preciseInverseTrig && (t.text == "asin" || t.text == "acos"))
-            edits.push_back({t.offset, 0, "toyhost_"});
+        if (promote.preciseInverseTrig && (t.text == "asin" || t.text == "acos")) {
+            if (auto folded = foldedInverseTrig(tokens, i)) {
+                const GlslToken& close = tokens[folded->second];
+                edits.push_back({t.offset, close.offset + close.text.size() - t.offset, std::move(folded->first)});
+                i = folded->second;
+                continue;
+            }
+            if (!constant[i]) edits.push_back({t.offset, 0, "toyhost_"});
+        }
         if (!promote.fragCoord.empty() && t.text == "gl_FragCoord")
             edits.push_back({t.offset, t.text.size(), std::string(promote.fragCoord)});
         const bool promoted = (t.text == "lowp" && promote.lowp) || (t.text == "mediump" && promote.mediump);
@@ -321,6 +462,8 @@ std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions promote) 
         at = e.offset + e.erase;
     }
     out.append(text.substr(at));
+    if (promote.plantedFailure && ruleSwitch(promote, *promote.plantedFailure))
+        out += std::string(out.empty() || out.back() == '\n' ? "" : "\n") + "float toyhost_planted = toyhost_planted_failure_of_" + rewriteRuleName(*promote.plantedFailure) + ";";
     return out;
 }
 

@@ -6,6 +6,7 @@
 // insertion stays on its line, so compiler messages keep the user's line numbers. Pure text work.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -22,13 +23,26 @@ namespace toyhost {
 // INT_MIN / -1, `%` of negatives, shifts past 31) are written as the value ANGLE folds them to
 // (shader/IntegerConstantFold.h).
 // With `preciseInverseTrig`, every `asin` and `acos` is `toyhost_asin` / `toyhost_acos`, the
-// header's versions (shader/ShaderAssembly.cpp: preciseInverseTrigFunctions) through atan.
+// header's versions (shader/ShaderAssembly.cpp: preciseInverseTrigFunctions) through atan, except
+// where GLSL requires a constant expression (outside function bodies, a `const` declaration, an
+// array size), where a user function is not constant: there a call of a float literal is written
+// as the value ANGLE folds it to (C's asinf/acosf), any other call is left to the driver.
 // With `opaqueDivisors`, every divisor inside a function body is hidden from Mesa's constant folder
 // (shader/OpaqueDivisors.h), so a division by a zero it could see is the IEEE one, as in the browser.
 // Without `zeroInit`, `rename`, `clampIndices`, `foldIntegerConstants`, `preciseInverseTrig` and `opaqueDivisors` only the promotion is done (the text a driver gets when it
-// refuses the full rewrite).
+// refuses every rule; render/PassProgram.cpp turns them off one at a time, with a warning each).
 // With `fragCoord`, every `gl_FragCoord` of the text (directives included) is that name instead: the
 // Image pass reads a copy moved by the sample's or tile's offset (shader/ShaderAssembly.h).
+// The rules of the rewrite a driver's refusal can turn off one by one (render/PassProgram.cpp),
+// each named in the warning that says it was skipped.
+enum class RewriteRule { ZeroInit, ClampIndices, FoldIntegerConstants, PreciseInverseTrig, OpaqueDivisors, Rename };
+inline constexpr RewriteRule kRewriteRules[] = {RewriteRule::ZeroInit,           RewriteRule::ClampIndices,
+                                                RewriteRule::FoldIntegerConstants, RewriteRule::PreciseInverseTrig,
+                                                RewriteRule::OpaqueDivisors,     RewriteRule::Rename};
+const char* rewriteRuleName(RewriteRule rule);  // "zeroInit", "clampIndices", ...
+// What the shader loses when `rule` is off, in a few words for the warning.
+const char* rewriteRuleEffect(RewriteRule rule);
+
 struct GlslRewriteOptions {
     bool lowp = false;
     bool mediump = false;
@@ -39,8 +53,15 @@ struct GlslRewriteOptions {
     bool preciseInverseTrig = true;
     bool opaqueDivisors = true;
     std::string_view fragCoord;
+    // For tests only: the named rule, when on, also writes a statement every driver refuses at the
+    // end of the text (on its last line), so the tests of the fallback (render/PassProgram.h) can
+    // make exactly that rule fail.
+    std::optional<RewriteRule> plantedFailure;
 };
 std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions options = {});
+
+// The switch of `rule` in `options`.
+bool& ruleSwitch(GlslRewriteOptions& options, RewriteRule rule);
 
 // The name an identifier gets when Mesa reserves it and browsers accept it (`packed` ->
 // `toyhost_packed`); empty for every other word.

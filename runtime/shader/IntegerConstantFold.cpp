@@ -169,9 +169,24 @@ private:
     // in any other way too is not used (it may be shadowed).
     void collectConstants() {
         std::map<std::string_view, int> declarations;
-        for (std::size_t i = 1; i < t_.size(); ++i)
-            if (t_[i].kind == Kind::Identifier && t_[i - 1].kind == Kind::Identifier && !isKeyword(t_[i - 1].text))
-                ++declarations[t_[i].text];  // `TYPE NAME`: a variable, parameter or function
+        std::size_t scanned = 0;  // the statement read for comma-declared names ends here
+        for (std::size_t i = 1; i < t_.size(); ++i) {
+            if (t_[i].kind != Kind::Identifier || t_[i - 1].kind != Kind::Identifier || isKeyword(t_[i - 1].text)) continue;
+            ++declarations[t_[i].text];  // `TYPE NAME`: a variable, parameter or function
+            if (i < scanned) continue;
+            // The names declared after a comma in the same statement (`int a = 2, ZC = 2;`, also in
+            // a for-init) shadow a constant as well: the browser divides by the local's 2.
+            int depth = 0;
+            std::size_t j = i + 1;
+            for (; j + 1 < t_.size(); ++j) {
+                const std::string_view w = t_[j].text;
+                if (w == "(" || w == "[") ++depth;
+                else if ((w == ")" || w == "]") && --depth < 0) break;
+                else if (w == ";" || w == "{" || w == "}") break;
+                else if (w == "," && depth == 0 && t_[j + 1].kind == Kind::Identifier) ++declarations[t_[j + 1].text];
+            }
+            scanned = j;
+        }
         for (std::size_t i = 0; i + 4 < t_.size(); ++i) {
             if (t_[i].directive || t_[i].text != "const") continue;
             std::size_t j = i + 1;

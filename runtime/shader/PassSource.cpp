@@ -45,6 +45,7 @@ PassSource preparePassSource(const ManifestDesc& manifest, const PassDesc& pass,
     PassSource source;
     source.text = std::move(fragment.text);
     source.plainText = std::move(fragment.plainText);
+    source.parts = std::move(fragment.parts);
     if (definesFunctionMacro(pass.code) || (manifest.commonSource && definesFunctionMacro(manifest.commonCode))) {
         // A failure here only means there is no fallback: the driver's own messages stand.
         if (Result<std::string> expanded = preprocessLikeBrowsers(source.text)) source.browserText = std::move(*expanded);

@@ -11,6 +11,7 @@
 
 #include "manifest/ManifestDesc.h"
 #include "shader/MacroDefines.h"
+#include "shader/ShaderAssembly.h"
 
 namespace toyhost {
 
@@ -22,6 +23,9 @@ struct PassSource {
     // preprocessor is known to refuse paste a macro's arguments) or when cpp refused or is missing.
     std::optional<std::string> browserText;
     std::optional<std::string> browserPlainText;
+    // What `text` was rewritten from: when the driver refuses `text`, the GL thread makes it again
+    // with one rule of the rewrite off at a time (render/PassProgram.cpp), a text-only step.
+    RewriteParts parts;
 };
 
 // True when `code` defines a function-like macro (`#define NAME(`), the shape of every shader the

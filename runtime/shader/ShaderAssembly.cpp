@@ -1,5 +1,6 @@
 #include "shader/ShaderAssembly.h"
 
+#include "shader/BrowserPreprocess.h"
 #include "shader/GlslRewrite.h"
 #include "shader/GlslTokens.h"
 #include "shader/OpaqueDivisors.h"
@@ -219,6 +220,7 @@ AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
     }
     user += "#line 1\n";
     user += inputs.code;
+    user = neutraliseUnknownDirectives(user);
     // WebGL zero-initialises locals at every declaration and `out` parameters at every call;
     // the rewrite (of the user's text, Common and pass together) keeps every line where it was.
     // The text without it is kept for a driver that refuses the rewritten one (a declaration the
@@ -227,11 +229,15 @@ AssembledShader assembleFragmentShader(const ShaderInputs& inputs) {
                                opaqueDivisorDeclarations(user);
     GlslRewriteOptions options = promotion(inputs);
     if (inputs.pass == PassId::Image && !inputs.sound) options.fragCoord = kFragCoordCopy;
-    out.text = header + rewriteLikeWebGL(user, options);
-    options.zeroInit = options.rename = options.clampIndices = options.foldIntegerConstants = false;
-    options.preciseInverseTrig = options.opaqueDivisors = false;
-    out.plainText = header + rewriteLikeWebGL(user, options);
+    out.parts = {header, std::move(user), options};
+    out.text = rewrittenShader(out.parts, options);
+    for (RewriteRule rule : kRewriteRules) ruleSwitch(options, rule) = false;
+    out.plainText = rewrittenShader(out.parts, options);
     return out;
+}
+
+std::string rewrittenShader(const RewriteParts& parts, const GlslRewriteOptions& options) {
+    return parts.header + rewriteLikeWebGL(parts.user, options);
 }
 
 const char* fullscreenVertexShader() {

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "manifest/ManifestDesc.h"
+#include "shader/GlslRewrite.h"
 #include "shader/MacroDefines.h"
 
 namespace toyhost {
@@ -31,10 +32,22 @@ struct ShaderInputs {
 inline constexpr int kHeaderLineBase = 2000000;
 inline constexpr int kCommonLineBase = 1000000;
 
+// What the rewrite of a pass works from, kept so that the text can be made again with some of its
+// rules off when the driver refuses it (render/PassProgram.cpp).
+struct RewriteParts {
+    std::string header;           // the generated header, not rewritten
+    std::string user;             // Common and the pass, numbered (#line), before the rewrite
+    GlslRewriteOptions options;   // every rule on
+};
+
+// The header followed by the user's text rewritten with `options`.
+std::string rewrittenShader(const RewriteParts& parts, const GlslRewriteOptions& options);
+
 struct AssembledShader {
     std::string text;        // rewritten to WebGL's semantics (shader/GlslRewrite.h)
     std::string plainText;   // the same without the rewrite
     bool hasCommon = false;
+    RewriteParts parts;      // text is rewrittenShader(parts, parts.options)
 };
 
 AssembledShader assembleFragmentShader(const ShaderInputs& inputs);

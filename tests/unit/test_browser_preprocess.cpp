@@ -44,3 +44,14 @@ TEST(BrowserPreprocess, AcceptsWhatBrowsersAccept) {
     ASSERT_TRUE(out.ok()) << out.error().text();
     EXPECT_NE(out->find("- -.5"), std::string::npos) << *out;
 }
+
+// Issue 42: `#elseif` (a typo of `#elif`) in a skipped group is ignored by browsers (only conditional
+// directives are read there) and stopped Mesa's preprocessor; written as `#error`, it is ignored
+// in a skipped group and refuses the shader elsewhere, as in the browser. Lines stay where they were.
+TEST(BrowserPreprocess, UnknownDirectivesBecomeErrors) {
+    EXPECT_EQ(neutraliseUnknownDirectives("#if 0\n#elseif 1\n  # foo x\n#else\n#endif\n"),
+              "#if 0\n#error invalid directive elseif 1\n  # error invalid directive foo x\n#else\n#endif\n");
+    const std::string known = "#version 300 es\n#define A 1\n#undef A\n#ifdef A\n#elif 1\n#endif\n#pragma x\n#line 3\n#\n"
+                              "/*\n#notadirective\n*/ float x; // #nor\n";
+    EXPECT_EQ(neutraliseUnknownDirectives(known), known);
+}

@@ -166,7 +166,7 @@ TEST(DiagnosticCode, EveryNumberIsPinnedAndNeverChanges) {
         {"WatchdogCompile", 103}, {"WatchdogFrame", 104}, {"WatchdogInput", 105}, {"WatchdogOutput", 106},
         {"WatchChanged", 107}, {"WindowCreate", 108}, {"WindowHelp", 109}, {"WindowInit", 110}, {"WindowReload", 111},
         {"WindowScreenshot", 112}, {"ManifestLoneShader", 113},
-        {"WindowInspector", 114}, {"ChannelFilter", 115}, {"ShaderLoopCap", 116},
+        {"WindowInspector", 114}, {"ChannelFilter", 115}, {"ShaderLoopCap", 116}, {"ShaderRuleSkipped", 117},
     };
     std::set<int> numbers;
     std::size_t listed = 0;

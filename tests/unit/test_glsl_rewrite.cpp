@@ -78,7 +78,7 @@ TEST(GlslRewrite, GlobalsAreZeroInlineOrWhenTheEntryFunctionStarts) {
 TEST(GlslRewrite, LeavesAloneWhatIsNotALocalWithoutInitialiser) {
     for (const std::string code : {
              "const float k = 1.;\nuniform float u;\nin vec2 p;\nout vec4 o;\nfloat f(float x);\nlayout(location = 0) out vec4 c;\n",
-             "void f(){ const float k = 2.; for (int i; i < 3; i++) {} x = 1.; return; }",
+             "void f(){ const float k = 2.; for (int i = 0; i < 3; i++) {} for (float a[2]; ;) {} x = 1.; return; }",
              "void f(){ precision highp float; vec3(1.); a.b = c; y++; }",
              "void f(){ float x = 1.; if (x > 0.) { x = 2.; } else { x = c ? a : b; } }",
              "void f(){ Unknown u; }",   // a type it does not know
@@ -127,4 +127,47 @@ TEST(GlslRewrite, AsinAndAcosCallThePreciseVersions) {
               "#define LAT(p) toyhost_asin(p.y)\nfloat f(vec2 p){ return toyhost_acos(p.x) + LAT(p) + asinh(p.x); }");
     options.preciseInverseTrig = false;
     EXPECT_EQ(rewriteLikeWebGL("float f(float x){ return asin(x); }", options), "float f(float x){ return asin(x); }");
+}
+
+// Issue 42: the browser zeroes a for-init declaration at every execution of the loop (a
+// `for (float t; ...)` in a function called 3 times runs 6 times; with Mesa alone, 2) and a struct
+// defined in a function body (no function can be defined there: its constructor with zero members).
+TEST(GlslRewrite, ForInitsAndLocalStructsGetZero) {
+    EXPECT_EQ(rewriteLikeWebGL("void f(){ for (float t; t < 1.; t += .5) {} }"),
+              "void f(){ for (float t=float(0); t < 1.; t += .5) {} }");
+    EXPECT_EQ(rewriteLikeWebGL("void f(){ struct L { float a; vec2 b, c; }; L l; l.a += 1.; }"),
+              "void f(){ struct L { float a; vec2 b, c; }; L l=L(float(0),vec2(0),vec2(0)); l.a += 1.; }");
+    // An array member: no constructor is written, the driver's zero stands.
+    const std::string array = "void f(){ struct A { float a[2]; }; A x; }";
+    EXPECT_EQ(rewriteLikeWebGL(array), array);
+}
+
+// Issue 42: where GLSL requires a constant expression the precise asin/acos (user functions) cannot
+// be called: a float literal's is written as ANGLE folds it (acosf), any other is left to the driver.
+TEST(GlslRewrite, AsinAndAcosInConstantExpressionsStayConstant) {
+    GlslRewriteOptions options;
+    options.zeroInit = options.rename = options.clampIndices = options.foldIntegerConstants = false;
+    EXPECT_EQ(rewriteLikeWebGL("const float PI = acos(-1.0);", options), "const float PI = 3.14159274;");
+    EXPECT_EQ(rewriteLikeWebGL("#define H asin(1.)\nfloat x = asin(-0.5) + acos(1.0);", options),
+              "#define H 1.57079637\nfloat x = (-0.52359879) + 0.0;");
+    EXPECT_EQ(rewriteLikeWebGL("const float K = asin(sin(.5));\nfloat g = acos(cos(1.));\nfloat a[int(acos(cos(3.)))];\n"
+                               "void f(float x){ const float c = 2.0 * acos(cos(x0)), d = asin(x0); float y = asin(x);"
+                               " float b[int(asin(sin(2.)))]; b[int(asin(x))] = 1.; }",
+                               options),
+              "const float K = asin(sin(.5));\nfloat g = acos(cos(1.));\nfloat a[int(acos(cos(3.)))];\n"
+              "void f(float x){ const float c = 2.0 * acos(cos(x0)), d = asin(x0); float y = toyhost_asin(x);"
+              " float b[int(asin(sin(2.)))]; b[int(toyhost_asin(x))] = 1.; }");
+    // Out of [-1, 1], or an int (no implicit conversion in GLSL ES): left to the driver.
+    EXPECT_EQ(rewriteLikeWebGL("void f(){ float a = asin(2.0) + acos(1); }", options),
+              "void f(){ float a = toyhost_asin(2.0) + toyhost_acos(1); }");
+}
+
+// The names of the rules a driver's refusal can turn off, and the test hook that makes one fail.
+TEST(GlslRewrite, APlantedFailureIsWrittenOnlyWhenItsRuleIsOn) {
+    GlslRewriteOptions options;
+    options.plantedFailure = RewriteRule::ClampIndices;
+    EXPECT_EQ(rewriteLikeWebGL("float x;\n", options), "float x=float(0);\nfloat toyhost_planted = toyhost_planted_failure_of_clampIndices;");
+    ruleSwitch(options, RewriteRule::ClampIndices) = false;
+    EXPECT_EQ(rewriteLikeWebGL("float x;\n", options), "float x=float(0);\n");
+    for (RewriteRule rule : kRewriteRules) EXPECT_STRNE(rewriteRuleName(rule), "");
 }

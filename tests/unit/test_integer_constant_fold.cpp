@@ -107,3 +107,14 @@ TEST(IntegerConstantFold, AnyTextStaysBoundedInStackAndTime) {
     for (int i = 0; i < 20000; ++i) chain = "(" + chain + ") / (1 + 2)";
     EXPECT_EQ(foldOnly(chain + ";"), chain + ";");
 }
+
+// Issue 42: a local declared after a comma, in a statement or a for-init, shadows the constant:
+// the browser divides by the local (7 / ZC with ZC = 2: 3), so nothing is folded.
+TEST(IntegerConstantFold, ALocalAfterACommaShadowsTheConstant) {
+    const std::string code = "const int ZC = 0;\nconst int MN = 0;\nvoid f(){ int a = 2, ZC = 2; int q = 7 / ZC;"
+                             " for (int b = 0, MN = 3; b < 1; b++) q = 7 % MN; }";
+    EXPECT_EQ(foldOnly(code), code);
+    // Commas of a call or a constructor declare nothing: the constant is still folded.
+    EXPECT_EQ(foldOnly("const int Z = 0;\nvoid f(){ ivec3 v = ivec3(1, Z, 2); int q = 7 / Z; }"),
+              "const int Z = 0;\nvoid f(){ ivec3 v = ivec3(1, Z, 2); int q = 2147483647; }");
+}
