@@ -7,6 +7,8 @@
 
 #include <atomic>
 
+#include <toyhost/Shards.h>
+
 #include "core/Result.h"
 
 namespace toyhost {
@@ -43,10 +45,9 @@ struct FrameStreamSettings {
 
 class FrameStream {
 public:
-    // The capture-every rule: frames n with n % every == 0, and the last of `frames` (0: no end).
-    static bool captured(int frame, int frames, int every) {
-        return frame % every == 0 || (frames > 0 && frame == frames - 1);
-    }
+    // The capture-every rule (toyhost/Shards.h): frames n with n % every == 0, and the last of
+    // `frames` (0: no end).
+    static bool captured(int frame, int frames, int every) { return capturedFrame(frame, frames, every); }
 
     explicit FrameStream(const FrameStreamSettings& settings) : settings_(settings) {}
 

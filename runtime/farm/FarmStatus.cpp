@@ -40,8 +40,7 @@ std::filesystem::path FrameLayout::frameFile(int frame) const {
 }
 
 bool FrameLayout::captured(int frame, FrameSpan span) const {
-    if (frame % captureEvery == 0) return true;
-    return frame == (lastOfEachShard ? span.end : frames) - 1;
+    return capturedFrame(frame, lastOfEachShard ? span.end : frames, captureEvery);
 }
 
 namespace {
