@@ -51,7 +51,8 @@ done
 facade_headers=(toyhost/Session.h toyhost/Compare.h toyhost/Shadertoy.h)
 # Known includes of a facade header in the engine, "FILE HEADER", each with its reason. An entry
 # whose include is gone fails the check, so the list only shrinks.
-facade_exceptions=()
+facade_exceptions=(
+)
 declare -A facade_excepted
 for entry in "${facade_exceptions[@]}"; do facade_excepted[$entry]=0; done
 # facade_includes WHO FILE...: every include of a facade header in the files fails, unless excepted.
