@@ -24,7 +24,8 @@
 //   `initial` when the initial value is itself the behaviour (no media, no script, iDate = now).
 // Each row has a check in toyhost's session layer (runtime/session/SettingChecks.h,
 // settingCheck_<member>), which the build requires. Adding a setting is one line here plus its
-// check.
+// check; `python3 -m toyhost._signature --write .` then rewrites Python's Session signature and its
+// docs line (python/tests/test_defaults.py fails until it is run).
 #define TOYHOST_SESSION_SETTINGS(X)                                                                   \
     X(std::optional<int>, width, "size", {}, width)                                                   \
     X(std::optional<int>, height, "size", {}, height)                                                 \

@@ -296,12 +296,13 @@ SessionSettings settingsFrom(const py::dict& given) {
 }  // namespace
 
 void bindSession(py::module_& module) {
-    // The settings' list (toyhost/Settings.h) as (member, key, kind, fallback) rows: Python's
-    // Session keywords, their checks and toyhost.defaults()' link are made from it.
+    // The settings' list (toyhost/Settings.h) as (member, key, kind, fallback, initial) rows, the
+    // last two as the list spells them: Python's Session keywords, their checks, Session's
+    // signature (python/toyhost/_settings.py writes it) and toyhost.defaults()' link are made from it.
     module.def("setting_fields", [] {
         py::list rows;
 #define TOYHOST_SETTING_ROW(Type, member, key, initial, fallback) \
-    rows.append(py::make_tuple(#member, key, SettingKind<Type>::name, #fallback));
+    rows.append(py::make_tuple(#member, key, SettingKind<Type>::name, #fallback, #initial));
         TOYHOST_SESSION_SETTINGS(TOYHOST_SETTING_ROW)
 #undef TOYHOST_SETTING_ROW
         return rows;

@@ -3,6 +3,8 @@ toyhost/Defaults.h), the same numbers a Session takes for what it is not given a
 in --help; Session's keywords, from the settings' one list (toyhost/Settings.h)."""
 
 import inspect
+import os
+import pathlib
 import re
 
 import pytest
@@ -33,13 +35,40 @@ def test_every_setting_of_the_list_is_a_session_keyword_with_a_fallback():
     keyword, or a keyword that is no row, fails here; so does a fallback that is neither a default
     nor the field's initial value."""
     fields = toyhost._toyhost.setting_fields()
-    keys = {key for _member, key, _kind, _fallback in fields}
+    keys = {key for _member, key, _kind, _fallback, _initial in fields}
     parameters = set(inspect.signature(toyhost.Session.__init__).parameters) - {"self", "shadertoy"}
     assert parameters == keys
     assert {"size", "fps", "supersample", "motion_blur", "shutter", "dither", "defines"} <= keys
-    for member, key, kind, fallback in fields:
-        assert kind in toyhost._settings._CONVERT, (member, kind)
+    for member, key, kind, fallback, _initial in fields:
+        assert kind in toyhost._settings.KINDS, (member, kind)
         assert fallback == "initial" or fallback[0].islower(), (member, fallback)
+
+
+def test_sessions_signature_and_its_docs_are_what_the_list_writes():
+    """Session.__init__'s keywords (types and defaults) and docs/python.md's Session line are
+    written from the settings' list; a row added without rewriting them fails here."""
+    from toyhost import _signature
+    source = os.environ.get("TOYHOST_SOURCE_DIR", str(pathlib.Path(__file__).resolve().parents[2]))
+    assert _signature.stale(source) == [], \
+        "run: PYTHONPATH=BUILD/python python3 -m toyhost._signature --write " + source
+    parameters = list(inspect.signature(toyhost.Session.__init__).parameters.values())[2:]
+    assert [(p.name, p.default) for p in parameters] == \
+        [(key, eval(default)) for key, _annotation, default in _signature._parameters()]
+
+
+def test_a_stale_signature_is_found(tmp_path):
+    """The check itself: a keyword's default edited by hand in a copy is caught."""
+    from toyhost import _signature
+    source = os.environ.get("TOYHOST_SOURCE_DIR", str(pathlib.Path(__file__).resolve().parents[2]))
+    for name in ("python/toyhost/__init__.py", "docs/python.md"):
+        (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / name).write_text((pathlib.Path(source) / name).read_text())
+    assert _signature.stale(str(tmp_path)) == []
+    init = tmp_path / "python/toyhost/__init__.py"
+    init.write_text(init.read_text().replace("dither: bool = False", "dither: bool = True"))
+    assert _signature.stale(str(tmp_path)) == ["python/toyhost/__init__.py"]
+    _signature._write(str(tmp_path))
+    assert _signature.stale(str(tmp_path)) == []
 
 
 def test_a_setting_given_reaches_the_session_and_a_wrong_keyword_is_refused(tmp_path):

@@ -118,18 +118,18 @@ class Session:
     Close it (``close()`` or ``with``) to free its GL context at once rather than at garbage
     collection."""
 
-    def __init__(self, shadertoy: Union[Shadertoy, PathLike, dict, list], *, size: Optional[Tuple[int, int]] = None,
-                 fps: Optional[float] = None, start_time: float = 0.0, date: Optional[str] = None,
-                 media_folders: Union[PathLike, Sequence[PathLike]] = (),
+    def __init__(self, shadertoy: Union[Shadertoy, PathLike, dict, list], *,
+                 size: Optional[Tuple[int, int]] = None, fps: Optional[float] = None, start_time: float = 0.0,
+                 date: Optional[str] = None, media_folders: Union[PathLike, Sequence[PathLike]] = (),
                  media_files: Optional[Mapping[str, PathLike]] = None, float_image: bool = False,
                  frame_timeout: Optional[float] = None, compile_timeout: Optional[float] = None,
                  mouse_script: Optional[PathLike] = None, key_script: Optional[PathLike] = None,
-                 supersample: Optional[int] = None, motion_blur: Optional[int] = None, shutter: Optional[float] = None,
-                 dither: bool = False, defines: Defines = ()) -> None:
+                 supersample: Optional[int] = None, motion_blur: Optional[int] = None,
+                 shutter: Optional[float] = None, dither: bool = False, defines: Defines = ()) -> None:
         if not isinstance(shadertoy, Shadertoy):
             shadertoy = load(shadertoy)
-        # The keywords are spelled here for type checkers and help(); what each becomes and how it is
-        # checked is the settings' one list (_settings.py), and a test keeps the two equal.
+        # The keywords above are written from the settings' one list (_signature.py); what each
+        # becomes and how it is checked is the same list (_settings.py).
         given = _settings.native({key: value for key, value in locals().items() if key in _settings.KEYWORDS})
         self._fps = given["fps"] if "fps" in given else _toyhost.defaults()["fps"]
         self._native = _toyhost.NativeSession(shadertoy, given)

@@ -1,25 +1,26 @@
 """Session's keyword arguments as the settings' one list (C++ toyhost/Settings.h, read through the
 native module's setting_fields()) says them: each keyword, the native members it sets and how its
-value is checked. Session's signature spells the keywords for type checkers;
-python/tests/test_defaults.py fails when it and the list differ."""
+value is checked. Session's signature is written from the same list (_signature.py)."""
 
-from typing import Any, Dict, List, Mapping, Tuple
+from typing import Any, Callable, Dict, List, Mapping, Optional, Tuple
 
 from . import _args as args
 from . import _toyhost
 
-# How a value is checked and converted, by the kind of its C++ field (a "?" kind takes None for
-# "not given").
-_CONVERT = {
-    "flag": args.flag,
-    "real": args.real,
-    "int?": lambda name, value: args.optional(args.integer, name, value),
-    "real?": lambda name, value: args.optional(args.real, name, value),
-    "text?": lambda name, value: args.optional(args.text, name, value),
-    "path?": lambda name, value: args.optional(args.path, name, value),
-    "paths": args.paths,
-    "named_paths": lambda name, value: args.named_paths(name, value if value is not None else {}),
-    "macros": args.defines,
+# Each kind of C++ field: how a value is checked and converted, its annotation in Session's
+# signature and its default there when the list's initial value is "{}" (a "?" kind takes None for
+# "not given"; "flag" and "real" show the list's initial value).
+KINDS: Dict[str, Tuple[Callable[[str, Any], Any], str, Optional[str]]] = {
+    "flag": (args.flag, "bool", None),
+    "real": (args.real, "float", None),
+    "int?": (lambda name, value: args.optional(args.integer, name, value), "Optional[int]", "None"),
+    "real?": (lambda name, value: args.optional(args.real, name, value), "Optional[float]", "None"),
+    "text?": (lambda name, value: args.optional(args.text, name, value), "Optional[str]", "None"),
+    "path?": (lambda name, value: args.optional(args.path, name, value), "Optional[PathLike]", "None"),
+    "paths": (args.paths, "Union[PathLike, Sequence[PathLike]]", "()"),
+    "named_paths": (lambda name, value: args.named_paths(name, value if value is not None else {}),
+                    "Optional[Mapping[str, PathLike]]", "None"),
+    "macros": (args.defines, "Defines", "()"),
 }
 
 
@@ -27,7 +28,7 @@ def _keywords() -> Dict[str, List[Tuple[str, str]]]:
     """key -> [(member, kind)], in the list's order; two members under one key are a pair given
     together (size=(width, height))."""
     keys: Dict[str, List[Tuple[str, str]]] = {}
-    for member, key, kind, _fallback in _toyhost.setting_fields():
+    for member, key, kind, _fallback, _initial in _toyhost.setting_fields():
         keys.setdefault(key, []).append((member, kind))
     return keys
 
@@ -50,8 +51,9 @@ def native(given: Mapping[str, Any], owner: str = "Session") -> Dict[str, Any]:
                     out[member] = item
             continue
         member, kind = members[0]
-        converted = _CONVERT[kind](key, value)
+        converted = KINDS[kind][0](key, value)
         if converted is not None:
             out[member] = converted
     return out
+
 
