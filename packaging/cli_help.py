@@ -60,8 +60,20 @@ def parse(text, name=""):
 
 
 def read_all(toyhost):
+    """The top level, and every command below it in the order `--help` lists them, a command's
+    own subcommands right after it, named by their path ("farm", "farm plan", ...)."""
     def help_of(args):
         return subprocess.run([toyhost, *args, "--help"], check=True, capture_output=True, text=True).stdout
 
+    commands = []
+
+    def visit(path):
+        command = parse(help_of(path), " ".join(path))
+        commands.append(command)
+        for sub, _ in command.subcommands:
+            visit(path + [sub])
+
     top = parse(help_of([]))
-    return top, [parse(help_of([sub]), sub) for sub, _ in top.subcommands]
+    for sub, _ in top.subcommands:
+        visit([sub])
+    return top, commands

@@ -23,6 +23,8 @@ def test_the_same_shadertoy_is_equal_on_every_frame():
     assert all(math.isinf(f.psnr) and f.differing_pixels == 0 and f.first_x is None for f in report.frames)
     assert math.isinf(report.min_psnr) and report.max_diff == 0
     assert "equal" in str(report) and "inf" in str(report)
+    # A notebook shows the repr: the one-line summary, not the dataclass of every frame (issue 45).
+    assert repr(report) == f"<toyhost.CompareReport {report}>"
 
 
 def test_a_divergence_is_found_at_its_frame_and_place():

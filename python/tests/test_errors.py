@@ -54,3 +54,23 @@ def test_a_failing_session_can_be_retried_after_the_fix(tmp_path):
     with toyhost.Session(folder, size=(8, 4)) as session:
         session.step()
         assert (session.frame() == 255).all()
+
+
+def test_the_classes_are_named_as_the_package_exports_them():
+    """Tracebacks say toyhost.UsageError, not toyhost._errors.UsageError (issue 45); an error
+    survives pickling (a Dask worker's)."""
+    import pickle
+    import traceback
+    for name in ("Error", "UsageError", "InputError", "ManifestError", "CompileError", "OutputError", "GlError",
+                 "StoppedError", "WatchdogError", "InternalError"):
+        assert getattr(toyhost, name).__module__ == "toyhost", name
+    try:
+        toyhost.Session(toyhost.from_code(image=GOOD), size=(0, 2))
+    except toyhost.UsageError as e:
+        text = "".join(traceback.format_exception_only(type(e), e))
+        assert text.startswith("toyhost.UsageError: "), text
+        back = pickle.loads(pickle.dumps(e))  # as a Dask worker's error reaches the client
+        assert type(back) is toyhost.UsageError and str(back) == str(e)
+        assert (back.code, back.field, back.diagnostics) == (e.code, e.field, [])
+    else:
+        raise AssertionError("size=(0, 2) was accepted")

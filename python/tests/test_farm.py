@@ -91,3 +91,16 @@ def test_shard_spans_match_the_cli_and_refuse_bad_counts(monkeypatch):
         toyhost.farm.shard_spans(2**31, 2)
     with pytest.raises(toyhost.UsageError):
         toyhost.farm.render(12345, 4, client=None).__next__()
+
+
+def test_no_client_takes_the_current_one_or_says_what_is_missing(client, monkeypatch):
+    """client=None: Dask's current client (a `with Client(...)`), never an AttributeError (issue 45)."""
+    got = list(toyhost.farm.render(POOL, 2, client=None, shards=2, size=(16, 8), date=DATE))
+    assert [iframe for iframe, _array in got] == [0, 1]
+
+    def no_client():
+        raise ValueError("No clients found")  # what dask says outside any `with Client(...)`
+    import distributed
+    monkeypatch.setattr(distributed, "get_client", no_client)
+    with pytest.raises(toyhost.UsageError, match="no current Dask client"):
+        list(toyhost.farm.render(POOL, 2, client=None, shards=2, size=(16, 8), date=DATE))

@@ -157,3 +157,6 @@ def test_from_code_names_what_is_wrong():
         toyhost.Session(toyhost.from_code(image="void mainImage(out vec4 c, in vec2 p) { c = nope; }\n"),
                         size=(4, 4))
     assert "nope" in str(compile_error.value)
+    # The text is named as itself, not glued to the current folder it is not in (issue 45).
+    assert compile_error.value.file == "code [Image]", compile_error.value.file
+    assert str(compile_error.value).startswith("code [Image]:1:"), str(compile_error.value)

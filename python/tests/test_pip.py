@@ -8,6 +8,7 @@ import os
 import pathlib
 import subprocess
 import sys
+import sysconfig
 import zipfile
 
 import pytest
@@ -57,3 +58,40 @@ def test_pip_wheel_holds_the_module_and_its_types(tmp_path):
         assert expected in names, names
     assert any(n.startswith("toyhost/_toyhost.cpython-") and n.endswith(".so") for n in names), names
     assert any(n.endswith(".dist-info/RECORD") for n in names)
+    # Only this interpreter's module, and the numpy the bindings support (Debian's pybind11 2.10
+    # knows numpy 1's C API only).
+    modules = [n for n in names if n.startswith("toyhost/_toyhost") and n.endswith(".so")]
+    assert modules == ["toyhost/_toyhost" + sysconfig.get_config_var("EXT_SUFFIX")], modules
+    [metadata] = [n for n in names if n.endswith(".dist-info/METADATA")]
+    requires = [line for line in zipfile.ZipFile(wheel).read(metadata).decode().splitlines()
+                if line.startswith("Requires-Dist:")]
+    assert requires in (["Requires-Dist: numpy<2"], ["Requires-Dist: numpy"]), requires
+    assert requires == ["Requires-Dist: " + backend().numpy_requirement(pathlib.Path(build_dir()))], requires
+
+
+def backend():
+    sys.path.insert(0, str(SOURCE_DIR / "packaging" / "pep517"))
+    try:
+        import toyhost_build
+    finally:
+        sys.path.pop(0)
+    return toyhost_build
+
+
+def test_one_build_folder_per_interpreter_and_no_other_interpreters_folder(tmp_path):
+    """pip per interpreter (issue 45): the default folder names the interpreter and ABI, so a
+    second Python never reuses the first one's module; a folder given with -C build-dir that was
+    configured for another interpreter is refused before anything is built."""
+    b = backend()
+    default = b.build_folder({})
+    suffix = sysconfig.get_config_var("EXT_SUFFIX")
+    assert default.parent == (SOURCE_DIR / "build-pip").resolve()
+    assert default.name == suffix.strip(".").removesuffix(".so"), (default.name, suffix)
+    assert b.build_folder({"build-dir": str(tmp_path)}) == tmp_path.resolve()
+    other = tmp_path / "other"
+    other.mkdir()
+    (other / "CMakeCache.txt").write_text("_Python3_EXECUTABLE:INTERNAL=/opt/python3.99/bin/python3.99\n")
+    assert b.configured_python(other) == "/opt/python3.99/bin/python3.99"
+    with pytest.raises(RuntimeError, match="configured for /opt/python3.99/bin/python3.99, not for this interpreter"):
+        b._build({"build-dir": str(other)})
+    assert b.configured_python(tmp_path / "fresh") is None

@@ -71,3 +71,13 @@ def test_mypy_refuses_a_script_misusing_it(tmp_path):
     assert 'Incompatible types in assignment (expression has type "int", variable has type "str")' in out, out
     assert 'Argument 1 to "render" of "Session" has incompatible type "str"' in out, out
     assert "Too many positional arguments" in out, out
+
+
+def test_the_package_itself_is_mypy_clean(tmp_path):
+    """`mypy -p toyhost` on the package as built (issue 45: it had two errors of its own)."""
+    module_dir = pathlib.Path(toyhost.__file__).resolve().parents[1]
+    env = {**os.environ, "MYPYPATH": str(module_dir), "PYTHONPATH": str(module_dir)}
+    done = subprocess.run([sys.executable, "-m", "mypy", "--no-incremental", "--cache-dir", str(tmp_path / "cache"),
+                           "--python-executable", sys.executable, "-p", "toyhost"],
+                          capture_output=True, text=True, env=env, cwd=tmp_path, check=False)
+    assert done.returncode == 0, done.stdout + done.stderr

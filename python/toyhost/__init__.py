@@ -15,7 +15,7 @@ toyhost.Error subclasses carrying toyhost's diagnostics (file, pass, line, code.
 
 import os
 import pathlib
-from typing import Any, Iterable, Iterator, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Iterable, Iterator, Mapping, Optional, Sequence, Set, Tuple, Union
 
 # Imported here, with the module, rather than by the first frame: importing numpy takes 70-90 ms,
 # which would otherwise land on whatever first makes an array (a frame, in a timed loop).
@@ -136,7 +136,7 @@ class Session:
         self.shadertoy = shadertoy
         self._drawn = False  # frame() has nothing to show before the first step (restart keeps the picture)
         self._mouse_held = False
-        self._keys_held = set()
+        self._keys_held: Set[int] = set()
         for (pass_name, channel), array in getattr(shadertoy, "_arrays", {}).items():
             self.set_channel(pass_name, channel, array)
 
@@ -426,5 +426,5 @@ def _shadertoy_png(shadertoy):
         return _notebook.png_bytes(session.frame())
 
 
-Shadertoy._repr_png_ = _shadertoy_png
+setattr(Shadertoy, "_repr_png_", _shadertoy_png)  # the native class gains the notebook preview
 

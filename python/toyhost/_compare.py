@@ -50,6 +50,10 @@ class CompareReport:
     def equal(self) -> bool:
         return self.first_differing_frame is None
 
+    def __repr__(self):
+        # A notebook shows an object's repr: the summary line, not every frame's dataclass.
+        return f"<toyhost.CompareReport {self}>"
+
     def __str__(self):
         psnr = "inf" if math.isinf(self.min_psnr) else f"{self.min_psnr:.2f}"
         verdict = "equal" if self.equal else f"first differs at frame {self.first_differing_frame}"

@@ -25,6 +25,11 @@ class Error(Exception):
         self.line = first.line if first else 0
         self.column = first.column if first else 0
 
+    def __reduce__(self):
+        # The diagnostics are native objects: a pickled error (one a Dask worker raises) keeps its
+        # text and the first diagnostic's attributes, with an empty `diagnostics`.
+        return _restore, (type(self), str(self), {k: v for k, v in vars(self).items() if k != "diagnostics"})
+
 
 class UsageError(Error, ValueError):
     """An argument toyhost refuses (a size, a date, a pass to read that does not exist)."""
@@ -65,6 +70,12 @@ class InternalError(Error):
     """A bug in toyhost."""
 
 
+def _restore(kind, text, attributes):
+    error = kind(text)
+    vars(error).update(attributes)
+    return error
+
+
 _BY_CATEGORY = {
     "usage": UsageError,
     "input": InputError,
@@ -85,3 +96,10 @@ def from_diagnostics(category, text, diagnostics):
     if kind is InputError and diagnostics and diagnostics[0].code.startswith(_MANIFEST_PREFIXES):
         kind = ManifestError
     return kind(text.rstrip("\n"), diagnostics)
+
+
+# Tracebacks and reprs name the classes as the package exports them (toyhost.UsageError, not
+# toyhost._errors.UsageError); pickling (Dask workers) finds them there too.
+for _class in [c for c in list(globals().values()) if isinstance(c, type) and issubclass(c, Error)]:
+    _class.__module__ = "toyhost"
+del _class

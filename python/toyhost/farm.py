@@ -20,6 +20,8 @@ clocks differ. dask.distributed is imported only by the functions that take a cl
 
 import os
 
+from . import _args as args
+
 __all__ = ["shard_spans", "render", "map"]
 
 
@@ -58,12 +60,26 @@ def _render_shard_task(source, first, end, last, every, pass_, dtype, options):
         return list(session.render(stop - start, every=every, pass_=pass_, dtype=dtype))
 
 
+def _client(client):
+    """`client`, or Dask's current client when it is None (the one a `with Client(...)` made);
+    UsageError when there is none."""
+    if client is not None:
+        return client
+    try:
+        from distributed import get_client
+        return get_client()
+    except (ImportError, ValueError) as e:
+        raise args.usage("client", "is None and there is no current Dask client: give a "
+                                   "dask.distributed Client (e.g. Client(LocalCluster()))") from e
+
+
 def render(shadertoy, frames, client, shards=None, every=1, pass_="Image", dtype="uint8", **session_options):
     """Renders `frames` frames of `shadertoy` in `shards` Dask tasks (default: one per worker
     thread of `client`) and yields ``(iframe, array)`` in frame order, as Session.render does for
     one run: frame 0, every every-th and the last. A shard's frames come as soon as it and the
     shards before it are done; a task that fails raises its exception here."""
     source = _source(shadertoy)
+    client = _client(client)
     if shards is None:
         shards = max(1, min(frames, sum(client.nthreads().values())))
     spans = shard_spans(frames, shards)
@@ -92,6 +108,7 @@ def map(shadertoys, frames, client, every=1, pass_="Image", dtype="uint8", reduc
     score, a verdict from toyhost.compare_images: only that comes back). A data set of frames, or
     an evaluation of generated shaders."""
     sources = [_source(s) for s in shadertoys]
+    client = _client(client)
     futures = [client.submit(_map_task, source, frames, every, pass_, dtype, reduce, dict(session_options), pure=False)
                for source in sources]
     try:

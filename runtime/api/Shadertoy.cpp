@@ -14,8 +14,10 @@ Result<Shadertoy> Shadertoy::load(const std::filesystem::path& path) {
 }
 
 Result<Shadertoy> Shadertoy::fromExportJson(std::string_view json, std::string name, const std::filesystem::path& folder) {
+    // Text without a folder is named by `name` alone in messages ("code [Image]:1:44"), not glued
+    // to the current folder it is not in.
     const std::filesystem::path where = folder.empty() ? std::filesystem::current_path() / name : folder / name;
-    Result<ManifestDesc> desc = parseShadertoyExport(json, where);
+    Result<ManifestDesc> desc = parseShadertoyExport(json, where, folder.empty() ? name : std::string());
     if (!desc) return desc.error();
     return ShadertoyAccess::make(std::move(*desc));
 }

@@ -114,7 +114,7 @@ bool isCubeBufferInput(const json& input, const std::string& src) {
 
 class ExportReader {
 public:
-    explicit ExportReader(const fs::path& path) : path_(path), label_(path.string()) {}
+    ExportReader(const fs::path& path, std::string label) : path_(path), label_(std::move(label)) {}
 
     Result<ManifestDesc> read(const json& shader) {
         desc_.manifestPath = path_;
@@ -339,9 +339,10 @@ bool isShadertoyExport(const json& document) {
     return hasExportKey(document);
 }
 
-Result<ManifestDesc> parseShadertoyExport(std::string_view jsonText, const fs::path& exportPath) {
+Result<ManifestDesc> parseShadertoyExport(std::string_view jsonText, const fs::path& exportPath, std::string label) {
     const fs::path path = fs::absolute(exportPath).lexically_normal();
-    Result<json> parsed = parseJsonStrictly(jsonText, path.string(), Code::ExportJson);
+    if (label.empty()) label = path.string();
+    Result<json> parsed = parseJsonStrictly(jsonText, label, Code::ExportJson);
     if (!parsed) return parsed.error();
     const json document = std::move(*parsed);
     const json* shader = shaderObject(document);
@@ -350,9 +351,9 @@ Result<ManifestDesc> parseShadertoyExport(std::string_view jsonText, const fs::p
         const char* what = several                       ? ""
                            : isShadertoyExport(document) ? "a broken Shadertoy export: "
                                                          : "not a Shadertoy export: ";
-        return fileError(path.string(), what + shapeProblem(document), Code::ExportShape);
+        return fileError(label, what + shapeProblem(document), Code::ExportShape);
     }
-    return ExportReader(path).read(*shader);
+    return ExportReader(path, std::move(label)).read(*shader);
 }
 
 }  // namespace toyhost

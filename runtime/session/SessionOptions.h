@@ -57,6 +57,9 @@ struct SessionOptions {
     // Window with a fixed step (fps): draw frames as fast as the display allows instead of fps
     // frames per second of wall time (timing/FramePacer.h).
     bool unpaced = false;
+    // Headless: draw fps frames per second of wall time (a live stream's rate) instead of as fast as
+    // the machine can; the frames are the same.
+    bool paced = false;
     std::optional<int> frames;             // default defaults::kFrames (headless), no end (window)
     std::optional<std::string> outPattern;
     std::optional<int> captureEvery;       // default defaults::kCaptureEvery

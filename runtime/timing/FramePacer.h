@@ -1,10 +1,18 @@
-// FramePacer: when a window with a fixed step (--fps F) may draw its next frame: F frames per
-// second of wall time, so the window previews the recording's timing (iTime advances 1/F per frame
-// and now also 1/F per second). Pure arithmetic on the monotonic times passed in; no GL, no
-// sleeping (the window driver waits). Tested with a made-up clock in tests/unit/test_frame_pacer.cpp.
+// FramePacer: when a run with a fixed step (--fps F) may draw its next frame: F frames per second
+// of wall time, so a window previews the recording's timing (iTime advances 1/F per frame and now
+// also 1/F per second), and a headless run with --paced feeds a live consumer at its rate. Pure
+// arithmetic on the monotonic times passed in; no GL, no sleeping (the drivers wait). Tested with a
+// made-up clock in tests/unit/test_frame_pacer.cpp.
 #pragma once
 
+#include <chrono>
+
 namespace toyhost {
+
+// The monotonic clock the drivers pass to a FramePacer, in seconds.
+inline double monotonicNow() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 class FramePacer {
 public:

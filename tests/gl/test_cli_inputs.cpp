@@ -3,7 +3,9 @@
 // rows of key 'A').
 #include "GlTestSupport.h"
 
+#include <chrono>
 #include <fstream>
+#include <iterator>
 
 #include "image/ImageWriters.h"
 
@@ -15,6 +17,11 @@ namespace fs = std::filesystem;
 std::array<float, 4> pixel(const ImageF32& image, int x) {
     const size_t i = static_cast<size_t>(x) * 4;  // bottom row first: row 0 is y = 0
     return {image.rgba[i], image.rgba[i + 1], image.rgba[i + 2], image.rgba[i + 3]};
+}
+
+std::string bytesOf(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 class CliInputs : public ::testing::Test {
@@ -87,6 +94,33 @@ TEST_F(CliInputs, FixedTimeStepGivesITimeAndIFrame) {
     EXPECT_EQ(d[1], 1.0f);
     EXPECT_EQ(d[2], 29.0f);
     EXPECT_NEAR(d[3], 86399.0f + 2.0f / 30.0f, 0.01f);
+}
+
+// --paced: a headless run draws --fps frames per second of wall time (a live stream's rate) and the
+// same frames as an unpaced run. Only a lower bound on the time: a loaded machine is slower, never
+// faster. A stop is not held up by the wait for the next frame (20 s away here).
+TEST_F(CliInputs, PacedHeadlessRunKeepsTheRateAndTheFrames) {
+    const fs::path dir = freshOutputDir("cli-inputs/paced");
+    const auto from = std::chrono::steady_clock::now();
+    auto paced = runToyhost(probe() + "--frames 6 --fps 10 --paced --out '" + (dir / "p_%d.png").string() + "'");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count();
+    ASSERT_EQ(paced.exitCode, 0) << paced.output;
+    EXPECT_GE(seconds, 5 / 10.0) << "6 frames at --fps 10 --paced took " << seconds << " s";
+    auto unpaced = runToyhost(probe() + "--frames 6 --fps 10 --out '" + (dir / "u_%d.png").string() + "'");
+    ASSERT_EQ(unpaced.exitCode, 0) << unpaced.output;
+    for (int n = 0; n < 6; ++n)
+        EXPECT_EQ(bytesOf(dir / ("p_" + std::to_string(n) + ".png")), bytesOf(dir / ("u_" + std::to_string(n) + ".png")))
+            << "frame " << n;
+
+    const auto stopFrom = std::chrono::steady_clock::now();
+    auto stopped = runCommand("timeout", "-s TERM 2 '" + toyhostBinary().string() + "' " + probe() + "--frames 5 --fps 0.05 --paced");
+    const double stopSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stopFrom).count();
+    EXPECT_EQ(stopped.exitCode, 124) << stopped.output;  // timeout's code: the signal was sent
+    EXPECT_LT(stopSeconds, 15.0) << "SIGTERM waited for the next paced frame";
+
+    auto window = runToyhost(probe() + "--window --paced --fps 10");
+    EXPECT_EQ(window.exitCode, 2) << window.output;
+    EXPECT_NE(window.output.find("--paced is for headless runs"), std::string::npos) << window.output;
 }
 
 }  // namespace

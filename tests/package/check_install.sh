@@ -31,13 +31,18 @@ fi
 "$stage/bin/toyhost" --version | grep -q "$(sed -n 's/.*VERSION_STRING "\(.*\)"/\1/p' "$stage/include/toyhost/Version.h")" \
   || { echo "the installed toyhost --version differs from Version.h"; status=1; }
 
-# The man page: every subcommand has its section, every option of `toyhost run` is there.
+# The man page: every subcommand has its section (farm's plan, status and join too), every option of `toyhost run` is there.
 # Installed compressed (Debian policy); read it uncompressed.
 man="$stage/toyhost.1"
 gzip -dc "$stage/share/man/man1/toyhost.1.gz" >"$man" || { echo "toyhost.1.gz is not gzip"; status=1; }
-for command in $("$stage/bin/toyhost" --help | sed -n '/^Subcommands:/,/^$/p' | awk 'NR > 1 && NF {print $1}'); do
+subcommands_of() { "$stage/bin/toyhost" "$@" --help | sed -n '/^Subcommands:/,/^$/p' | awk 'NR > 1 && NF {print $1}'; }
+for command in $(subcommands_of); do
   grep -q "^\.SS toyhost $command\$" "$man" || { echo "toyhost.1 has no section for $command"; status=1; }
+  for sub in $(subcommands_of "$command"); do  # farm plan, status, join
+    grep -q "^\.SS toyhost $command $sub\$" "$man" || { echo "toyhost.1 has no section for $command $sub"; status=1; }
+  done
 done
+grep -q "^\.SS toyhost farm plan\$" "$man" || { echo "toyhost.1 has no section for farm plan"; status=1; }
 for option in $("$stage/bin/toyhost" run --help | grep -oE '^  -[-a-z,]+' | tr ',' ' '); do
   grep -qF -- "$(sed 's/-/\\-/g' <<<"$option")" "$man" || { echo "toyhost.1 does not document run $option"; status=1; }
 done

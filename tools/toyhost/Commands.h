@@ -27,7 +27,7 @@ private:
     SamplingFlags sampling_;
     std::string target_, capturePass_, codec_, frameRange_, shard_, exrCompression_, videoPreset_;
     std::optional<int> frames_, captureEvery_, pngLevel_, videoQuality_, captureMemoryMiB_, encoderThreads_;
-    bool headless_ = false, window_ = false, watch_ = false, quiet_ = false, unpaced_ = false;
+    bool headless_ = false, window_ = false, watch_ = false, quiet_ = false, unpaced_ = false, paced_ = false;
 };
 
 // "WxH" (--size).

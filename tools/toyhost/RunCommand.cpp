@@ -89,6 +89,9 @@ void RunCommand::define(CLI::App& run) {
     run.add_flag("--unpaced", unpaced_,
                  "Window with --fps F: draw frames as fast as the display allows (no vsync) instead of F per second "
                  "of wall time; iTime still advances 1/F per frame, so the preview runs faster than the recording");
+    run.add_flag("--paced", paced_,
+                 "Headless: draw the frames at the --fps rate in wall time (e.g. to feed a live stream) instead of as "
+                 "fast as the machine can; the frames are the same");
     sampling_.define(run);
     run.add_option("--frames", frames_,
                    "Frames to render (default " + std::to_string(defaults::kFrames) + "; in a window: until closed)");
@@ -224,7 +227,9 @@ int RunCommand::execute(const GlProcess& process) {
         return usage("--unpaced goes with --fps: without it a window runs in real time, one frame per display refresh");
     o.interactive = windowMode;
     o.watch = watch_;
+    if (paced_ && windowMode) return usage("--paced is for headless runs: a window with --fps is paced already");
     o.unpaced = unpaced_;
+    o.paced = paced_;
 
     // A window's events are handled on this (the main) thread and it renders on a GL thread of its
     // own; headless runs render on a GL thread.

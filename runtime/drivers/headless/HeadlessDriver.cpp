@@ -4,19 +4,39 @@
 #include "session/CompileProblems.h"
 #include "session/ShadertoyWatcher.h"
 
+#include <algorithm>
+#include <chrono>
 #include <csignal>
+#include <thread>
 
 namespace toyhost {
 
-HeadlessDriver::HeadlessDriver(const SessionPlan& plan) : timeline_(timelineOf(plan)) {}
+HeadlessDriver::HeadlessDriver(const SessionPlan& plan) : timeline_(timelineOf(plan)) {
+    if (plan.options.paced) pacer_.emplace(timeline_.fps());
+}
 
 // A resumed run starts at its checkpoint's frame: the scripts' earlier events are already in the
 // saved mouse and keyboard state, so the timeline replays and drops them.
 std::optional<FrameTime> HeadlessDriver::nextFrame(int frame, std::vector<InputEvent>& events) {
+    if (pacer_) {
+        if (pacer_->wait(monotonicNow()) > 0) return std::nullopt;  // not due yet: idle() waits
+        pacer_->drawn(monotonicNow());
+    }
     return timeline_.next(frame, events);
 }
 
-void HeadlessDriver::restart() { timeline_.restart(); }
+// --paced, before a frame is due: a wait in slices of at most 50 ms, so that a stop (a signal, the
+// watchdog) ends the run at once whatever the rate.
+void HeadlessDriver::idle(SessionCore&) {
+    if (!pacer_) return;
+    const double wait = std::min(pacer_->wait(monotonicNow()), 0.05);
+    if (wait > 0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
+}
+
+void HeadlessDriver::restart() {
+    timeline_.restart();
+    if (pacer_) pacer_->reset();
+}
 
 namespace {
 

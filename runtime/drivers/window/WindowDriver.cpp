@@ -24,10 +24,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-double monotonicNow() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
 std::string fileSafe(std::string name) {
     for (char& c : name)
         if (c == '/' || c == '\\' || c == ':' || static_cast<unsigned char>(c) < 32) c = '_';
