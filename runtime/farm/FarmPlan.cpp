@@ -3,10 +3,13 @@
 #include "farm/FarmPlan.h"
 
 #include <algorithm>
+#include <cctype>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
-#include <regex>
 #include <sstream>
+
+#include "core/JsonText.h"
 
 namespace toyhost::farm {
 
@@ -66,7 +69,7 @@ std::string runShardScript(const PlanRequest& r, const std::vector<FrameSpan>& s
     }
     std::ostringstream s;
     s << "#!/bin/bash\n"
-      << "# One shard of " << r.target << " (" << r.frames << " frames in " << r.shards
+      << "# One shard of the run (" << r.frames << " frames in " << r.shards
       << " shards), written by `toyhost farm plan`: run-shard.sh INDEX.\n"
       << "set -u\n"
       << "index=\"${1:?usage: run-shard.sh INDEX}\"\n"
@@ -105,7 +108,7 @@ std::string runShardScript(const PlanRequest& r, const std::vector<FrameSpan>& s
 std::string chainScript(const PlanRequest& r, const std::vector<FrameSpan>& spans) {
     std::ostringstream s;
     s << "#!/bin/bash\n"
-      << "# The checkpoint at each shard's first frame, for " << r.target << ": one sequential pass, each\n"
+      << "# The checkpoint at each shard's first frame: one sequential pass, each\n"
       << "# step simulating only the frames since the previous one. Written by `toyhost farm plan`.\n"
       << "set -eu\n"
       << "job=" << shellQuoted(r.jobDir) << "\n"
@@ -124,13 +127,37 @@ std::string chainScript(const PlanRequest& r, const std::vector<FrameSpan>& span
     return s.str();
 }
 
+// A value of an #SBATCH line as sbatch reads it (src/sbatch/opt.c, _get_argument): whitespace
+// ends a word, quotes group, an unescaped # starts a comment, and a backslash makes the next byte
+// literal, whatever it is. Every byte outside the plain set is given a backslash.
+std::string slurmDirectiveWord(const std::string& text) {
+    std::string word;
+    for (char c : text) {
+        if (!std::isalnum(static_cast<unsigned char>(c)) && std::string_view("_-+=./:,@%").find(c) == std::string_view::npos)
+            word += '\\';
+        word += c;
+    }
+    return word;
+}
+
+// A path inside a Slurm file name pattern (sbatch --output): % starts a replacement (%A, %a, %x),
+// %% is a literal %.
+std::string slurmFileName(const std::string& path) {
+    std::string name;
+    for (char c : path) {
+        name += c;
+        if (c == '%') name += '%';
+    }
+    return name;
+}
+
 std::string sbatchHeader(const PlanRequest& r, const std::string& name) {
     std::ostringstream s;
     s << "#!/bin/bash\n"
       << "#SBATCH --job-name=" << name << "\n"
-      << "#SBATCH --output=" << r.jobDir << "/logs/%x-%A_%a.log\n"
+      << "#SBATCH --output=" << slurmDirectiveWord(slurmFileName(r.jobDir) + "/logs/%x-%A_%a.log") << "\n"
       << "#SBATCH --open-mode=append\n";
-    if (!r.slurmTime.empty()) s << "#SBATCH --time=" << r.slurmTime << "\n";
+    if (!r.slurmTime.empty()) s << "#SBATCH --time=" << slurmDirectiveWord(r.slurmTime) << "\n";
     if (r.cpusPerTask > 0) s << "#SBATCH --cpus-per-task=" << r.cpusPerTask << "\n";
     return s.str();
 }
@@ -231,7 +258,69 @@ std::string parallelScript(const PlanRequest& r) {
     return s.str();
 }
 
+// Why `value` cannot go into the plan's files, or nothing: a line break or NUL would end the line
+// it is written on (a script's, a directive's, farm.json's), and farm.json holds UTF-8 only.
+std::optional<std::string> writtenValueProblem(const std::string& value) {
+    if (value.find('\n') != std::string::npos) return "holds a line break (newline), which no job file can carry";
+    if (value.find('\r') != std::string::npos) return "holds a carriage return, which no job file can carry";
+    if (value.find('\0') != std::string::npos) return "holds a NUL byte, which no job file can carry";
+    if (!isValidUtf8(value)) return "is not valid UTF-8 (farm.json, which records it, is JSON)";
+    return std::nullopt;
+}
+
+// The option a run option belongs to: itself ("--fps=30", "--fps"), or the one before it (a value).
+std::string runOptionName(const std::vector<std::string>& options, std::size_t i) {
+    for (std::size_t j = i + 1; j-- > 0;)
+        if (options[j].rfind("-", 0) == 0) return options[j].substr(0, options[j].find('='));
+    return "run option " + std::to_string(i + 1);
+}
+
+std::optional<std::string> requestProblem(const PlanRequest& r) {
+    const std::pair<const char*, const std::string*> values[] = {
+        {"--job", &r.jobDir},  {"the target", &r.target}, {"--toyhost", &r.toyhost},
+        {"--frame-name", &r.frameName}, {"--time", &r.slurmTime}, {"--image", &r.image}};
+    for (const auto& [name, value] : values)
+        if (std::optional<std::string> problem = writtenValueProblem(*value)) return std::string(name) + ": " + *problem;
+    for (std::size_t i = 0; i < r.runOptions.size(); ++i)
+        if (std::optional<std::string> problem = writtenValueProblem(r.runOptions[i]))
+            return "run option " + runOptionName(r.runOptions, i) + ": " + *problem;
+    if (r.scheduler == Scheduler::Slurm) {
+        if (r.jobDir.find('\\') != std::string::npos)
+            return std::string("--job: holds a backslash, which turns off the %A/%a names of Slurm's log files (sbatch "
+                               "--output): choose a folder without one");
+        if (!r.slurmTime.empty())
+            if (std::optional<std::string> problem = slurmTimeProblem(r.slurmTime)) return "--time " + r.slurmTime + ": " + *problem;
+    }
+    return std::nullopt;
+}
+
 }  // namespace
+
+std::optional<std::string> slurmTimeProblem(const std::string& text) {
+    const char* expected = "expected one of Slurm's time formats: MINUTES, MINUTES:SECONDS, HOURS:MINUTES:SECONDS, "
+                           "DAYS-HOURS, DAYS-HOURS:MINUTES, DAYS-HOURS:MINUTES:SECONDS (digits only), or UNLIMITED";
+    std::string lower;
+    for (char c : text) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (lower == "unlimited" || lower == "infinite") return std::nullopt;
+    // Each field: 1 to 9 digits (Slurm reads them with strtol; more would overflow its minutes).
+    auto digits = [](std::string_view field) {
+        return !field.empty() && field.size() <= 9 &&
+               std::all_of(field.begin(), field.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    // DAYS- takes one to three fields after it (HOURS[:MINUTES[:SECONDS]]), as MINUTES[:SECONDS] or
+    // HOURS:MINUTES:SECONDS do without it.
+    std::string_view rest = text;
+    if (const std::size_t dash = rest.find('-'); dash != std::string_view::npos) {
+        if (!digits(rest.substr(0, dash))) return expected;
+        rest = rest.substr(dash + 1);
+    }
+    std::vector<std::string_view> fields;
+    for (std::size_t colon; (colon = rest.find(':')) != std::string_view::npos; rest = rest.substr(colon + 1))
+        fields.push_back(rest.substr(0, colon));
+    fields.push_back(rest);
+    if (fields.size() > 3 || !std::all_of(fields.begin(), fields.end(), digits)) return expected;
+    return std::nullopt;
+}
 
 std::optional<Scheduler> schedulerNamed(const std::string& name) {
     if (name == "slurm") return Scheduler::Slurm;
@@ -241,9 +330,26 @@ std::optional<Scheduler> schedulerNamed(const std::string& name) {
 }
 
 std::optional<std::string> frameNameProblem(const std::string& name) {
-    static const std::regex shape(R"(^[^%/]*%(0[1-9][0-9]?)?d[^%/]*\.(png|exr)$)");
-    if (std::regex_match(name, shape)) return std::nullopt;
-    return "expected a file name with one frame number placeholder, ending in .png or .exr (f_%06d.png)";
+    // By hand, not std::regex: its matcher recurses once per character and overflows the stack on
+    // a long name (a 120,000-character --pattern crashed `farm status`).
+    const char* expected = "expected a file name with one frame number placeholder, ending in .png or .exr (f_%06d.png)";
+    if (name.size() > 255) return "longer than a file name can be (255 bytes)";
+    const std::size_t percent = name.find('%');
+    if (percent == std::string::npos || name.find('%', percent + 1) != std::string::npos ||
+        name.find('/') != std::string::npos)
+        return expected;
+    std::size_t at = percent + 1;
+    if (at < name.size() && name[at] == '0') {
+        const std::size_t width = name.find_first_not_of("0123456789", at + 1);
+        if (width == std::string::npos || width == at + 1 || width > at + 3 || name[at + 1] == '0') return expected;
+        at = width;
+    }
+    if (at >= name.size() || name[at] != 'd') return expected;
+    const std::string tail = name.substr(at + 1);
+    const bool png = tail.size() >= 4 && tail.compare(tail.size() - 4, 4, ".png") == 0;
+    const bool exr = tail.size() >= 4 && tail.compare(tail.size() - 4, 4, ".exr") == 0;
+    if (!png && !exr) return expected;
+    return std::nullopt;
 }
 
 std::string shellQuoted(const std::string& text) {
@@ -269,6 +375,7 @@ Result<std::vector<PlanFile>> planFarm(const PlanRequest& r) {
         return Error("the job folder must be an absolute path (every node finds it there): " + r.jobDir, Code::Usage);
     if (std::optional<std::string> problem = frameNameProblem(r.frameName))
         return Error("--frame-name " + r.frameName + ": " + *problem, Code::Usage);
+    if (std::optional<std::string> problem = requestProblem(r)) return Error(*problem, Code::Usage);
     if (std::optional<std::string> owned = ownedOption(r.runOptions))
         return Error(*owned + ": farm plan sets it for every shard (from its --frames, --shards, --job and --frame-name)",
                      Code::Usage);
