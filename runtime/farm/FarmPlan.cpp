@@ -127,35 +127,29 @@ std::string chainScript(const PlanRequest& r, const std::vector<FrameSpan>& span
     return s.str();
 }
 
-// A value of an #SBATCH line as sbatch reads it (src/sbatch/opt.c, _get_argument): whitespace
-// ends a word, quotes group, an unescaped # starts a comment, and a backslash makes the next byte
-// literal, whatever it is. Every byte outside the plain set is given a backslash.
+// A value of an #SBATCH line as sbatch reads it (src/sbatch/opt.c, _get_argument, Slurm 22.05):
+// whitespace ends a word, ' and " group, an unquoted # starts a comment, and a backslash makes the
+// next byte literal, except whitespace outside quotes, which ends the word all the same (a job
+// folder "my\ job" was read as two words: "Invalid directive found in batch script: job's", seen
+// on Slurm 22.05.8). So a value that is not plain goes in double quotes, with \ and " escaped.
 std::string slurmDirectiveWord(const std::string& text) {
-    std::string word;
+    const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || std::string_view("_-+=./:,@%").find(c) != std::string_view::npos;
+    });
+    if (plain) return text;
+    std::string word = "\"";
     for (char c : text) {
-        if (!std::isalnum(static_cast<unsigned char>(c)) && std::string_view("_-+=./:,@%").find(c) == std::string_view::npos)
-            word += '\\';
+        if (c == '"' || c == '\\') word += '\\';
         word += c;
     }
-    return word;
-}
-
-// A path inside a Slurm file name pattern (sbatch --output): % starts a replacement (%A, %a, %x),
-// %% is a literal %.
-std::string slurmFileName(const std::string& path) {
-    std::string name;
-    for (char c : path) {
-        name += c;
-        if (c == '%') name += '%';
-    }
-    return name;
+    return word + '"';
 }
 
 std::string sbatchHeader(const PlanRequest& r, const std::string& name) {
     std::ostringstream s;
     s << "#!/bin/bash\n"
       << "#SBATCH --job-name=" << name << "\n"
-      << "#SBATCH --output=" << slurmDirectiveWord(slurmFileName(r.jobDir) + "/logs/%x-%A_%a.log") << "\n"
+      << "#SBATCH --output=" << slurmDirectiveWord(r.jobDir + "/logs/%x-%A_%a.log") << "\n"
       << "#SBATCH --open-mode=append\n";
     if (!r.slurmTime.empty()) s << "#SBATCH --time=" << slurmDirectiveWord(r.slurmTime) << "\n";
     if (r.cpusPerTask > 0) s << "#SBATCH --cpus-per-task=" << r.cpusPerTask << "\n";
@@ -284,6 +278,12 @@ std::optional<std::string> requestProblem(const PlanRequest& r) {
     for (std::size_t i = 0; i < r.runOptions.size(); ++i)
         if (std::optional<std::string> problem = writtenValueProblem(r.runOptions[i]))
             return "run option " + runOptionName(r.runOptions, i) + ": " + *problem;
+    // The frames are written by `toyhost run --out JOB/frames/NAME`, whose pattern reads every % (a
+    // job folder "100%" failed on every node: "only %d or %0Nd may stand for the frame number"); a
+    // % is also the start of Slurm's %A/%a in its log names.
+    if (r.jobDir.find('%') != std::string::npos)
+        return std::string("--job: holds a %, which toyhost run --out (the frames' path) and Slurm's log names read as a "
+                           "placeholder: choose a folder without one");
     if (r.scheduler == Scheduler::Slurm) {
         if (r.jobDir.find('\\') != std::string::npos)
             return std::string("--job: holds a backslash, which turns off the %A/%a names of Slurm's log files (sbatch "

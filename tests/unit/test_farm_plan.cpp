@@ -270,9 +270,10 @@ TEST(FarmStatus, ExitCodesComeFromGnuParallelsJoblog) {
 
 namespace {
 
-// What sbatch makes of the text after "#SBATCH" (its documented rule, src/sbatch/opt.c): words
-// split at unquoted whitespace, ' and " group, a backslash makes the next byte literal, an
-// unquoted, unescaped # ends the line. nullopt: an unmatched quote (sbatch exits).
+// What sbatch makes of the text after "#SBATCH" (its rule, src/sbatch/opt.c): words split at
+// unquoted whitespace, ' and " group, a backslash makes the next byte literal but cannot keep an
+// unquoted whitespace in the word, an unquoted # ends the line. nullopt: an unmatched quote
+// (sbatch exits).
 std::optional<std::vector<std::string>> sbatchWords(const std::string& line) {
     std::vector<std::string> words;
     std::size_t i = 0;
@@ -281,16 +282,20 @@ std::optional<std::vector<std::string>> sbatchWords(const std::string& line) {
         if (i >= line.size()) break;
         std::string word;
         char quote = 0;
-        bool comment = false;
+        bool escape = false, comment = false;
         for (; i < line.size() && (quote || !std::isspace(static_cast<unsigned char>(line[i]))); ++i) {
             const char c = line[i];
-            if (c == '\\' && i + 1 < line.size()) {
-                word += line[++i];
-            } else if (quote && c == quote) {
-                quote = 0;
-            } else if (!quote && (c == '\'' || c == '"')) {
+            if (escape) {
+                escape = false;
+                word += c;
+            } else if (c == '\\') {
+                escape = true;
+            } else if (quote) {
+                if (c == quote) quote = 0;
+                else word += c;
+            } else if (c == '\'' || c == '"') {
                 quote = c;
-            } else if (!quote && c == '#') {
+            } else if (c == '#') {
                 comment = true;
                 break;
             } else {
@@ -349,10 +354,11 @@ TEST(FarmPlan, RefusesLineBreaksNulAndInvalidUtf8InEveryValueItWrites) {
 }
 
 TEST(FarmPlan, SbatchDirectivesReadBackAsTheValuesGivenForSlurmsParser) {
-    // A space, an apostrophe, a double quote, a #, a $ and a % in the job folder: sbatch must read
-    // back exactly the folder (with % doubled, Slurm's file name pattern for a literal %).
+    // A space, an apostrophe, a double quote, a backslash-free #, a $ in the job folder: sbatch
+    // must read back exactly the folder. Backslashes before the spaces were not enough: sbatch
+    // 22.05.8 said "Invalid directive found in batch script: job's".
     PlanRequest r = request(Scheduler::Slurm, true);
-    r.jobDir = "/scratch/my job's \"100%\" #1 $(touch PWNED)";
+    r.jobDir = "/scratch/my job's \"best\" #1 $(touch PWNED)";
     r.slurmTime = "1-02:03:04";
     auto files = planFarm(r);
     ASSERT_TRUE(files) << files.error().text();
@@ -360,10 +366,12 @@ TEST(FarmPlan, SbatchDirectivesReadBackAsTheValuesGivenForSlurmsParser) {
         const PlanFile* sbatch = fileNamed(*files, name);
         ASSERT_NE(sbatch, nullptr) << name;
         EXPECT_EQ(sbatchValue(sbatch->text, "output"),
-                  std::optional<std::string>("/scratch/my job's \"100%%\" #1 $(touch PWNED)/logs/%x-%A_%a.log"))
+                  std::optional<std::string>("/scratch/my job's \"best\" #1 $(touch PWNED)/logs/%x-%A_%a.log"))
             << sbatch->text;
         EXPECT_EQ(sbatchValue(sbatch->text, "time"), std::optional<std::string>("1-02:03:04"));
     }
+    EXPECT_EQ(sbatchWords(R"( --output=/a/my\ job)"), (std::vector<std::string>{"--output=/a/my", "job"}))
+        << "the rule the quoting follows: a backslash does not keep a space in the word";
     // A backslash turns off Slurm's %A/%a in --output: refused for Slurm, fine elsewhere.
     r.jobDir = "/scratch/back\\slash";
     auto refused = planFarm(r);
@@ -371,6 +379,14 @@ TEST(FarmPlan, SbatchDirectivesReadBackAsTheValuesGivenForSlurmsParser) {
     EXPECT_NE(refused.error().text().find("backslash"), std::string::npos);
     r.scheduler = Scheduler::Parallel;
     EXPECT_TRUE(planFarm(r));
+    // A % is read by toyhost run --out (and Slurm's log names): refused for every scheduler.
+    for (Scheduler scheduler : {Scheduler::Slurm, Scheduler::Kubernetes, Scheduler::Parallel}) {
+        PlanRequest percent = request(scheduler, false);
+        percent.jobDir = "/scratch/100%";
+        auto files = planFarm(percent);
+        ASSERT_FALSE(files);
+        EXPECT_NE(files.error().text().find("--job: holds a %"), std::string::npos) << files.error().text();
+    }
 }
 
 TEST(FarmPlan, TheTargetIsNeverWrittenIntoACommentAndPathsAreQuoted) {

@@ -143,7 +143,12 @@ Status writePlan(const fs::path& dir, const std::vector<farm::PlanFile>& files) 
     std::error_code ec;
     const fs::path made = firstMissingFolder(dir);
     fs::create_directories(dir, ec);
-    if (ec) return fileError(dir.string(), "cannot create the job folder: " + ec.message(), Code::IoWrite);
+    if (ec) {
+        const Status failure = fileError(dir.string(), "cannot create the job folder: " + ec.message(), Code::IoWrite);
+        std::error_code ignored;
+        if (!made.empty()) fs::remove_all(made, ignored);  // the folders above it that were made
+        return failure;
+    }
     std::vector<std::pair<fs::path, fs::path>> written;  // temporary, final
     auto undo = [&](Status failure) {
         std::error_code ignored;
