@@ -10,14 +10,18 @@
 #include "GlTestSupport.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <climits>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "Processes.h"
 #include "image/ImageWriters.h"
@@ -310,6 +314,55 @@ TEST(FarmHostile, MessagesNameTheOptionsAndSubcommands) {
                    2, {"--audio", "notes.txt"}, "join --audio notes.txt");
     EXPECT_FALSE(fs::exists(dir / "m.mp4"));
     EXPECT_FALSE(fs::exists(dir / "m.png"));
+}
+
+// ---- signals ----------------------------------------------------------------------------------
+
+// A signal during `farm join` killed it with no message, orphaned ffmpeg and left a hidden
+// .partial: now it stops before its next frame, ffmpeg killed, nothing left, exit 128 + signal.
+// The moment is chosen by what the join has done (its ffmpeg is running), and 1000 frames of noise
+// keep it encoding for seconds after that.
+TEST(FarmHostile, ASignalDuringJoinStopsItWithFfmpegAndLeavesNothing) {
+    if (shell("command -v ffmpeg >/dev/null 2>&1").first != 0) GTEST_FAIL() << "needs ffmpeg (scripts/install-deps.sh installs it)";
+    const fs::path dir = freshOutputDir("farm-hostile/join-signal");
+    const fs::path frames = dir / "frames";
+    fs::create_directories(frames);
+    std::vector<std::uint8_t> noise(320 * 180 * 4);
+    std::uint32_t state = 12345;
+    for (std::uint8_t& byte : noise) byte = static_cast<std::uint8_t>((state = state * 1664525u + 1013904223u) >> 24);
+    ASSERT_TRUE(writePng(frames / "f_0000.png", 320, 180, noise));
+    constexpr int kFrames = 1000;
+    for (int f = 1; f < kFrames; ++f) {
+        char name[32];
+        std::snprintf(name, sizeof name, "f_%04d.png", f);
+        fs::copy_file(frames / "f_0000.png", frames / name);
+    }
+    for (int sig : {SIGINT, SIGTERM}) {
+        const fs::path out = dir / ("out-" + std::to_string(sig));
+        fs::create_directories(out);
+        BackgroundProcess join(toyhostBinary(),
+                               {"farm", "join", frames.string(), "--frames", std::to_string(kFrames), "--out",
+                                (out / "join-signal-marker.mp4").string()},
+                               dir / ("log-" + std::to_string(sig)));
+        auto ffmpegRuns = [] { return shell("pgrep -f '[f]fmpeg.*join-signal-marker' >/dev/null").first == 0; };
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        while (!ffmpegRuns() && join.running() && std::chrono::steady_clock::now() < deadline)
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        ASSERT_TRUE(join.running()) << "the join ended before ffmpeg was seen";
+        ASSERT_TRUE(ffmpegRuns()) << "ffmpeg never started";
+        join.signal(sig);
+        const int code = join.wait(60);
+        std::ifstream in(dir / ("log-" + std::to_string(sig)));
+        const std::string log((std::istreambuf_iterator<char>(in)), {});
+        EXPECT_EQ(code, 128 + sig) << log;
+        EXPECT_NE(log.find("stopped by a signal"), std::string::npos) << log;
+        std::vector<std::string> left;
+        for (const auto& entry : fs::directory_iterator(out)) left.push_back(entry.path().filename().string());
+        EXPECT_TRUE(left.empty()) << "left behind: " << (left.empty() ? "" : left.front());
+        bool gone = false;
+        for (int i = 0; i < 250 && !(gone = !ffmpegRuns()); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        EXPECT_TRUE(gone) << "ffmpeg outlived the join";
+    }
 }
 
 // ---- a full disk ------------------------------------------------------------------------------
