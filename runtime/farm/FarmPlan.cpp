@@ -247,7 +247,9 @@ std::string parallelScript(const PlanRequest& r) {
       << "job=" << shellQuoted(r.jobDir) << "\n";
     s << "mkdir -p \"$job/logs\"\n";
     if (r.stateful) s << "\"$job/checkpoints.sh\"\n";
-    s << "parallel --will-cite --halt now,fail=1 -j " << (r.parallelism > 0 ? r.parallelism : r.shards)
+    // -q: GNU parallel runs its command through a shell, which would evaluate a job folder's
+    // quotes and $( ) (a folder named "x $(touch PWNED)" ran touch); -q quotes every word of it.
+    s << "parallel --will-cite -q --halt now,fail=1 -j " << (r.parallelism > 0 ? r.parallelism : r.shards)
       << " --joblog \"$job/logs/parallel.log\" \"$job/run-shard.sh\" {} ::: $(seq 0 " << r.shards - 1 << ")\n";
     return s.str();
 }

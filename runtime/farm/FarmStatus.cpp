@@ -247,7 +247,9 @@ std::map<int, int> exitCodesFromJoblog(const std::string& joblog) {
         std::string_view command = line;  // the rest: the command, tabs and all
         while (!command.empty() && std::isspace(static_cast<unsigned char>(command.back()))) command.remove_suffix(1);
         const std::size_t space = command.rfind(' ');
-        if (space == std::string_view::npos || !command.substr(0, space).ends_with("run-shard.sh")) continue;
+        // parallel -q writes the command's words quoted: '/my job/run-shard.sh' 3.
+        const std::string_view program = space == std::string_view::npos ? std::string_view() : command.substr(0, space);
+        if (!program.ends_with("run-shard.sh") && !program.ends_with("run-shard.sh'")) continue;
         const std::optional<int> shard = number(command.substr(space + 1), 0, std::numeric_limits<int>::max());
         const std::optional<int> exitval = number(fields[6], -255, 255);
         const std::optional<int> signal = number(fields[7], 0, 127);

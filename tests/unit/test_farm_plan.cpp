@@ -458,9 +458,11 @@ TEST(FarmStatus, AHostileJoblogIsReadWithoutRegexOrAbort) {
                                "2\t:\t0\t1\t0\t0\t99999999999\t0\t/j/run-shard.sh 1\n" +
                                "3\t:\t0\t1\t0\t0\t1\t0\t/j/run-shard.sh 99999999999\n" +
                                "4\t:\t0\t1\t0\t0\t1\t99999999999\t/j/run-shard.sh 2\n" +
-                               "5\t:\t0\t1\t0\t0\t3\t0\t'/my job'/run-shard.sh 3\n" + std::string(100000, '\t') + "\n";
+                               "5\t:\t0\t1\t0\t0\t3\t0\t'/my job'/run-shard.sh 3\n" + std::string(100000, '\t') + "\n" +
+                               // parallel -q (parallel.sh) quotes the program's path as one word.
+                               "6\t:\t0\t1\t0\t0\t0\t15\t'/my job $(x)/run-shard.sh' 4\n";
     const std::map<int, int> codes = exitCodesFromJoblog(joblog);
-    EXPECT_EQ(codes, (std::map<int, int>{{0, 0}, {3, 3}}));
+    EXPECT_EQ(codes, (std::map<int, int>{{0, 0}, {3, 3}, {4, 143}}));
 }
 
 TEST(FarmStatus, FrameListsOfRunsAndCountsWithoutWalkingEveryFrame) {
