@@ -268,7 +268,7 @@ std::optional<std::string> writtenValueProblem(const std::string& value) {
 std::string runOptionName(const std::vector<std::string>& options, std::size_t i) {
     for (std::size_t j = i + 1; j-- > 0;)
         if (options[j].rfind("-", 0) == 0) return options[j].substr(0, options[j].find('='));
-    return "run option " + std::to_string(i + 1);
+    return "#" + std::to_string(i + 1);
 }
 
 std::optional<std::string> requestProblem(const PlanRequest& r) {

@@ -72,7 +72,9 @@ struct FrameLayout {
     bool captured(int frame, FrameSpan span) const;
 };
 
-// farm.json's text (from planFarm) into the layout of the job folder `jobDir`.
+// farm.json's text (from planFarm) into the layout of the job folder `jobDir`. "frames" and
+// "shards" must be JSON integers within 1..INT_MAX (8.9 or 4294967304 is an error naming the
+// field, never truncated or wrapped).
 Result<FrameLayout> layoutFromPlan(const std::string& json, const std::filesystem::path& jobDir);
 
 // The numbered-frame pattern the file `names` of a folder follow ("f_%04d.png"): the one prefix,
