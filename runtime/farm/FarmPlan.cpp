@@ -268,7 +268,9 @@ std::optional<std::string> writtenValueProblem(const std::string& value) {
 std::string runOptionName(const std::vector<std::string>& options, std::size_t i) {
     for (std::size_t j = i + 1; j-- > 0;)
         if (options[j].rfind("-", 0) == 0) return options[j].substr(0, options[j].find('='));
-    return "#" + std::to_string(i + 1);
+    std::string number = "#";  // appended: GCC 12 warns (-Wrestrict) falsely on "#" + std::string
+    number += std::to_string(i + 1);
+    return number;
 }
 
 std::optional<std::string> requestProblem(const PlanRequest& r) {
