@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <limits>
 #include <set>
 #include <string>
 #include <vector>
@@ -216,6 +217,31 @@ std::string describeJsonValue(const nlohmann::json& value) {
         case json::value_t::object: return value.empty() ? "an empty object" : "an object";
         default: return value.type_name();
     }
+}
+
+bool isValidUtf8(std::string_view text) {
+    // The serializer's own check (type_error 316), so that "valid" means what dump() accepts.
+    try {
+        (void)json(std::string(text)).dump();
+        return true;
+    } catch (const json::type_error&) {
+        return false;
+    }
+}
+
+std::optional<long long> jsonWholeNumber(const json& value, long long min, long long max) {
+    long long number = 0;
+    if (value.is_number_unsigned()) {
+        const auto big = value.get<unsigned long long>();
+        if (big > static_cast<unsigned long long>(std::numeric_limits<long long>::max())) return std::nullopt;
+        number = static_cast<long long>(big);
+    } else if (value.is_number_integer()) {
+        number = value.get<long long>();
+    } else {
+        return std::nullopt;
+    }
+    if (number < min || number > max) return std::nullopt;
+    return number;
 }
 
 }  // namespace toyhost

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string_view>
 
 #include "core/Result.h"
@@ -14,6 +15,15 @@ namespace toyhost {
 // `file` names the text in errors; `code` is the diagnostic code of a syntax error ("manifest.json",
 // Code::ExportJson, ...). Duplicate keys are reported with code Code::JsonDuplicateKey, all at once.
 Result<nlohmann::json> parseJsonStrictly(std::string_view text, const std::string& file, Code code);
+
+// Whether `text` is valid UTF-8, which every JSON string must be (nlohmann's dump throws on
+// anything else): a value headed for a JSON file is checked with this first.
+bool isValidUtf8(std::string_view text);
+
+// `value` when it is a JSON integer (no fraction, no exponent: 8.9 and 8.0 are not) from `min` to
+// `max`; nullopt otherwise, where nlohmann's get<int>() would truncate 8.9 to 8 and wrap
+// 4294967304 to 8. Messages describe the value with describeJsonValue.
+std::optional<long long> jsonWholeNumber(const nlohmann::json& value, long long min, long long max);
 
 // What a JSON value is, in words for a message that says what was expected instead: "an empty
 // string", "the string \"abc\"", "the number 5", "true", "null", "an empty array", "an array of

@@ -3,10 +3,13 @@
 #include "farm/FarmPlan.h"
 
 #include <algorithm>
+#include <cctype>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
-#include <regex>
 #include <sstream>
+
+#include "core/JsonText.h"
 
 namespace toyhost::farm {
 
@@ -66,7 +69,7 @@ std::string runShardScript(const PlanRequest& r, const std::vector<FrameSpan>& s
     }
     std::ostringstream s;
     s << "#!/bin/bash\n"
-      << "# One shard of " << r.target << " (" << r.frames << " frames in " << r.shards
+      << "# One shard of the run (" << r.frames << " frames in " << r.shards
       << " shards), written by `toyhost farm plan`: run-shard.sh INDEX.\n"
       << "set -u\n"
       << "index=\"${1:?usage: run-shard.sh INDEX}\"\n"
@@ -105,7 +108,7 @@ std::string runShardScript(const PlanRequest& r, const std::vector<FrameSpan>& s
 std::string chainScript(const PlanRequest& r, const std::vector<FrameSpan>& spans) {
     std::ostringstream s;
     s << "#!/bin/bash\n"
-      << "# The checkpoint at each shard's first frame, for " << r.target << ": one sequential pass, each\n"
+      << "# The checkpoint at each shard's first frame: one sequential pass, each\n"
       << "# step simulating only the frames since the previous one. Written by `toyhost farm plan`.\n"
       << "set -eu\n"
       << "job=" << shellQuoted(r.jobDir) << "\n"
@@ -124,13 +127,31 @@ std::string chainScript(const PlanRequest& r, const std::vector<FrameSpan>& span
     return s.str();
 }
 
+// A value of an #SBATCH line as sbatch reads it (src/sbatch/opt.c, _get_argument, Slurm 22.05):
+// whitespace ends a word, ' and " group, an unquoted # starts a comment, and a backslash makes the
+// next byte literal, except whitespace outside quotes, which ends the word all the same (a job
+// folder "my\ job" was read as two words: "Invalid directive found in batch script: job's", seen
+// on Slurm 22.05.8). So a value that is not plain goes in double quotes, with \ and " escaped.
+std::string slurmDirectiveWord(const std::string& text) {
+    const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || std::string_view("_-+=./:,@%").find(c) != std::string_view::npos;
+    });
+    if (plain) return text;
+    std::string word = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') word += '\\';
+        word += c;
+    }
+    return word + '"';
+}
+
 std::string sbatchHeader(const PlanRequest& r, const std::string& name) {
     std::ostringstream s;
     s << "#!/bin/bash\n"
       << "#SBATCH --job-name=" << name << "\n"
-      << "#SBATCH --output=" << r.jobDir << "/logs/%x-%A_%a.log\n"
+      << "#SBATCH --output=" << slurmDirectiveWord(r.jobDir + "/logs/%x-%A_%a.log") << "\n"
       << "#SBATCH --open-mode=append\n";
-    if (!r.slurmTime.empty()) s << "#SBATCH --time=" << r.slurmTime << "\n";
+    if (!r.slurmTime.empty()) s << "#SBATCH --time=" << slurmDirectiveWord(r.slurmTime) << "\n";
     if (r.cpusPerTask > 0) s << "#SBATCH --cpus-per-task=" << r.cpusPerTask << "\n";
     return s.str();
 }
@@ -226,12 +247,84 @@ std::string parallelScript(const PlanRequest& r) {
       << "job=" << shellQuoted(r.jobDir) << "\n";
     s << "mkdir -p \"$job/logs\"\n";
     if (r.stateful) s << "\"$job/checkpoints.sh\"\n";
-    s << "parallel --will-cite --halt now,fail=1 -j " << (r.parallelism > 0 ? r.parallelism : r.shards)
+    // -q: GNU parallel runs its command through a shell, which would evaluate a job folder's
+    // quotes and $( ) (a folder named "x $(touch PWNED)" ran touch); -q quotes every word of it.
+    s << "parallel --will-cite -q --halt now,fail=1 -j " << (r.parallelism > 0 ? r.parallelism : r.shards)
       << " --joblog \"$job/logs/parallel.log\" \"$job/run-shard.sh\" {} ::: $(seq 0 " << r.shards - 1 << ")\n";
     return s.str();
 }
 
+// Why `value` cannot go into the plan's files, or nothing: a line break or NUL would end the line
+// it is written on (a script's, a directive's, farm.json's), and farm.json holds UTF-8 only.
+std::optional<std::string> writtenValueProblem(const std::string& value) {
+    if (value.find('\n') != std::string::npos) return "holds a line break (newline), which no job file can carry";
+    if (value.find('\r') != std::string::npos) return "holds a carriage return, which no job file can carry";
+    if (value.find('\0') != std::string::npos) return "holds a NUL byte, which no job file can carry";
+    if (!isValidUtf8(value)) return "is not valid UTF-8 (farm.json, which records it, is JSON)";
+    return std::nullopt;
+}
+
+// The option a run option belongs to: itself ("--fps=30", "--fps"), or the one before it (a value).
+std::string runOptionName(const std::vector<std::string>& options, std::size_t i) {
+    for (std::size_t j = i + 1; j-- > 0;)
+        if (options[j].rfind("-", 0) == 0) return options[j].substr(0, options[j].find('='));
+    std::string number = "#";  // appended: GCC 12 warns (-Wrestrict) falsely on "#" + std::string
+    number += std::to_string(i + 1);
+    return number;
+}
+
+std::optional<std::string> requestProblem(const PlanRequest& r) {
+    const std::pair<const char*, const std::string*> values[] = {
+        {"--job", &r.jobDir},  {"the target", &r.target}, {"--toyhost", &r.toyhost},
+        {"--frame-name", &r.frameName}, {"--time", &r.slurmTime}, {"--image", &r.image}};
+    for (const auto& [name, value] : values)
+        if (std::optional<std::string> problem = writtenValueProblem(*value)) return std::string(name) + ": " + *problem;
+    for (std::size_t i = 0; i < r.runOptions.size(); ++i)
+        if (std::optional<std::string> problem = writtenValueProblem(r.runOptions[i]))
+            return "run option " + runOptionName(r.runOptions, i) + ": " + *problem;
+    // The frames are written by `toyhost run --out JOB/frames/NAME`, whose pattern reads every % (a
+    // job folder "100%" failed on every node: "only %d or %0Nd may stand for the frame number"); a
+    // % is also the start of Slurm's %A/%a in its log names.
+    if (r.jobDir.find('%') != std::string::npos)
+        return std::string("--job: holds a %, which toyhost run --out (the frames' path) and Slurm's log names read as a "
+                           "placeholder: choose a folder without one");
+    if (r.scheduler == Scheduler::Slurm) {
+        if (r.jobDir.find('\\') != std::string::npos)
+            return std::string("--job: holds a backslash, which turns off the %A/%a names of Slurm's log files (sbatch "
+                               "--output): choose a folder without one");
+        if (!r.slurmTime.empty())
+            if (std::optional<std::string> problem = slurmTimeProblem(r.slurmTime)) return "--time " + r.slurmTime + ": " + *problem;
+    }
+    return std::nullopt;
+}
+
 }  // namespace
+
+std::optional<std::string> slurmTimeProblem(const std::string& text) {
+    const char* expected = "expected one of Slurm's time formats: MINUTES, MINUTES:SECONDS, HOURS:MINUTES:SECONDS, "
+                           "DAYS-HOURS, DAYS-HOURS:MINUTES, DAYS-HOURS:MINUTES:SECONDS (digits only), or UNLIMITED";
+    std::string lower;
+    for (char c : text) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (lower == "unlimited" || lower == "infinite") return std::nullopt;
+    // Each field: 1 to 9 digits (Slurm reads them with strtol; more would overflow its minutes).
+    auto digits = [](std::string_view field) {
+        return !field.empty() && field.size() <= 9 &&
+               std::all_of(field.begin(), field.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    // DAYS- takes one to three fields after it (HOURS[:MINUTES[:SECONDS]]), as MINUTES[:SECONDS] or
+    // HOURS:MINUTES:SECONDS do without it.
+    std::string_view rest = text;
+    if (const std::size_t dash = rest.find('-'); dash != std::string_view::npos) {
+        if (!digits(rest.substr(0, dash))) return expected;
+        rest = rest.substr(dash + 1);
+    }
+    std::vector<std::string_view> fields;
+    for (std::size_t colon; (colon = rest.find(':')) != std::string_view::npos; rest = rest.substr(colon + 1))
+        fields.push_back(rest.substr(0, colon));
+    fields.push_back(rest);
+    if (fields.size() > 3 || !std::all_of(fields.begin(), fields.end(), digits)) return expected;
+    return std::nullopt;
+}
 
 std::optional<Scheduler> schedulerNamed(const std::string& name) {
     if (name == "slurm") return Scheduler::Slurm;
@@ -241,9 +334,26 @@ std::optional<Scheduler> schedulerNamed(const std::string& name) {
 }
 
 std::optional<std::string> frameNameProblem(const std::string& name) {
-    static const std::regex shape(R"(^[^%/]*%(0[1-9][0-9]?)?d[^%/]*\.(png|exr)$)");
-    if (std::regex_match(name, shape)) return std::nullopt;
-    return "expected a file name with one frame number placeholder, ending in .png or .exr (f_%06d.png)";
+    // By hand, not std::regex: its matcher recurses once per character and overflows the stack on
+    // a long name (a 120,000-character --pattern crashed `farm status`).
+    const char* expected = "expected a file name with one frame number placeholder, ending in .png or .exr (f_%06d.png)";
+    if (name.size() > 255) return "longer than a file name can be (255 bytes)";
+    const std::size_t percent = name.find('%');
+    if (percent == std::string::npos || name.find('%', percent + 1) != std::string::npos ||
+        name.find('/') != std::string::npos)
+        return expected;
+    std::size_t at = percent + 1;
+    if (at < name.size() && name[at] == '0') {
+        const std::size_t width = name.find_first_not_of("0123456789", at + 1);
+        if (width == std::string::npos || width == at + 1 || width > at + 3 || name[at + 1] == '0') return expected;
+        at = width;
+    }
+    if (at >= name.size() || name[at] != 'd') return expected;
+    const std::string tail = name.substr(at + 1);
+    const bool png = tail.size() >= 4 && tail.compare(tail.size() - 4, 4, ".png") == 0;
+    const bool exr = tail.size() >= 4 && tail.compare(tail.size() - 4, 4, ".exr") == 0;
+    if (!png && !exr) return expected;
+    return std::nullopt;
 }
 
 std::string shellQuoted(const std::string& text) {
@@ -269,6 +379,7 @@ Result<std::vector<PlanFile>> planFarm(const PlanRequest& r) {
         return Error("the job folder must be an absolute path (every node finds it there): " + r.jobDir, Code::Usage);
     if (std::optional<std::string> problem = frameNameProblem(r.frameName))
         return Error("--frame-name " + r.frameName + ": " + *problem, Code::Usage);
+    if (std::optional<std::string> problem = requestProblem(r)) return Error(*problem, Code::Usage);
     if (std::optional<std::string> owned = ownedOption(r.runOptions))
         return Error(*owned + ": farm plan sets it for every shard (from its --frames, --shards, --job and --frame-name)",
                      Code::Usage);

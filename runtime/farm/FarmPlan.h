@@ -42,6 +42,9 @@ struct PlanFile {
     bool executable = false;
 };
 
+// Every value written into the files (paths, --time, run options) is refused when it holds a line
+// break, a carriage return or NUL, or is not UTF-8; paths are quoted for the shell and, in #SBATCH
+// lines, for sbatch's own directive parser.
 // The files of the job, the run options appearing once (in run-shard.sh, which every scheduler's
 // file calls): farm.json (what `farm status` and `farm join` read), run-shard.sh, checkpoints.sh
 // for a stateful shadertoy, and the scheduler's own: job.sbatch (+ checkpoints.sbatch) and
@@ -51,6 +54,10 @@ Result<std::vector<PlanFile>> planFarm(const PlanRequest& request);
 // Why `name` cannot be the frames' file name, or nothing: one %d or %0Nd, no other %, no folder,
 // .png or .exr (what `toyhost run --out` numbers by iFrame).
 std::optional<std::string> frameNameProblem(const std::string& name);
+
+// Why `text` is not a time limit sbatch --time takes, or nothing: MINUTES, MINUTES:SECONDS,
+// HOURS:MINUTES:SECONDS, DAYS-HOURS, DAYS-HOURS:MINUTES, DAYS-HOURS:MINUTES:SECONDS, UNLIMITED.
+std::optional<std::string> slurmTimeProblem(const std::string& text);
 
 // `text` as one word for sh/bash: unchanged when it is plain, else in single quotes.
 std::string shellQuoted(const std::string& text);

@@ -21,6 +21,11 @@ struct FrameProblem {
     int frame = 0;
     FrameState state = FrameState::Missing;
     std::string reason;  // the decoder's words, for truncated and undecodable frames
+    // Missing frames come as one problem per run: every captured frame from `frame` to `last`
+    // (`count` of them) is absent. -1: this frame alone.
+    int last = -1;
+    long long count = 1;
+    int lastFrame() const { return last < 0 ? frame : last; }
 };
 
 struct ShardStatus {
@@ -29,12 +34,16 @@ struct ShardStatus {
     int good = 0;
     std::vector<FrameProblem> problems;
     std::optional<int> exitCode;  // what its last attempt exited with, when the job folder records it
+    long long expected = 0;       // frames the shard writes (all of its span, or those --capture-every keeps)
+    long long bad() const;        // frames not Ok
 };
 
 struct FarmStatus {
     std::vector<ShardStatus> shards;
     bool complete() const;
-    std::vector<int> badFrames() const;  // every frame not Ok, ascending
+    // Every frame not Ok, ascending, as runs first .. end - 1 (a run of missing frames that
+    // --capture-every thins out is one run from its first to its last captured frame).
+    std::vector<FrameSpan> badSpans() const;
 };
 
 // Where a job's frames are and how they are split: read from farm.json in a folder `farm plan`
@@ -52,11 +61,20 @@ struct FrameLayout {
     int captureEvery = 1;
     bool lastOfEachShard = false;
     std::filesystem::path frameFile(int frame) const;
+    // The frame number a file name of frameDir stands for, when it is one of this layout's names.
+    std::optional<int> frameNumberOf(const std::string& name) const;
+    // How many frames of `span` are written, and the first and last of them from `from` to `to`
+    // (inclusive; nullopt when none is): arithmetic, so that a span of 2^31 frames costs nothing.
+    long long capturedCount(int from, int to, FrameSpan span) const;
+    std::optional<int> firstCaptured(int from, int to, FrameSpan span) const;
+    std::optional<int> lastCaptured(int from, int to, FrameSpan span) const;
     // Whether `frame` of the shard `span` is written at all.
     bool captured(int frame, FrameSpan span) const;
 };
 
-// farm.json's text (from planFarm) into the layout of the job folder `jobDir`.
+// farm.json's text (from planFarm) into the layout of the job folder `jobDir`. "frames" and
+// "shards" must be JSON integers within 1..INT_MAX (8.9 or 4294967304 is an error naming the
+// field, never truncated or wrapped).
 Result<FrameLayout> layoutFromPlan(const std::string& json, const std::filesystem::path& jobDir);
 
 // The numbered-frame pattern the file `names` of a folder follow ("f_%04d.png"): the one prefix,
@@ -66,6 +84,8 @@ Result<std::string> framePatternOf(const std::vector<std::string>& names);
 
 // "3, 7-9, 12": ascending frame numbers, runs shortened.
 std::string frameList(const std::vector<int>& frames);
+// The same for runs first .. end - 1 (adjacent runs joined).
+std::string frameList(const std::vector<FrameSpan>& runs);
 
 // Shard -> exit code from GNU parallel's --joblog text (parallel.sh writes logs/parallel.log): the
 // last line of each `run-shard.sh INDEX`; a signal as 128 + its number, as a shell reports it.

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/AtomicFile.h"
+#include "core/JsonText.h"
 #include "manifest/ManifestWriter.h"
 
 namespace toyhost {
@@ -176,9 +177,16 @@ Status writeStarter(const fs::path& dir, const StarterLayout& layout, bool overw
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
         return fileError(dir.string(), "exists and is not a folder", Code::IoNotAFolder);
+    const ManifestDesc desc = starterManifest(dir, layout);
+    // Checked before anything is written: manifest.json is JSON, which holds UTF-8 only (the
+    // serializer threw here, after image.glsl was written).
+    if (!isValidUtf8(desc.name))
+        return fileError(dir.string(),
+                         "the folder's name is not valid UTF-8, and it becomes the shadertoy's name in manifest.json "
+                         "(JSON holds UTF-8 only): choose another name",
+                         Code::Usage);
     fs::create_directories(dir, ec);
     if (ec) return fileError(dir.string(), "cannot create the folder: " + ec.message(), Code::IoWrite);
-    const ManifestDesc desc = starterManifest(dir, layout);
     if (!overwrite) {
         std::vector<fs::path> files{dir / "manifest.json", dir / "README.md"};
         if (desc.commonSource) files.push_back(dir / "common.glsl");

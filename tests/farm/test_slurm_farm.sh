@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The Slurm job array that `toyhost farm plan --scheduler slurm` writes, submitted to a real
 # (temporary, one-node) Slurm cluster on this machine:
-#  1. an Image-only shadertoy (exp-sine-ocean) in 4 array tasks: frames byte-identical to one run;
+#  1. an Image-only shadertoy (exp-sine-ocean) in 4 array tasks, its job folder named with a space,
+#     quotes, # and $( ): frames byte-identical to one run, nothing the name holds run;
 #  2. a shadertoy with buffers (ripple-pool, with its mouse script) in 3 tasks starting from the
 #     checkpoint chain: byte-identical; `farm status` names a deleted and a truncated frame, `farm
 #     join` refuses, the damaged shard is submitted again, `farm join` makes a lossless mp4 whose
@@ -55,16 +56,20 @@ date_option=(--date 2024-05-01T12:00:00)
 
 if [[ " ${cases[*]} " == *" image "* ]]; then
   ocean=$source/shadertoys/exp-sine-ocean
+  # A job folder with a space, an apostrophe, a double quote, a # and a $( ): sbatch's directive
+  # parser must read the quoted --output, and no script may run what the name holds.
+  job="$work/ocean job's \"1\" #2 "'$(touch PWNED)'
   options=(--size 64x36 "${date_option[@]}")
   "$toyhost" run "$ocean" --headless --quiet --frames 24 "${options[@]}" --out "$work/ocean-single/f_%06d.png" 2>/dev/null ||
     fail "image: the single run failed"
-  echo "+ toyhost farm plan $ocean --frames 24 --shards 4 --scheduler slurm --job $work/ocean ${options[*]}"
-  "$toyhost" farm plan "$ocean" --frames 24 --shards 4 --scheduler slurm --job "$work/ocean" "${options[@]}" >/dev/null ||
+  echo "+ toyhost farm plan $ocean --frames 24 --shards 4 --scheduler slurm --job \"$job\" ${options[*]}"
+  "$toyhost" farm plan "$ocean" --frames 24 --shards 4 --scheduler slurm --job "$job" "${options[@]}" >/dev/null ||
     fail "image: farm plan failed"
-  id=$(submit "$work/ocean") || fail "image: sbatch refused the job"
+  id=$(submit "$job") || fail "image: sbatch refused the job"
   wait_job "$id" 300 || fail "image: job $id still queued after 300 s"
-  "$toyhost" farm status "$work/ocean" || { fail "image: farm status says incomplete"; show_logs "$work/ocean"; }
-  same_frames "$work/ocean/frames" "$work/ocean-single" "image (4 array tasks)"
+  "$toyhost" farm status "$job" || { fail "image: farm status says incomplete"; show_logs "$job"; }
+  same_frames "$job/frames" "$work/ocean-single" "image (4 array tasks, a job folder with quotes, # and \$( ))"
+  [ -z "$(find "$work" -name PWNED 2>/dev/null)" ] && [ ! -e PWNED ] || fail "image: a command in the job folder's name ran"
 fi
 
 if [[ " ${cases[*]} " == *" buffers "* ]]; then

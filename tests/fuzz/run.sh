@@ -23,7 +23,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
 build=${BUILD_DIR:-$root/build-fuzz}
 jobs=${JOBS:-1}
-targets_all=(fuzz_manifest fuzz_export fuzz_input_script fuzz_output_pattern fuzz_image fuzz_png_encode fuzz_shader_text)
+targets_all=(fuzz_manifest fuzz_export fuzz_input_script fuzz_output_pattern fuzz_image fuzz_png_encode fuzz_shader_text fuzz_farm)
 flags='-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined'
 options=(-timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024 -print_final_stats=1)
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}

@@ -4,6 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
+#include <functional>
+#include <map>
+#include <optional>
+#include <sstream>
 #include <tuple>
 #include <utility>
 
@@ -210,9 +215,9 @@ TEST(FarmStatus, FramePatternsListsAndExitCodes) {
     EXPECT_EQ(*framePatternOf({"x00.exr"}), "x%02d.exr");
     EXPECT_FALSE(framePatternOf({"notes.txt"}));
     EXPECT_FALSE(framePatternOf({"a_0001.png", "b_0001.png"}));
-    EXPECT_EQ(frameList({}), "");
-    EXPECT_EQ(frameList({3}), "3");
-    EXPECT_EQ(frameList({3, 7, 8, 9, 12}), "3, 7-9, 12");
+    EXPECT_EQ(frameList(std::vector<int>{}), "");
+    EXPECT_EQ(frameList(std::vector<int>{3}), "3");
+    EXPECT_EQ(frameList(std::vector<int>{3, 7, 8, 9, 12}), "3, 7-9, 12");
     EXPECT_NE(exitMeaning(143).find("SIGTERM"), std::string::npos);
     EXPECT_EQ(exitMeaning(0), "finished");
 
@@ -221,7 +226,7 @@ TEST(FarmStatus, FramePatternsListsAndExitCodes) {
     EXPECT_TRUE(status.complete());
     status.shards.push_back({1, {3, 6}, 1, {{5, FrameState::Truncated, "x"}, {4, FrameState::Missing, ""}}, 143});
     EXPECT_FALSE(status.complete());
-    EXPECT_EQ(status.badFrames(), (std::vector<int>{4, 5}));
+    EXPECT_EQ(frameList(status.badSpans()), "4-5");
 }
 
 TEST(FarmStatus, CaptureEveryCountsTheFramesEachShardWrites) {
@@ -259,4 +264,223 @@ TEST(FarmStatus, ExitCodesComeFromGnuParallelsJoblog) {
     const std::map<int, int> codes = exitCodesFromJoblog(joblog);
     EXPECT_EQ(codes, (std::map<int, int>{{0, 0}, {1, 143}, {2, 0}}));  // the last attempt counts
     EXPECT_TRUE(exitCodesFromJoblog("not a joblog\n").empty());
+}
+
+// ---- hostile values (issue 46): nothing a value holds can end a line of a job file ------------
+
+namespace {
+
+// What sbatch makes of the text after "#SBATCH" (its rule, src/sbatch/opt.c): words split at
+// unquoted whitespace, ' and " group, a backslash makes the next byte literal but cannot keep an
+// unquoted whitespace in the word, an unquoted # ends the line. nullopt: an unmatched quote
+// (sbatch exits).
+std::optional<std::vector<std::string>> sbatchWords(const std::string& line) {
+    std::vector<std::string> words;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+        if (i >= line.size()) break;
+        std::string word;
+        char quote = 0;
+        bool escape = false, comment = false;
+        for (; i < line.size() && (quote || !std::isspace(static_cast<unsigned char>(line[i]))); ++i) {
+            const char c = line[i];
+            if (escape) {
+                escape = false;
+                word += c;
+            } else if (c == '\\') {
+                escape = true;
+            } else if (quote) {
+                if (c == quote) quote = 0;
+                else word += c;
+            } else if (c == '\'' || c == '"') {
+                quote = c;
+            } else if (c == '#') {
+                comment = true;
+                break;
+            } else {
+                word += c;
+            }
+        }
+        if (quote) return std::nullopt;
+        if (!word.empty()) words.push_back(word);
+        if (comment) break;
+    }
+    return words;
+}
+
+// The value of `#SBATCH --NAME=...` in `script`, as sbatch reads it.
+std::optional<std::string> sbatchValue(const std::string& script, const std::string& name) {
+    std::istringstream in(script);
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("#SBATCH", 0) != 0) continue;
+        std::optional<std::vector<std::string>> words = sbatchWords(line.substr(7));
+        if (!words) return std::nullopt;
+        for (const std::string& word : *words)
+            if (word.rfind("--" + name + "=", 0) == 0) return word.substr(name.size() + 3);
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+TEST(FarmPlan, RefusesLineBreaksNulAndInvalidUtf8InEveryValueItWrites) {
+    const std::vector<std::pair<std::string, std::string>> hostile = {
+        {"\n", "line break"}, {"\r", "carriage return"}, {std::string(1, '\0'), "NUL"}, {"\xff", "UTF-8"}};
+    for (Scheduler scheduler : {Scheduler::Slurm, Scheduler::Kubernetes, Scheduler::Parallel}) {
+        for (const auto& [bad, words] : hostile) {
+            const std::vector<std::pair<std::string, std::function<void(PlanRequest&)>>> plants = {
+                {"--job", [&](PlanRequest& r) { r.jobDir = "/x/job" + bad + "touch PWNED" + bad + "x"; }},
+                {"the target", [&](PlanRequest& r) { r.target = "/x/toy" + bad + "touch PWNED"; }},
+                {"--toyhost", [&](PlanRequest& r) { r.toyhost = "/opt/toyhost" + bad + "touch PWNED"; }},
+                {"--frame-name", [&](PlanRequest& r) { r.frameName = "f" + bad + "_%04d.png"; }},
+                {"--time", [&](PlanRequest& r) { r.slurmTime = "1" + bad + "touch PWNED"; }},
+                {"--image", [&](PlanRequest& r) { r.image = "toyhost" + bad + "x"; }},
+                {"--define", [&](PlanRequest& r) { r.runOptions = {"--define", "X=" + bad}; }},
+                {"--mouse-script", [&](PlanRequest& r) { r.runOptions = {"--mouse-script=/x/s" + bad + ".json"}; }},
+            };
+            for (const auto& [option, plant] : plants) {
+                PlanRequest r = request(scheduler, true);
+                plant(r);
+                Result<std::vector<PlanFile>> files = planFarm(r);
+                ASSERT_FALSE(files) << option << " with " << words << " was planned";
+                const std::string message = files.error().first().message;
+                EXPECT_EQ(files.error().first().code, Code::Usage);
+                EXPECT_NE(message.find(option), std::string::npos) << message;
+                EXPECT_NE(message.find(words), std::string::npos) << message;
+            }
+        }
+    }
+}
+
+TEST(FarmPlan, SbatchDirectivesReadBackAsTheValuesGivenForSlurmsParser) {
+    // A space, an apostrophe, a double quote, a backslash-free #, a $ in the job folder: sbatch
+    // must read back exactly the folder. Backslashes before the spaces were not enough: sbatch
+    // 22.05.8 said "Invalid directive found in batch script: job's".
+    PlanRequest r = request(Scheduler::Slurm, true);
+    r.jobDir = "/scratch/my job's \"best\" #1 $(touch PWNED)";
+    r.slurmTime = "1-02:03:04";
+    auto files = planFarm(r);
+    ASSERT_TRUE(files) << files.error().text();
+    for (const char* name : {"job.sbatch", "checkpoints.sbatch"}) {
+        const PlanFile* sbatch = fileNamed(*files, name);
+        ASSERT_NE(sbatch, nullptr) << name;
+        EXPECT_EQ(sbatchValue(sbatch->text, "output"),
+                  std::optional<std::string>("/scratch/my job's \"best\" #1 $(touch PWNED)/logs/%x-%A_%a.log"))
+            << sbatch->text;
+        EXPECT_EQ(sbatchValue(sbatch->text, "time"), std::optional<std::string>("1-02:03:04"));
+    }
+    EXPECT_EQ(sbatchWords(R"( --output=/a/my\ job)"), (std::vector<std::string>{"--output=/a/my", "job"}))
+        << "the rule the quoting follows: a backslash does not keep a space in the word";
+    // A backslash turns off Slurm's %A/%a in --output: refused for Slurm, fine elsewhere.
+    r.jobDir = "/scratch/back\\slash";
+    auto refused = planFarm(r);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().text().find("backslash"), std::string::npos);
+    r.scheduler = Scheduler::Parallel;
+    EXPECT_TRUE(planFarm(r));
+    // A % is read by toyhost run --out (and Slurm's log names): refused for every scheduler.
+    for (Scheduler scheduler : {Scheduler::Slurm, Scheduler::Kubernetes, Scheduler::Parallel}) {
+        PlanRequest percent = request(scheduler, false);
+        percent.jobDir = "/scratch/100%";
+        auto files = planFarm(percent);
+        ASSERT_FALSE(files);
+        EXPECT_NE(files.error().text().find("--job: holds a %"), std::string::npos) << files.error().text();
+    }
+}
+
+TEST(FarmPlan, TheTargetIsNeverWrittenIntoACommentAndPathsAreQuoted) {
+    for (Scheduler scheduler : {Scheduler::Slurm, Scheduler::Kubernetes, Scheduler::Parallel}) {
+        PlanRequest r = request(scheduler, true);
+        r.target = "/srv/toy $(touch PWNED) 'x'";
+        auto files = planFarm(r);
+        ASSERT_TRUE(files) << files.error().text();
+        for (const PlanFile& file : *files) {
+            if (file.name == "farm.json") continue;
+            std::istringstream in(file.text);
+            for (std::string line; std::getline(in, line);)
+                if (line.rfind("#", 0) == 0) EXPECT_EQ(line.find("/srv/toy"), std::string::npos) << file.name << ": " << line;
+            if (file.text.find("/srv/toy") != std::string::npos)
+                EXPECT_NE(file.text.find(R"('/srv/toy $(touch PWNED) '\''x'\''')"), std::string::npos) << file.name;
+        }
+    }
+}
+
+TEST(FarmPlan, TimeIsCheckedAgainstSlurmsFormats) {
+    for (const char* good : {"30", "30:00", "1:30:00", "2-0", "2-12", "2-12:30", "2-12:30:15", "0", "UNLIMITED", "infinite"})
+        EXPECT_FALSE(slurmTimeProblem(good)) << good;
+    for (const char* bad : {"", "1h", "1:2:3:4", "1-2-3", "-5", "1-", ":30", "1::2", "1 ", "12345678901", "1\ntouch PWNED",
+                            "1-2:3:4:5", "+5", "0x10"})
+        EXPECT_TRUE(slurmTimeProblem(bad)) << bad;
+    PlanRequest r = request(Scheduler::Slurm, false);
+    r.slurmTime = "one hour";
+    auto files = planFarm(r);
+    ASSERT_FALSE(files);
+    EXPECT_NE(files.error().text().find("--time one hour"), std::string::npos);
+    EXPECT_NE(files.error().text().find("DAYS-HOURS:MINUTES:SECONDS"), std::string::npos);
+}
+
+TEST(FarmPlan, AFrameNameOfAnyLengthIsCheckedWithoutRecursion) {
+    // std::regex recursed once per character: 120,000 characters overflowed the stack (SIGSEGV).
+    const std::string huge = std::string(120000, 'a') + "_%04d.png";
+    std::optional<std::string> problem = frameNameProblem(huge);
+    ASSERT_TRUE(problem);
+    EXPECT_NE(problem->find("255"), std::string::npos);
+    for (const char* good : {"f_%06d.png", "%d.exr", "f%01d.png", "f%099d.png", "a b_%02d.png"})
+        EXPECT_FALSE(frameNameProblem(good)) << good;
+    for (const char* bad : {"f_%0d.png", "f_%00d.png", "f_%100d.png", "f_%d", "f_%d.jpg", "%", "%d.png/", "f_%4d.png", "%%d.png"})
+        EXPECT_TRUE(frameNameProblem(bad)) << bad;
+}
+
+TEST(FarmStatus, FarmJsonCountsAreWholeNumbersReadAsWritten) {
+    // nlohmann's get<int>() read 4294967304 as 8 (wrapped) and 8.9 as 8 (truncated): "8/8 frames ok".
+    for (const char* frames : {"4294967304", "8.9", "8.0", "-8", "0", "\"8\"", "1e1", "99999999999999999999"}) {
+        const std::string json = std::string(R"({"frames": )") + frames + R"(, "shards": 2, "frameName": "f_%04d.png"})";
+        auto layout = layoutFromPlan(json, "/j");
+        ASSERT_FALSE(layout) << frames;
+        const std::string text = layout.error().text();
+        EXPECT_NE(text.find("/j/farm.json"), std::string::npos) << text;
+        EXPECT_NE(text.find("\"frames\""), std::string::npos) << text;
+        EXPECT_EQ(layout.error().first().code, Code::Usage);
+    }
+    auto shards = layoutFromPlan(R"({"frames": 8, "shards": 2.5, "frameName": "f_%04d.png"})", "/j");
+    ASSERT_FALSE(shards);
+    EXPECT_NE(shards.error().text().find("\"shards\""), std::string::npos);
+    EXPECT_TRUE(layoutFromPlan(R"({"frames": 8, "shards": 2, "frameName": "f_%04d.png"})", "/j"));
+}
+
+TEST(FarmStatus, AHostileJoblogIsReadWithoutRegexOrAbort) {
+    const std::string header = "Seq\tHost\tStarttime\tJobRuntime\tSend\tReceive\tExitval\tSignal\tCommand\n";
+    // A 120 KB command field (std::regex recursed per character: SIGSEGV), an Exitval beyond int
+    // (std::stoi threw out_of_range: abort), a shard number beyond int, a signal beyond int; then
+    // a good line with a quoted job folder, and a line of tabs.
+    const std::string joblog = header + "1\t:\t0\t1\t0\t0\t0\t0\t" + std::string(120000, 'x') + "/run-shard.sh 0\n" +
+                               "2\t:\t0\t1\t0\t0\t99999999999\t0\t/j/run-shard.sh 1\n" +
+                               "3\t:\t0\t1\t0\t0\t1\t0\t/j/run-shard.sh 99999999999\n" +
+                               "4\t:\t0\t1\t0\t0\t1\t99999999999\t/j/run-shard.sh 2\n" +
+                               "5\t:\t0\t1\t0\t0\t3\t0\t'/my job'/run-shard.sh 3\n" + std::string(100000, '\t') + "\n" +
+                               // parallel -q (parallel.sh) quotes the program's path as one word.
+                               "6\t:\t0\t1\t0\t0\t0\t15\t'/my job $(x)/run-shard.sh' 4\n";
+    const std::map<int, int> codes = exitCodesFromJoblog(joblog);
+    EXPECT_EQ(codes, (std::map<int, int>{{0, 0}, {3, 3}, {4, 143}}));
+}
+
+TEST(FarmStatus, FrameListsOfRunsAndCountsWithoutWalkingEveryFrame) {
+    EXPECT_EQ(frameList(std::vector<FrameSpan>{}), "");
+    EXPECT_EQ(frameList(std::vector<FrameSpan>{{3, 4}, {7, 8}, {8, 10}, {12, 13}}), "3, 7-9, 12");
+    EXPECT_EQ(frameList(std::vector<FrameSpan>{{8, 2147483647}}), "8-2147483646");
+    FrameLayout layout;
+    layout.frames = 2147483647;
+    layout.captureEvery = 4;
+    const FrameSpan all{0, 2147483647};
+    EXPECT_EQ(layout.capturedCount(0, 2147483646, all), 536870912 + 1);  // multiples of 4, and the last
+    EXPECT_EQ(layout.firstCaptured(1, 100, all), 4);
+    EXPECT_EQ(layout.lastCaptured(1, 100, all), 100);
+    EXPECT_EQ(layout.lastCaptured(2147483600, 2147483646, all), 2147483646);
+    EXPECT_FALSE(layout.firstCaptured(5, 7, all));
+    layout.frameName = "f_%04d.png";
+    EXPECT_EQ(layout.frameNumberOf("f_0007.png"), 7);
+    EXPECT_EQ(layout.frameNumberOf("f_12345.png"), 12345);
+    for (const char* other : {"f_7.png", "f_0007.exr", "g_0007.png", "f_-001.png", "f_99999999999.png", "f_.png"})
+        EXPECT_FALSE(layout.frameNumberOf(other)) << other;
 }

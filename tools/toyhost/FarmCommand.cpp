@@ -9,15 +9,22 @@
 #include <sstream>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
 #include "Commands.h"
 #include "Console.h"
 #include "NumberOptions.h"
+#include "core/AtomicFile.h"
 #include "core/Defaults.h"
+#include "core/InFlight.h"
 #include "export/LoadShadertoy.h"
 #include "farm/FarmPlan.h"
 #include "farm/FarmStatus.h"
 #include "farm/frames/FrameCheck.h"
 #include "farm/frames/JoinFrames.h"
+#include "session/StopSignals.h"
 
 namespace toyhost::cli {
 
@@ -104,12 +111,92 @@ std::optional<double> fpsOption(const std::vector<std::string>& options) {
     return std::nullopt;
 }
 
+// The first folder of `dir`'s path that does not exist yet (what create_directories makes), or
+// empty when `dir` exists.
+fs::path firstMissingFolder(const fs::path& dir) {
+    std::error_code ec;
+    fs::path missing;
+    for (fs::path at = dir; !at.empty() && !fs::exists(at, ec); at = at.parent_path()) {
+        missing = at;
+        if (at == at.parent_path()) break;
+    }
+    return missing;
+}
+
+// Writes `text` to `file`; errors carry the system's reason (ENOSPC: "No space left on device").
+Status writeWhole(const fs::path& file, const std::string& text, const fs::path& shownAs) {
+    std::FILE* out = std::fopen(file.c_str(), "wb");
+    if (!out) return fileError(shownAs.string(), std::string("cannot be written: ") + std::strerror(errno), Code::IoWrite);
+    const bool wrote = std::fwrite(text.data(), 1, text.size(), out) == text.size();
+    int error = wrote ? 0 : errno;
+    if (std::fclose(out) != 0 && !error) error = errno;
+    if (wrote && !error) return okStatus();
+    return fileError(shownAs.string(), std::string("cannot be written: ") + std::strerror(error),
+                     error == ENOSPC ? Code::IoNoSpace : Code::IoWrite);
+}
+
+// The plan's files in `dir`, all or none: each is written under a hidden temporary name beside
+// its own, and only when every one is complete are they renamed into place, farm.json (whose
+// presence means "a job is planned here") last. On a failure nothing of the plan is left, nor the
+// job folder when this call made it.
+Status writePlan(const fs::path& dir, const std::vector<farm::PlanFile>& files) {
+    std::error_code ec;
+    const fs::path made = firstMissingFolder(dir);
+    fs::create_directories(dir, ec);
+    if (ec) {
+        const Status failure = fileError(dir.string(), "cannot create the job folder: " + ec.message(), Code::IoWrite);
+        std::error_code ignored;
+        if (!made.empty()) fs::remove_all(made, ignored);  // the folders above it that were made
+        return failure;
+    }
+    std::vector<std::pair<fs::path, fs::path>> written;  // temporary, final
+    auto undo = [&](Status failure) {
+        std::error_code ignored;
+        for (const auto& [temp, final] : written) {
+            fs::remove(temp, ignored);
+            inflight::removeFile(temp);
+        }
+        if (!made.empty()) fs::remove_all(made, ignored);
+        return failure;
+    };
+    for (const farm::PlanFile& file : files) {
+        const fs::path path = dir / file.name;
+        const fs::path temp = temporarySibling(path);
+        if (!inflight::addFile(temp)) return undo(fileError(path.string(), "not written: toyhost is stopping", Code::Interrupted));
+        written.push_back({temp, path});
+        if (Status done = writeWhole(temp, file.text, path); !done) return undo(done);
+        if (file.executable) {
+            fs::permissions(temp, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
+                            fs::perm_options::add, ec);
+            if (ec) return undo(fileError(path.string(), "cannot be made executable: " + ec.message(), Code::IoWrite));
+        }
+    }
+    // farm.json is the first file of the plan: renamed last. A rename within one folder fails only
+    // when the folder itself changes under us; the files already renamed are then taken back.
+    std::vector<std::size_t> order;
+    for (std::size_t i = 1; i <= written.size(); ++i) order.push_back(i % written.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const auto& [temp, final] = written[order[k]];
+        fs::rename(temp, final, ec);
+        if (ec) {
+            const Status failure = fileError(final.string(), "cannot be put in place: " + ec.message(), Code::IoWrite);
+            std::error_code ignored;
+            for (std::size_t j = 0; j < k; ++j) fs::remove(written[order[j]].second, ignored);
+            return undo(failure);
+        }
+        inflight::removeFile(temp);
+    }
+    return okStatus();
+}
+
 }  // namespace
 
 void FarmCommand::define(CLI::App& app) {
     farm_ = app.add_subcommand("farm", "Render farms: plan a sharded job for Slurm, Kubernetes or GNU parallel, check "
                                        "its frames, join them into a video (docs/farm.md)");
-    farm_->require_subcommand(1);
+    // At most one; none is answered by execute() with the three to choose from (CLI11's own words,
+    // "A subcommand is required", named none of them).
+    farm_->require_subcommand(0, 1);
 
     plan_ = farm_->add_subcommand(
         "plan", "Write the job files of a render split into shards: run-shard.sh (the one command, with the run "
@@ -161,8 +248,9 @@ void FarmCommand::define(CLI::App& app) {
     const CLI::Validator wholeNumber = wholeNumberOption();
     for (const char* name : {"--frames", "--shards", "--cpus-per-task", "--parallelism"})
         plan_->get_option(name)->transform(wholeNumber);
-    for (const char* name : {"--frames", "--shards"}) status_->get_option(name)->transform(wholeNumber);
-    join_->get_option("--frames")->transform(wholeNumber);
+    for (const char* name : {"--frames", "--shards"})
+        status_->get_option(name)->check(CLI::Range(1, INT_MAX))->transform(wholeNumber);
+    join_->get_option("--frames")->check(CLI::Range(1, INT_MAX))->transform(wholeNumber);
     join_->get_option("--video-quality")->transform(wholeNumber);
     join_->get_option("--fps")->transform(decimalNumberOption());
 }
@@ -170,7 +258,9 @@ void FarmCommand::define(CLI::App& app) {
 int FarmCommand::execute() {
     if (plan_->parsed()) return plan();
     if (status_->parsed()) return status();
-    return join();
+    if (join_->parsed()) return join();
+    return usage("toyhost farm: give a subcommand: plan (write a sharded job's files), status (check its frames) or "
+                 "join (encode them into a video); toyhost farm SUBCOMMAND --help for its options");
 }
 
 int FarmCommand::plan() {
@@ -186,8 +276,10 @@ int FarmCommand::plan() {
     // share this machine's installation.
     if (!toyhost_.empty()) request.toyhost = toyhost_;
     else request.toyhost = request.scheduler == farm::Scheduler::Kubernetes ? "toyhost" : thisProgram();
-    request.target = fs::absolute(target_).lexically_normal().string();
-    request.jobDir = fs::absolute(job_).lexically_normal().string();
+    std::error_code cwd;
+    request.target = fs::absolute(target_, cwd).lexically_normal().string();
+    request.jobDir = fs::absolute(job_, cwd).lexically_normal().string();
+    if (cwd) return fail(Error("farm plan: the current folder cannot be read: " + cwd.message(), Code::IoWrite));
     if (request.jobDir.size() > 1 && request.jobDir.back() == '/') request.jobDir.pop_back();
     request.frames = frames_;
     request.shards = shards_;
@@ -203,21 +295,13 @@ int FarmCommand::plan() {
 
     const fs::path dir = request.jobDir;
     std::error_code ec;
-    if (fs::exists(dir / "farm.json") && !force_)
+    const bool planned = fs::exists(dir / "farm.json", ec);
+    if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory)
+        return fail(fileError(dir.string(), "the job folder cannot be used: " + ec.message(), Code::IoWrite));
+    if (planned && !force_)
         return fail(fileError((dir / "farm.json").string(), "a job is planned here already (--force replaces its files)",
                               Code::IoExists));
-    fs::create_directories(dir, ec);
-    if (ec) return fail(fileError(dir.string(), "cannot create the job folder: " + ec.message(), Code::IoWrite));
-    for (const farm::PlanFile& file : *files) {
-        const fs::path path = dir / file.name;
-        std::ofstream out(path, std::ios::binary | std::ios::trunc);
-        out << file.text;
-        out.close();
-        if (!out) return fail(fileError(path.string(), "cannot be written", Code::IoWrite));
-        if (file.executable)
-            fs::permissions(path, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
-                            fs::perm_options::add, ec);
-    }
+    if (Status written = writePlan(dir, *files); !written) return fail(written.error());
     std::cout << "toyhost farm: " << request.shards << " shards of " << request.frames << " frames"
               << (request.stateful && request.shards > 1 ? ", starting from a checkpoint chain (checkpoints.sh)" : "")
               << ", in " << dir.string() << ":\n";
@@ -231,17 +315,16 @@ int FarmCommand::status() {
     Result<farm::FrameLayout> layout = layoutOf(dir_, checkFrames_, checkShards_, pattern_);
     if (!layout) return fail(layout.error());
     const farm::FarmStatus state = checkFarm(*layout);
-    int good = 0, expected = 0;
+    long long good = 0, expected = 0;
     for (const farm::ShardStatus& shard : state.shards) {
         good += shard.good;
-        const int count = shard.good + static_cast<int>(shard.problems.size());
-        expected += count;
+        expected += shard.expected;
         std::cout << "shard " << shard.index << " (frames " << shard.span.first << "-" << shard.span.end - 1
-                  << "): " << shard.good << "/" << count << " ok";
+                  << "): " << shard.good << "/" << shard.expected << " ok";
         for (farm::FrameState kind : {farm::FrameState::Missing, farm::FrameState::Truncated, farm::FrameState::Undecodable}) {
-            std::vector<int> frames;
+            std::vector<FrameSpan> frames;
             for (const farm::FrameProblem& p : shard.problems)
-                if (p.state == kind) frames.push_back(p.frame);
+                if (p.state == kind) frames.push_back({p.frame, p.lastFrame() + 1});
             if (!frames.empty()) std::cout << "; " << farm::frameStateName(kind) << " " << farm::frameList(frames);
         }
         if (shard.exitCode)
@@ -253,7 +336,7 @@ int FarmCommand::status() {
                           << ": " << p.reason << "\n";
     }
     std::cout << good << "/" << expected << " frames ok";
-    if (!state.complete()) std::cout << "; to render again: " << farm::frameList(state.badFrames());
+    if (!state.complete()) std::cout << "; to render again: " << farm::frameList(state.badSpans());
     std::cout << "\n";
     return state.complete() ? kExitOk : kExitFailure;
 }
@@ -263,7 +346,7 @@ int FarmCommand::join() {
     if (!layout) return fail(layout.error());
     const farm::FarmStatus state = checkFarm(*layout);
     if (!state.complete())
-        return fail(Error("frames " + farm::frameList(state.badFrames()) + " of " + std::to_string(layout->frames) +
+        return fail(Error("frames " + farm::frameList(state.badSpans()) + " of " + std::to_string(layout->frames) +
                               " are missing or damaged (toyhost farm status " + dir_ + " says which and why)",
                           Code::IoNotFound));
     std::vector<fs::path> frames;
@@ -282,8 +365,12 @@ int FarmCommand::join() {
     } catch (const std::exception&) {
         return usage("farm join: the plan's --fps is not a number: give --fps");
     }
-    if (!(fps > 0)) return usage("farm join: --fps must be above 0");
-    if (Status joined = joinFrames(frames, out_, fps, settings); !joined) return fail(joined.error());
+    if (!(fps >= defaults::kMinFps && fps <= defaults::kMaxFps))
+        return usage("farm join: --fps " + std::to_string(fps) + ": expected from " + std::to_string(defaults::kMinFps) +
+                     " to " + std::to_string(defaults::kMaxFps) + " frames per second, as run --fps");
+    installStopSignals();
+    if (Status joined = joinFrames(frames, out_, fps, settings, [] { return stopSignal() != 0; }); !joined)
+        return fail(joined.error());
     std::cout << "toyhost farm: " << frames.size() << " frames joined into " << out_ << "\n";
     return kExitOk;
 }

@@ -14,7 +14,10 @@ namespace toyhost {
 // complete but not a picture the decoders read; `reason` gets their words.
 farm::FrameState checkFrameFile(const std::filesystem::path& file, std::string& reason);
 
-// Every frame of `layout`, per shard, with the exit code each shard's last attempt recorded.
+// Every frame of `layout`, per shard, with the exit code each shard's last attempt recorded. The
+// frame folder is listed once: only the frames found are read, absent ones are counted in runs
+// (so any frame count costs what the folder holds). A file over 256 MiB is judged from its first
+// and last bytes, not decoded.
 farm::FarmStatus checkFarm(const farm::FrameLayout& layout);
 
 }  // namespace toyhost

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 #include "capture/VideoSink.h"
@@ -13,7 +14,9 @@ namespace toyhost {
 
 // Decodes `frames` in order and writes them to `out` at `fps`. Every frame must be a PNG of the
 // first one's size; an error names the first one that is not, and leaves no video behind.
+// `stopRequested` (a signal, for the CLI) is asked before each frame: when it says so, ffmpeg is
+// killed, its unfinished file removed, and the error is Code::Interrupted.
 Status joinFrames(const std::vector<std::filesystem::path>& frames, const std::filesystem::path& out, double fps,
-                  const VideoSettings& settings);
+                  const VideoSettings& settings, const std::function<bool()>& stopRequested = {});
 
 }  // namespace toyhost
