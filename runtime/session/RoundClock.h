@@ -1,9 +1,11 @@
 // RoundClock: a session's round statistics, apart from its loop: when the command and the round
 // started, the frames rendered this round, the time spent in the player's frame calls and GPU
-// waits, and the end of the first frame; the report's times and the progress line are made from
+// waits, the end of the first frame and the time the run stood paused (a window's pause, which
+// the report's frame rate leaves out); the report's times and the progress line are made from
 // them. No GL needed.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 
 #include "session/SessionObserver.h"
@@ -25,6 +27,7 @@ public:
     double beginRound() {
         frames_ = 0;
         renderSeconds_ = 0;
+        pausedSeconds_ = 0;
         roundStartedAt_ = Clock::now();
         return secondsBetween(startedAt_, roundStartedAt_);
     }
@@ -45,21 +48,35 @@ public:
         if (frames_ == 0) firstFrameEndedAt_ = Clock::now();
         ++frames_;
     }
+    // The loop had no frame to render and waited in `wait`; while `paused` (a window's pause, not
+    // a paced wait for the next frame) that time is left out of the frames' time once a frame
+    // was rendered.
+    template <class Wait>
+    void idle(bool paused, Wait wait) {
+        const Clock::time_point started = Clock::now();
+        wait();
+        if (paused) idled(started, Clock::now());
+    }
+    void idled(Clock::time_point from, Clock::time_point to) {
+        if (frames_ > 0) pausedSeconds_ += secondsBetween(from, to);
+    }
 
     int frames() const { return frames_; }
     double renderSeconds() const { return renderSeconds_; }
     double roundSeconds() const { return secondsBetween(roundStartedAt_, Clock::now()); }
     // The report's first-frame and rest times (nothing when no frame was rendered).
-    void fill(SessionReport& report) const {
+    void fill(SessionReport& report, Clock::time_point now = Clock::now()) const {
         if (frames_ == 0) return;
         report.firstFrameSeconds = secondsBetween(roundStartedAt_, firstFrameEndedAt_);
-        report.restSeconds = secondsBetween(firstFrameEndedAt_, Clock::now());
+        report.pausedSeconds = pausedSeconds_;
+        report.restSeconds = std::max(0.0, secondsBetween(firstFrameEndedAt_, now) - pausedSeconds_);
     }
 
 private:
     Clock::time_point startedAt_ = Clock::now(), roundStartedAt_ = startedAt_, firstFrameEndedAt_ = startedAt_;
     int frames_ = 0;
     double renderSeconds_ = 0;
+    double pausedSeconds_ = 0;
 };
 
 }  // namespace toyhost

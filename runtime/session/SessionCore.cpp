@@ -333,7 +333,7 @@ Result<SessionReport> SessionCore::run(SessionDriver& driver) {
         events_.clear();
         std::optional<FrameTime> time = driver.nextFrame(frameNumber_, events_);
         if (!time) {
-            driver.idle(*this);
+            clock_.idle(driver.paused(), [&] { driver.idle(*this); });
             continue;
         }
         if (Status rendered = renderFrame(*time, events_); !rendered) {

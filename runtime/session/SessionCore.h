@@ -66,6 +66,8 @@ public:
     virtual void idle(SessionCore& session) { (void)session; }
     // A new --watch round starts at frame 0: the clock and input scripts start over.
     virtual void restart() {}
+    // The run stands paused (a window's pause): its idle time is not frame time in the report.
+    virtual bool paused() const { return false; }
 };
 
 class SessionCore {

@@ -43,7 +43,8 @@ struct SessionReport {
     // frame until every output was written.
     double startupSeconds = 0;
     double firstFrameSeconds = 0;
-    double restSeconds = 0;
+    double restSeconds = 0;   // the frames after the first, paused time left out
+    double pausedSeconds = 0; // a window's pauses after the first frame
     std::vector<std::filesystem::path> files;  // complete output files (frames, a video, audio)
     std::optional<std::filesystem::path> checkpoint;
     std::uint64_t bytesWritten = 0;  // the captured frames' files (a video's size)

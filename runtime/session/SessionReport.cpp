@@ -40,7 +40,8 @@ std::vector<std::string> summaryLines(const SessionReport& r) {
             const double perFrame = r.restSeconds / rest;
             line += ", then " + std::to_string(rest) + (rest == 1 ? " frame" : " frames") + " in " +
                     duration(r.restSeconds) + " (" + format(perFrame > 0 ? "%.1f" : "%.0f", perFrame > 0 ? 1.0 / perFrame : 0) +
-                    " frames/s, " + format(perFrame * 1000.0 < 10.0 ? "%.2f" : "%.1f", perFrame * 1000.0) + " ms/frame)";
+                    " frames/s, " + format(perFrame * 1000.0 < 10.0 ? "%.2f" : "%.1f", perFrame * 1000.0) + " ms/frame" +
+                    (r.pausedSeconds > 0 ? "; " + duration(r.pausedSeconds) + " paused, not counted" : "") + ")";
         }
         lines.push_back(line);
     }

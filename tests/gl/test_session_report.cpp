@@ -3,7 +3,10 @@
 // nothing was.
 #include "GlTestSupport.h"
 
+#include "session/RoundClock.h"
 #include "session/SessionObserver.h"
+
+#include <chrono>
 
 namespace toyhost::testing {
 namespace {
@@ -31,6 +34,38 @@ TEST(SessionReport, SeparatesStartUpTheFirstFrameAndTheSteadyRate) {
               "frames in 12.000 s (5.0 frames/s, 200.0 ms/frame)");
     r.frames = 1;
     EXPECT_EQ(summaryLines(r)[0], "ocean: 1 frame at 640x360, headless on EGL surfaceless: start-up 221.1 ms, first frame 3.159 s");
+}
+
+// Issue 43: a window paused for 40 s during a 1 s run said "0.4 frames/s". The pause is left out of
+// the frames' time (RoundClock) and said apart; a paced wait for the next frame is frame time.
+TEST(SessionReport, PausedTimeIsNotFrameTime) {
+    using Clock = RoundClock::Clock;
+    RoundClock clock;
+    clock.beginRound();
+    (void)clock.frameStarting();
+    clock.idled(Clock::now(), Clock::now() + std::chrono::seconds(100));  // before the first frame: start-up
+    clock.frameDone();
+    const Clock::time_point from = Clock::now();
+    clock.idled(from, from + std::chrono::seconds(40));
+    clock.idle(false, [] {});  // a paced wait: counted as the frames' time (nothing to add here)
+    for (int n = 0; n < 10; ++n) clock.frameDone();
+    SessionReport r = report();
+    r.frames = clock.frames();
+    clock.fill(r, from + std::chrono::seconds(42));
+    EXPECT_NEAR(r.pausedSeconds, 40.0, 1e-9);
+    EXPECT_NEAR(r.restSeconds, 2.0, 0.5) << "42 s since the first frame, 40 of them paused";
+    r.firstFrameSeconds = 0.5;
+    r.restSeconds = 2.0;
+    r.startupSeconds = 0.1;
+    EXPECT_EQ(summaryLines(r)[0],
+              "ocean: 11 frames at 640x360, headless on EGL surfaceless: start-up 100.0 ms, first frame 500.0 ms, then 10 "
+              "frames in 2.000 s (5.0 frames/s, 200.0 ms/frame; 40.000 s paused, not counted)");
+    clock.beginRound();
+    (void)clock.frameStarting();
+    clock.frameDone();
+    SessionReport next = report();
+    clock.fill(next);
+    EXPECT_EQ(next.pausedSeconds, 0.0) << "a new round starts its pauses over";
 }
 
 TEST(SessionReport, SaysWhatWasWrittenIncludingACheckpoint) {

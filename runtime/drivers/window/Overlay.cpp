@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "core/ProblemDigest.h"
 #include "session/SessionCore.h"
 
 namespace toyhost {
@@ -16,8 +17,6 @@ namespace {
 // Debian's fonts-dejavu-core; ImGui's built-in font when it is not installed.
 constexpr const char* kFontFile = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
 constexpr float kFontPixels = 14.0f;
-// As formatDiagnostics lists them on stderr.
-constexpr std::size_t kMaxProblemsShown = 100;
 
 // Binds an ImGui context for a scope (ImGui keeps the current one in a global).
 class CurrentImGui {
@@ -31,8 +30,13 @@ private:
     ImGuiContext* previous_;
 };
 
-void drawProblems(const std::vector<Diagnostic>& problems, int framebufferW, int framebufferH) {
+// The problems as stderr writes them (formatDiagnostic), but only the first of each pass, files
+// named relative to the shadertoy's folder (core/ProblemDigest.h) and a count of the rest: eight
+// problems with absolute paths covered a 640x360 canvas and the last ones were cut without a word.
+void drawProblems(const std::vector<Diagnostic>& problems, const std::filesystem::path& folder, int framebufferW,
+                  int framebufferH) {
     if (problems.empty()) return;
+    const ProblemDigest digest = digestProblems(problems, folder);
     const float w = static_cast<float>(framebufferW), h = static_cast<float>(framebufferH);
     ImGui::SetNextWindowPos(ImVec2(0, h), ImGuiCond_Always, ImVec2(0, 1));
     ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, h));
@@ -41,17 +45,15 @@ void drawProblems(const std::vector<Diagnostic>& problems, int framebufferW, int
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.55f, 1.0f));
-    // stderr's text (formatDiagnostics), each problem's line wrapped to the window so that its
-    // place and message are read in a small window; the excerpt is not, so the caret stays under
-    // its column.
-    const std::size_t shown = std::min<std::size_t>(problems.size(), kMaxProblemsShown);
-    for (std::size_t i = 0; i < shown; ++i) {
+    // Each problem's line wrapped to the window so that its place and message are read in a small
+    // window; the excerpt is not, so the caret stays under its column.
+    for (const Diagnostic& problem : digest.shown) {
         ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextUnformatted(formatDiagnostic(problems[i]).c_str());
+        ImGui::TextUnformatted(formatDiagnostic(problem).c_str());
         ImGui::PopTextWrapPos();
-        if (!problems[i].excerpt.empty()) ImGui::TextUnformatted(problems[i].excerpt.c_str());
+        if (!problem.excerpt.empty()) ImGui::TextUnformatted(problem.excerpt.c_str());
     }
-    if (shown < problems.size()) ImGui::Text("... and %zu more", problems.size() - shown);
+    if (digest.more > 0) ImGui::Text("+%zu more (all of them on stderr)", digest.more);
     ImGui::PopStyleColor();
     ImGui::End();
 }
@@ -95,7 +97,8 @@ void Overlay::draw(SessionCore& session, const OverlayInput& input, std::vector<
     io.MousePos = input.pointer.x >= 0 ? ImVec2(input.pointer.x, input.pointer.y) : ImVec2(-FLT_MAX, -FLT_MAX);
     io.MouseDown[0] = input.pointer.down && inspector_.open();
     ImGui::NewFrame();
-    drawProblems(session.problems(), input.framebufferW, input.framebufferH);
+    drawProblems(session.problems(), session.plan().shadertoy.manifest.manifestPath.parent_path(), input.framebufferW,
+                 input.framebufferH);
     inspector_.draw(session, input.clock, input.framebufferW, input.framebufferH, notices);
     ImGui::Render();
     renderer_->render(*ImGui::GetDrawData(), input.framebufferW, input.framebufferH);

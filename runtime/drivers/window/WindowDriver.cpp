@@ -78,6 +78,8 @@ public:
         return true;
     }
 
+    bool paused() const override { return clock_.paused(); }
+
     std::optional<FrameTime> nextFrame(int, std::vector<InputEvent>& events) override {
         // Input while paused makes the site paint one frame at the paused time.
         if (clock_.paused() && events_.hasEvents()) clock_.forceFrame();
