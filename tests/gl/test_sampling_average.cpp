@@ -158,11 +158,12 @@ TEST(SamplingAverage, Supersample4MatchesThe4xRenderAveragedInTheSameSpace) {
 }
 
 TEST(SamplingAverage, DitherOfAFloatAverageBreaksUpSlowBands) {
-    // 15 levels over 320 pixels: bands of about 21 pixels in one sample; every draw used to be
-    // rounded, so the average and its dither only changed the band edges.
+    // The ramp: 15 levels over 640 pixels, bands of about 43 pixels in one sample. Every
+    // draw used to be rounded, so the average and its dither only changed the band edges (runs of
+    // 43 remained).
     const std::string ramp = "void mainImage(out vec4 c, in vec2 p) {\n"
                              "    c = vec4(vec3((120.0 + 15.0 * p.x / iResolution.x) / 255.0), 1.0);\n}\n";
-    constexpr int w = 320, h = 8;
+    constexpr int w = 640, h = 8;
     SessionSettings one = sampled(w, h, 1);
     SessionSettings dithered = sampled(w, h, 4);
     dithered.dither = true;
@@ -170,11 +171,11 @@ TEST(SamplingAverage, DitherOfAFloatAverageBreaksUpSlowBands) {
     const std::vector<std::uint8_t> smooth = renderCode("ramp", ramp, dithered);
     ASSERT_EQ(bands.size(), smooth.size());
     const int band = longestRun(bands, w, 0);
-    EXPECT_GE(band, 20);
-    // The 8x8 Bayer thresholds of a row span about 2/3 of a level, so a run lasts about a third
-    // of a band (7-8 px here): at most half a band.
+    EXPECT_GE(band, 42);
+    // A row of the 8x8 Bayer matrix spans 2/3 of a level (its even and odd columns two clusters),
+    // so runs of about a third of a band plus a period remain: 22 pixels here, at most 2/3 of a band.
     for (int y = 0; y < h; ++y)
-        EXPECT_LE(longestRun(smooth, w, y), band / 2) << "row " << y << " (bands " << band << ")";
+        EXPECT_LE(longestRun(smooth, w, y), 2 * band / 3) << "row " << y << " (bands " << band << ")";
     // Without the dither the float average still rounds into bands.
     SessionSettings plain = sampled(w, h, 4);
     EXPECT_GE(longestRun(renderCode("ramp", ramp, plain), w, 0), band - 2);
