@@ -43,6 +43,8 @@
     X(std::optional<int>, motionBlur, "motion_blur", {}, motionBlur)                                  \
     X(std::optional<double>, shutterDegrees, "shutter", {}, shutterDegrees)                           \
     X(bool, dither, "dither", false, initial)                                                         \
+    X(std::optional<std::string>, shutterOffset, "shutter_offset", {}, initial)                       \
+    X(std::optional<std::string>, sampleSpace, "sample_space", {}, initial)                           \
     X(std::vector<std::string>, defines, "defines", {}, initial)
 
 // A type with a comma cannot stand in a macro argument.
@@ -73,6 +75,9 @@ namespace toyhost {
 //   (shutterDegrees / 360 of the frame step, opening at the frame's time), every pair drawn and the
 //   draws averaged; buffers, Cube A and Sound still run once per frame. `dither`: an 8x8 ordered
 //   dither before the average is rounded to 8 bits. 1, 1: the site's pixels, byte for byte.
+//   shutterDegrees needs motionBlur. shutterOffset: "open" (absent: the interval opens at the
+//   frame's time), "centre" or "close". sampleSpace: "linear" (absent: the draws averaged in
+//   linear light) or "display" (their display values averaged, the site's pixels box-filtered).
 // - defines: macros added to every pass after the site's header, before Common: "NAME" (defined as
 //   1) or "NAME=VALUE", as the CLI's --define. A name is a GLSL identifier without GLSL ES's
 //   reserved GL_ prefix or "__"; a name given twice with different values is refused.

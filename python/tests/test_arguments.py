@@ -65,6 +65,8 @@ CONSTRUCTOR_CASES = {
     ("Session", "motion_blur"): [0, -1, HUGE, 257, 2.5, "2", NAN],
     ("Session", "shutter"): NUMBERS + [-1, 1e300, "180"],
     ("Session", "dither"): ["yes", 2, None],
+    ("Session", "shutter_offset"): ["middle", "", 5],
+    ("Session", "sample_space"): ["gamma", "", 5],
     ("Session", "defines"): ["1X", ["A=1", "A=2"], ["GL_X"], 5, [5], {"A": object()}, {"A": False}, {5: 1}],
 }
 COMPARE_CASES = {

@@ -1,5 +1,5 @@
 """Supersampling and motion blur from Python: Session(supersample=, motion_blur=, shutter=,
-dither=) gives the CLI's frames byte for byte (its --out - raw stream), the options change the
+dither=, shutter_offset=, sample_space=) gives the CLI's frames byte for byte (its --out - raw stream), the options change the
 picture (the comparison can fail), and a value out of range is refused naming the setting. The
 arithmetic checks (box average, shutter average) are tests/gl/test_sampling.cpp's."""
 
@@ -32,6 +32,14 @@ def test_sampled_frames_equal_the_clis():
     ours = session_frames(supersample=3, motion_blur=2, shutter=270, dither=True)
     assert numpy.array_equal(ours, cli)
     assert not numpy.array_equal(ours, session_frames()), "the options change the picture"
+
+
+def test_the_shutter_offset_and_sample_space_equal_the_clis():
+    cli = cli_frames("--supersample", "2", "--motion-blur", "3", "--shutter-offset", "centre", "--sample-space",
+                     "display")
+    ours = session_frames(supersample=2, motion_blur=3, shutter_offset="centre", sample_space="display")
+    assert numpy.array_equal(ours, cli)
+    assert not numpy.array_equal(ours, session_frames(supersample=2, motion_blur=3)), "the options change the picture"
 
 
 def test_one_sample_is_the_default_picture():

@@ -125,7 +125,8 @@ class Session:
                  frame_timeout: Optional[float] = None, compile_timeout: Optional[float] = None,
                  mouse_script: Optional[PathLike] = None, key_script: Optional[PathLike] = None,
                  supersample: Optional[int] = None, motion_blur: Optional[int] = None,
-                 shutter: Optional[float] = None, dither: bool = False, defines: Defines = ()) -> None:
+                 shutter: Optional[float] = None, dither: bool = False, shutter_offset: Optional[str] = None,
+                 sample_space: Optional[str] = None, defines: Defines = ()) -> None:
         if not isinstance(shadertoy, Shadertoy):
             shadertoy = load(shadertoy)
         # The keywords above are written from the settings' one list (_signature.py); what each

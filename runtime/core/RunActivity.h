@@ -5,6 +5,7 @@
 // No GL needed.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <mutex>
 
@@ -26,14 +27,20 @@ public:
         int frame = -1;         // iFrame being drawn (or the Sound pass's block), or -1
         double seconds = 0;     // how long the phase has lasted (wall time)
         std::chrono::steady_clock::time_point since{};  // when it began
+        // One draw of a frame that draws its pass several times (supersampling, motion blur:
+        // timing/SamplePattern.h): which (0-based) of how many; -1, 0 for a frame's one draw.
+        int sample = -1;
+        int samples = 0;
     };
 
     // `pass` must be a string that lives for the whole run (passName() returns such).
-    void begin(Phase phase, const char* pass = "", int frame = -1) {
+    void begin(Phase phase, const char* pass = "", int frame = -1, int sample = -1, int samples = 0) {
         std::lock_guard lock(mutex_);
         phase_ = phase;
         pass_ = pass;
         frame_ = frame;
+        sample_ = sample;
+        samples_ = samples;
         since_ = std::chrono::steady_clock::now();
     }
     void idle() { begin(Phase::Idle); }
@@ -48,20 +55,30 @@ public:
         phase_ = s.phase;
         pass_ = s.pass;
         frame_ = s.frame;
+        sample_ = s.sample;
+        samples_ = s.samples;
         since_ = s.since;
     }
+
+    // A watchdog's expiry: the run is ending, so work that can stop between draws (the samples of a
+    // frame) stops instead of drawing the rest. Any thread.
+    void cancel() { cancelled_.store(true, std::memory_order_release); }
+    bool cancelled() const { return cancelled_.load(std::memory_order_acquire); }
 
     Snapshot snapshot() const {
         std::lock_guard lock(mutex_);
         return {phase_, pass_, frame_, std::chrono::duration<double>(std::chrono::steady_clock::now() - since_).count(),
-                since_};
+                since_, sample_, samples_};
     }
 
 private:
     mutable std::mutex mutex_;
+    std::atomic<bool> cancelled_{false};
     Phase phase_ = Phase::Idle;
     const char* pass_ = "";
     int frame_ = -1;
+    int sample_ = -1;
+    int samples_ = 0;
     std::chrono::steady_clock::time_point since_ = std::chrono::steady_clock::now();
 };
 

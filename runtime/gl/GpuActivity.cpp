@@ -51,6 +51,32 @@ void GpuActivity::afterDraw(const char* pass, int frame) {
     }
 }
 
+void GpuActivity::beforeSample(const char* pass, int frame, int sample, int samples) {
+    if (!watchDraws_) return;
+    if (count_) {  // the frame's buffers: published as the pass still drawing, as a readback's wait
+        publishPending();
+        if (count_) waitFor(items_[count_ - 1].fence);
+        dropAll();
+        published_ = nullptr;
+    }
+    activity_->begin(RunActivity::Phase::DrawCall, pass, frame, sample, samples);
+}
+
+void GpuActivity::afterSample() {
+    if (!watchDraws_) return;
+    activity_->rephase(RunActivity::Phase::Drawing);  // timed from the sample's call
+    void* fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    waitFor(fence);
+    glDeleteSync(sync(fence));
+    activity_->idle();
+}
+
+void GpuActivity::waitFor(void* fence) {
+    // Without a limit of its own: a watchdog ends a wait that takes too long.
+    while (glClientWaitSync(sync(fence), GL_SYNC_FLUSH_COMMANDS_BIT, 1000000000) == GL_TIMEOUT_EXPIRED) {
+    }
+}
+
 void GpuActivity::publishPending() {
     if (!watchDraws_) return;
     // The GPU finishes passes in order: when the newest is done, all are (one query, the usual

@@ -60,6 +60,15 @@ public:
     // GPU still draws is published again (this one, timed from its call, when nothing is older).
     void beforeDraw(const char* pass, int frame);
     void afterDraw(const char* pass, int frame);
+    // Around one of a frame's several draws of a pass and what goes with it (supersampling, motion
+    // blur: timing/SamplePattern.h), `sample` (0-based) of `samples`. When draws are followed, the
+    // draws before the first sample are waited for (published as usual), and each sample is
+    // published from its call until the GPU has drawn it (afterSample waits): a frame limit bounds
+    // each sample's draw, not the frame's sum of them (issue 44).
+    void beforeSample(const char* pass, int frame, int sample, int samples);
+    void afterSample();
+    // The watching watchdog has ended the run (RunActivity::cancel): draw no more samples.
+    bool cancelled() const { return activity_ && activity_->cancelled(); }
     // Forgets the passes that have finished (asking without waiting) and publishes the oldest one
     // still drawing (keeping its start time when it was already the one published), or idle.
     void publishPending();
@@ -76,6 +85,7 @@ private:
     };
     void dropAll();
     void dropOldest();
+    void waitFor(void* fence);  // blocks until the GPU passed `fence`
 
     RunActivity* activity_ = nullptr;
     bool watchDraws_ = false;

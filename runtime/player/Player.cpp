@@ -27,7 +27,8 @@ RendererDesc rendererDesc(GlContext& context, const PlayerDesc& desc, int width,
     r.height = height;
     r.floatImageTarget = desc.floatImage;
     r.accumulate = !isSingleSample(desc.sampling);
-    r.dither = desc.sampling.dither;
+    r.average.linear = desc.sampling.linear;
+    r.average.dither = desc.sampling.dither;
     r.resolutionWidth = desc.canvasWidth;
     r.resolutionHeight = desc.canvasHeight;
     r.allocate = desc.allocate;

@@ -17,6 +17,7 @@
 #include "render/CubeTarget.h"
 #include "render/PassProgram.h"
 #include "render/SampleAccumulator.h"
+#include "shader/ImageCoverage.h"
 
 namespace toyhost {
 
@@ -39,7 +40,7 @@ struct Renderer::Impl {
     RenderTexture imageTarget;
     bool floatImage = false;
     std::optional<SampleAccumulator> accumulator;  // when frames average several Image draws
-    bool dither = false;
+    bool imageMayDiscard = false;  // each draw starts from the canvas (SampleAccumulator::seed)
     glm::vec2 resolution{0.0f};   // iResolution of the canvas passes (the tiled whole, else the target)
     glm::vec2 imageOrigin{0.0f};  // where the Image target sits in the canvas (a tile's corner)
     FrameUniforms lastUniforms;   // the last frame's, for drawing Image again at another origin
@@ -103,33 +104,44 @@ struct Renderer::Impl {
     }
 
     // The Image pass into the Image target: one draw at imageOrigin, or each of `draws` (their
-    // offsets from imageOrigin, their iTime and iDate) added up and averaged.
+    // offsets from imageOrigin, their iTime and iDate) into the accumulator's float target, added
+    // up and averaged. Each of several draws is its own for the watchdog (GpuActivity::beforeSample).
     void drawImage(PassRuntime& pass, const FrameUniforms& u, std::uint64_t step, std::span<const ImageDraw> draws) {
         const UniformLocations& loc = pass.program.uniforms;
         const char* name = passName(pass.plan.id);
-        glBindFramebuffer(GL_FRAMEBUFFER, imageTarget.framebuffer.id());
-        const std::array<GLuint, kChannelCount> dynamic = usePass(pass, u, step, resolution);
-        glUniform2f(loc.fragOffset, imageOrigin.x, imageOrigin.y);
-        gpu->beforeDraw(name, u.frame);
         if (draws.size() <= 1 || !accumulator) {
+            glBindFramebuffer(GL_FRAMEBUFFER, imageTarget.framebuffer.id());
+            usePass(pass, u, step, resolution);
+            glUniform2f(loc.fragOffset, imageOrigin.x, imageOrigin.y);
+            gpu->beforeDraw(name, u.frame);
             glDrawArrays(GL_TRIANGLES, 0, 3);
-        } else {
-            // Each draw as the site would show it, added to the float sum; then the average.
-            for (std::size_t d = 0; d < draws.size(); ++d) {
-                const ImageDraw& draw = draws[d];
-                if (d > 0) {  // back from the accumulator's program, target and texture units
-                    glBindFramebuffer(GL_FRAMEBUFFER, imageTarget.framebuffer.id());
-                    glUseProgram(pass.program.program.id());
-                    bindTextures(pass.bindings, dynamic);
-                }
-                glUniform1f(loc.time, static_cast<float>(draw.time));
-                glUniform4f(loc.date, draw.date.x, draw.date.y, draw.date.z, draw.date.w);
-                glUniform2f(loc.fragOffset, imageOrigin.x + draw.offset.x, imageOrigin.y + draw.offset.y);
-                glDrawArrays(GL_TRIANGLES, 0, 3);
-                accumulator->add(imageTarget.texture.id(), d == 0);
-            }
-            accumulator->resolve(imageTarget.framebuffer.id(), static_cast<int>(draws.size()), dither && !floatImage);
+            gpu->afterDraw(name, u.frame);
+            return;
         }
+        std::array<GLuint, kChannelCount> dynamic{};
+        int count = 0;  // the draws added (a watchdog's expiry stops them: its error follows)
+        for (const ImageDraw& draw : draws) {
+            if (gpu->cancelled()) break;
+            const int d = count++;
+            gpu->beforeSample(name, u.frame, d, static_cast<int>(draws.size()));
+            if (imageMayDiscard) accumulator->seed(imageTarget.texture.id());
+            glBindFramebuffer(GL_FRAMEBUFFER, accumulator->sampleFramebuffer());
+            if (d == 0) {
+                dynamic = usePass(pass, u, step, resolution);
+            } else {  // back from the accumulator's program and texture units
+                glUseProgram(pass.program.program.id());
+                bindTextures(pass.bindings, dynamic);
+            }
+            glUniform1f(loc.time, static_cast<float>(draw.time));
+            glUniform4f(loc.date, draw.date.x, draw.date.y, draw.date.z, draw.date.w);
+            glUniform2f(loc.fragOffset, imageOrigin.x + draw.offset.x, imageOrigin.y + draw.offset.y);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            accumulator->add(d == 0);
+            gpu->afterSample();
+        }
+        if (count == 0) return;
+        gpu->beforeDraw(name, u.frame);
+        accumulator->resolve(imageTarget.framebuffer.id(), count);
         gpu->afterDraw(name, u.frame);
     }
 
@@ -193,10 +205,12 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const ManifestDesc& manifest,
     if (!image) return inPass("Image", image.error());
     impl->imageTarget = std::move(*image);
     if (desc.accumulate) {
-        Result<SampleAccumulator> accumulator = SampleAccumulator::create(w, h, impl->allocate);
+        SampleAverage average = desc.average;
+        average.floatTarget = desc.floatImageTarget;
+        Result<SampleAccumulator> accumulator = SampleAccumulator::create(w, h, average, impl->allocate);
         if (!accumulator) return inPass("Image", accumulator.error());
         impl->accumulator = std::move(*accumulator);
-        impl->dither = desc.dither;
+        impl->imageMayDiscard = imageMayKeepPixels(manifest);
     }
 
     BindOptions bind;

@@ -23,6 +23,7 @@
 #include "manifest/ManifestDesc.h"
 #include "media/ChannelMedia.h"
 #include "render/RenderTargets.h"
+#include "render/SampleAccumulator.h"
 #include "shader/PassSource.h"
 
 namespace toyhost {
@@ -38,10 +39,10 @@ struct RendererDesc {
     // wanted (EXR capture of Image, tests).
     bool floatImageTarget = false;
     // Frames may draw the Image pass several times and average the draws (renderFrame's `draws`):
-    // the float sums are allocated once here. `dither`: the average is dithered before it is
-    // rounded to 8 bits (render/SampleAccumulator.h).
+    // the float targets are allocated once here; `average` says how (render/SampleAccumulator.h;
+    // its floatTarget follows floatImageTarget).
     bool accumulate = false;
-    bool dither = false;
+    SampleAverage average;
     // iResolution when the targets are a tile of a larger canvas (a tiled still: drawImageAt
     // places them); 0: the targets' own size.
     int resolutionWidth = 0;

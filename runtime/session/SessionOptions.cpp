@@ -344,6 +344,7 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
         given = std::move(*merged);
         resume = std::move(*read);
     }
+    if (Status shutter = checkShutterGiven(options.settings, given.settings); !shutter) return shutter.error();
     SessionOptions o = withDefaults(std::move(given));
     const SessionSettings& s = o.settings;
     // A headless run's iDate is the wall clock at frame 0 unless --date (or a checkpoint) says
@@ -362,7 +363,9 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     }
     if (o.mouse)
         if (Status mouse = checkMouseSetting(o.mouse->x, o.mouse->y); !mouse) return mouse.error();
-    const SamplingDesc sampling{*s.supersample, *s.motionBlur, *s.shutterDegrees, s.dither};
+    SamplingDesc sampling{*s.supersample, *s.motionBlur, *s.shutterDegrees, s.dither};
+    if (s.shutterOffset) sampling.shutterOffset = *parseShutterOffset(*s.shutterOffset);  // checked above
+    if (s.sampleSpace) sampling.linear = *parseSampleSpaceLinear(*s.sampleSpace);
     if (*o.captureEvery < 1) return usage("--capture-every must be at least 1");
     if (*o.captureMemoryBytes == 0) return usage("--capture-memory must be at least 1 (MiB)");
     if (o.mouse && s.mouseScript) return usage("--mouse and --mouse-script cannot be combined");

@@ -178,7 +178,31 @@ Status checkSampling(const SessionSettings& s) {
 
 Status settingCheck_supersample(const SessionSettings& s, const SettingContext&) { return checkSampling(s); }
 Status settingCheck_motionBlur(const SessionSettings& s, const SettingContext&) { return checkSampling(s); }
+// A shutter given without motion blur is refused before the defaults are applied (prepareSession:
+// checkShutterGiven), as this check sees the default shutter too.
 Status settingCheck_shutterDegrees(const SessionSettings& s, const SettingContext&) { return checkSampling(s); }
+
+Status checkShutterGiven(const SessionSettings& user, const SessionSettings& given) {
+    // As a dither without samples: a shutter without motion blur would be ignored.
+    if (user.shutterDegrees && given.motionBlur.value_or(defaults::kMotionBlurSamples) == 1)
+        return settingError("shutter", "sets the interval of motion blur: give motion_blur too");
+    return okStatus();
+}
+
+Status settingCheck_shutterOffset(const SessionSettings& s, const SettingContext&) {
+    if (!s.shutterOffset) return okStatus();
+    if (!parseShutterOffset(*s.shutterOffset))
+        return settingError("shutter_offset", "must be open, centre or close, got '" + *s.shutterOffset + "'");
+    if (s.motionBlur.value_or(defaults::kMotionBlurSamples) == 1)
+        return settingError("shutter_offset", "places the interval of motion blur: give motion_blur too");
+    return okStatus();
+}
+
+Status settingCheck_sampleSpace(const SessionSettings& s, const SettingContext&) {
+    if (s.sampleSpace && !parseSampleSpaceLinear(*s.sampleSpace))
+        return settingError("sample_space", "must be linear or display, got '" + *s.sampleSpace + "'");
+    return okStatus();
+}
 
 Status settingCheck_dither(const SessionSettings& s, const SettingContext&) {
     const SamplingDesc sampling{s.supersample.value_or(defaults::kSupersample),

@@ -36,6 +36,9 @@ Status checkSoundSecondsSetting(double seconds);
 // Supersample 1..kMaxSupersample, motion blur 1..kMaxMotionBlurSamples, a shutter in (0, 360] and
 // at most kMaxSamplesPerFrame draws a frame: "supersample", "motion_blur", "shutter".
 Status checkSamplingSettings(int supersample, int motionBlur, double shutterDegrees);
+// A shutter the caller gave (`user`) while the settings before defaults (`given`: the manifest's
+// and a checkpoint's merged in) have no motion blur: refused naming "shutter".
+Status checkShutterGiven(const SessionSettings& user, const SessionSettings& given);
 
 // The validation table of SessionSettings: one check per row of the list (toyhost/Settings.h),
 // declared from it, so that a row without its check does not link. Each sees the settings as the

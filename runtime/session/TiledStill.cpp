@@ -82,9 +82,12 @@ Status TiledStill::render(Player& player, int frame) {
         });
     }
     const std::size_t rowValues = static_cast<std::size_t>(width_) * 4;
-    for (int top = height_; top > 0; top -= tileHeight) {
-        const int bottom = std::max(0, top - tileHeight), rows = top - bottom;
-        const int originY = top - tileHeight;  // the last band's tile reaches below the canvas
+    // Tiles sit on a grid from the canvas's bottom-left corner (the top row and right column of
+    // tiles reach beyond it), so that every tile's origin is even when the tile is (fitPlayer):
+    // derivatives pair the same 2x2 quads of pixels as in an untiled render. Bands go top first.
+    for (int row = (height_ - 1) / tileHeight; row >= 0; --row) {
+        const int originY = row * tileHeight;
+        const int bottom = originY, top = std::min(height_, originY + tileHeight), rows = top - bottom;
         std::shared_ptr<Band> band;
         if (captured) {
             std::lock_guard<std::mutex> lock(mutex_);

@@ -35,13 +35,19 @@ public:
     TiledStill(const TiledStill&) = delete;
     TiledStill& operator=(const TiledStill&) = delete;
 
-    // A player for `plan`'s canvas (in `desc`) gets one tile as its targets (at most the tile
-    // side, at most the canvas) and the canvas as iResolution.
+    // A player for `plan`'s canvas (in `desc`) gets one tile as its targets and the canvas as
+    // iResolution. A tile side is even (an odd one is rounded down): GPUs shade in 2x2 quads from
+    // the target's corner, and dFdx/dFdy pair the canvas's quads only when every tile's origin is
+    // even (issue 44). A canvas side within the tile is one tile, from 0.
+    static int tileSide(int canvasSide, int tile) {
+        const int even = tile - tile % 2;
+        return canvasSide <= even ? canvasSide : even;
+    }
     static void fitPlayer(PlayerDesc& desc, const SessionPlan& plan) {
         desc.canvasWidth = desc.width;
         desc.canvasHeight = desc.height;
-        desc.width = desc.width < plan.tile ? desc.width : plan.tile;
-        desc.height = desc.height < plan.tile ? desc.height : plan.tile;
+        desc.width = tileSide(desc.width, plan.tile);
+        desc.height = tileSide(desc.height, plan.tile);
     }
 
     // After `player` stepped frame `frame` (without drawing Image): draws its Image tile by tile

@@ -74,6 +74,7 @@ void Watchdog::expireWith(Diagnostic diagnostic, int exitCode) {
         if (expired_) return;
         expired_ = diagnostic;
     }
+    activity_.cancel();
     if (desc_.expire) desc_.expire(diagnostic, exitCode);
     requestStop(StopReason::Request);
 }
@@ -131,7 +132,25 @@ void Watchdog::loop() {
         RunActivity::Snapshot now = activity_.snapshot();
         now.seconds = pauses_.runningSeconds(now.since, Clock::now());
         const double frameLimit = desc_.frameLimit, compileLimit = desc_.compileLimit;
-        if (frameLimit > 0 && now.phase == RunActivity::Phase::Drawing && now.seconds > frameLimit)
+        const bool drawing = now.phase == RunActivity::Phase::Drawing || now.phase == RunActivity::Phase::DrawCall;
+        if (frameLimit > 0 && drawing && now.samples > 1 && now.seconds > frameLimit)
+            // One of a frame's several draws (supersampling, motion blur): the limit is per draw.
+            expireWith(problem(Code::WatchdogFrame,
+                               "frame " + std::to_string(now.frame) + " has been drawing sample " +
+                                   std::to_string(now.sample + 1) + " of " + std::to_string(now.samples) +
+                                   " of this pass (--supersample, --motion-blur) for " + seconds(now.seconds) +
+                                   " s, longer than --frame-timeout " + seconds(frameLimit) +
+                                   ", which bounds each sample's draw: the run is ended (a shader that loops too "
+                                   "long? " +
+                                   (now.frame <= 0 && now.sample == 0
+                                        ? std::string("The first sample's draw may also be the driver compiling the "
+                                                      "pass: with Mesa's llvmpipe, GALLIVM_PERF=nopt in the "
+                                                      "environment makes such compiles fast. ")
+                                        : std::string()) +
+                                   "--frame-timeout 0 turns the limit off)",
+                               now.pass),
+                       kExitWatchdog);
+        else if (frameLimit > 0 && now.phase == RunActivity::Phase::Drawing && now.seconds > frameLimit)
             expireWith(problem(Code::WatchdogFrame,
                                "frame " + std::to_string(now.frame) + " has been drawing this pass for " +
                                    seconds(now.seconds) + " s, longer than --frame-timeout " + seconds(frameLimit) +

@@ -2,7 +2,8 @@
 // against what they must equal: a stateless picture supersampled 4x4 equals the same picture
 // rendered 4x larger and box-averaged (the sample positions are the same); motion blur of a colour
 // linear in iTime equals its analytic average over the shutter interval; one sample is the site's
-// pixels byte for byte; buffers do not depend on the sample count; `run` and the C++ Session give
+// pixels byte for byte; buffers do not depend on the sample count (Image drawn in the same
+// sessions); `run` and the C++ Session give
 // the same frames. Python's: python/tests/test_sampling.py.
 #include "GlTestSupport.h"
 
@@ -20,22 +21,29 @@ namespace fs = std::filesystem;
 const fs::path kProbe = sourceDir() / "shadertoys/sampling-probe";
 constexpr const char* kDate = "2024-01-01T12:00:00";
 
-// Renders `frames` frames with `settings` through the library and returns the last one's Image
-// (RGBA8, rows top first).
-std::vector<std::uint8_t> render(const fs::path& target, SessionSettings settings, int frames = 1,
-                                 const std::string& pass = "Image") {
+// Renders `frames` frames with `settings` through the library and reads the last one's passes
+// (RGBA8, rows top first) into `reads` (pass name, where).
+void render(const fs::path& target, SessionSettings settings, int frames,
+            std::initializer_list<std::pair<const char*, std::vector<std::uint8_t>*>> reads) {
     Result<Shadertoy> shadertoy = Shadertoy::load(target);
     EXPECT_TRUE(shadertoy.ok()) << shadertoy.error().text();
-    if (!shadertoy) return {};
+    if (!shadertoy) return;
     if (!settings.date) settings.date = kDate;
-    std::vector<std::uint8_t> pixels;
     runOnGlThread([&] {
         Result<std::unique_ptr<Session>> session = Session::createHeadless(*shadertoy, settings);
         ASSERT_TRUE(session.ok()) << session.error().text();
-        pixels.resize(static_cast<std::size_t>((*session)->width()) * (*session)->height() * 4);
         for (int n = 0; n < frames; ++n) ASSERT_TRUE((*session)->step().ok());
-        ASSERT_TRUE((*session)->read(pass, pixels).ok());
+        for (const auto& [pass, pixels] : reads) {
+            pixels->resize(static_cast<std::size_t>((*session)->width()) * (*session)->height() * 4);
+            ASSERT_TRUE((*session)->read(pass, *pixels).ok()) << pass;
+        }
     });
+}
+
+// The last of `frames` frames' Image.
+std::vector<std::uint8_t> render(const fs::path& target, SessionSettings settings, int frames = 1) {
+    std::vector<std::uint8_t> pixels;
+    render(target, std::move(settings), frames, {{"Image", &pixels}});
     return pixels;
 }
 
@@ -61,6 +69,7 @@ TEST(Sampling, Supersample4EqualsTheBoxAverageOfARender4xLarger) {
     constexpr int w = 64, h = 36, n = 4;
     SessionSettings small = sized(w, h);
     small.supersample = n;
+    small.sampleSpace = "display";  // the box of display values (linear light: test_sampling_average.cpp)
     const std::vector<std::uint8_t> supersampled = render(kProbe, small);
     const std::vector<std::uint8_t> large = render(kProbe, sized(w * n, h * n));
     const std::vector<std::uint8_t> single = render(kProbe, sized(w, h));
@@ -93,6 +102,7 @@ TEST(Sampling, MotionBlurOfAColourLinearInTimeIsItsShutterAverage) {
         s.startTime = 3;
         s.motionBlur = 8;
         s.shutterDegrees = shutter;
+        s.sampleSpace = "display";  // the average of the code values, as computed here
         const std::vector<std::uint8_t> blurred = render(kProbe, s, 2);  // frame 1: t = 3.5
         ASSERT_FALSE(blurred.empty());
         const double expected = 0.05 * (3.5 + shutter / 720.0 * 0.5) * 255.0;
@@ -111,24 +121,27 @@ TEST(Sampling, OneSampleIsTheSitesPixelsByteForByte) {
     SessionSettings one = sized(96, 54);
     one.supersample = 1;
     one.motionBlur = 1;
-    one.shutterDegrees = 360;
+    one.sampleSpace = "linear";  // a space averages nothing in one sample
     const fs::path ocean = sourceDir() / "shadertoys/ocean";
     EXPECT_EQ(render(ocean, one, 2), render(ocean, sized(96, 54), 2));
 }
 
 TEST(Sampling, BuffersDoNotDependOnTheSampleCount) {
     // Mountains & Lakes' simulation state (Buffer A) after a few frames, with and without 2x2
-    // supersampling and motion blur of Image: identical.
+    // supersampling and motion blur of Image, read from the same sessions whose Image is drawn
+    // with the samples (issue 44: a check that skips Image renders no sample): identical.
     const fs::path lakes = sourceDir() / "shadertoys/mountains-lakes";
     SessionSettings sampled = sized(96, 54);
     sampled.supersample = 2;
     sampled.motionBlur = 2;
-    const std::vector<std::uint8_t> plain = render(lakes, sized(96, 54), 4, "Buffer A");
-    const std::vector<std::uint8_t> withSamples = render(lakes, sampled, 4, "Buffer A");
+    std::vector<std::uint8_t> plain, withSamples, plainImage, sampledImage;
+    render(lakes, sized(96, 54), 4, {{"Buffer A", &plain}, {"Image", &plainImage}});
+    render(lakes, sampled, 4, {{"Buffer A", &withSamples}, {"Image", &sampledImage}});
     ASSERT_FALSE(plain.empty());
     EXPECT_EQ(plain, withSamples);
-    // While the picture itself changes.
-    EXPECT_NE(render(lakes, sized(96, 54), 4), render(lakes, sampled, 4));
+    // While the picture itself, drawn in those sessions, changes.
+    ASSERT_FALSE(sampledImage.empty());
+    EXPECT_NE(plainImage, sampledImage);
 }
 
 TEST(Sampling, RunAndTheCppSessionGiveTheSameFrames) {
@@ -206,6 +219,24 @@ TEST(Sampling, ValuesOutOfRangeAreRefusedNamingTheSetting) {
     s = sized(8, 8);
     s.dither = true;
     EXPECT_EQ(refused(s).rfind("dither:", 0), 0u) << refused(s);
+    // A shutter or its offset without motion blur would be ignored: refused as the dither is
+    // (issue 46), and accepted with it.
+    s = sized(8, 8);
+    s.shutterDegrees = 90;
+    EXPECT_EQ(refused(s), "shutter: sets the interval of motion blur: give motion_blur too");
+    s.motionBlur = 2;
+    EXPECT_EQ(refused(s), "");
+    s = sized(8, 8);
+    s.shutterOffset = "centre";
+    EXPECT_EQ(refused(s).rfind("shutter_offset:", 0), 0u) << refused(s);
+    const CommandResult shutter = runToyhost("run " + kProbe.string() + " --headless --size 8x8 --shutter 90");
+    EXPECT_EQ(shutter.exitCode, 2) << shutter.output;
+    EXPECT_NE(shutter.output.find("--shutter"), std::string::npos) << shutter.output;
+    EXPECT_NE(shutter.output.find("sets the interval of motion blur"), std::string::npos) << shutter.output;
+    const CommandResult offset =
+        runToyhost("run " + kProbe.string() + " --headless --size 8x8 --motion-blur 2 --shutter-offset middle");
+    EXPECT_EQ(offset.exitCode, 2) << offset.output;
+    EXPECT_NE(offset.output.find("--shutter-offset"), std::string::npos) << offset.output;
     const CommandResult cli = runToyhost("run " + kProbe.string() + " --headless --size 8x8 --motion-blur 0");
     EXPECT_EQ(cli.exitCode, 2) << cli.output;
     EXPECT_NE(cli.output.find("--motion-blur"), std::string::npos) << cli.output;

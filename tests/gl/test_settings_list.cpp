@@ -126,6 +126,13 @@ TEST(SettingsList, TheValidationTableRefusesABadValueOfEachCheckedSettingNamingI
     s.dither = true;
     EXPECT_EQ(refused(s), "dither");
     s = {};
+    s.motionBlur = 2;
+    s.shutterOffset = "middle";
+    EXPECT_EQ(refused(s), "shutter_offset");
+    s = {};
+    s.sampleSpace = "gamma";
+    EXPECT_EQ(refused(s), "sample_space");
+    s = {};
     s.defines = {"GL_NOPE"};
     EXPECT_EQ(refused(s), "defines");
     s = {};

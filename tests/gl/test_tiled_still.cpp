@@ -2,7 +2,7 @@
 // iResolution the whole canvas and written band by band. A tiled render equals the untiled one
 // byte for byte (PNG, with Cube A too, and EXR floats with supersampling); a 20000x11250 still of
 // fragCoord / iResolution has the expected values at its corners and centre while the run's
-// peak memory stays under 1 GB; shadertoys with buffers, windows and videos are refused with why.
+// peak memory stays under 1 GB; tiles keep the canvas's 2x2 derivative quads; shadertoys with buffers, windows and videos are refused with why.
 #include "GlTestSupport.h"
 
 #include <png.h>
@@ -57,6 +57,42 @@ TEST(TiledStill, ATiledRenderEqualsTheUntiledOneByteForByte) {
     Result<ImageF32> wa = readExr(dir / "w_1.exr");
     ASSERT_TRUE(ta.ok() && wa.ok());
     EXPECT_TRUE(ta->rgba == wa->rgba);
+}
+
+// Issue 44: GPUs shade 2x2 quads from the target's corner, and dFdx/dFdy difference the pixels of
+// a quad. A tile whose origin is odd in the canvas paired other pixels than the untiled render
+// (odd heights and odd --tile: every row quad flipped). A quad-parity probe and a smooth field's
+// derivatives, at odd sizes and tiles: tiled equals untiled byte for byte.
+TEST(TiledStill, TilesKeepTheCanvasDerivativeQuadsAtOddSizesAndTiles) {
+    const fs::path dir = freshOutputDir("tiled-still-quads");
+    writeFile(dir / "toy/manifest.json", R"({"passes": {"Image": {"source": "image.glsl"}}})");
+    writeFile(dir / "toy/image.glsl",
+              "void mainImage(out vec4 c, in vec2 p) {\n"
+              "    vec2 parity = vec2(dFdx(mod(p.x, 2.0)), dFdy(mod(p.y, 2.0)));  // +1 or -1 by quad\n"
+              "    float f = sin(p.x * p.y * 0.013) * 40.0;\n"
+              "    c = vec4(0.5 + 0.5 * parity, 0.5 + 0.5 * dFdx(f) + 0.25 * dFdy(f), 1.0);\n}\n");
+    struct Case {
+        const char* size;
+        const char* tile;
+    };
+    for (const Case& c : {Case{"161x91", "33"}, Case{"160x91", "32"}, Case{"161x90", "33"}, Case{"97x41", "16"}}) {
+        const std::string name = std::string(c.size) + "_" + c.tile;
+        const CommandResult tiled = run(dir / "toy", std::string("--size ") + c.size + " --tile " + c.tile + " --out " +
+                                                         (dir / (name + "_tiled.png")).string());
+        ASSERT_EQ(tiled.exitCode, 0) << tiled.output;
+        const CommandResult whole =
+            run(dir / "toy", std::string("--size ") + c.size + " --out " + (dir / (name + "_whole.png")).string());
+        ASSERT_EQ(whole.exitCode, 0) << whole.output;
+        Result<Image8> a = readPng(dir / (name + "_tiled.png"));
+        Result<Image8> b = readPng(dir / (name + "_whole.png"));
+        ASSERT_TRUE(a.ok() && b.ok());
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < a->rgba.size(); i += 4)
+            differing += !std::equal(a->rgba.begin() + static_cast<std::ptrdiff_t>(i),
+                                     a->rgba.begin() + static_cast<std::ptrdiff_t>(i + 4),
+                                     b->rgba.begin() + static_cast<std::ptrdiff_t>(i));
+        EXPECT_EQ(differing, 0u) << c.size << " --tile " << c.tile << ": pixels differ";
+    }
 }
 
 // The rows of a PNG, read one at a time (the whole image is 900 MB): `keep` gets the rows asked.

@@ -1,4 +1,5 @@
-// SamplingFlags: --supersample, --motion-blur, --shutter and --dither, declared once for `run`
+// SamplingFlags: --supersample, --motion-blur, --shutter, --shutter-offset, --sample-space and
+// --dither, declared once for `run`
 // and `compare` and turned into the settings (timing/SamplePattern.h says what they do);
 // prepareSession checks the values (session/SettingChecks.h) and its errors name the
 // setting, which withFlagNames shows as the flag.
@@ -6,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 #include <optional>
+#include <string>
 
 #include <toyhost/Session.h>
 
@@ -20,6 +22,7 @@ public:
 private:
     std::optional<int> supersample_, motionBlur_;
     std::optional<double> shutter_;
+    std::optional<std::string> shutterOffset_, sampleSpace_;
     bool dither_ = false;
 };
 

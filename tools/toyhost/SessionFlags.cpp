@@ -27,6 +27,8 @@ constexpr std::pair<const char*, const char*> kFlagOfSetting[] = {
     {"motion_blur", "--motion-blur"},
     {"shutter", "--shutter"},
     {"dither", "--dither"},
+    {"shutter_offset", "--shutter-offset"},
+    {"sample_space", "--sample-space"},
     {"tile", "--tile"},
     {"seconds", "--seconds"},
     {"defines", "--define"},
