@@ -83,6 +83,13 @@ Status TiledStill::render(Player& player, int frame) {
     }
     const std::size_t rowValues = static_cast<std::size_t>(width_) * 4;
     for (int top = height_; top > 0; top -= tileHeight) {
+        // A band that could not be written (a full disk, `ulimit -f`) ends the frame before the next
+        // band is drawn (once a defect: a 65536x65536 EXR drew every tile for minutes after the first
+        // write failed). The file's writer goes with its jobs: its temporary file is removed.
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (failed_) return *failed_;
+        }
         const int bottom = std::max(0, top - tileHeight), rows = top - bottom;
         const int originY = top - tileHeight;  // the last band's tile reaches below the canvas
         std::shared_ptr<Band> band;

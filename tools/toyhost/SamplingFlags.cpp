@@ -2,7 +2,6 @@
 
 #include <string>
 
-#include "NumberOptions.h"
 #include "core/Defaults.h"
 
 namespace toyhost::cli {
@@ -17,8 +16,7 @@ void SamplingFlags::define(CLI::App& command) {
                        "(buffers, iFrame and iTimeDelta stay the frame's; with --supersample every pair is drawn)");
     command.add_option("--shutter", shutter_,
                        "Shutter angle of --motion-blur in degrees: the interval is angle/360 of the frame step "
-                       "(default " + std::to_string(static_cast<int>(defaults::kShutterDegrees)) + ", the film convention)")
-        ->check(decimalNumberOption());
+                       "(default " + std::to_string(static_cast<int>(defaults::kShutterDegrees)) + ", the film convention)");
     command.add_flag("--dither", dither_,
                      "Add an 8x8 ordered dither to the averaged frame before it is rounded to 8 bits (smooth gradients)");
 }
