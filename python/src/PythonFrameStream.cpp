@@ -129,7 +129,10 @@ void PythonFrameStream::renderOne() {
 std::optional<RenderedFrame> PythonFrameStream::next(const std::function<bool()>& interrupted) {
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
-        if (cancelled_) return std::nullopt;
+        if (cancelled_) {
+            if (cancelledBecause_) throw ToyhostError(*cancelledBecause_);
+            return std::nullopt;
+        }
         if (signalled_) {
             bool stop = false;
             if (interrupted) {
@@ -171,11 +174,12 @@ std::optional<RenderedFrame> PythonFrameStream::next(const std::function<bool()>
     }
 }
 
-void PythonFrameStream::cancel() {
+void PythonFrameStream::cancel(std::optional<Error> reason) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         if (cancelled_) return;
         cancelled_ = true;
+        cancelledBecause_ = std::move(reason);
         ready_.clear();
         changed_.notify_all();
         if (finished_) return;  // nothing left in the session

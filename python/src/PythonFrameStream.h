@@ -77,8 +77,11 @@ public:
     // rendering go on.
     std::optional<RenderedFrame> next(const std::function<bool()>& interrupted = {});
     // Stops rendering after the frame being rendered; frames not taken are dropped. The session
-    // stays where the rendering got (its later calls run after this). Idempotent.
-    void cancel();
+    // stays where the rendering got (its later calls run after this). Idempotent. With `reason`
+    // (the session closing under the loop), every later next() throws it: the loop must not end
+    // as if every frame was rendered (once a defect: a close() from another thread raced the
+    // Python side's look at the session and the loop ended normally 4 times in 5).
+    void cancel(std::optional<Error> reason = std::nullopt);
 
 private:
     PythonFrameStream(GlWorker& worker, Session& session, RenderRequest request);
@@ -102,6 +105,7 @@ private:
     bool finished_ = false;  // every frame rendered and read
     bool running_ = false;   // a job is posted or running
     bool cancelled_ = false;
+    std::optional<Error> cancelledBecause_;  // what next() throws once cancelled, if anything
     bool waiting_ = false;   // Python waits in next()
     unsigned wakes_ = 0;     // wake-ups given to a waiting next()
     bool signalled_ = false;  // a signal arrived: no frame starts before Python looked at it

@@ -70,9 +70,11 @@ public:
             (void)session_.release();
             return;
         }
-        // Frames being rendered ahead stop first (their jobs never touch the session after this).
+        // Frames being rendered ahead stop first (their jobs never touch the session after this);
+        // a loop still taking them raises, whatever thread closed the session and when.
         for (std::weak_ptr<PythonFrameStream>& stream : streams_)
-            if (std::shared_ptr<PythonFrameStream> alive = stream.lock()) alive->cancel();
+            if (std::shared_ptr<PythonFrameStream> alive = stream.lock())
+                alive->cancel(Error("the session was closed while render() ran", Code::Usage));
         streams_.clear();
         // A destructor may run without the GIL held (interpreter shutdown); release only when held.
         // Then the thread goes too (joined: its 1 GiB stack with it), not at garbage collection.
@@ -320,7 +322,8 @@ void bindSession(py::module_& module) {
     py::class_<PythonFrameStream, std::shared_ptr<PythonFrameStream>>(module, "FrameStream",
                                                             "Session.render()'s frames, rendered ahead.")
         .def("next", &nextRendered, "The next (iframe, array), or None after the last.")
-        .def("cancel", &PythonFrameStream::cancel, "Stops rendering; frames not taken are dropped.");
+        .def("cancel", [](PythonFrameStream& stream) { stream.cancel(); },
+             "Stops rendering; frames not taken are dropped.");
     py::class_<NativeSession>(module, "NativeSession")
         .def(py::init([](const Shadertoy& shadertoy, const py::dict& settings) {
                  return std::make_unique<NativeSession>(shadertoy, settingsFrom(settings));

@@ -50,7 +50,7 @@ def images_kwargs(**kw):
 
 CONSTRUCTOR_CASES = {
     ("Session", "size"): [(0, 8), (8, 0), (-1, 8), (HUGE, 8), (8, -HUGE), (320.7, 180), (NAN, 8), "16x8", 16,
-                          (1, 2, 3), (True, 8)],
+                          (1, 2, 3), (True, 8), (20000, 100)],
     ("Session", "fps"): NUMBERS + [0, -5, 1e300, "60", True],
     ("Session", "start_time"): NUMBERS + [1e300, "0", None],
     ("Session", "date"): ["", "2026-13-45T99:99:99", 5],
@@ -71,7 +71,7 @@ CONSTRUCTOR_CASES = {
 }
 COMPARE_CASES = {
     ("compare", "frames"): [0, -1, HUGE, 2.5, "3", NAN],
-    ("compare", "size"): [(0, 8), (HUGE, 8), (16.5, 8), "16x8"],
+    ("compare", "size"): [(0, 8), (HUGE, 8), (16.5, 8), "16x8", (20000, 100)],
     ("compare", "fps"): NUMBERS + [0, -5, "60"],
     ("compare", "start_time"): NUMBERS + ["0"],
     ("compare", "date"): ["", 5],
@@ -169,6 +169,28 @@ def test_every_parameter_of_the_public_callables_has_a_row():
     missing = [(owner, name) for owner, function in callables.items()
                for name in inspect.signature(function).parameters if name != "self" and (owner, name) not in covered]
     assert not missing, f"parameters without a row in this test: {missing}"
+
+
+def test_a_canvas_beyond_one_target_is_refused_not_cut_to_a_tile():
+    """Once a defect (issue 46): Session(size=(20000, 100)) became a 1024x100 session (one tile of a
+    tiled still) and compare() of such a size said equal for frames that differed beyond x = 1024."""
+    with pytest.raises(toyhost.UsageError) as raised:
+        toyhost.Session(TOY, size=(20000, 100))
+    assert raised.value.field == "size" and "at most 16384x16384" in str(raised.value)
+    with pytest.raises(toyhost.UsageError) as raised:
+        toyhost.compare(TOY, TOY, frames=1, size=(20000, 100))
+    assert raised.value.field == "size" and "at most 16384x16384" in str(raised.value)
+
+
+def test_a_nul_byte_in_a_path_is_a_usage_error(tmp_path):
+    # Once bare ValueErrors ("embedded null byte") from the native conversion (issue 46).
+    for call in (lambda: toyhost.load("toy\0folder"), lambda: toyhost.Session(TOY, size=(16, 8), mouse_script="a\0b"),
+                 lambda: toyhost.compare(TOY, TOY, frames=1, size=(16, 8), key_script=tmp_path / "a\0b")):
+        with pytest.raises(toyhost.UsageError, match="NUL byte"):
+            call()
+    with toyhost.Session(TOY, size=(16, 8)) as session:
+        with pytest.raises(toyhost.UsageError, match="NUL byte"):
+            session.record(str(tmp_path / "f\0_%d.png"), 1)
 
 
 def test_a_media_folder_given_as_one_string_is_one_folder(tmp_path):

@@ -144,6 +144,25 @@ def test_a_non_contiguous_array_is_shown_as_its_values():
         numpy.testing.assert_array_equal(session.frame(), shown_as_rgba8(flipped))
 
 
+def test_an_array_too_large_is_refused_before_any_copy():
+    """Once a defect (issue 46): a 20000x20000 view of one pixel (zero strides: 4 bytes of memory) was
+    first made contiguous, 1.49 GiB, and only then refused. Its shape is checked first: refused at
+    once, with no copy (tracemalloc sees numpy's allocations)."""
+    import tracemalloc
+
+    view = numpy.lib.stride_tricks.as_strided(numpy.zeros(4, numpy.uint8), (20000, 20000, 4), (0, 0, 1))
+    with toyhost.Session(toyhost.from_code(FETCH), size=(4, 4)) as session:
+        tracemalloc.start()
+        try:
+            with pytest.raises(toyhost.UsageError) as raised:
+                session.set_channel("Image", 0, view)
+            _, peak = tracemalloc.get_traced_memory()
+        finally:
+            tracemalloc.stop()
+        assert "array: shape (20000, 20000, 4): at most 16384 pixels a side" in str(raised.value)
+        assert peak < 64 << 20, f"{peak} bytes allocated before the refusal"
+
+
 def test_refusals_name_the_parameter_pass_and_channel():
     shadertoy = toyhost.from_code(COPY, buffers={"A": COPY}, channels={"Image": {1: "A"}})
     with toyhost.Session(shadertoy, size=(4, 4)) as session:
@@ -155,6 +174,10 @@ def test_refusals_name_the_parameter_pass_and_channel():
             (dict(pass_="Image", channel=0, array=numpy.zeros((2, 2, 2), numpy.uint8)), "array: shape (2, 2, 2)"),
             (dict(pass_="Image", channel=0, array=numpy.zeros((0, 2), numpy.uint8)), "has no pixels"),
             (dict(pass_="Image", channel=0, array="pixels"), "array: expected a numpy array"),
+            # Once bare ValueErrors (issue 46): "²".isdigit() is true, but int("²") fails.
+            (dict(pass_="Image", channel="iChannel\u00b2", array=numpy.zeros((2, 2), numpy.uint8)),
+             "channel: expected 0..3 or"),
+            (dict(pass_="Image", channel="iChannel", array=numpy.zeros((2, 2), numpy.uint8)), "channel: expected 0..3"),
             (dict(pass_="Image", channel=0, array=numpy.zeros((2, 2), numpy.float32), filter="mipmap"),
              "mipmap filtering takes uint8 arrays"),
             (dict(pass_="Image", channel=0, array=numpy.zeros((2, 2), numpy.uint8), wrap="mirror"), "wrap: must be"),

@@ -73,6 +73,9 @@ def test_show_makes_an_animated_png_of_the_frames_kept(tmp_path):
     with toyhost.Session(TOY, size=SIZE, date=DATE) as session:
         with pytest.raises(toyhost.UsageError):
             session.show(frames=2, scale=0)
+        # Once a bare ValueError from the animation (issue 46): no frames is no picture.
+        with pytest.raises(toyhost.UsageError, match="frames"):
+            session.show(frames=0)
 
 
 def kernel_folder(tmp_path):

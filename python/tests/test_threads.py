@@ -202,6 +202,28 @@ def test_the_interpreter_exits_cleanly_while_a_daemon_thread_renders():
         assert "terminate" not in done.stdout
 
 
+def test_closing_while_the_loop_waits_for_a_frame_always_raises(tmp_path, never_switch):
+    """Once a defect (issue 46): a close() that ran while the loop waited in next() ended the loop
+    normally 4 times in 5 (the stream was cancelled, and the Python side looked at `closed` before
+    the session was gone). The closing thread is released by an event the loop sets; with the GIL
+    never taken from a running thread it runs only where the loop releases it: inside next()."""
+    shadertoy = toyhost.load(write_shadertoy(tmp_path / "busy", {"Image": BUSY}))
+    for attempt in range(8):
+        session = toyhost.Session(shadertoy, size=(64, 64))
+        go = threading.Event()
+        closer = threading.Thread(target=lambda: (go.wait(), session.close()))
+        closer.start()
+        seen = 0
+        with pytest.raises(toyhost.UsageError) as raised:
+            for _ in session.render(10**6):
+                seen += 1
+                if seen == 2:
+                    go.set()  # does not release the GIL: the closer runs once next() waits
+        closer.join()
+        assert "closed while render() ran" in str(raised.value), attempt
+        assert seen < 10**6 and session.closed
+
+
 def test_closing_from_another_thread_during_render_raises_usage_error_in_the_loop():
     """The loop learns the session went away: the documented UsageError, not a loop that just ends
     early as if all frames were rendered."""

@@ -260,27 +260,14 @@ class Session:
         must be unbound or show a picture (replaced); a buffer, cubemap, video or keyboard channel
         raises UsageError, as do other dtypes or shapes."""
         pass_ = args.text("pass_", pass_)
-        if isinstance(channel, str):
-            text = channel.removeprefix("iChannel")
-            if not text.isdigit():
-                raise args.usage("channel", f"expected 0..3 or \"iChannel0\" .. \"iChannel3\", got {channel!r}")
-            channel = int(text)
-        channel = args.integer("channel", channel, minimum=0, maximum=3)
+        channel = args.channel("channel", channel)
         if filter not in _code.FILTERS:
             raise args.usage("filter", f"must be one of {', '.join(_code.FILTERS)}, got {filter!r}")
         if wrap not in _code.WRAPS:
             raise args.usage("wrap", f"must be one of {', '.join(_code.WRAPS)}, got {wrap!r}")
         if not _code.is_array(array) or isinstance(array, (str, bytes, dict)):
             raise args.usage("array", f"expected a numpy array, got {type(array).__name__}")
-        pixels = numpy.asarray(array)
-        if pixels.dtype not in (numpy.uint8, numpy.float32):
-            raise args.usage("array", f"dtype {pixels.dtype} is not taken: uint8 (0..255) or float32 "
-                                      "(convert with .astype(numpy.float32))")
-        if pixels.ndim == 3 and pixels.shape[2] not in (1, 3, 4) or pixels.ndim not in (2, 3):
-            raise args.usage("array", f"shape {pixels.shape}: expected (height, width) or (height, width, 1|3|4)")
-        if pixels.shape[0] == 0 or pixels.shape[1] == 0:
-            raise args.usage("array", f"shape {pixels.shape} has no pixels")
-        self._native.set_channel(pass_, channel, numpy.ascontiguousarray(pixels), filter, wrap)
+        self._native.set_channel(pass_, channel, args.channel_array("array", array), filter, wrap)
 
     def render_sound(self, seconds: float = 0.0) -> numpy.ndarray:
         """The Sound pass (mainSound) as the site renders it: float32 samples of shape (n, 2), stereo
@@ -320,6 +307,7 @@ class Session:
         or with ``strip=True`` the frames side by side as one still. ``scale`` enlarges it on screen
         (pixels stay sharp). ``mouse`` / ``keys`` as render() takes them. The session goes on from
         where it is, as after render()."""
+        frames = args.integer("frames", frames, minimum=1)  # an animation of no frames is no picture
         every = args.integer("every", every)
         scale = args.integer("scale", scale)
         if scale < 1 or scale > 16:

@@ -9,9 +9,12 @@ import math
 import numbers
 import os
 
+from . import _toyhost
 from ._errors import UsageError
 
 INT_MIN, INT_MAX = -2**31, 2**31 - 1
+# The largest texture side a channel takes (C++ toyhost/Defaults.h, through the native module).
+MAX_CANVAS_SIDE = _toyhost.defaults()["max_canvas_side"]
 
 
 def usage(name, message):
@@ -83,9 +86,13 @@ def text(name, value):
 
 def path(name, value):
     try:
-        return os.fspath(value)
+        value = os.fspath(value)
     except TypeError:
         raise usage(name, f"expected a path, got {value!r}") from None
+    # No file name holds one; the native layer's conversion would raise a bare ValueError.
+    if ("\0" if isinstance(value, str) else b"\0") in value:
+        raise usage(name, f"a path cannot hold a NUL byte, got {value!r}")
+    return value
 
 
 def paths(name, value):
@@ -130,6 +137,36 @@ def named_paths(name, value):
     if not hasattr(value, "items"):
         raise usage(name, f"expected a dict of name: path, got {value!r}")
     return [(text(name, key), path(name, item)) for key, item in value.items()]
+
+
+def channel(name, value):
+    """A channel as 0..3 or "iChannel0".."iChannel3" (ASCII digits: "iChannel²" is no channel)."""
+    if isinstance(value, str):
+        digits = value.removeprefix("iChannel")
+        if not (digits.isascii() and digits.isdigit()):
+            raise usage(name, f"expected 0..3 or \"iChannel0\" .. \"iChannel3\", got {value!r}")
+        value = int(digits)
+    return integer(name, value, minimum=0, maximum=3)
+
+
+def channel_array(name, value):
+    """A set_channel() array (numpy takes `value` as one): uint8 or float32 of shape (height, width)
+    or (height, width, 1|3|4), at most MAX_CANVAS_SIDE a side; C-contiguous (copied only when it is
+    not, and only once its shape passed: a 20000x20000 view of one pixel is refused, not first
+    copied into 1.5 GiB)."""
+    import numpy
+
+    pixels = numpy.asarray(value)
+    if pixels.dtype not in (numpy.uint8, numpy.float32):
+        raise usage(name, f"dtype {pixels.dtype} is not taken: uint8 (0..255) or float32 "
+                          "(convert with .astype(numpy.float32))")
+    if pixels.ndim == 3 and pixels.shape[2] not in (1, 3, 4) or pixels.ndim not in (2, 3):
+        raise usage(name, f"shape {pixels.shape}: expected (height, width) or (height, width, 1|3|4)")
+    if pixels.shape[0] == 0 or pixels.shape[1] == 0:
+        raise usage(name, f"shape {pixels.shape} has no pixels")
+    if pixels.shape[0] > MAX_CANVAS_SIDE or pixels.shape[1] > MAX_CANVAS_SIDE:
+        raise usage(name, f"shape {pixels.shape}: at most {MAX_CANVAS_SIDE} pixels a side")
+    return numpy.ascontiguousarray(pixels)
 
 
 def optional(convert, name, value, *args, **kwargs):

@@ -66,6 +66,7 @@ Result<std::unique_ptr<Session>> Session::Impl::create(const Shadertoy& shaderto
     // The caller's settings as given: prepareSession checks what was given (width 0 is refused as
     // `run --size 0x0` is) and fills what was not, as for a run.
     options.settings = settings;
+    options.framesInMemory = true;  // read by the caller: drawn whole, never in tiles
     // A Session has no watchdog limits unless its settings give them (the commands have theirs).
     if (!options.settings.frameTimeout) options.settings.frameTimeout = defaults::kSessionTimeoutSeconds;
     if (!options.settings.compileTimeout) options.settings.compileTimeout = defaults::kSessionTimeoutSeconds;

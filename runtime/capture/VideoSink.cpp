@@ -171,8 +171,10 @@ Status VideoSink::write(const CapturedFrame& frame, EncodeScratch& scratch) {
     const std::span<const std::uint8_t> bottomUp = rgba8BottomUp(frame, scratch.bytes);
     at = addEncodeTime(at);
     // Writing into ffmpeg's pipe waits while ffmpeg encodes: this is where a video's encoding shows.
-    Status written = ffmpeg_->write(std::as_bytes(bottomUp));
+    Status written = ffmpeg_->write(std::as_bytes(bottomUp), &writeCancel_);
     addWriteTime(at);
+    // Cancelled: discard() kills ffmpeg and what it started; waiting for it here could be forever.
+    if (!written && writeCancel_.cancelled()) return fileError(path_.string(), "the recording was cancelled", Code::Interrupted);
     if (!written) {
         // ffmpeg stopped reading: it failed; wait for it so its log is complete.
         (void)ffmpeg_->closeAndWait();
@@ -209,6 +211,7 @@ Status VideoSink::close() {
 void VideoSink::cancel() {
     std::lock_guard lock(launchMutex_);
     cancelled_ = true;
+    writeCancel_.cancel();
     if (ffmpeg_) ffmpeg_->killFromAnyThread();
 }
 

@@ -74,6 +74,10 @@ private:
     mutable std::mutex launchMutex_;     // ffmpeg_'s creation against cancel() from another thread
     std::optional<ChildProcess> ffmpeg_;
     bool cancelled_ = false;  // cancel() came before the launch: ffmpeg is never started
+    // Fired by cancel(): a write blocked on an ffmpeg that stopped reading returns, whoever holds the
+    // pipe open (once a defect: a wrapper script's child kept it open after the script was killed,
+    // the encoder thread never returned and a stop never ended the run).
+    CancelSignal writeCancel_;
     bool registered_ = false;  // temp_ and log_ are in core/InFlight.h
     bool closed_ = false;
     std::string encoder_;

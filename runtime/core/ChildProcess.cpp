@@ -137,10 +137,20 @@ ChildProcess& ChildProcess::operator=(ChildProcess&& other) noexcept {
 
 ChildProcess::~ChildProcess() { kill(); }
 
-Status ChildProcess::write(std::span<const std::byte> bytes) {
+Status ChildProcess::write(std::span<const std::byte> bytes, const CancelSignal* cancel) {
     if (!input_) return Error(name_ + ": its input is already closed", Code::Process);
-    return writeAll(input_.get(), bytes, name_ + "'s input");
+    return writeAll(input_.get(), bytes, name_ + "'s input", cancel);
 }
+
+namespace {
+// SIGKILL to the child's process group (its own: started with POSIX_SPAWN_SETPGROUP, so the group's
+// id is its pid), then to the child in case it left the group. Only while the child is not reaped:
+// until then its pid, and so the group's id, cannot name another process.
+void killGroupOf(pid_t pid) {
+    ::kill(-pid, SIGKILL);
+    ::kill(pid, SIGKILL);
+}
+}  // namespace
 
 Result<int> ChildProcess::closeAndWait(int killAfterMs) {
     input_.reset();
@@ -151,7 +161,7 @@ Result<int> ChildProcess::closeAndWait(int killAfterMs) {
         int polled;
         do polled = ::poll(&ended, 1, killAfterMs);
         while (polled < 0 && errno == EINTR);
-        if (polled == 0) killFromAnyThread();
+        if (polled == 0) killGroupOf(pid_);
     }
     int status = 0;
     pid_t waited;
@@ -172,7 +182,7 @@ void ChildProcess::kill() {
     input_.reset();
     output_.reset();
     if (pid_ < 0) return;
-    ::kill(pid_, SIGKILL);
+    killGroupOf(pid_);
     int status = 0;
     while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }

@@ -32,8 +32,10 @@ public:
     ChildProcess& operator=(ChildProcess&& other) noexcept;
     ~ChildProcess();
 
-    // Writes to the child's standard input.
-    Status write(std::span<const std::byte> bytes);
+    // Writes to the child's standard input. With `cancel`, a write blocked on a child that stopped
+    // reading returns (Code::Cancelled) once it fires, even when the pipe is held open by a process
+    // the child started (a shell script's own child).
+    Status write(std::span<const std::byte> bytes, const CancelSignal* cancel = nullptr);
     // Reads what the child wrote to its stdout (spawnReading only): up to `bytes.size()`, blocking
     // until some is there; 0 at its end (the child closed it or exited).
     Result<std::size_t> read(std::span<std::byte> bytes);
@@ -43,7 +45,8 @@ public:
     // exit code, or an error when a signal ended it. With `killAfterMs` >= 0, a child still
     // running after that long is killed.
     Result<int> closeAndWait(int killAfterMs = -1);
-    // Kills the child (SIGKILL) and reaps it; a no-op once it was waited for.
+    // Kills the child and its process group (SIGKILL: what it started, such as a wrapper script's
+    // own ffmpeg or sleep) and reaps it; a no-op once it was waited for.
     void kill();
     // Sends SIGKILL without reaping or touching the pipe: safe to call from another thread while
     // this one writes to the child or waits for it (both then return). Uses a pidfd, so it can

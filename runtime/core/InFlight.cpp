@@ -67,8 +67,9 @@ CleanupReport emergencyCleanup() {
         r.closed = true;
         children = r.children;
     }
+    // Each child leads its own process group (core/ChildProcess.h): what it started goes with it.
     for (pid_t pid : children)
-        if (::kill(pid, SIGKILL) == 0) ++report.children;
+        if (::kill(-pid, SIGKILL) == 0 || ::kill(pid, SIGKILL) == 0) ++report.children;
     // A child that is not dead yet could still create its output file.
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(1);
     for (pid_t pid : children) {

@@ -116,7 +116,40 @@ std::string pathOf(const std::vector<Level>& levels, std::size_t upTo) {
 }
 }  // namespace
 
+namespace {
+
+// Where in `text` the number `literal` stands as a whole JSON token (after ':', '[', ',' or space,
+// before ',', ']', '}', space or the end), or npos: nlohmann's "number overflow" says which
+// number, not where.
+std::size_t numberTokenAt(std::string_view text, std::string_view literal) {
+    const auto separates = [](char c) { return c == ',' || c == ']' || c == '}' || c == ':' || c == '[' || std::isspace(static_cast<unsigned char>(c)); };
+    for (std::size_t at = text.find(literal); at != std::string_view::npos; at = text.find(literal, at + 1)) {
+        const std::size_t end = at + literal.size();
+        if ((at == 0 || separates(text[at - 1])) && (end == text.size() || separates(text[end]))) return at;
+    }
+    return std::string_view::npos;
+}
+
+Diagnostic placed(Diagnostic d, std::string_view text, std::size_t offset) {
+    const TextPlace place = placeOfOffset(text, offset);
+    d.line = place.line;
+    d.column = place.column;
+    d.excerpt = formatExcerpt(place.lineText, place.line, place.column);
+    return d;
+}
+
+}  // namespace
+
 Result<json> parseJsonStrictly(std::string_view text, const std::string& file, Code code) {
+    // nlohmann's lexer takes a NUL byte for the end of the text ("the text ends too early").
+    if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+        Diagnostic d;
+        d.code = code;
+        d.file = file;
+        d.message = "invalid JSON: found a NUL byte (0x00), which JSON text cannot hold (a binary file, or text in "
+                    "UTF-16?)";
+        return Error(placed(std::move(d), text, nul));
+    }
     std::vector<Level> levels;
     std::vector<Diagnostic> duplicates;
     std::size_t unlisted = 0;  // duplicates past the first kMaxListedDuplicateKeys: counted, said once
@@ -167,13 +200,18 @@ Result<json> parseJsonStrictly(std::string_view text, const std::string& file, C
         d.code = code;
         d.file = file;
         if (e.id == 406 && !levels.empty()) d.field = pathOf(levels, levels.size());
+        const std::string_view what = e.what();
+        const std::size_t quote = what.find("number overflow parsing '");
         if (const auto* syntax = dynamic_cast<const json::parse_error*>(&e); syntax && syntax->byte > 0) {
             // byte: 1-based index of the last byte read, the one that does not fit.
-            const TextPlace place = placeOfOffset(text, syntax->byte - 1);
-            d.line = place.line;
-            d.column = place.column;
-            d.excerpt = formatExcerpt(place.lineText, place.line, place.column);
             d.message = "invalid JSON: " + jsonSyntaxMessage(e.what());
+            d = placed(std::move(d), text, syntax->byte - 1);
+        } else if (e.id == 406 && quote != std::string_view::npos && what.back() == '\'') {
+            const std::string_view literal = what.substr(quote + 25, what.size() - quote - 26);
+            d.message = "invalid JSON: the number " + std::string(literal) +
+                        " is beyond the range of numbers (at most about 1.8e308 either way)";
+            if (const std::size_t at = numberTokenAt(text, literal); at != std::string_view::npos)
+                d = placed(std::move(d), text, at);
         } else {
             d.message = std::string("invalid JSON: ") + e.what();
         }

@@ -84,6 +84,34 @@ std::string wholeNumberProblem(std::string_view text, long long min, long long m
     return "";
 }
 
+WholeNumbers wholeNumbersIn(std::string_view text, std::string_view separators, std::size_t count, long long min,
+                            long long max) {
+    WholeNumbers out;
+    std::size_t start = 0;
+    for (std::size_t part = 0; part < count; ++part) {
+        std::size_t end = part + 1 == count ? text.size() : text.find_first_of(separators, start);
+        if (end == std::string_view::npos) {
+            out.problem = "expected " + std::to_string(count) + " whole numbers joined by '" +
+                          std::string(1, separators.front()) + "', not " + shown(text);
+            break;
+        }
+        const std::string_view piece = text.substr(start, end - start);
+        if (piece.find_first_of(separators) != std::string_view::npos) {
+            out.problem = "expected " + std::to_string(count) + " whole numbers joined by '" +
+                          std::string(1, separators.front()) + "', not " + shown(text);
+            break;
+        }
+        if (std::string problem = wholeNumberProblem(piece, min, max); !problem.empty()) {
+            out.problem = std::move(problem);
+            break;
+        }
+        out.values.push_back(*parseDecimalInteger(piece));
+        start = end + 1;
+    }
+    if (!out.problem.empty()) out.values.clear();
+    return out;
+}
+
 std::string decimalNumberProblem(std::string_view text) {
     if (text.empty()) return "expected a number, not an empty value";
     if (!looksDecimal(text)) return "expected a decimal number (like 2, 0.5 or 1e-3), not " + shown(text);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace toyhost {
 
@@ -22,6 +23,16 @@ std::optional<double> parseDecimalNumber(std::string_view text);
 // usage message ("expected a whole number in decimal digits, not \"0x10\"", "\"99999999999\" is
 // too large (at most 2147483647)"); "" when it is one.
 std::string wholeNumberProblem(std::string_view text, long long min, long long max);
+
+// `count` whole numbers joined by one of `separators`: "800x450" (sizes, "xX"), "0:100" (":"),
+// "1/4" ("/"), "0,0,64,36" (","). Each part is read as wholeNumberProblem reads it (decimal digits
+// only, within [min, max]: no wrap at 2^32, no 0x10, no 010 read as octal).
+struct WholeNumbers {
+    std::vector<long long> values;  // `count` of them when `problem` is empty
+    std::string problem;            // why `text` is not such a list, in words; "" when it is
+};
+WholeNumbers wholeNumbersIn(std::string_view text, std::string_view separators, std::size_t count, long long min,
+                            long long max);
 
 // Why `text` is not a decimal number; "" when it is one.
 std::string decimalNumberProblem(std::string_view text);

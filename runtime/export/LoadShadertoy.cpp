@@ -36,12 +36,24 @@ Result<ManifestDesc> loadShaderFile(const fs::path& target) {
         d.message = std::move(message);
         notices.push_back(std::move(d));
     };
+    // A common.glsl that is there but cannot be read as one (a link to nothing, a folder) was meant
+    // as the Common pass: said, not skipped without a word (issue 46).
+    const fs::path shownCommon = target.parent_path() / kCommonFileName;
+    if (fs::is_symlink(commonFile, ec) && !fs::exists(commonFile, ec))
+        return fileError(shownCommon.string(),
+                         "is a symbolic link to " + fs::read_symlink(commonFile, ec).string() +
+                             ", which does not exist: the Common pass of " + target.string() +
+                             " cannot be read (remove the link to run without Common)",
+                         Code::IoNotFound);
+    if (fs::exists(commonFile, ec) && !fs::is_regular_file(commonFile, ec))
+        return fileError(shownCommon.string(),
+                         "is not a regular file: the Common pass of " + target.string() + " cannot be read",
+                         Code::IoNotAFile);
     if (fs::is_regular_file(commonFile, ec) && !sameFile(commonFile, file)) {
-        const fs::path shown = target.parent_path() / kCommonFileName;
         Result<std::string> code = readTextFile(commonFile);
         if (!code) return code.error();
-        common = PassCode{std::move(*code), commonFile, shown.string()};
-        notice("runs as an Image-only shadertoy with " + shown.string() + " (next to it) as its Common pass");
+        common = PassCode{std::move(*code), commonFile, shownCommon.string()};
+        notice("runs as an Image-only shadertoy with " + shownCommon.string() + " (next to it) as its Common pass");
     } else {
         notice("runs as an Image-only shadertoy (no channels bound)");
     }

@@ -33,12 +33,29 @@ struct BandedImageWriter::Impl {
     png_structp png = nullptr;
     png_infop info = nullptr;
     std::string pngError;  // libpng's message for the error that longjmp'd
+    int writeErrno = 0;    // why the file's write failed, when that was the error
     // EXR
     std::unique_ptr<Imf::OutputFile> exr;
     bool half = false;
     std::vector<std::uint16_t> halves;
 
     Error failure(const std::string& what) const { return fileError(path.string(), what, Code::IoWrite); }
+    // libpng's error, or the system's reason when a write failed ("No space left on device", "File
+    // too large"), as the other writers say it.
+    // OpenEXR's exception, or the system's reason when the file could not take more (its message
+    // names the hidden temporary file).
+    Error exrFailure(const std::exception& e) const {
+        const int cause = errno;
+        if (cause == ENOSPC || cause == EFBIG)
+            return fileError(path.string(), std::string("cannot write EXR: ") + std::strerror(cause),
+                             cause == ENOSPC ? Code::IoNoSpace : Code::IoWrite);
+        return failure(std::string("cannot write EXR: ") + e.what());
+    }
+    Error pngFailure() const {
+        if (writeErrno == 0) return failure("PNG: " + pngError);
+        return fileError(path.string(), std::string("write failed: ") + std::strerror(writeErrno),
+                         writeErrno == ENOSPC ? Code::IoNoSpace : Code::IoWrite);
+    }
 
     void closePng() {
         if (png) png_destroy_write_struct(&png, &info);
@@ -66,6 +83,22 @@ void pngFailed(png_structp png, png_const_charp message) {
     png_longjmp(png, 1);
 }
 void pngWarning(png_structp, png_const_charp) {}
+
+// libpng's own writer (png_init_io) reports a failed fwrite as "Write Error", without errno.
+void pngWrite(png_structp png, png_bytep data, png_size_t length) {
+    auto* impl = static_cast<BandedImageWriter::Impl*>(png_get_io_ptr(png));
+    if (std::fwrite(data, 1, length, impl->file) != length) {
+        impl->writeErrno = errno ? errno : EIO;
+        png_error(png, "Write Error");
+    }
+}
+void pngFlush(png_structp png) {
+    auto* impl = static_cast<BandedImageWriter::Impl*>(png_get_io_ptr(png));
+    if (std::fflush(impl->file) != 0) {
+        impl->writeErrno = errno ? errno : EIO;
+        png_error(png, "Write Error");
+    }
+}
 
 const char* const kChannels[4] = {"R", "G", "B", "A"};
 
@@ -95,8 +128,8 @@ Result<std::unique_ptr<BandedImageWriter>> BandedImageWriter::open(const fs::pat
         impl->png = png_create_write_struct(PNG_LIBPNG_VER_STRING, impl.get(), pngFailed, pngWarning);
         if (impl->png) impl->info = png_create_info_struct(impl->png);
         if (!impl->png || !impl->info) return impl->failure("PNG: out of memory");
-        if (setjmp(png_jmpbuf(impl->png))) return impl->failure("PNG: " + impl->pngError);
-        png_init_io(impl->png, impl->file);
+        if (setjmp(png_jmpbuf(impl->png))) return impl->pngFailure();
+        png_set_write_fn(impl->png, impl.get(), pngWrite, pngFlush);
         png_set_compression_level(impl->png, pngLevel);
         png_set_filter(impl->png, PNG_FILTER_TYPE_BASE, pngLevel == 0 ? PNG_FILTER_NONE : PNG_FILTER_UP);
         png_set_IHDR(impl->png, impl->info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
@@ -111,7 +144,7 @@ Result<std::unique_ptr<BandedImageWriter>> BandedImageWriter::open(const fs::pat
             impl->half = exr.half;
             impl->exr = std::make_unique<Imf::OutputFile>(impl->temp.c_str(), header);
         } catch (const std::exception& e) {
-            return impl->failure(std::string("cannot write EXR: ") + e.what());
+            return impl->exrFailure(e);
         }
     }
     return std::unique_ptr<BandedImageWriter>(new BandedImageWriter(std::move(impl)));
@@ -122,7 +155,7 @@ Status BandedImageWriter::writeRows(std::span<const std::uint8_t> rgba, int rows
     if (s.format != Format::Png) return s.failure("internal: 8-bit rows for an EXR file");
     if (rows < 0 || s.written + rows > s.height || rgba.size() < static_cast<std::size_t>(rows) * s.width * 4)
         return s.failure("internal: rows beyond the image");
-    if (setjmp(png_jmpbuf(s.png))) return s.failure("PNG: " + s.pngError);
+    if (setjmp(png_jmpbuf(s.png))) return s.pngFailure();
     for (int r = 0; r < rows; ++r)
         png_write_row(s.png, rgba.data() + static_cast<std::size_t>(r) * s.width * 4);
     s.written += rows;
@@ -154,7 +187,7 @@ Status BandedImageWriter::writeRows(std::span<const float> rgba, int rows) {
         s.exr->setFrameBuffer(frame);
         s.exr->writePixels(rows);
     } catch (const std::exception& e) {
-        return s.failure(std::string("cannot write EXR: ") + e.what());
+        return s.exrFailure(e);
     }
     s.written += rows;
     return okStatus();
@@ -165,21 +198,24 @@ Status BandedImageWriter::finish() {
     if (s.written != s.height)
         return s.failure("internal: " + std::to_string(s.written) + " of " + std::to_string(s.height) + " rows written");
     if (s.format == Format::Png) {
-        if (setjmp(png_jmpbuf(s.png))) return s.failure("PNG: " + s.pngError);
+        if (setjmp(png_jmpbuf(s.png))) return s.pngFailure();
         png_write_end(s.png, nullptr);
         png_destroy_write_struct(&s.png, &s.info);
         s.png = nullptr;
         s.info = nullptr;
         const bool flushed = std::fflush(s.file) == 0 && !std::ferror(s.file);
-        const int cause = errno;
+        int cause = errno;
         const bool closed = std::fclose(s.file) == 0;
+        if (flushed && !closed) cause = errno;
         s.file = nullptr;
-        if (!flushed || !closed) return s.failure(std::string("write failed: ") + std::strerror(cause));
+        if (!flushed || !closed)
+            return fileError(s.path.string(), std::string("write failed: ") + std::strerror(cause),
+                             cause == ENOSPC ? Code::IoNoSpace : Code::IoWrite);
     } else {
         try {
             s.exr.reset();  // writes the offset table and closes the file
         } catch (const std::exception& e) {
-            return s.failure(std::string("cannot write EXR: ") + e.what());
+            return s.exrFailure(e);
         }
     }
     std::error_code ec;

@@ -13,6 +13,7 @@
 
 #include "core/AtomicFile.h"
 #include "core/JsonText.h"
+#include "core/NumberText.h"
 #include "core/Defaults.h"
 #include "core/Suggest.h"
 #include "manifest/StockMedia.h"
@@ -173,10 +174,12 @@ private:
             long long w = 0, h = 0;
             bool parsed = false;
             if (size->is_string()) {
-                char x = 0, extra = 0;
                 std::string text = size->get<std::string>();
                 while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-                parsed = std::sscanf(text.c_str(), "%lld%c%lld%c", &w, &x, &h, &extra) == 3 && (x == 'x' || x == 'X');
+                // Read as --size is (core/NumberText.h): decimal digits, no wrap.
+                const WholeNumbers read = wholeNumbersIn(text, "xX", 2, 1, kMaxSide);
+                parsed = read.problem.empty();
+                if (parsed) w = read.values[0], h = read.values[1];
             } else if (size->is_array() && size->size() == 2 && (*size)[0].is_number_integer() &&
                        (*size)[1].is_number_integer()) {
                 w = (*size)[0].get<long long>();

@@ -119,7 +119,8 @@ Status checkSoundRequest(const SoundRequest& sound) {
 namespace {
 // A canvas drawn in tiles (session/TiledStill.h): up to kMaxTiledCanvasSide a side, tiles from
 // kMinTileSide to kMaxCanvasSide, and only without buffers, whose targets are the whole canvas.
-Status checkTiledSize(int width, int height, std::optional<int> tile, const ManifestDesc& manifest, bool interactive) {
+Status checkTiledSize(int width, int height, std::optional<int> tile, const ManifestDesc& manifest, bool interactive,
+                      bool framesInMemory) {
     using namespace defaults;
     if (tile && (*tile < kMinTileSide || *tile > kMaxCanvasSide))
         return settingError("tile", "must be " + std::to_string(kMinTileSide) + " to " + std::to_string(kMaxCanvasSide) +
@@ -138,6 +139,15 @@ Status checkTiledSize(int width, int height, std::optional<int> tile, const Mani
                                   std::to_string(kMaxCanvasSide) + " for it",
                             Code::UsageSize);
     if (interactive) return settingError(tile ? "tile" : "size", why + ": a window cannot show it; run it headless", Code::UsageSize);
+    // A frame read in memory is one target: its tiles are drawn into files only (once a defect: a
+    // library Session of 20000x100 silently drew and handed over one 1024-wide tile, and compare
+    // said "equal" for frames that differed beyond it).
+    if (framesInMemory)
+        return settingError(tile ? "tile" : "size",
+                            why + ": only toyhost run draws a canvas in tiles, into PNG or EXR files; frames read in "
+                                  "memory (the library's Session, Python, toyhost compare) are at most " +
+                                std::to_string(kMaxCanvasSide) + "x" + std::to_string(kMaxCanvasSide),
+                            Code::UsageSize);
     return okStatus();
 }
 }  // namespace
@@ -352,7 +362,7 @@ Result<SessionPlan> prepareSession(const SessionOptions& asked) {
     if (!o.interactive && !wallClock) wallClock = localWallClockNow();
     const bool tiled = o.tile || *s.width > defaults::kMaxCanvasSide || *s.height > defaults::kMaxCanvasSide;
     if (tiled)
-        if (Status size = checkTiledSize(*s.width, *s.height, o.tile, *manifest, o.interactive); !size)
+        if (Status size = checkTiledSize(*s.width, *s.height, o.tile, *manifest, o.interactive, o.framesInMemory); !size)
             return size.error();
     // Every setting's check (the validation table of toyhost/Settings.h's list).
     if (Status checked = checkSessionSettings(s, SettingContext{tiled}); !checked) return checked.error();

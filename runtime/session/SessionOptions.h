@@ -52,6 +52,9 @@ struct SessionOptions {
     SessionSettings settings;
     // Window mode: no frame count means "until the window closes" and no fps means real time.
     bool interactive = false;
+    // The caller reads the frames from memory (the library's Session: Python, toyhost compare):
+    // the canvas is one GL target, never drawn in tiles, so at most defaults::kMaxCanvasSide a side.
+    bool framesInMemory = false;
     // Re-render (headless) or hot-reload (window) when a file of the shadertoy changes.
     bool watch = false;
     // Window with a fixed step (fps): draw frames as fast as the display allows instead of fps

@@ -33,6 +33,9 @@ void installStopSignals() {
     struct sigaction hangup {};
     if (::sigaction(SIGHUP, nullptr, &hangup) == 0 && hangup.sa_handler != SIG_IGN) ::sigaction(SIGHUP, &action, nullptr);
     std::signal(SIGPIPE, SIG_IGN);
+    // A file past `ulimit -f` is a write error (EFBIG, "File too large") that the writers report and
+    // clean up after, not the end of the process with the hidden temporary files left behind.
+    std::signal(SIGXFSZ, SIG_IGN);
 }
 
 int stopSignal() { return firstSignal; }

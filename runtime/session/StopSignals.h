@@ -2,8 +2,9 @@
 // and writes a byte per signal to a pipe that a Watchdog (session/Watchdog.h) reads, which
 // acknowledges it, asks the session to stop before its next frame, and ends the process if the
 // render thread cannot stop in time. Process-wide: the CLI installs it; a program that embeds
-// toyhost decides itself (SessionCore::requestStop does the same from any thread). SIGPIPE is
-// ignored, so a closed stdout or encoder pipe is a write error, not the end of the process.
+// toyhost decides itself (SessionCore::requestStop does the same from any thread). SIGPIPE and
+// SIGXFSZ are ignored, so a closed stdout or encoder pipe, or a file past `ulimit -f`, is a write
+// error (EPIPE, EFBIG), not the end of the process.
 // No GL needed.
 #pragma once
 

@@ -86,6 +86,13 @@ Status TiledStill::render(Player& player, int frame) {
     // tiles reach beyond it), so that every tile's origin is even when the tile is (fitPlayer):
     // derivatives pair the same 2x2 quads of pixels as in an untiled render. Bands go top first.
     for (int row = (height_ - 1) / tileHeight; row >= 0; --row) {
+        // A band that could not be written (a full disk, `ulimit -f`) ends the frame before the next
+        // band is drawn (once a defect: a 65536x65536 EXR drew every tile for minutes after the first
+        // write failed). The file's writer goes with its jobs: its temporary file is removed.
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (failed_) return *failed_;
+        }
         const int originY = row * tileHeight;
         const int bottom = originY, top = std::min(height_, originY + tileHeight), rows = top - bottom;
         std::shared_ptr<Band> band;

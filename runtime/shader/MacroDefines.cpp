@@ -16,6 +16,52 @@ Error defineError(std::string message) {
 bool identifierStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool identifierPart(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
+// GLSL ES's source character set (GLSL ES 3.00 section 3.1) without '#' and '\\', which get
+// their own messages: letters, digits, '_', spaces and tabs, and these.
+bool inGlslCharacterSet(char c) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (u >= 0x80 || (u < 0x20 && c != '\t') || u == 0x7f) return false;
+    return identifierPart(c) || c == ' ' || c == '\t' ||
+           std::string_view(".+-/*%<>[](){}^|&~=!:;,?").find(c) != std::string_view::npos;
+}
+
+// Why a value cannot follow `#define NAME ` on one line of every pass, or "": the compiler's own
+// message would point into toyhost's header, not at --define (issue 46).
+std::string valueProblem(const std::string& value) {
+    if (value.find_first_of("\r\n") != std::string::npos) return "the value must be one line";
+    if (!value.empty() && value.back() == '\\')
+        return "the value ends with '\\', which would continue the #define onto the line after it";
+    if (value.find('#') != std::string::npos)
+        return "the value holds '#': a directive cannot be a macro's value, and GLSL has no # or ## operator";
+    // A comment opened and not closed would swallow the line after the #define.
+    for (std::size_t at = 0; at + 1 < value.size(); ++at) {
+        if (value.compare(at, 2, "//") == 0) break;  // the rest of the line is a comment
+        if (value.compare(at, 2, "/*") == 0) {
+            const std::size_t end = value.find("*/", at + 2);
+            if (end == std::string::npos) return "the value opens a comment ('/*') that it does not close";
+            at = end + 1;
+        }
+    }
+    for (std::size_t at = 0; at < value.size(); ++at) {
+        if (inGlslCharacterSet(value[at]) || value[at] == '\\') continue;
+        std::size_t end = at + 1;  // the whole UTF-8 character
+        while (end < value.size() && (static_cast<unsigned char>(value[end]) & 0xC0) == 0x80) ++end;
+        const unsigned char u = static_cast<unsigned char>(value[at]);
+        std::string shown;
+        if (u < 0x20 || u == 0x7f) {
+            const char hex[] = "0123456789abcdef";
+            shown = std::string("\\x") + hex[u >> 4] + hex[u & 15];
+        } else {
+            shown = value.substr(at, end - at);
+        }
+        return "the value holds '" + shown + "', which is not in GLSL's character set (ASCII letters, digits, "
+               "spaces and . + - / * % < > [ ] ( ) { } ^ | & ~ = ! : ; , ?)";
+    }
+    if (value.find('\\') != std::string::npos)
+        return "the value holds '\\', which GLSL allows only to continue a line";
+    return "";
+}
+
 }  // namespace
 
 Result<MacroDefine> parseMacroDefine(std::string_view text) {
@@ -35,8 +81,10 @@ Result<MacroDefine> parseMacroDefine(std::string_view text) {
                            "' is not a macro name (letters, digits and '_', not starting with a digit)");
     if (define.name.starts_with("GL_") || define.name.find("__") != std::string::npos)
         return defineError(shown + ": GLSL ES reserves names starting with GL_ or containing __");
-    if (define.value.find_first_of("\r\n") != std::string::npos)
-        return defineError("'" + define.name + "': the value must be one line");
+    if (define.name == "defined")
+        return defineError(shown + ": 'defined' is the preprocessor's operator and cannot be a macro name");
+    if (std::string problem = valueProblem(define.value); !problem.empty())
+        return defineError("'" + define.name + "': " + problem);
     return define;
 }
 

@@ -21,7 +21,9 @@ struct MacroDefine {
 using MacroDefines = std::vector<MacroDefine>;
 
 // "NAME" or "NAME=VALUE". NAME is a GLSL identifier that GLSL ES does not reserve (no "GL_"
-// prefix, no "__"); VALUE is one line. Errors name the setting "defines".
+// prefix, no "__", not "defined"); VALUE is one line of GLSL's character set that leaves the
+// line after its #define alone (no trailing '\', no comment left open) and holds no '#'. Errors
+// name the setting "defines".
 Result<MacroDefine> parseMacroDefine(std::string_view text);
 // Every entry of `texts`; a name given twice with different values is refused (GLSL ES refuses a
 // redefinition too), given twice alike it is kept once.

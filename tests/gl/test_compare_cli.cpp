@@ -135,6 +135,17 @@ TEST(CompareCli, ProblemsExitTwo) {
     EXPECT_EQ(compare("base", "base", "--pass 'Cube A'").exitCode, 2);
     EXPECT_EQ(compare("base", "base", "--frames 0").exitCode, 2);
     EXPECT_EQ(compare("base", "base", "--frames 0x10").exitCode, 2);
+    EXPECT_EQ(compare("base", "base", "--supersample 0x10").exitCode, 2);
+    const std::string both = "compare " + fixture("base") + " " + fixture("diverge");
+    CommandResult wrapped = runToyhost(both + " --frames 1 --size 4294967396x20");
+    EXPECT_EQ(wrapped.exitCode, 2) << wrapped.output;
+    EXPECT_NE(wrapped.output.find("--size 4294967396x20"), std::string::npos) << wrapped.output;
+    // Once a defect (issue 46): beyond 16384 a side compare drew and compared one 1024-wide tile
+    // and could say "equal"; frames compared in memory are one target, so the size is refused.
+    CommandResult wide = runToyhost(both + " --frames 1 --size 20000x20");
+    EXPECT_EQ(wide.exitCode, 2) << wide.output;
+    EXPECT_NE(wide.output.find("--size: canvas size 20000x20"), std::string::npos) << wide.output;
+    EXPECT_NE(wide.output.find("at most 16384x16384"), std::string::npos) << wide.output;
     EXPECT_EQ(compare("base", "base", "--max-diff 256").exitCode, 2);
     EXPECT_EQ(compare("base", "base", "--tolerance-psnr nan").exitCode, 2);
     EXPECT_EQ(compare("base", "base", "--max-diff 2 --tolerance-psnr 40").exitCode, 2);

@@ -10,6 +10,7 @@
 #include <optional>
 #include <thread>
 
+#include <toyhost/Compare.h>
 #include <toyhost/Session.h>
 #include <toyhost/Version.h>
 
@@ -365,6 +366,32 @@ TEST(LibraryApi, AGivenZeroSizeIsRefusedAsTheClisIs) {
     EXPECT_NE(cli.output.find("--size: " + refused->first().message), std::string::npos) << cli.output;
 }
 
+// Once a defect (issue 46): a Session beyond 16384 a side was planned as a tiled still and drew,
+// read and handed over one 1024-wide tile (width() said 1024), so compareShadertoys said "equal"
+// for frames that differed beyond it. Frames read in memory are one target: refused, naming size.
+TEST(LibraryApi, ACanvasBeyondOneTargetIsRefusedNotCutToATile) {
+    Result<Shadertoy> probe = Shadertoy::load(sourceDir() / "shadertoys/tile-probe");
+    ASSERT_TRUE(probe.ok()) << probe.error().text();
+    SessionSettings settings;
+    settings.width = 20000;
+    settings.height = 100;
+    std::optional<Error> refused, compared;
+    runOnGlThread([&] {
+        Result<std::unique_ptr<Session>> session = Session::createHeadless(*probe, settings);
+        if (!session) refused = session.error();
+        CompareSettings both;
+        both.session = settings;
+        both.frames = 1;
+        Result<CompareReport> report = compareShadertoys(*probe, *probe, both);
+        if (!report) compared = report.error();
+    });
+    ASSERT_TRUE(refused.has_value()) << "a 20000x100 session was made";
+    EXPECT_EQ(refused->category(), Category::Usage);
+    EXPECT_EQ(refused->first().field, "size");
+    EXPECT_NE(refused->first().message.find("at most 16384x16384"), std::string::npos) << refused->text();
+    ASSERT_TRUE(compared.has_value()) << "a 20000x100 comparison was answered";
+    EXPECT_EQ(compared->first().message, refused->first().message);
+}
 
 // setChannel(): a program's pixels in a channel, in either row order, and the refusals that come
 // back as data (the Python tests cover formats, filtering and reloads).

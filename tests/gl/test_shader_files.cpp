@@ -2,6 +2,12 @@
 // runs as the Image-only shadertoy of a one-pass folder, pixel for pixel; --define switches an
 // #ifdef in every pass; a manifest's JSON slip is named by line and column with the line shown.
 #include "GlTestSupport.h"
+#include "Processes.h"
+
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include "image/ImageWriters.h"
 
@@ -76,6 +82,39 @@ TEST(ShaderFiles, StdinFromATerminalOrNothingIsRefused) {
                                                      "' run - --frames 1 --size 8x8 --out /dev/null <&-\"");
     EXPECT_EQ(closed.exitCode, 2) << closed.output;
     EXPECT_NE(closed.output.find("standard input is closed"), std::string::npos) << closed.output;
+}
+
+// Once a defect (issue 46): `run -` reading a pipe whose writer never closes ignored SIGINT and
+// SIGTERM until SIGKILL (the stop signals' handler restarts a blocked read), and a Ctrl-C that also
+// ended the writer printed the notice, then a compile error for the half-read text. Now the read
+// ends at the signal: exit 128 + signal, one message saying so, nothing compiled or written.
+TEST(ShaderFiles, ASignalEndsTheReadOfStdin) {
+    const fs::path dir = freshOutputDir("shader-files/stdin-signal");
+    for (const int signal : {SIGTERM, SIGINT}) {
+        for (const bool writerEnds : {false, true}) {
+            const std::string what = std::string(strsignal(signal)) + (writerEnds ? ", the writer ending" : "");
+            int ends[2];
+            ASSERT_EQ(::pipe2(ends, O_CLOEXEC), 0);
+            const std::string half = "void mainImage(out vec4 c, in vec2 f) {\n    c = vec4(";
+            ASSERT_EQ(::write(ends[1], half.data(), half.size()), static_cast<ssize_t>(half.size()));
+            BackgroundProcess run(toyhostBinary(),
+                                  {"run", "-", "--headless", "--size", "8x8", "--frames", "1", "--out",
+                                   (dir / "f.png").string()},
+                                  dir / "run.log", {}, ends[0]);
+            ::close(ends[0]);
+            // Waiting for the text that never ends (the old code: in read(); the new: in poll()).
+            EXPECT_TRUE(run.waitUntilBlockedIn({"poll", "pipe_read", "pipe_wait"}, 60)) << what << ": " << run.log();
+            run.signal(signal);
+            if (writerEnds) ::close(ends[1]);
+            EXPECT_EQ(run.wait(60), 128 + signal) << what << ": " << run.log();
+            if (!writerEnds) ::close(ends[1]);
+            const std::string log = run.log();
+            EXPECT_NE(log.find("while the Image code was read from standard input: stopped, nothing was run"),
+                      std::string::npos) << what << ": " << log;
+            EXPECT_EQ(log.find("stdin:"), std::string::npos) << what << ": no compile error: " << log;
+            EXPECT_FALSE(fs::exists(dir / "f.png")) << what;
+        }
+    }
 }
 
 TEST(ShaderFiles, DefineSwitchesAnIfdefInEveryPass) {

@@ -2,6 +2,11 @@
 // frame count and size (checked with ffprobe). A failing ffmpeg fails the run with its message
 // and leaves no file. Skips when ffmpeg or ffprobe is not installed (CI installs both).
 #include "GlTestSupport.h"
+#include "Processes.h"
+
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
 
 #include "core/ChildProcess.h"
 
@@ -107,6 +112,68 @@ TEST(VideoInterrupt, SigintDiscardsThePartialVideo) {
     EXPECT_EQ(run.exitCode, 130) << run.output;
     EXPECT_NE(run.output.find("interrupted after"), std::string::npos) << run.output;
     EXPECT_TRUE(fs::is_empty(dir)) << "files were left behind";
+}
+
+// The processes of process group `group` that still run (zombies, dead but not yet reaped by
+// whoever adopted them, do not count), from /proc/PID/stat: "pid (name) state ppid pgrp ...".
+int runningInGroup(pid_t group) {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator("/proc")) {
+        std::ifstream in(entry.path() / "stat");
+        std::string text;
+        if (!std::getline(in, text)) continue;
+        const std::size_t close = text.rfind(')');
+        if (close == std::string::npos) continue;
+        std::istringstream rest(text.substr(close + 1));
+        char state = 0;
+        long parent = 0, pgrp = 0;
+        if (rest >> state >> parent >> pgrp && pgrp == group && state != 'Z' && state != 'X') ++count;
+    }
+    return count;
+}
+
+// Once a regression (issue 46): with an ffmpeg that never reads (here a script that sleeps, whose
+// sleep holds the pipe open after the script is killed), the stop notice was printed and the run
+// went on until SIGKILL: the encoder thread stayed blocked writing the frame. Now a stop ends the run
+// within the grace period, ffmpeg's whole process group with it, and leaves no file (the hidden
+// temporary video and ffmpeg's log included).
+TEST(VideoInterrupt, AStopEndsARunWhoseEncoderStalled) {
+    const fs::path dir = freshOutputDir("video/stalled");
+    fs::create_directories(dir / "bin");
+    fs::create_directories(dir / "out");
+    fs::create_directories(dir / "tmp");
+    writeFile(dir / "bin/ffmpeg", "#!/bin/sh\necho $$ > '" + (dir / "ffmpeg.pid").string() + "'\nsleep 600\n");
+    fs::permissions(dir / "bin/ffmpeg", fs::perms::owner_all);
+    for (const int signal : {SIGINT, SIGTERM}) {
+        fs::remove(dir / "ffmpeg.pid");
+        // The environment the run inherits: the stalling ffmpeg first on PATH, ffmpeg's log in tmp.
+        const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "/usr/bin:/bin";
+        const std::string tmp = std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "";
+        ::setenv("PATH", ((dir / "bin").string() + ":" + path).c_str(), 1);
+        ::setenv("TMPDIR", (dir / "tmp").c_str(), 1);
+        BackgroundProcess run(toyhostBinary(),
+                              {"run", (sourceDir() / "shadertoys/bench-trivial").string(), "--headless", "--size",
+                               "320x180", "--frames", "100000000", "--out", (dir / "out/m.mp4").string()},
+                              dir / "run.log");
+        ::setenv("PATH", path.c_str(), 1);
+        if (tmp.empty()) ::unsetenv("TMPDIR");
+        else ::setenv("TMPDIR", tmp.c_str(), 1);
+        // The run started: its first frame started ffmpeg, which took none of it.
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        while (!fs::exists(dir / "ffmpeg.pid") && run.running() && std::chrono::steady_clock::now() < deadline)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        ASSERT_TRUE(fs::exists(dir / "ffmpeg.pid")) << run.log();
+        pid_t group = 0;
+        std::ifstream(dir / "ffmpeg.pid") >> group;
+        ASSERT_GT(group, 0);
+        run.signal(signal);
+        EXPECT_EQ(run.wait(60), 128 + signal) << strsignal(signal) << ": " << run.log();
+        EXPECT_NE(run.log().find("the unfinished video was discarded"), std::string::npos) << run.log();
+        EXPECT_EQ(runningInGroup(group), 0) << "ffmpeg's process group outlived the run";
+        ::kill(-group, SIGKILL);  // what the old code left
+        EXPECT_TRUE(fs::is_empty(dir / "out")) << "files were left behind";
+        EXPECT_TRUE(fs::is_empty(dir / "tmp")) << "ffmpeg's log was left behind";
+    }
 }
 
 }  // namespace

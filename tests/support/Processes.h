@@ -18,13 +18,15 @@ namespace toyhost::testing {
 
 class BackgroundProcess {
 public:
-    // Runs `program` with `arguments` (in `workingDir` when given); stdout and stderr go to `log`.
+    // Runs `program` with `arguments` (in `workingDir` when given); stdout and stderr go to `log`;
+    // its stdin is `stdinFd` when given (a pipe the test writes to), else the test's.
     BackgroundProcess(const std::filesystem::path& program, const std::vector<std::string>& arguments,
-                      const std::filesystem::path& log, const std::filesystem::path& workingDir = {})
+                      const std::filesystem::path& log, const std::filesystem::path& workingDir = {}, int stdinFd = -1)
         : log_(log) {
         pid_ = ::fork();
         if (pid_ == 0) {
             if (!workingDir.empty() && ::chdir(workingDir.c_str()) != 0) std::_Exit(126);
+            if (stdinFd >= 0 && ::dup2(stdinFd, 0) < 0) std::_Exit(126);
             const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
             ::dup2(fd, 1);
             ::dup2(fd, 2);
@@ -48,6 +50,21 @@ public:
     BackgroundProcess& operator=(const BackgroundProcess&) = delete;
 
     void signal(int sig) const { ::kill(pid_, sig); }
+    pid_t pid() const { return pid_; }
+    // Waits until the process's main thread sleeps in the kernel function whose name holds one of
+    // `places` (/proc/PID/wchan, e.g. "poll" or "pipe_read"), or `seconds` passed, or it ended.
+    bool waitUntilBlockedIn(const std::vector<std::string>& places, double seconds) {
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        while (std::chrono::steady_clock::now() < deadline && running()) {
+            std::ifstream in("/proc/" + std::to_string(pid_) + "/wchan");
+            std::string where;
+            std::getline(in, where);
+            for (const std::string& place : places)
+                if (where.find(place) != std::string::npos) return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        return false;
+    }
     bool running() {
         poll();
         return exitCode_ == kRunning;

@@ -81,3 +81,21 @@ TEST(JsonText, AStrayByteIsNamedByItsValue) {
     EXPECT_EQ(d.column, 9);
     EXPECT_NE(d.message.find("found the byte 0xFF"), std::string::npos) << d.message;
 }
+
+// Once unclear (issue 46): a NUL byte read as the end of the text ("the text ends too early"), and
+// a number beyond double (1e400) said in the parser's own words, with no line or column.
+TEST(JsonText, ANulByteAndANumberBeyondDoubleAreNamedWithTheirPlace) {
+    using namespace std::string_literals;
+    Diagnostic d = syntaxError("{\n  \"name\": \"x\",\0\n  \"a\": 1\n}"s);
+    EXPECT_EQ(d.line, 2);
+    EXPECT_EQ(d.column, 15);
+    EXPECT_NE(d.message.find("found a NUL byte (0x00)"), std::string::npos) << d.message;
+    EXPECT_EQ(d.message.find("ends too early"), std::string::npos) << d.message;
+    d = syntaxError("{\n  \"defaults\": {\"fps\": 1e400}\n}");
+    EXPECT_EQ(d.line, 2);
+    EXPECT_EQ(d.column, 23);
+    EXPECT_EQ(d.field, "defaults.fps");
+    EXPECT_EQ(d.message, "invalid JSON: the number 1e400 is beyond the range of numbers (at most about 1.8e308 either way)");
+    EXPECT_EQ(d.excerpt, "    2 |   \"defaults\": {\"fps\": 1e400}\n      |                       ^\n");
+    EXPECT_EQ(d.message.find("json.exception"), std::string::npos) << d.message;
+}

@@ -83,3 +83,23 @@ TEST(LoneShader, CodeFromElsewhereIsTheSameShadertoy) {
     EXPECT_EQ(desc.passes[0].code, kImage);
     EXPECT_EQ(desc.manifestPath, fs::path("/work/stdin"));
 }
+
+// Once skipped without a word (issue 46): a common.glsl next to the file that is a link to nothing
+// was meant as its Common pass; the run then failed on "undeclared" names, far from the cause.
+TEST(LoneShader, ACommonGlslThatCannotBeReadIsSaidNotSkipped) {
+    toyhost::testing::TestFolder folder;
+    const fs::path file = folder.write("toy/image.glsl", kImage);
+    fs::create_symlink("gone.glsl", folder.path / "toy/common.glsl");
+    Result<ManifestDesc> loaded = loadShadertoy(file);
+    ASSERT_FALSE(loaded.ok());
+    EXPECT_EQ(loaded.error().first().code, Code::IoNotFound);
+    EXPECT_EQ(loaded.error().first().file, (folder.path / "toy/common.glsl").string());
+    EXPECT_NE(loaded.error().first().message.find("is a symbolic link to gone.glsl, which does not exist"),
+              std::string::npos)
+        << loaded.error().text();
+    fs::remove(folder.path / "toy/common.glsl");
+    fs::create_directory(folder.path / "toy/common.glsl");
+    Result<ManifestDesc> folderCommon = loadShadertoy(file);
+    ASSERT_FALSE(folderCommon.ok());
+    EXPECT_EQ(folderCommon.error().first().code, Code::IoNotAFile);
+}

@@ -42,6 +42,27 @@ TEST(MacroDefines, NamesThatAreNotMacroNamesAreRefusedSayingWhy) {
     EXPECT_NE(errorOf("A=1\n#define B 2").find("one line"), std::string::npos);
 }
 
+// Once unclear (issue 46): these reached Mesa's preprocessor, whose errors pointed at
+// "<toyhost header>:57:12" without a word of --define, or blamed the user's correct next line.
+TEST(MacroDefines, ValuesThatWouldBreakTheLinesAroundThemAreRefusedSayingWhy) {
+    EXPECT_EQ(errorOf("A=1\\"), "'A': the value ends with '\\', which would continue the #define onto the line after it");
+    EXPECT_EQ(errorOf("A=1 /*"), "'A': the value opens a comment ('/*') that it does not close");
+    EXPECT_EQ(errorOf("A=1 /* one */ + 2 /* two"), "'A': the value opens a comment ('/*') that it does not close");
+    EXPECT_NE(errorOf("X=#error boom").find("'X': the value holds '#'"), std::string::npos);
+    EXPECT_NE(errorOf("X=a ## b").find("the value holds '#'"), std::string::npos);
+    EXPECT_EQ(errorOf("defined"), "'defined': 'defined' is the preprocessor's operator and cannot be a macro name");
+    EXPECT_NE(errorOf("X=\u00e9").find("'X': the value holds '\u00e9', which is not in GLSL's character set"),
+              std::string::npos);
+    EXPECT_NE(errorOf("X=\"text\"").find("the value holds '\"'"), std::string::npos);
+    EXPECT_NE(errorOf(std::string("X=a\x01")).find("the value holds '\\x01'"), std::string::npos);
+    EXPECT_NE(errorOf("X=a\\b").find("only to continue a line"), std::string::npos);
+    // What GLSL takes stays taken: comments closed or to the end of the line, every operator.
+    EXPECT_EQ(errorOf("A=1 /* one */ + 2"), "");
+    EXPECT_EQ(errorOf("A=1 // /* not a comment opened"), "");
+    EXPECT_EQ(errorOf("A=(x.y + 1) * 2 - 3 / 4 % 5 < 6 > 7 [8] {9} ^ | & ~ = ! : ; , ?"), "");
+    EXPECT_EQ(errorOf("A=\t1"), "");
+}
+
 TEST(MacroDefines, ANameTwiceMustKeepItsValue) {
     const std::vector<std::string> same{"A=1", "B", "A=1"};
     EXPECT_EQ(parseMacroDefines(same).value(), (MacroDefines{{"A", "1"}, {"B", "1"}}));

@@ -56,3 +56,28 @@ TEST(NumberText, TimeoutsAreOffOrAtLeastATenthOfASecond) {
     EXPECT_EQ(timeoutSecondsProblem("2e6"), "must be 0 (off) or from 0.1 to 1000000 seconds, not \"2e6\"");
     EXPECT_EQ(timeoutSecondsProblem("nan"), "expected a decimal number (like 2, 0.5 or 1e-3), not \"nan\"");
 }
+
+// Sizes, frame ranges, shards and regions are whole numbers joined by a separator, each part read
+// as one whole number: `--size 4294967396x100` once wrapped to 100x100 and `99999999999x1` was
+// refused as "1215752191x1" (sscanf's %d), 010 was read as 10 or 8 depending on the parser.
+TEST(NumberText, ListsOfWholeNumbersAreReadPartByPart) {
+    const WholeNumbers size = wholeNumbersIn("800x450", "xX", 2, INT_MIN, INT_MAX);
+    EXPECT_EQ(size.problem, "");
+    EXPECT_EQ(size.values, (std::vector<long long>{800, 450}));
+    EXPECT_EQ(wholeNumbersIn("16X8", "xX", 2, INT_MIN, INT_MAX).values, (std::vector<long long>{16, 8}));
+    EXPECT_EQ(wholeNumbersIn("0,0,64,36", ",", 4, 0, INT_MAX).values, (std::vector<long long>{0, 0, 64, 36}));
+    EXPECT_EQ(wholeNumbersIn("4294967396x100", "xX", 2, INT_MIN, INT_MAX).problem,
+              "\"4294967396\" is too large (at most 2147483647)");
+    EXPECT_EQ(wholeNumbersIn("99999999999x1", "xX", 2, INT_MIN, INT_MAX).problem,
+              "\"99999999999\" is too large (at most 2147483647)");
+    EXPECT_EQ(wholeNumbersIn("0x10:5", ":", 2, 0, INT_MAX).problem,
+              "expected a whole number in decimal digits, not \"0x10\"");
+    EXPECT_EQ(wholeNumbersIn("16x8x", "xX", 2, INT_MIN, INT_MAX).problem,
+              "expected 2 whole numbers joined by 'x', not \"16x8x\"");
+    EXPECT_EQ(wholeNumbersIn("16", "xX", 2, INT_MIN, INT_MAX).problem, "expected 2 whole numbers joined by 'x', not \"16\"");
+    EXPECT_EQ(wholeNumbersIn("x8", "xX", 2, INT_MIN, INT_MAX).problem, "expected a whole number, not an empty value");
+    EXPECT_EQ(wholeNumbersIn("-1/4", "/", 2, 0, INT_MAX).problem, "\"-1\" is too small (at least 0)");
+    for (const char* bad : {" 16x8", "+16x8", "16 x8", "16x8 ", "1e3x8", "16.0x8"})
+        EXPECT_NE(wholeNumbersIn(bad, "xX", 2, INT_MIN, INT_MAX).problem, "") << bad;
+    EXPECT_TRUE(wholeNumbersIn("16x", "xX", 2, INT_MIN, INT_MAX).values.empty());
+}

@@ -30,9 +30,6 @@ private:
     bool headless_ = false, window_ = false, watch_ = false, quiet_ = false, unpaced_ = false, paced_ = false;
 };
 
-// "WxH" (--size).
-bool parseSize(const std::string& text, int& w, int& h);
-
 int importCommand(const std::string& source, const std::string& dir, bool force);
 int inspectCommand(const std::vector<std::string>& files, const std::string& regionText);
 int newCommand(const std::string& dir, const std::string& passes, bool force);

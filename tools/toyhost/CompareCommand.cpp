@@ -11,9 +11,7 @@
 
 #include "Commands.h"
 #include "Console.h"
-#include "NumberOptions.h"
 #include "core/Defaults.h"
-#include "core/NumberText.h"
 #include "image/ImageWriters.h"
 #include "session/BackgroundWriter.h"
 #include "session/SettingChecks.h"
@@ -191,26 +189,21 @@ nlohmann::ordered_json toJson(const CompareReport& report, const std::string& a,
 }  // namespace
 
 void CompareCommand::define(CLI::App& compare) {
-    const CLI::Validator wholeNumber = cli::wholeNumberOption();
-    const CLI::Validator decimalNumber = cli::decimalNumberOption();
     compare.add_option("a", a_, "The first shadertoy (folder, manifest or Shadertoy JSON export): the reference")->required();
     compare.add_option("b", b_, "The second shadertoy, rendered with the same settings and inputs")->required();
     flags_.define(compare, SessionFlags::All);
     sampling_.define(compare);
     compare.add_option("--frames", frames_,
                        "Frames to render and compare (default: A's manifest defaults, else " +
-                           std::to_string(defaults::kCompareFrames) + ")")
-        ->transform(wholeNumber);
+                           std::to_string(defaults::kCompareFrames) + ")");
     compare.add_option("--pass", pass_,
                        "Pass to compare: Image (default; R, G, B) or \"Buffer A\" .. \"Buffer D\" (or A..D; R, G, B, A "
                        "as 8-bit levels)");
     compare.add_option("--tolerance-psnr", tolerancePsnr_,
-                       "Frames are equal when their PSNR is at least this many dB (default: only identical frames)")
-        ->check(decimalNumber);
+                       "Frames are equal when their PSNR is at least this many dB (default: only identical frames)");
     compare.add_option("--max-diff", maxDiff_,
                        "Frames are equal when no sample differs by more than L levels (0..255); pixels within it "
-                       "do not count as differing")
-        ->transform(wholeNumber);
+                       "do not count as differing");
     compare.add_option("--diff-out", diffOut_,
                        "Write a difference image of each frame that differs: DIR/diff_NNNN.png (|A - B| x " +
                            std::to_string(defaults::kCompareDiffGain) + " per channel, numbered by iFrame)");

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "core/NumberText.h"
 
@@ -24,6 +25,22 @@ CLI::Validator decimalNumberOption() {
 
 CLI::Validator timeoutSecondsOption() {
     return CLI::Validator([](std::string& text) { return timeoutSecondsProblem(text); }, "");
+}
+
+void readNumbersAsDecimal(CLI::App& app) {
+    for (CLI::Option* option : app.get_options()) {
+        // The type name CLI11 gives the option's value ("INT", "UINT", "FLOAT"), then ":" and the
+        // descriptions of its validators.
+        const std::string type = option->get_type_name();
+        const auto is = [&](std::string_view name) {
+            return type.compare(0, name.size(), name) == 0 && (type.size() == name.size() || type[name.size()] == ':');
+        };
+        // transform: first, before the option's own checks (CLI::Range converts the text as CLI11
+        // does); a whole number is handed on rewritten without leading zeros.
+        if (is("INT") || is("UINT")) option->transform(wholeNumberOption());
+        else if (is("FLOAT")) option->transform(decimalNumberOption());
+    }
+    for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) readNumbersAsDecimal(*command);
 }
 
 }  // namespace toyhost::cli

@@ -15,6 +15,7 @@
 #include "manifest/StockMedia.h"
 #include "media/MediaResolver.h"
 #include "core/Defaults.h"
+#include "core/NumberText.h"
 #include "export/LoadShadertoy.h"
 #include "drivers/headless/HeadlessDriver.h"
 #include "gl/GlThread.h"
@@ -57,12 +58,12 @@ Result<ImageF32> readLevels(const std::string& file) {
 int inspectCommand(const std::vector<std::string>& files, const std::string& regionText) {
     Region region;
     if (!regionText.empty()) {
-        char extra = 0;
-        long long x, y, w, h;
-        if (std::sscanf(regionText.c_str(), "%lld,%lld,%lld,%lld%c", &x, &y, &w, &h, &extra) != 4 || x < 0 || y < 0 ||
-            w < 1 || h < 1 || x > INT32_MAX || y > INT32_MAX || w > INT32_MAX || h > INT32_MAX)
-            return usage("--region " + regionText + ": expected X,Y,W,H (whole numbers, W and H at least 1)");
-        region = {static_cast<int>(x), static_cast<int>(y), static_cast<int>(w), static_cast<int>(h)};
+        const WholeNumbers read = wholeNumbersIn(regionText, ",", 4, 0, INT32_MAX);
+        const std::vector<long long>& v = read.values;
+        if (!read.problem.empty() || v[2] < 1 || v[3] < 1)
+            return usage("--region " + regionText + ": expected X,Y,W,H (whole numbers, W and H at least 1)" +
+                         (read.problem.empty() ? "" : ": " + read.problem));
+        region = {static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]), static_cast<int>(v[3])};
     }
     for (const std::string& file : files) {
         // EXR dumps hold the raw floats; a PNG (what the screen shows) is read as 8-bit levels

@@ -3,11 +3,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <poll.h>
 #include <unistd.h>
 
 #include "Commands.h"
 #include "Console.h"
-#include "NumberOptions.h"
 #include "core/AtomicFile.h"
 #include "core/Defaults.h"
 #include "core/NumberText.h"
@@ -15,13 +15,9 @@
 #include "drivers/window/WindowContext.h"
 #include "drivers/window/WindowDriver.h"
 #include "manifest/CodeShadertoy.h"
+#include "session/StopSignals.h"
 
 namespace toyhost::cli {
-
-bool parseSize(const std::string& text, int& w, int& h) {
-    char x = 0, extra = 0;
-    return std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) == 3 && (x == 'x' || x == 'X');
-}
 
 namespace {
 
@@ -32,19 +28,18 @@ std::optional<PassId> parsePass(const std::string& text) {
     return std::nullopt;
 }
 
-// Every numeric option of `run` is checked as text before CLI11 converts it (core/NumberText.h):
-// CLI11 alone reads --frames 0x10 as 16, --png-level 010 as 8 (octal) and --frames '' as "not
-// given". A whole number is handed on without leading zeros. Ranges beyond what the type holds are
-// checked by prepareSession, which also serves library callers. The flags every session command
-// shares (--fps, --start-time, the timeouts) get theirs in SessionFlags.
-void requireDecimalNumbers(CLI::App& run) {
-    const CLI::Validator wholeNumber = cli::wholeNumberOption();
-    for (const char* name : {"--frames", "--png-level", "--video-quality", "--encoder-threads", "--capture-memory",
-                             "--capture-every", "--checkpoint-every"})
-        run.get_option(name)->transform(wholeNumber);  // transform: it may rewrite the text
+// The stop a signal asked for while standard input was read: nothing runs, and the text read so
+// far (cut anywhere) is not compiled.
+Error stoppedReadingStdin() {
+    return Error(std::string(stopSignalName(stopSignal())) +
+                     " while the Image code was read from standard input: stopped, nothing was run",
+                 Code::Interrupted);
 }
 
 // `toyhost run -`: the Image pass's code from standard input, read whole before the run starts.
+// The read waits in poll() beside the stop signals' pipe (session/StopSignals.h): their handler
+// restarts a blocked read() (SA_RESTART), so a pipe whose writer never closes once held the
+// process until SIGKILL.
 Result<std::string> readImageCodeFromStdin(const GlProcess& process) {
     if (process.closedAtStart[STDIN_FILENO]) return Error("standard input is closed: give the Image code through a pipe", Code::Usage);
     if (isatty(STDIN_FILENO))
@@ -54,10 +49,16 @@ Result<std::string> readImageCodeFromStdin(const GlProcess& process) {
     std::string code;
     char block[65536];
     for (;;) {
+        pollfd ready[2] = {{STDIN_FILENO, POLLIN, 0}, {stopSignalFd(), POLLIN, 0}};
+        if (stopSignal()) return stoppedReadingStdin();
+        if (::poll(ready, ready[1].fd >= 0 ? 2 : 1, -1) < 0 && errno != EINTR)
+            return Error(std::string("waiting for the Image code on standard input: ") + std::strerror(errno), Code::IoRead);
+        if (stopSignal()) return stoppedReadingStdin();  // its byte stays in the pipe: said once, here
+        if (ready[0].revents == 0) continue;
         const ssize_t got = ::read(STDIN_FILENO, block, sizeof block);
         if (got == 0) break;
         if (got < 0) {
-            if (errno == EINTR) continue;
+            if (errno == EINTR || errno == EAGAIN) continue;
             return Error(std::string("reading the Image code from standard input: ") + std::strerror(errno), Code::IoRead);
         }
         code.append(block, static_cast<std::size_t>(got));
@@ -66,6 +67,9 @@ Result<std::string> readImageCodeFromStdin(const GlProcess& process) {
                              " MiB: that is not a shader",
                          Code::IoTooLarge);
     }
+    // A signal that also ended the writer (Ctrl-C in `cat | toyhost run -`) may come as the end of
+    // the input: the text may be cut, and is not run.
+    if (stopSignal()) return stoppedReadingStdin();
     return code;
 }
 
@@ -157,7 +161,8 @@ void RunCommand::define(CLI::App& run) {
                  "Read every buffer back after every frame and warn at the first NaN/Inf, naming the pass and the "
                  "frame (without it: buffers are checked after the last frame and in captured EXR frames)");
     run.add_flag("--quiet", quiet_, "No progress line and no notices (warnings and errors still print)");
-    requireDecimalNumbers(run);
+    // Numbers are read as decimal text by every command (readNumbersAsDecimal, main.cpp); ranges
+    // beyond what the type holds are checked by prepareSession, which also serves library callers.
 }
 
 int RunCommand::execute(const GlProcess& process) {
@@ -187,22 +192,18 @@ int RunCommand::execute(const GlProcess& process) {
     }
     o.eglPlatform = process.eglPlatform;
     o.startedAt = process.startedAt;
-    auto pair = [](const std::string& text, char separator) -> std::optional<std::pair<int, int>> {
-        long long a = 0, b = 0;
-        char sep = 0, extra = 0;
-        if (std::sscanf(text.c_str(), "%lld%c%lld%c", &a, &sep, &b, &extra) != 3 || sep != separator || a < 0 ||
-            b < 0 || a > INT32_MAX || b > INT32_MAX)
-            return std::nullopt;
-        return std::pair{static_cast<int>(a), static_cast<int>(b)};
+    // Two whole numbers as every number is read (core/NumberText.h), or the usage message.
+    auto pair = [](const std::string& text, const char* separator, std::optional<std::pair<int, int>>& out) {
+        const WholeNumbers read = wholeNumbersIn(text, separator, 2, 0, INT32_MAX);
+        if (read.problem.empty()) out = std::pair{static_cast<int>(read.values[0]), static_cast<int>(read.values[1])};
+        return read.problem;
     };
-    if (!frameRange_.empty()) {
-        o.frameRange = pair(frameRange_, ':');
-        if (!o.frameRange) return usage("--frame-range " + frameRange_ + ": expected A:B (frames A to B-1)");
-    }
-    if (!shard_.empty()) {
-        o.shard = pair(shard_, '/');
-        if (!o.shard) return usage("--shard " + shard_ + ": expected i/n (part i of n, from 0)");
-    }
+    if (!frameRange_.empty())
+        if (std::string problem = pair(frameRange_, ":", o.frameRange); !problem.empty())
+            return usage("--frame-range " + frameRange_ + ": expected A:B (frames A to B-1): " + problem);
+    if (!shard_.empty())
+        if (std::string problem = pair(shard_, "/", o.shard); !problem.empty())
+            return usage("--shard " + shard_ + ": expected i/n (part i of n, from 0): " + problem);
     if (!codec_.empty()) o.video.codec = codec_;
     if (!videoPreset_.empty()) o.video.preset = videoPreset_;
     if (!exrCompression_.empty()) {

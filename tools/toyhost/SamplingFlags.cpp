@@ -2,7 +2,6 @@
 
 #include <string>
 
-#include "NumberOptions.h"
 #include "core/Defaults.h"
 
 namespace toyhost::cli {
@@ -18,8 +17,7 @@ void SamplingFlags::define(CLI::App& command) {
                        "at a time of its own)");
     command.add_option("--shutter", shutter_,
                        "Shutter angle of --motion-blur in degrees: the interval is angle/360 of the frame step "
-                       "(default " + std::to_string(static_cast<int>(defaults::kShutterDegrees)) + ", the film convention)")
-        ->check(decimalNumberOption());
+                       "(default " + std::to_string(static_cast<int>(defaults::kShutterDegrees)) + ", the film convention)");
     command.add_option("--shutter-offset", shutterOffset_,
                        "Where the shutter interval of --motion-blur sits: open (at the frame's time, the default), "
                        "centre (around it) or close (ending at it)");

@@ -8,6 +8,7 @@
 #include "Commands.h"
 #include "NumberOptions.h"
 #include "core/Defaults.h"
+#include "core/NumberText.h"
 
 namespace toyhost::cli {
 
@@ -52,7 +53,6 @@ Error withFlagNames(Error error) {
 }
 
 void SessionFlags::define(CLI::App& command, unsigned groups) {
-    const CLI::Validator decimalNumber = decimalNumberOption();
     const CLI::Validator timeoutSeconds = timeoutSecondsOption();
     if (groups & Canvas)
         command.add_option("--size", size_,
@@ -61,9 +61,8 @@ void SessionFlags::define(CLI::App& command, unsigned groups) {
     if (groups & Clock) {
         command.add_option("--fps", fps_,
                            "Fixed time step: frame n has iTime = start + n/F, iTimeDelta = 1/F (default: the "
-                           "manifest's, else " + number(defaults::kFps) + "; in a window: real time)")
-            ->check(decimalNumber);
-        command.add_option("--start-time", startTime_, "iTime of frame 0, in seconds (default 0)")->check(decimalNumber);
+                           "manifest's, else " + number(defaults::kFps) + "; in a window: real time)");
+        command.add_option("--start-time", startTime_, "iTime of frame 0, in seconds (default 0)");
         command.add_option("--date", date_, "iDate at frame 0, YYYY-MM-DDTHH:MM:SS (default: now, local time)");
     }
     if (groups & Input) {
@@ -98,12 +97,13 @@ void SessionFlags::define(CLI::App& command, unsigned groups) {
 
 Status SessionFlags::parseMouse(std::optional<glm::vec2>& mouse) const {
     if (mouse_.empty()) return okStatus();
-    float x = 0, y = 0;
-    char comma = 0, extra = 0;
-    if (std::sscanf(mouse_.c_str(), "%f%c%f%c", &x, &comma, &y, &extra) != 3 || comma != ',' || !std::isfinite(x) ||
-        !std::isfinite(y))
+    // Decimal numbers as every number is read (no 0x1p4, inf or nan), finite as floats.
+    const std::size_t comma = mouse_.find(',');
+    const std::optional<double> x = comma == std::string::npos ? std::nullopt : parseDecimalNumber(mouse_.substr(0, comma));
+    const std::optional<double> y = comma == std::string::npos ? std::nullopt : parseDecimalNumber(mouse_.substr(comma + 1));
+    if (!x || !y || !std::isfinite(static_cast<float>(*x)) || !std::isfinite(static_cast<float>(*y)))
         return usageError("--mouse " + mouse_ + ": expected X,Y in pixels");
-    mouse = glm::vec2(x, y);
+    mouse = glm::vec2(static_cast<float>(*x), static_cast<float>(*y));
     return okStatus();
 }
 
@@ -124,10 +124,11 @@ Status SessionFlags::applyTo(SessionSettings& s, std::optional<glm::vec2>& mouse
     // Only what was given is set, as given: the library checks it (prepareSession, once for every
     // session) and names the setting in its errors, which withFlagNames shows as the flag.
     if (!size_.empty()) {
-        int w = 0, h = 0;
-        if (!parseSize(size_, w, h)) return usageError("--size " + size_ + ": expected WxH, e.g. 800x450");
-        s.width = w;
-        s.height = h;
+        // Whole numbers as every number is read: 4294967396x100 is refused, not wrapped to 100x100.
+        const WholeNumbers size = wholeNumbersIn(size_, "xX", 2, INT32_MIN, INT32_MAX);
+        if (!size.problem.empty()) return usageError("--size " + size_ + ": expected WxH, e.g. 800x450: " + size.problem);
+        s.width = static_cast<int>(size.values[0]);
+        s.height = static_cast<int>(size.values[1]);
     }
     if (fps_) s.fps = *fps_;
     if (startTime_) s.startTime = *startTime_;

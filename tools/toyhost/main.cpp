@@ -17,7 +17,7 @@
 #include "FarmCommand.h"
 #include "ArgumentChecks.h"
 #include "core/Defaults.h"
-#include "core/NumberText.h"
+#include "NumberOptions.h"
 #include "gl/GlThread.h"
 #include "session/StopSignals.h"
 
@@ -110,8 +110,7 @@ int commandLine(int argc, char** argv, bool& comparing) {
     sound->add_option("--out", soundOptions.out, "Audio file: .wav (16-bit PCM), or .flac, .ogg, .opus, .mp3, .m4a through ffmpeg; - for WAV on stdout")
         ->required();
     sound->add_option("--seconds", soundOptions.seconds, "Length, as the site's 180 s by default")
-        ->default_val(defaults::kSoundSeconds)
-        ->check(CLI::Validator([](std::string& text) { return decimalNumberProblem(text); }, ""));
+        ->default_val(defaults::kSoundSeconds);
     soundOptions.flags.define(*sound, cli::SessionFlags::Media | cli::SessionFlags::Limits | cli::SessionFlags::Shader);
     sound->add_flag("--quiet", soundOptions.quiet, "Hide notices (stand-ins)");
 
@@ -125,6 +124,8 @@ int commandLine(int argc, char** argv, bool& comparing) {
 
     FarmCommand farmCommand;
     farmCommand.define(app);
+    // Every numeric option of every command, read as decimal text (0x10, 010 and 4294967396 refused).
+    readNumbersAsDecimal(app);
 
     if (std::optional<std::string> empty = emptyArgumentProblem(app, argc, argv)) return usage(*empty);
     if (std::optional<std::string> unknown = unknownCommandProblem(app, argc, argv)) return usage(*unknown);
