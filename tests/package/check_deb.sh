@@ -106,6 +106,8 @@ if ((python)); then
   else
     depends_on python3-toyhost python3-numpy
   fi
+  abi="$(sed -n 's/^abi \([0-9]*\)$/\1/p' /usr/share/numpy3/versions 2>/dev/null || true)"
+  [[ -z "$abi" ]] || depends_on python3-toyhost "python3-numpy-abi$abi"
   grep -q "Python module" "$work/python3-toyhost.info" || fail "python3-toyhost's description does not mention the Python module"
 fi
 
