@@ -20,7 +20,7 @@ packages=(
   python3-distributed                                    # toyhost.farm on Dask (python/tests/test_farm.py)
   cpp                                                    # preprocessing as browsers do, where Mesa's preprocessor refuses a shader
   python3 python3-numpy groff-base                       # man page and completion generators, package tests
-  dpkg-dev file                                          # cpack -G DEB: dpkg-shlibdeps computes Depends
+  dpkg-dev file lintian                                  # cpack -G DEB: dpkg-shlibdeps computes Depends; lintian checks the .debs
   python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
   jupyter-nbconvert python3-ipykernel                    # the notebook test (python/tests/test_notebook.py)
   mypy                                                   # the module's types checked (python/tests/test_types.py)
