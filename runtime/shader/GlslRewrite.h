@@ -21,7 +21,10 @@ namespace toyhost {
 // With `clampIndices`, dynamic array, vector and matrix indices are clamped as ANGLE does.
 // With `foldIntegerConstants`, integer constant operations GLSL leaves undefined (division by 0,
 // INT_MIN / -1, `%` of negatives, shifts past 31) are written as the value ANGLE folds them to
-// (shader/IntegerConstantFold.h).
+// (shader/IntegerConstantFold.h), on scalars and vectors, with constants written as macros too.
+// With `foldFloatConstants`, a float built-in call on constants that ANGLE folds to a value of its
+// own (0 for arguments GLSL leaves undefined, round() half away from zero) is written as that value
+// (shader/FloatConstantFold.h).
 // With `preciseInverseTrig`, every `asin` and `acos` is `toyhost_asin` / `toyhost_acos`, the
 // header's versions (shader/ShaderAssembly.cpp: preciseInverseTrigFunctions) through atan, except
 // where GLSL requires a constant expression (outside function bodies, a `const` declaration, an
@@ -29,16 +32,17 @@ namespace toyhost {
 // as the value ANGLE folds it to (C's asinf/acosf), any other call is left to the driver.
 // With `opaqueDivisors`, every divisor inside a function body is hidden from Mesa's constant folder
 // (shader/OpaqueDivisors.h), so a division by a zero it could see is the IEEE one, as in the browser.
-// Without `zeroInit`, `rename`, `clampIndices`, `foldIntegerConstants`, `preciseInverseTrig` and `opaqueDivisors` only the promotion is done (the text a driver gets when it
+// Without `zeroInit`, `rename`, `clampIndices`, `foldIntegerConstants`, `foldFloatConstants`, `preciseInverseTrig` and `opaqueDivisors` only the promotion is done (the text a driver gets when it
 // refuses every rule; render/PassProgram.cpp turns them off one at a time, with a warning each).
 // With `fragCoord`, every `gl_FragCoord` of the text (directives included) is that name instead: the
 // Image pass reads a copy moved by the sample's or tile's offset (shader/ShaderAssembly.h).
 // The rules of the rewrite a driver's refusal can turn off one by one (render/PassProgram.cpp),
 // each named in the warning that says it was skipped.
-enum class RewriteRule { ZeroInit, ClampIndices, FoldIntegerConstants, PreciseInverseTrig, OpaqueDivisors, Rename };
+enum class RewriteRule { ZeroInit, ClampIndices, FoldIntegerConstants, FoldFloatConstants, PreciseInverseTrig, OpaqueDivisors, Rename };
 inline constexpr RewriteRule kRewriteRules[] = {RewriteRule::ZeroInit,           RewriteRule::ClampIndices,
-                                                RewriteRule::FoldIntegerConstants, RewriteRule::PreciseInverseTrig,
-                                                RewriteRule::OpaqueDivisors,     RewriteRule::Rename};
+                                                RewriteRule::FoldIntegerConstants, RewriteRule::FoldFloatConstants,
+                                                RewriteRule::PreciseInverseTrig, RewriteRule::OpaqueDivisors,
+                                                RewriteRule::Rename};
 const char* rewriteRuleName(RewriteRule rule);  // "zeroInit", "clampIndices", ...
 // What the shader loses when `rule` is off, in a few words for the warning.
 const char* rewriteRuleEffect(RewriteRule rule);
@@ -50,6 +54,7 @@ struct GlslRewriteOptions {
     bool rename = true;
     bool clampIndices = true;
     bool foldIntegerConstants = true;
+    bool foldFloatConstants = true;
     bool preciseInverseTrig = true;
     bool opaqueDivisors = true;
     std::string_view fragCoord;
