@@ -12,9 +12,11 @@
 
 namespace toyhost {
 
-// `text` (a whole fragment shader, or any run of GLSL) rewritten as above. Declarations it cannot
-// read (a type it does not know, a macro-made declaration) are left as they are; when the braces
-// do not balance outside preprocessor lines it only renames.
+// `text` (a whole fragment shader, or any run of GLSL) rewritten as above. A local declared by a
+// macro is zeroed after its statement and an index in a macro body is clamped in the body, as the
+// browser treats the expanded text (shader/MacroTable.h). Declarations it cannot read (a type it
+// does not know) are left as they are; when the braces do not balance outside preprocessor lines
+// it only renames.
 // With `promote`, the precision qualifiers named there (`lowp`, `mediump`) are written `highp` in
 // the code and in `#define` bodies (never in `#ifdef`, `#if defined`, `#undef` or a macro's name),
 // so they compute in 32 bits as on desktop GPUs while `#ifdef lowp` stays false as in WebGL.

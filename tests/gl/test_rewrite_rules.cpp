@@ -3,7 +3,9 @@
 // whose text the driver refuses is skipped alone with a [shader.rule-skipped] warning naming it, a
 // local declared after a comma shadows a constant in the integer fold, zero-initialisation reaches
 // structs defined in a function and for-init declarations, and an unknown directive in a skipped
-// group is ignored as the browser ignores it. Expected values are the browser's (issue 42's
+// group is ignored as the browser ignores it; an index in a macro body is clamped, a local declared
+// by a macro zeroed, constant int vectors, macro operands and float built-ins folded as ANGLE folds
+// them. Expected values are the browser's (issue 42's
 // measurements with ../shared/webref); Mesa alone gives the other value named in each comment.
 #include "GlTestSupport.h"
 
