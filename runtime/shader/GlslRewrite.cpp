@@ -10,9 +10,11 @@
 #include <utility>
 #include <vector>
 
+#include "shader/FloatConstantFold.h"
 #include "shader/GlslTokens.h"
 #include "shader/IndexClamp.h"
 #include "shader/IntegerConstantFold.h"
+#include "shader/MacroTable.h"
 #include "shader/OpaqueDivisors.h"
 
 namespace toyhost {
@@ -42,7 +44,7 @@ enum class Scope { Function, Block, Struct, Other };
 
 class ZeroInitialiser {
 public:
-    ZeroInitialiser(const std::vector<GlslToken>& all) {
+    ZeroInitialiser(const std::vector<GlslToken>& all) : macros_(all) {
         for (std::size_t i = 0; i < all.size(); ++i) {
             if (!all[i].directive) code_.push_back(all[i]);
             // `#define NAME TYPE` on a line of its own: NAME is TYPE (a type alias).
@@ -188,7 +190,10 @@ private:
         while (k < n && (isPrecision(code_[k].text) || code_[k].text == "precise")) ++k;
         if (k >= n || code_[k].kind != Kind::Identifier) return;
         const std::string zero = zeroOf(code_[k].text);
-        if (zero.empty()) return;
+        if (zero.empty()) {
+            if (const Macro* macro = macros_.find(code_[k].text); macro && !forInit && inCode()) macroDeclaration(k, *macro);
+            return;
+        }
         const bool global = stack_.empty();
         const bool builtin = builtinTypes().count(zero.substr(0, zero.find('('))) > 0;
         std::string pending;  // for globals_, once the statement reads as a declaration
@@ -231,6 +236,82 @@ private:
         if (!loops.empty()) found.push_back({end(k), 0, loops});
         edits_.insert(edits_.end(), found.begin(), found.end());
         globals_ += pending;
+    }
+
+    // A statement at `k` that starts with the invocation of `macro`: when its expansion (with the
+    // statement's rest, up to its `;`) declares locals without an initialiser, they are set to zero
+    // right after the statement, as the browser, which sees the expanded text, zeroes them
+    // (`#define ACC float acc;` or `#define LOCAL(t, n) t n` ... `LOCAL(float, acc);`).
+    void macroDeclaration(std::size_t k, const Macro& macro) {
+        const std::optional<MacroTable::Expansion> expansion = MacroTable::expand(macro, code_, k);
+        if (!expansion) return;
+        std::vector<std::string_view> words;
+        for (const GlslToken& t : expansion->tokens) words.push_back(t.text);
+        std::size_t after = end(expansion->end - 1);
+        const auto semicolon = std::find(words.begin(), words.end(), ";");
+        if (semicolon == words.end()) {
+            std::size_t j = expansion->end;
+            for (int depth = 0; j < code_.size(); ++j) {
+                const std::string_view t = code_[j].text;
+                if (t == "{" || t == "}") return;
+                if (t == "(" || t == "[") ++depth;
+                else if (t == ")" || t == "]") --depth;
+                else if (t == ";" && depth == 0) break;
+                words.push_back(t);
+            }
+            if (j >= code_.size()) return;
+            words.push_back(";");
+            after = end(j);
+        } else if (words.back() != ";") {
+            return;  // a statement the body leaves open and the text completes: not read
+        }
+        std::string zeroing;
+        for (std::size_t from = 0; from < words.size();) {
+            std::size_t to = from;
+            while (words[to] != ";") ++to;
+            zeroing += zeroedDeclarators(words, from, to);
+            from = to + 1;
+        }
+        if (!zeroing.empty()) add(after, " " + zeroing);
+    }
+
+    // The zeroing statements of the declarators of `words[from, to)` that have no initialiser, when
+    // those words are a declaration of a known type; empty otherwise.
+    std::string zeroedDeclarators(const std::vector<std::string_view>& words, std::size_t k, std::size_t to) const {
+        auto skipBrackets = [&](std::size_t j) {
+            for (int depth = 0; j < to; ++j) {
+                if (words[j] == "[" || words[j] == "(") ++depth;
+                else if ((words[j] == "]" || words[j] == ")") && --depth == 0) return j + 1;
+            }
+            return to;
+        };
+        auto isName = [](std::string_view w) { return !w.empty() && isIdentifierStart(w[0]); };
+        while (k < to && (isPrecision(words[k]) || words[k] == "precise")) ++k;
+        if (k >= to) return {};
+        const std::string zero = zeroOf(words[k]);
+        if (zero.empty()) return {};
+        std::string out;
+        bool typeArray = false;
+        if (++k < to && words[k] == "[") typeArray = true, k = skipBrackets(k);
+        while (true) {
+            if (k >= to || !isName(words[k])) return {};
+            const std::string_view name = words[k++];
+            bool array = typeArray;
+            if (k < to && words[k] == "[") array = true, k = skipBrackets(k);
+            if (k < to && words[k] == "=") {
+                for (int depth = 0; k < to; ++k) {
+                    if (words[k] == "(" || words[k] == "[") ++depth;
+                    else if (words[k] == ")" || words[k] == "]") --depth;
+                    else if (depth == 0 && words[k] == ",") break;
+                }
+            } else if (k < to && words[k] != ",") {
+                return {};  // not a declaration
+            } else {
+                out += array ? zeroLoop(name, zero) : std::string(name) + "=" + zero + ";";
+            }
+            if (k >= to) return out;
+            ++k;
+        }
     }
 
     // A function definition whose `{` is at `brace`: each `out` parameter is set to zero first.
@@ -278,6 +359,7 @@ private:
     }
 
     std::vector<GlslToken> code_;
+    MacroTable macros_;
     std::map<std::string_view, std::string_view> aliases_;
     std::map<std::string_view, std::string> structs_;  // a known struct's zero value
     std::vector<Frame> stack_;
@@ -363,6 +445,7 @@ const char* rewriteRuleName(RewriteRule rule) {
         case RewriteRule::ZeroInit: return "zeroInit";
         case RewriteRule::ClampIndices: return "clampIndices";
         case RewriteRule::FoldIntegerConstants: return "foldIntegerConstants";
+        case RewriteRule::FoldFloatConstants: return "foldFloatConstants";
         case RewriteRule::PreciseInverseTrig: return "preciseInverseTrig";
         case RewriteRule::OpaqueDivisors: return "opaqueDivisors";
         case RewriteRule::Rename: return "rename";
@@ -376,6 +459,8 @@ const char* rewriteRuleEffect(RewriteRule rule) {
         case RewriteRule::ClampIndices: return "dynamic indices are not clamped into range as WebGL clamps them";
         case RewriteRule::FoldIntegerConstants:
             return "undefined integer constant operations keep the driver's values, not the browser's";
+        case RewriteRule::FoldFloatConstants:
+            return "constant float built-ins with undefined arguments and constant round() keep the driver's values, not the browser's";
         case RewriteRule::PreciseInverseTrig: return "asin and acos are the driver's, less precise than the browser's";
         case RewriteRule::OpaqueDivisors:
             return "a division by a zero the compiler can see gives the driver's folded value, not IEEE's";
@@ -389,6 +474,7 @@ bool& ruleSwitch(GlslRewriteOptions& options, RewriteRule rule) {
         case RewriteRule::ZeroInit: return options.zeroInit;
         case RewriteRule::ClampIndices: return options.clampIndices;
         case RewriteRule::FoldIntegerConstants: return options.foldIntegerConstants;
+        case RewriteRule::FoldFloatConstants: return options.foldFloatConstants;
         case RewriteRule::PreciseInverseTrig: return options.preciseInverseTrig;
         case RewriteRule::OpaqueDivisors: return options.opaqueDivisors;
         case RewriteRule::Rename: break;
@@ -443,6 +529,8 @@ std::string rewriteLikeWebGL(std::string_view text, GlslRewriteOptions promote) 
     if (promote.foldIntegerConstants)
         for (ConstantFoldEdit& fold : foldUndefinedIntegerConstants(tokens))
             edits.push_back({fold.offset, fold.erase, std::move(fold.text)});
+    if (promote.foldFloatConstants)
+        for (ConstantFoldEdit& fold : foldAngleFloatBuiltins(tokens)) edits.push_back({fold.offset, fold.erase, std::move(fold.text)});
     if (promote.opaqueDivisors) {
         std::vector<Edit> opening;
         for (DivisorInsertion& divisor : opaqueDivisors(tokens))

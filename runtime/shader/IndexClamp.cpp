@@ -3,6 +3,9 @@
 #include <map>
 #include <set>
 #include <string_view>
+#include <utility>
+
+#include "shader/MacroTable.h"
 
 namespace toyhost {
 
@@ -17,6 +20,7 @@ struct Typed {
     bool array = false;
     std::string_view size;
     bool valid() const { return !base.empty(); }
+    bool operator==(const Typed&) const = default;
 };
 
 // The number of components an index of a non-array `type` selects from (columns of a matrix),
@@ -48,7 +52,11 @@ bool isQualifier(std::string_view w) {
 
 class Clamper {
 public:
-    explicit Clamper(const std::vector<GlslToken>& all) {
+    // `hidden`: names never typed (a macro's parameters); `fallback`: the type of a name no scope
+    // of these tokens declares (a macro body's names, typed by the text's declarations).
+    explicit Clamper(const std::vector<GlslToken>& all, std::set<std::string_view> hidden = {},
+                     const std::map<std::string_view, Typed>* fallback = nullptr)
+        : hidden_(std::move(hidden)), fallback_(fallback) {
         for (const GlslToken& t : all)
             if (!t.directive) code_.push_back(t);
         scopes_.emplace_back();
@@ -163,6 +171,26 @@ public:
         return out_;
     }
 
+    // The type of each name whose declarations in the text all agree on it (an array whose sizes
+    // differ: an array of that type, clamped with `.length()`); a macro body is typed with these,
+    // since the browser clamps the expanded text wherever the macro is used.
+    std::map<std::string_view, Typed> agreedTypes() const {
+        std::map<std::string_view, Typed> agreed;
+        for (const auto& [name, types] : declared_) {
+            Typed common = types.front();
+            for (const Typed& t : types) {
+                if (t == common) continue;
+                if (!(t.array && common.array && t.base == common.base)) {
+                    common = {};
+                    break;
+                }
+                common.size = {};
+            }
+            if (common.valid()) agreed[name] = common;
+        }
+        return agreed;
+    }
+
 private:
     // The declaration of the name at `n` with `type` (an array when `[` follows it): in the current
     // scope, or, inside a function header's parentheses, for the function's body.
@@ -175,11 +203,15 @@ private:
         }
         if (depth > 0 && scopes_.size() == 1) pending.emplace_back(code_[n].text, type);
         else scopes_.back()[code_[n].text] = type;
+        declared_[code_[n].text].push_back(type);
     }
 
     Typed lookup(std::string_view name) const {
+        if (hidden_.count(name)) return {};
         for (auto scope = scopes_.rbegin(); scope != scopes_.rend(); ++scope)
             if (const auto found = scope->find(name); found != scope->end()) return found->second;
+        if (fallback_)
+            if (const auto found = fallback_->find(name); found != fallback_->end()) return found->second;
         return {};
     }
 
@@ -212,10 +244,27 @@ private:
     std::vector<std::map<std::string_view, Typed>> scopes_;
     std::set<std::string_view> structs_;
     std::vector<IndexInsertion> out_;
+    std::map<std::string_view, std::vector<Typed>> declared_;
+    std::set<std::string_view> hidden_;
+    const std::map<std::string_view, Typed>* fallback_ = nullptr;
 };
 
 }  // namespace
 
-std::vector<IndexInsertion> clampDynamicIndices(const std::vector<GlslToken>& tokens) { return Clamper(tokens).run(); }
+std::vector<IndexInsertion> clampDynamicIndices(const std::vector<GlslToken>& tokens) {
+    Clamper code(tokens);
+    std::vector<IndexInsertion> out = code.run();
+    const MacroTable macros(tokens);
+    if (macros.empty()) return out;
+    // ANGLE clamps the text after preprocessing: an index written in a macro body is clamped at
+    // every use, so it is clamped in the body (a parameter is an index like any other).
+    const std::map<std::string_view, Typed> agreed = code.agreedTypes();
+    for (const auto& [name, macro] : macros.all()) {
+        if (macro.body.empty()) continue;
+        Clamper body(macro.body, {macro.parameters.begin(), macro.parameters.end()}, &agreed);
+        for (IndexInsertion& insertion : body.run()) out.push_back(std::move(insertion));
+    }
+    return out;
+}
 
 }  // namespace toyhost

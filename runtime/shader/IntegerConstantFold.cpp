@@ -1,23 +1,37 @@
 #include "shader/IntegerConstantFold.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <map>
 #include <optional>
 #include <set>
+#include <string>
 #include <string_view>
+
+#include "shader/MacroTable.h"
 
 namespace toyhost {
 namespace {
 
 using Kind = GlslToken::Kind;
 
+// An int or uint scalar (`size` 1) or vector (2 to 4 components).
 struct Value {
     bool isUint = false;
-    std::uint32_t bits = 0;
-    std::int32_t asInt() const { return static_cast<std::int32_t>(bits); }
+    int size = 1;
+    std::array<std::uint32_t, 4> bits{};
+    std::int32_t asInt(int c = 0) const { return static_cast<std::int32_t>(bits[static_cast<std::size_t>(c)]); }
 };
+
+// The component index of a swizzle letter (xyzw, rgba, stpq); -1 for any other character.
+int swizzleIndex(char c) {
+    for (const char* set : {"xyzw", "rgba", "stpq"})
+        for (int i = 0; i < 4; ++i)
+            if (set[i] == c) return i;
+    return -1;
+}
 
 bool isKeyword(std::string_view word) {
     static const std::set<std::string_view> kKeywords = {"return", "case", "else", "do", "if", "while", "for",
@@ -53,68 +67,94 @@ std::optional<Value> readLiteral(std::string_view text) {
         if (n > 0xFFFFFFFFull) return std::nullopt;
     }
     if (base == 10 && !v.isUint && n > 0x7FFFFFFFull) return std::nullopt;
-    v.bits = static_cast<std::uint32_t>(n);
+    v.bits[0] = static_cast<std::uint32_t>(n);
     return v;
 }
 
-// What ANGLE's folder gives for `a op b`, and whether that value is its own choice (an operation
-// GLSL ES leaves undefined). nullopt for operand types GLSL refuses together.
+// What ANGLE's folder gives for `a op b` on one component, and whether that value is its own
+// choice (an operation GLSL ES leaves undefined). nullopt for an operator it does not fold.
+struct Component {
+    std::uint32_t bits = 0;
+    bool undefinedInGlsl = false;
+};
+
+std::optional<Component> foldComponent(std::string_view op, bool isUint, std::uint32_t a, bool rightUint, std::uint32_t b) {
+    constexpr std::int32_t kIntMin = std::numeric_limits<std::int32_t>::min();
+    constexpr std::int32_t kIntMax = std::numeric_limits<std::int32_t>::max();
+    const auto ai = static_cast<std::int32_t>(a);
+    const auto bi = static_cast<std::int32_t>(b);
+    Component out;
+    if (op == "<<" || op == ">>") {
+        const bool valid = rightUint ? b <= 31u : (bi >= 0 && bi <= 31);
+        if (!valid) out.undefinedInGlsl = true;
+        else if (op == "<<") out.bits = a << b;
+        else if (isUint || ai >= 0) out.bits = a >> b;
+        else out.bits = ~(~a >> b);  // the sign extends
+        return out;
+    }
+    if (op == "/" || op == "%") {
+        if (b == 0) {
+            out.undefinedInGlsl = true;
+            out.bits = isUint ? 0xFFFFFFFFu : static_cast<std::uint32_t>(kIntMax);
+        } else if (isUint) {
+            out.bits = op == "/" ? a / b : a % b;
+        } else if (op == "/") {
+            if (ai == kIntMin && bi == -1) {
+                out.undefinedInGlsl = true;
+                out.bits = static_cast<std::uint32_t>(kIntMax);
+            } else {
+                out.bits = static_cast<std::uint32_t>(ai / bi);
+            }
+        } else if (ai < 0 || bi < 0) {
+            out.undefinedInGlsl = true;
+        } else {
+            out.bits = static_cast<std::uint32_t>(ai % bi);
+        }
+        return out;
+    }
+    // The rest wrap in 32 bits, for int as for uint.
+    if (op == "*") out.bits = a * b;
+    else if (op == "+") out.bits = a + b;
+    else if (op == "-") out.bits = a - b;
+    else if (op == "&") out.bits = a & b;
+    else if (op == "^") out.bits = a ^ b;
+    else if (op == "|") out.bits = a | b;
+    else return std::nullopt;
+    return out;
+}
+
+// `a op b` component by component (a scalar operand applies to every component of the other, as
+// ANGLE folds `ivec2(7) / 0`), and whether any component is ANGLE's own choice. nullopt for
+// operand types GLSL refuses together.
 struct Folded {
     Value value;
     bool undefinedInGlsl = false;
 };
 
-std::optional<Folded> fold(std::string_view op, Value a, Value b) {
+std::optional<Folded> fold(std::string_view op, const Value& a, const Value& b) {
     const bool shift = op == "<<" || op == ">>";
-    if (!shift && a.isUint != b.isUint) return std::nullopt;
+    if (shift ? (a.size == 1 && b.size > 1) : a.isUint != b.isUint) return std::nullopt;
+    if (a.size > 1 && b.size > 1 && a.size != b.size) return std::nullopt;
     Folded out;
     out.value.isUint = a.isUint;
-    constexpr std::int32_t kIntMin = std::numeric_limits<std::int32_t>::min();
-    constexpr std::int32_t kIntMax = std::numeric_limits<std::int32_t>::max();
-    if (shift) {
-        const bool valid = b.isUint ? b.bits <= 31u : (b.asInt() >= 0 && b.asInt() <= 31);
-        if (!valid) {
-            out.undefinedInGlsl = true;
-            out.value.bits = 0;
-        } else if (op == "<<") {
-            out.value.bits = a.bits << b.bits;
-        } else if (a.isUint || a.asInt() >= 0) {
-            out.value.bits = a.bits >> b.bits;
-        } else {
-            out.value.bits = ~(~a.bits >> b.bits);  // the sign extends
-        }
-        return out;
+    out.value.size = std::max(a.size, b.size);
+    for (int c = 0; c < out.value.size; ++c) {
+        const std::optional<Component> one =
+            foldComponent(op, a.isUint, a.bits[static_cast<std::size_t>(a.size == 1 ? 0 : c)], b.isUint,
+                          b.bits[static_cast<std::size_t>(b.size == 1 ? 0 : c)]);
+        if (!one) return std::nullopt;
+        out.value.bits[static_cast<std::size_t>(c)] = one->bits;
+        out.undefinedInGlsl = out.undefinedInGlsl || one->undefinedInGlsl;
     }
-    if (op == "/" || op == "%") {
-        if (b.bits == 0) {
-            out.undefinedInGlsl = true;
-            out.value.bits = a.isUint ? 0xFFFFFFFFu : static_cast<std::uint32_t>(kIntMax);
-        } else if (a.isUint) {
-            out.value.bits = op == "/" ? a.bits / b.bits : a.bits % b.bits;
-        } else if (op == "/") {
-            if (a.asInt() == kIntMin && b.asInt() == -1) {
-                out.undefinedInGlsl = true;
-                out.value.bits = static_cast<std::uint32_t>(kIntMax);
-            } else {
-                out.value.bits = static_cast<std::uint32_t>(a.asInt() / b.asInt());
-            }
-        } else if (a.asInt() < 0 || b.asInt() < 0) {
-            out.undefinedInGlsl = true;
-            out.value.bits = 0;
-        } else {
-            out.value.bits = static_cast<std::uint32_t>(a.asInt() % b.asInt());
-        }
-        return out;
-    }
-    // The rest wrap in 32 bits, for int as for uint.
-    if (op == "*") out.value.bits = a.bits * b.bits;
-    else if (op == "+") out.value.bits = a.bits + b.bits;
-    else if (op == "-") out.value.bits = a.bits - b.bits;
-    else if (op == "&") out.value.bits = a.bits & b.bits;
-    else if (op == "^") out.value.bits = a.bits ^ b.bits;
-    else if (op == "|") out.value.bits = a.bits | b.bits;
-    else return std::nullopt;
     return out;
+}
+
+// The components of `ivecN` / `uvecN` (`vectorSize` N) for a type name; 0 for any other word.
+int integerVectorSize(std::string_view type, bool& isUint) {
+    if (type.size() != 5 || type.substr(1, 3) != "vec" || type[4] < '2' || type[4] > '4') return 0;
+    if (type[0] != 'i' && type[0] != 'u') return 0;
+    isUint = type[0] == 'u';
+    return type[4] - '0';
 }
 
 bool endsOperand(const GlslToken& t) {
@@ -125,7 +165,7 @@ bool endsOperand(const GlslToken& t) {
 
 class Folder {
 public:
-    explicit Folder(const std::vector<GlslToken>& tokens) : t_(tokens) {}
+    explicit Folder(const std::vector<GlslToken>& tokens) : t_(tokens), macros_(tokens) {}
 
     std::vector<ConstantFoldEdit> run() {
         collectConstants();
@@ -168,37 +208,21 @@ private:
     // `const [precision] int|uint NAME = expr (, NAME = expr)* ;` read once each. A name declared
     // in any other way too is not used (it may be shadowed).
     void collectConstants() {
-        std::map<std::string_view, int> declarations;
-        std::size_t scanned = 0;  // the statement read for comma-declared names ends here
-        for (std::size_t i = 1; i < t_.size(); ++i) {
-            if (t_[i].kind != Kind::Identifier || t_[i - 1].kind != Kind::Identifier || isKeyword(t_[i - 1].text)) continue;
-            ++declarations[t_[i].text];  // `TYPE NAME`: a variable, parameter or function
-            if (i < scanned) continue;
-            // The names declared after a comma in the same statement (`int a = 2, ZC = 2;`, also in
-            // a for-init) shadow a constant as well: the browser divides by the local's 2.
-            int depth = 0;
-            std::size_t j = i + 1;
-            for (; j + 1 < t_.size(); ++j) {
-                const std::string_view w = t_[j].text;
-                if (w == "(" || w == "[") ++depth;
-                else if ((w == ")" || w == "]") && --depth < 0) break;
-                else if (w == ";" || w == "{" || w == "}") break;
-                else if (w == "," && depth == 0 && t_[j + 1].kind == Kind::Identifier) ++declarations[t_[j + 1].text];
-            }
-            scanned = j;
-        }
+        std::map<std::string_view, int> declarations = countDeclarations(t_);
         for (std::size_t i = 0; i + 4 < t_.size(); ++i) {
             if (t_[i].directive || t_[i].text != "const") continue;
             std::size_t j = i + 1;
             if (t_[j].text == "highp" || t_[j].text == "mediump" || t_[j].text == "lowp") ++j;
-            if (j >= t_.size() || (t_[j].text != "int" && t_[j].text != "uint")) continue;
-            const bool isUint = t_[j].text == "uint";
+            if (j >= t_.size()) continue;
+            bool isUint = t_[j].text == "uint";
+            int size = t_[j].text == "int" || isUint ? 1 : integerVectorSize(t_[j].text, isUint);
+            if (size == 0) continue;
             ++j;
             while (j + 2 < t_.size() && t_[j].kind == Kind::Identifier && t_[j + 1].text == "=") {
                 const std::string_view name = t_[j].text;
                 std::size_t at = j + 2;
                 std::optional<Value> v = parse(at, t_.size(), 1);
-                if (v && v->isUint == isUint && declarations[name] <= 1 && constants_.count(name) == 0)
+                if (v && v->isUint == isUint && v->size == size && declarations[name] <= 1 && constants_.count(name) == 0)
                     constants_[name] = *v;
                 else
                     ambiguous_.insert(name);
@@ -221,23 +245,7 @@ private:
             // An operand: a primary with its call parentheses, then its unary operators.
             if (j == 0) return std::nullopt;
             --j;
-            const GlslToken& last = t_[j];
-            if (last.directive) return std::nullopt;
-            if (last.text == ")") {
-                int depth = 0;
-                while (true) {
-                    if (t_[j].directive || op - j > kLongestOperand) return std::nullopt;
-                    if (t_[j].text == ")") ++depth;
-                    else if (t_[j].text == "(" && --depth == 0) break;
-                    if (j == 0) return std::nullopt;
-                    --j;
-                }
-                if (j > 0 && t_[j - 1].kind == Kind::Identifier && !isKeyword(t_[j - 1].text)) --j;
-            } else if (last.kind == Kind::Number || (last.kind == Kind::Identifier && !isKeyword(last.text))) {
-                // a literal or a name
-            } else {
-                return std::nullopt;
-            }
+            if (!postfixStart(j, op)) return std::nullopt;
             start = j;
             while (j > 0 && (t_[j - 1].text == "-" || t_[j - 1].text == "+" || t_[j - 1].text == "~") &&
                    !(j > 1 && endsOperand(t_[j - 2]))) {
@@ -252,12 +260,43 @@ private:
         }
     }
 
+    // Moves `j` from the last token of a postfix expression (a literal, a name, a call, each with
+    // members, swizzles and indices: `CV.x`, `a[1]`) back to its first; false when it is not one.
+    bool postfixStart(std::size_t& j, std::size_t op) const {
+        constexpr std::size_t kLongestOperand = 4096;
+        while (true) {
+            const GlslToken& last = t_[j];
+            if (last.directive) return false;
+            if (last.text == ")" || last.text == "]") {
+                const std::string_view open = last.text == ")" ? "(" : "[";
+                int depth = 0;
+                while (true) {
+                    if (t_[j].directive || op - j > kLongestOperand) return false;
+                    if (t_[j].text == last.text) ++depth;
+                    else if (t_[j].text == open && --depth == 0) break;
+                    if (j == 0) return false;
+                    --j;
+                }
+                if (open == "[") {
+                    if (j == 0) return false;
+                    --j;  // the indexed expression
+                    continue;
+                }
+                if (j > 0 && t_[j - 1].kind == Kind::Identifier && !isKeyword(t_[j - 1].text)) --j;
+            } else if (!(last.kind == Kind::Number || (last.kind == Kind::Identifier && !isKeyword(last.text)))) {
+                return false;
+            }
+            if (j < 2 || t_[j - 1].text != ".") return true;
+            j -= 2;  // a member or swizzle of what precedes the `.`
+        }
+    }
+
     // Evaluates the expression at `at` (before `end`) made of operators binding at least `minP`;
     // `at` moves past it. nullopt when any part of it is not a constant this module reads.
     std::optional<Value> parse(std::size_t& at, std::size_t end, int minP) const {
         std::optional<Value> left = unary(at, end);
         if (!left) return std::nullopt;
-        while (at < end && !t_[at].directive && t_[at].kind == Kind::Punct) {
+        while (at < end && t_[at].directive == inDirective_ && t_[at].kind == Kind::Punct) {
             const std::string_view op = t_[at].text;
             const int p = glslBinaryStrength(op);
             if (p == 0 || p < minP) break;
@@ -277,7 +316,7 @@ private:
     }
 
     std::optional<Value> unary(std::size_t& at, std::size_t end) const {
-        if (at >= end || t_[at].directive) return std::nullopt;
+        if (at >= end || t_[at].directive != inDirective_) return std::nullopt;
         // Bounds on any text: the stack (nesting) and the time (steps: a few per token is plenty
         // for real code; an adversarial text gets its remaining operations left to the driver).
         if (nesting_ > kMostNesting || ++steps_ > stepBudget_) return std::nullopt;
@@ -291,10 +330,37 @@ private:
             ++at;
             std::optional<Value> v = unary(at, end);
             if (!v) return std::nullopt;
-            if (t.text == "-") v->bits = 0u - v->bits;
-            else if (t.text == "~") v->bits = ~v->bits;
+            for (std::uint32_t& c : v->bits) c = t.text == "-" ? 0u - c : t.text == "~" ? ~c : c;
             return v;
         }
+        std::optional<Value> v = primary(at, end);
+        // Swizzles and constant indices of a constant vector (`CV.x`, `CV.yx`, `CV[1]`).
+        while (v && v->size > 1 && at + 1 < end && t_[at + 1].directive == inDirective_) {
+            if (t_[at].text == "." && t_[at + 1].kind == Kind::Identifier && t_[at + 1].text.size() <= 4) {
+                Value picked = *v;
+                picked.size = static_cast<int>(t_[at + 1].text.size());
+                for (std::size_t c = 0; c < t_[at + 1].text.size(); ++c) {
+                    const int from = swizzleIndex(t_[at + 1].text[c]);
+                    if (from < 0 || from >= v->size) return std::nullopt;
+                    picked.bits[c] = v->bits[static_cast<std::size_t>(from)];
+                }
+                v = picked;
+                at += 2;
+            } else if (t_[at].text == "[" && at + 2 < end && t_[at + 2].text == "]") {
+                const std::optional<Value> index = readLiteral(t_[at + 1].text);
+                if (!index || index->bits[0] >= static_cast<std::uint32_t>(v->size)) return std::nullopt;
+                v->bits[0] = v->bits[index->bits[0]];
+                v->size = 1;
+                at += 3;
+            } else {
+                break;
+            }
+        }
+        return v;
+    }
+
+    std::optional<Value> primary(std::size_t& at, std::size_t end) const {
+        const GlslToken& t = t_[at];
         if (t.kind == Kind::Number) {
             ++at;
             return readLiteral(t.text);
@@ -307,18 +373,58 @@ private:
             return v;
         }
         if (t.kind != Kind::Identifier) return std::nullopt;
-        if ((t.text == "int" || t.text == "uint") && at + 1 < end && t_[at + 1].text == "(") {
+        bool isUint = t.text == "uint";
+        const int size = t.text == "int" || isUint ? 1 : integerVectorSize(t.text, isUint);
+        if (size > 0) {
+            // A constructor: every argument's components in turn (int <-> uint keeps the bits), or one
+            // scalar for every component.
+            if (at + 1 >= end || t_[at + 1].text != "(") return std::nullopt;
             at += 2;
-            std::optional<Value> v = parse(at, end, 1);
-            if (!v || at >= end || t_[at].text != ")") return std::nullopt;
+            Value made;
+            made.isUint = isUint;
+            made.size = size;
+            int filled = 0;
+            bool broadcast = false;
+            for (int argument = 0;; ++argument) {
+                const std::optional<Value> v = parse(at, end, 1);
+                if (!v || at >= end) return std::nullopt;
+                if (argument == 0 && v->size == 1 && t_[at].text == ")") broadcast = true;
+                for (int c = 0; c < v->size && filled < size; ++c)
+                    made.bits[static_cast<std::size_t>(filled++)] = v->bits[static_cast<std::size_t>(c)];
+                if (t_[at].text == ")") break;
+                if (t_[at].text != ",") return std::nullopt;
+                ++at;
+            }
             ++at;
-            v->isUint = t.text == "uint";  // int <-> uint keeps the bits
-            return v;
+            if (broadcast) made.bits.fill(made.bits[0]);
+            else if (filled < size) return std::nullopt;
+            return made;
         }
-        const auto found = constants_.find(t.text);
-        if (found == constants_.end()) return std::nullopt;
+        if (const auto found = constants_.find(t.text); found != constants_.end()) {
+            ++at;
+            return found->second;
+        }
+        // An object-like macro whose body is one operand (`#define Z 0`, `#define Q (7 / 2)`): the
+        // browser folds the expanded text, so its value is the body's.
+        const Macro* macro = macros_.find(t.text);
+        if (!macro || macro->functionLike || macro->body.empty() || expanding_.count(t.text)) return std::nullopt;
+        expanding_.insert(t.text);
+        const bool wasInDirective = inDirective_;
+        inDirective_ = true;
+        std::size_t bodyAt = macro->bodyFirst;
+        const std::size_t bodyEnd = macro->bodyFirst + macro->body.size();
+        std::optional<Value> v = unary(bodyAt, bodyEnd);
+        inDirective_ = wasInDirective;
+        expanding_.erase(t.text);
+        if (!v || bodyAt != bodyEnd) return std::nullopt;
         ++at;
-        return found->second;
+        return v;
+    }
+
+    static std::string componentText(const Value& v, std::size_t c) {
+        if (v.isUint) return std::to_string(v.bits[c]) + "u";
+        const std::int32_t n = v.asInt(static_cast<int>(c));
+        return n == std::numeric_limits<std::int32_t>::min() ? "(-2147483647-1)" : std::to_string(n);
     }
 
     ConstantFoldEdit replace(std::size_t first, std::size_t past, Value v) const {
@@ -328,9 +434,15 @@ private:
         ConstantFoldEdit e;
         e.offset = t_[first].offset;
         e.erase = span.size();
-        // ANGLE's values here are INT_MAX, UINT_MAX and 0: never negative, so never in need of
-        // parentheses.
-        e.text = v.isUint ? std::to_string(v.bits) + "u" : std::to_string(v.asInt());
+        // A scalar here is ANGLE's INT_MAX, UINT_MAX or 0: never negative, so never in need of
+        // parentheses; a vector is its constructor.
+        if (v.size == 1) {
+            e.text = componentText(v, 0);
+        } else {
+            e.text = std::string(v.isUint ? "uvec" : "ivec") + std::to_string(v.size) + "(";
+            for (std::size_t c = 0; c < static_cast<std::size_t>(v.size); ++c) e.text += (c ? ", " : "") + componentText(v, c);
+            e.text += ")";
+        }
         e.text.append(static_cast<std::size_t>(std::count(span.begin(), span.end(), '\n')), '\n');
         return e;
     }
@@ -342,9 +454,36 @@ private:
     std::size_t stepBudget_ = 64 * t_.size() + 100000;
     std::map<std::string_view, Value> constants_;
     std::set<std::string_view> ambiguous_;
+    MacroTable macros_;
+    mutable std::set<std::string_view> expanding_;  // macros being read (a macro naming itself)
+    mutable bool inDirective_ = false;              // reading a macro's body
 };
 
 }  // namespace
+
+std::map<std::string_view, int> countDeclarations(const std::vector<GlslToken>& tokens) {
+    std::map<std::string_view, int> declarations;
+    std::size_t scanned = 0;  // the statement read for comma-declared names ends here
+    for (std::size_t i = 1; i < tokens.size(); ++i) {
+        if (tokens[i].kind != Kind::Identifier || tokens[i - 1].kind != Kind::Identifier || isKeyword(tokens[i - 1].text))
+            continue;
+        ++declarations[tokens[i].text];  // `TYPE NAME`: a variable, parameter or function
+        if (i < scanned) continue;
+        // The names declared after a comma in the same statement (`int a = 2, ZC = 2;`, also in
+        // a for-init) shadow a constant as well: the browser divides by the local's 2.
+        int depth = 0;
+        std::size_t j = i + 1;
+        for (; j + 1 < tokens.size(); ++j) {
+            const std::string_view w = tokens[j].text;
+            if (w == "(" || w == "[") ++depth;
+            else if ((w == ")" || w == "]") && --depth < 0) break;
+            else if (w == ";" || w == "{" || w == "}") break;
+            else if (w == "," && depth == 0 && tokens[j + 1].kind == Kind::Identifier) ++declarations[tokens[j + 1].text];
+        }
+        scanned = j;
+    }
+    return declarations;
+}
 
 std::vector<ConstantFoldEdit> foldUndefinedIntegerConstants(const std::vector<GlslToken>& tokens) {
     return Folder(tokens).run();

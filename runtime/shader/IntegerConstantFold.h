@@ -5,7 +5,9 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "shader/GlslTokens.h"
@@ -17,6 +19,11 @@ struct ConstantFoldEdit {
     std::size_t erase = 0;   // bytes replaced
     std::string text;        // ANGLE's value, with the replaced span's newlines after it
 };
+
+// How many times each name is declared (`TYPE NAME`, also after a comma in the same statement): a
+// name declared `const` once and never again is a constant the folders may read (it cannot be
+// shadowed). For the constant folders of shader/.
+std::map<std::string_view, int> countDeclarations(const std::vector<GlslToken>& tokens);
 
 // For each scalar `int`/`uint` operation `a / b`, `a % b`, `a << b`, `a >> b` outside directives
 // whose two operands this module can evaluate (literals, `int(...)`/`uint(...)` of them,

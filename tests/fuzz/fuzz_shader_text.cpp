@@ -1,6 +1,8 @@
 // libFuzzer target: any text through the pure analyses toyhost runs on users' shader text before
-// GL sees it: the WebGL source rewrite (runtime/shader/GlslRewrite.h: zero initialisation, index
-// clamps, renames, integer constant folding, precision promotion), which promises every change
+// GL sees it: the WebGL source rewrite (runtime/shader/GlslRewrite.h: zero initialisation, also of
+// declarations made by macros, index clamps, also in macro bodies, renames, integer constant
+// folding of scalars, vectors and macro operands, float built-in folding, precise asin/acos, opaque
+// divisors, precision promotion; seeds/fuzz_shader_text/macros_and_folds.glsl), which promises every change
 // stays on its line (the output has as many newlines as the input), and the depth checks
 // (runtime/shader/ExpressionDepth.h), whose depths are never negative.
 #include <algorithm>

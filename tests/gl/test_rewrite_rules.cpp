@@ -3,7 +3,9 @@
 // whose text the driver refuses is skipped alone with a [shader.rule-skipped] warning naming it, a
 // local declared after a comma shadows a constant in the integer fold, zero-initialisation reaches
 // structs defined in a function and for-init declarations, and an unknown directive in a skipped
-// group is ignored as the browser ignores it. Expected values are the browser's (issue 42's
+// group is ignored as the browser ignores it; an index in a macro body is clamped, a local declared
+// by a macro zeroed, constant int vectors, macro operands and float built-ins folded as ANGLE folds
+// them. Expected values are the browser's (issue 42's
 // measurements with ../shared/webref); Mesa alone gives the other value named in each comment.
 #include "GlTestSupport.h"
 
@@ -70,7 +72,8 @@ protected:
 // 0.125 from zero: 0.5; Mesa 1.25), the sum of a float[4] read with i <= 4 (clamped: 14; Mesa 0), an
 // uninitialised global vec4's x (0; llvmpipe NaN) as 0.25 when zero; column 1: 7 / 0 folded (INT_MAX
 // >> 16: 32767; Mesa 0), asin(0.9) as precise as the browser's (|error| < 1e-5; Mesa's is 3.5e-4
-// off), a variable named `packed` (0.75; Mesa refuses the name).
+// off), a variable named `packed` (0.75; Mesa refuses the name); column 2: round(2.5) folded half
+// away from zero (3; Mesa 2).
 const char* kEveryRule =
     "float acc(float x) { float t; t += x; return t; }\n"
     "vec4 g;\n"
@@ -82,7 +85,8 @@ const char* kEveryRule =
     "    float packed = 0.75;\n"
     "    float e = abs(asin(0.9 + iTime) - 1.11976951) < 1e-5 ? 1.0 : 0.0;\n"
     "    if (f.x < 1.0) o = vec4(s, sum, g.x == 0.0 ? 0.25 : 1.0, 1.0);\n"
-    "    else o = vec4(float((7 / Z) >> 16), e, packed, 1.0);\n"
+    "    else if (f.x < 2.0) o = vec4(float((7 / Z) >> 16), e, packed, 1.0);\n"
+    "    else o = vec4(round(2.5), 0.0, 0.0, 1.0);\n"
     "}\n";
 
 void expectEveryRule(const std::vector<float>& pixels) {
@@ -93,6 +97,7 @@ void expectEveryRule(const std::vector<float>& pixels) {
     EXPECT_EQ(pixels[4], 32767.0f) << "integer fold";
     EXPECT_EQ(pixels[5], 1.0f) << "precise acos";
     EXPECT_EQ(pixels[6], 0.75f) << "packed renamed";
+    EXPECT_EQ(pixels[8], 3.0f) << "float fold";
 }
 
 TEST_F(RewriteRules, EveryRuleAppliesWithoutAWarning) {
@@ -142,11 +147,12 @@ TEST_F(RewriteRules, ARefusedRuleIsSkippedAloneWithAWarning) {
         if (rule != RewriteRule::FoldIntegerConstants) EXPECT_EQ(r.pixels[4], 32767.0f);
         EXPECT_EQ(r.pixels[5], rule == RewriteRule::PreciseInverseTrig ? 0.0f : 1.0f);
         EXPECT_EQ(r.pixels[6], 0.75f);
+        EXPECT_EQ(r.pixels[8], rule == RewriteRule::FoldFloatConstants ? 2.0f : 3.0f);
         ASSERT_EQ(r.notices.size(), 1u) << formatDiagnostics(r.notices);
         const Diagnostic& warning = r.notices[0];
         EXPECT_EQ(warning.severity, Severity::Warning);
         EXPECT_EQ(warning.code, Code::ShaderRuleSkipped);
-        EXPECT_EQ(warning.line, 13);  // the planted statement, after the text's last line
+        EXPECT_EQ(warning.line, 14);  // the planted statement, after the text's last line
         EXPECT_NE(warning.message.find(std::string("'") + rewriteRuleName(rule) + "'"), std::string::npos) << warning.message;
         EXPECT_NE(warning.message.find("toyhost_planted_failure_of_"), std::string::npos) << "the driver's words: " << warning.message;
         EXPECT_NE(formatDiagnostic(warning).find("[shader.rule-skipped]"), std::string::npos);
@@ -210,6 +216,91 @@ TEST_F(RewriteRules, AnUnknownDirectiveInASkippedGroupIsIgnored) {
                                    "void mainImage(out vec4 o, in vec2 f) { o = vec4(V, 0.0, 0.0, 1.0); }\n");
     EXPECT_NE(active.error.find("image.glsl:3"), std::string::npos) << active.error;
     EXPECT_NE(active.error.find("elseif"), std::string::npos) << active.error;
+}
+
+// The value of `pick`'s cell (pixel x of the bottom row, channel c) in a shader that writes cell
+// (x, c) of 4 x 3 values: `values` is GLSL for a `float v[12]` initialiser's elements.
+std::string cells(const std::string& before, const std::string& values) {
+    return before + "void mainImage(out vec4 o, in vec2 f) {\n    float v[12] = float[12](" + values +
+           ");\n    int x = int(f.x);\n    o = vec4(v[3 * x], v[3 * x + 1], v[3 * x + 2], 1.0);\n}\n";
+}
+
+// Issue 42: an index written in a `#define` body is clamped as the browser clamps the expanded
+// text: `AT(k)` with k = 4 on `const float PAL[4]` is PAL[3] (4.0; Mesa read the next array's
+// first element, 11.0); a matrix column through a macro likewise.
+TEST_F(RewriteRules, AnIndexInAMacroBodyIsClamped) {
+    const Rendered r = render("macro_index", cells("#define AT(i) PAL[i]\n#define COL(i) MAT[i]\n"
+                                                   "const float PAL[4] = float[4](1.0, 2.0, 3.0, 4.0);\n"
+                                                   "const float NEXT[4] = float[4](11.0, 12.0, 13.0, 14.0);\n"
+                                                   "const mat2 MAT = mat2(1.0, 2.0, 3.0, 4.0);\n",
+                                                   "AT(4 + int(iTime)), AT(-1 + int(iTime)), NEXT[int(iTime)], "
+                                                   "COL(2 + int(iTime)).y, 0.,0.,0.,0.,0.,0.,0.,0."));
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(at(r, 0, 0), 4.0f);
+    EXPECT_EQ(at(r, 0, 1), 1.0f);
+    EXPECT_EQ(at(r, 0, 2), 11.0f);
+    EXPECT_EQ(at(r, 1, 0), 4.0f);
+    EXPECT_TRUE(r.notices.empty()) << formatDiagnostics(r.notices);
+}
+
+// Issue 42: a local declared by a macro is zero at every execution of its declaration, as the
+// browser zeroes the expanded text: 3 calls of `ACC acc += 1.0;` sum to 3 (Mesa 6), also for a
+// function-like macro and an array.
+TEST_F(RewriteRules, ALocalDeclaredByAMacroIsZeroAtEveryCall) {
+    const Rendered r = render("macro_declaration",
+                              "#define ACC float acc;\n#define LOCAL(t, n) t n\n"
+                              "float one() { ACC acc += 1.0; return acc; }\n"
+                              "float two() { LOCAL(vec2, p), q[2]; p += 1.0; q[1] += 1.0; return p.y + q[1].x; }\n"
+                              "void mainImage(out vec4 o, in vec2 f) {\n"
+                              "    float a = 0.0, b = 0.0;\n"
+                              "    for (int i = 0; i < 3; i++) { a += one(); b += two(); }\n"
+                              "    o = vec4(a, b, 0.0, 1.0);\n"
+                              "}\n");
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(at(r, 0, 0), 3.0f);
+    EXPECT_EQ(at(r, 0, 1), 6.0f);
+    EXPECT_TRUE(r.notices.empty()) << formatDiagnostics(r.notices);
+}
+
+// Issue 42: ANGLE folds operations on constant vectors and on constants written as macros, giving
+// the undefined ones its own values (browser / Mesa): ivec2(7)/0, ivec2(7)%0, CV.x/CV.y with
+// CV = ivec2(7,0) INT_MAX / 0 (shown >> 16: 32767), uvec2(7u)/0u UINT_MAX / 0 (>> 16: 65535),
+// ivec2(-7)%3 0 / -1, ivec2(1)<<33 0 / 2, ivec2(-8)>>40 0 / -1; with #define Z 0: 7/Z, 7%Z,
+// const int QZ = 7/Z INT_MAX / 0, 7u/uint(Z) UINT_MAX / 0.
+TEST_F(RewriteRules, ConstantVectorsAndMacroOperandsAreFoldedAsTheBrowserFoldsThem) {
+    const Rendered r = render("vector_fold",
+                              cells("#define Z 0\nconst ivec2 CV = ivec2(7,0);\nconst int QZ = 7/Z;\n",
+                                    "float((ivec2(7)/0).x >> 16), float((ivec2(7)%0).y >> 16), float(CV.x/CV.y >> 16),\n"
+                                    "        float((uvec2(7u)/0u).x >> 16u), float((ivec2(-7)%3).x), float((ivec2(1)<<33).y),\n"
+                                    "        float((ivec2(-8)>>40).x), float(7/Z >> 16), float(7%Z >> 16),\n"
+                                    "        float(QZ >> 16), float(7u/uint(Z) >> 16u), 0.0"));
+    ASSERT_EQ(r.error, "");
+    const float expected[12] = {32767, 32767, 32767, 65535, 0, 0, 0, 32767, 32767, 32767, 65535, 0};
+    for (int i = 0; i < 12; ++i) EXPECT_EQ(at(r, i / 3, i % 3), expected[i]) << "cell " << i;
+}
+
+// Issue 42: ANGLE folds a float built-in whose constant arguments GLSL leaves undefined to 0, and a
+// constant round() half away from zero (browser / Mesa): log(-1.), sqrt(-1.), inversesqrt(-1.),
+// pow(-8., 1./3.), normalize(vec3(0)).x, acosh(.5) 0 / NaN; log(0.), log2(0.) 0 / -inf;
+// inversesqrt(0.), pow(0.,-1.), atanh(1.) 0 / +inf; pow(0.,0.) 0 / 1; atan(0.,-0.) 0 / pi; round(2.5)
+// as an expression, a const, through a macro and round(float(5)/2.0) 3 / 2; round(vec2(.5,-2.5))
+// (1,-3) / (0,-2); round(-.5) -1 / -0; round(4.5) 5 / 4. At run time both sides round half to even.
+TEST_F(RewriteRules, FloatBuiltInsAreFoldedAsTheBrowserFoldsThem) {
+    const Rendered undefined = render("float_fold_undefined",
+                                      cells("", "log(-1.), sqrt(-1.), inversesqrt(-1.), pow(-8., 1./3.), normalize(vec3(0)).x,\n"
+                                                "        acosh(.5), log(0.), log2(0.), inversesqrt(0.), pow(0.,-1.), atanh(1.),\n"
+                                                "        pow(0.,0.) + atan(0.,-0.)"));
+    ASSERT_EQ(undefined.error, "");
+    for (int i = 0; i < 12; ++i) EXPECT_EQ(at(undefined, i / 3, i % 3), 0.0f) << "cell " << i;
+    const Rendered rounded = render("float_fold_round",
+                                    cells("const float R = round(2.5);\n#define HALF round(2.5)\n#define RND(x) round(x)\n",
+                                          "round(2.5), R, HALF, RND(2.5), round(float(5)/2.0), round(vec2(.5,-2.5)).x,\n"
+                                          "        round(vec2(.5,-2.5)).y, round(-.5), round(2.5 + iTime), round(4.5),\n"
+                                          "        round(3.5), 0.0"));
+    ASSERT_EQ(rounded.error, "");
+    const float expected[12] = {3, 3, 3, 3, 3, 1, -3, -1, 2, 5, 4, 0};
+    for (int i = 0; i < 12; ++i) EXPECT_EQ(at(rounded, i / 3, i % 3), expected[i]) << "cell " << i;
+    EXPECT_TRUE(rounded.notices.empty()) << formatDiagnostics(rounded.notices);
 }
 
 }  // namespace

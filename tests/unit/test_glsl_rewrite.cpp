@@ -82,7 +82,6 @@ TEST(GlslRewrite, LeavesAloneWhatIsNotALocalWithoutInitialiser) {
              "void f(){ precision highp float; vec3(1.); a.b = c; y++; }",
              "void f(){ float x = 1.; if (x > 0.) { x = 2.; } else { x = c ? a : b; } }",
              "void f(){ Unknown u; }",   // a type it does not know
-             "#define DECL float q;\nvoid f(){ DECL }",
              "void f(){ switch (i) { case 0: x = 1.; break; default: break; } }",
          })
         EXPECT_EQ(rewriteLikeWebGL(code), code) << code;
@@ -93,6 +92,22 @@ TEST(GlslRewrite, ObjectMacrosNamingATypeAreFollowed) {
     // A function-like macro is not a type.
     const std::string fn = "#define V(x) vec3\nvoid f(){ V p; }";
     EXPECT_EQ(rewriteLikeWebGL(fn), fn);
+}
+
+// Issue 42: the browser zeroes what it sees after preprocessing, so a local declared by a macro is
+// zeroed too: right after the statement that declares it (the macro's text is left as it is).
+TEST(GlslRewrite, LocalsDeclaredByAMacroGetZero) {
+    EXPECT_EQ(rewriteLikeWebGL("#define DECL float q;\nvoid f(){ DECL q += 1.; }"),
+              "#define DECL float q;\nvoid f(){ DECL q=float(0); q += 1.; }");
+    EXPECT_EQ(rewriteLikeWebGL("#define LOCAL(t, n) t n\n#define V3 vec3\nvoid f(){ LOCAL(V3, p), k[2]; LOCAL(float, s) = 1.; }"),
+              "#define LOCAL(t, n) t n\n#define V3 vec3\nvoid f(){ LOCAL(V3, p), k[2]; p=vec3(0);"
+              "for(int toyhost_i=0;toyhost_i<k.length();++toyhost_i)k[toyhost_i]=vec3(0); LOCAL(float, s) = 1.; }");
+    // Not a declaration (a statement, a call), a global, a for-init: left as they are.
+    for (const std::string code : {"#define ADD(x) x += 1.\nvoid f(){ float a = 0.; ADD(a); }",
+                                   "#define G float g;\nG\nvoid f(){ }",
+                                   "#define T(n) float n\nvoid f(){ for (T(i); i < 1.; i += 1.) {} }",
+                                   "#define OPEN float a; float\nvoid f(){ OPEN b; }"})
+        EXPECT_EQ(rewriteLikeWebGL(code), code) << code;
 }
 
 TEST(GlslRewrite, UnbalancedBracesOutsideDirectivesOnlyRename) {

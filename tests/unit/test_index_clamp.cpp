@@ -62,3 +62,22 @@ TEST(IndexClamp, IndicesSpanningLinesKeepEveryLineWhereItWas) {
     EXPECT_EQ(out, "float f(float a[4], int i){ return a[int(clamp(float(i\n + 1),0.0,3.0))]; }\n");
     EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), std::count(text.begin(), text.end(), '\n'));
 }
+
+// Issue 42: ANGLE clamps the text after preprocessing, so an index written in a macro body is
+// clamped at every use: it is clamped in the body, typed by the text's declarations (a parameter is
+// an index like any other, never a name to type).
+TEST(IndexClamp, AnIndexInAMacroBodyIsClamped) {
+    EXPECT_EQ(clampOnly("#define AT(i) PAL[i]\nconst float PAL[4] = float[4](1.,2.,3.,4.);\n"
+                        "#define ROW(m, i) M[i][m]\nmat3 M;\nfloat f(){ return AT(4) + ROW(1, 2); }"),
+              "#define AT(i) PAL[int(clamp(float(i),0.0,3.0))]\nconst float PAL[4] = float[4](1.,2.,3.,4.);\n"
+              "#define ROW(m, i) M[int(clamp(float(i),0.0,2.0))][int(clamp(float(m),0.0,2.0))]\nmat3 M;\n"
+              "float f(){ return AT(4) + ROW(1, 2); }");
+    // Names declared with different types, a parameter named like an array, and literal indices:
+    // left alone.
+    const std::string untyped = "void f(){ float a[4]; } void g(){ vec2 a; }\n#define A(i) a[i]\n#define P(PAL) PAL[0]\n"
+                                "float PAL[3];\n#define Q(PAL, i) PAL[i]\n#define L PAL[1]";
+    EXPECT_EQ(clampOnly(untyped), untyped);
+    // Arrays of one type with different sizes: clamped with length().
+    EXPECT_EQ(clampOnly("void f(){ float b[4]; } void g(){ float b[2]; }\n#define B(i) b[i]"),
+              "void f(){ float b[4]; } void g(){ float b[2]; }\n#define B(i) b[int(clamp(float(i),0.0,float(b.length()-1)))]");
+}

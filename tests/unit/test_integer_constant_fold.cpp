@@ -118,3 +118,27 @@ TEST(IntegerConstantFold, ALocalAfterACommaShadowsTheConstant) {
     EXPECT_EQ(foldOnly("const int Z = 0;\nvoid f(){ ivec3 v = ivec3(1, Z, 2); int q = 7 / Z; }"),
               "const int Z = 0;\nvoid f(){ ivec3 v = ivec3(1, Z, 2); int q = 2147483647; }");
 }
+
+// Issue 42: ANGLE folds constant vectors too, component by component (a scalar operand applies to
+// every component), and the browser folds the expanded text, so a constant written as a macro is
+// one as well.
+TEST(IntegerConstantFold, ConstantVectorsAreFoldedComponentByComponent) {
+    EXPECT_EQ(foldOnly("ivec2 a = ivec2(7)/0; ivec2 b = ivec2(7)%0; uvec2 c = uvec2(7u)/0u;"),
+              "ivec2 a = ivec2(2147483647, 2147483647); ivec2 b = ivec2(2147483647, 2147483647); "
+              "uvec2 c = uvec2(4294967295u, 4294967295u);");
+    EXPECT_EQ(foldOnly("ivec2 r = ivec2(-7)%3; ivec2 s = ivec2(1)<<33; ivec2 t = ivec2(-8)>>40;"),
+              "ivec2 r = ivec2(0, 0); ivec2 s = ivec2(0, 0); ivec2 t = ivec2(0, 0);");
+    EXPECT_EQ(foldOnly("const ivec2 CV = ivec2(7,0);\nint q = CV.x/CV.y; ivec3 w = ivec3(CV, 1) / ivec3(2, 0, 1);"),
+              "const ivec2 CV = ivec2(7,0);\nint q = 2147483647; ivec3 w = ivec3(3, 2147483647, 1);");
+    // Defined operations and non-constant operands stay the driver's.
+    const std::string same = "ivec2 a = ivec2(7)/2; uniform ivec2 u; ivec2 b = u/0; ivec2 c = ivec2(7)/ivec3(0);";
+    EXPECT_EQ(foldOnly(same), same);
+}
+
+TEST(IntegerConstantFold, MacroOperandsAreConstants) {
+    EXPECT_EQ(foldOnly("#define Z 0\nint a = 7/Z; int b = 7%Z;\nconst int QZ = 7/Z;\nuint c = 7u/uint(Z);"),
+              "#define Z 0\nint a = 2147483647; int b = 2147483647;\nconst int QZ = 2147483647;\nuint c = 4294967295u;");
+    // Only a body that is one operand: `7 / N` with `#define N 1 - 1` is (7 / 1) - 1 = 6 for the browser.
+    const std::string expression = "#define N 1 - 1\n#define S S\nint a = 7 / N; int b = 7 / S;";
+    EXPECT_EQ(foldOnly(expression), expression);
+}

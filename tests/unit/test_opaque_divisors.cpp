@@ -17,7 +17,7 @@ namespace {
 std::string opaqueOnly(const std::string& text) {
     GlslRewriteOptions options;
     options.zeroInit = options.rename = options.clampIndices = options.foldIntegerConstants = false;
-    options.preciseInverseTrig = false;
+    options.preciseInverseTrig = options.foldFloatConstants = false;
     return rewriteLikeWebGL(text, options);
 }
 
