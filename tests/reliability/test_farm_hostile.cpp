@@ -166,7 +166,8 @@ TEST(FarmHostile, PathsWithQuotesAndShellWordsReachToyhostExactlyFromEveryScript
     writeExecutable(bin / "toyhost-stub", "#!/bin/bash\nprintf '%s\\n' \"$2\" >> \"$STUB_LOG\"\n");
     writeExecutable(bin / "sbatch", "#!/bin/bash\necho 1\n");
     writeExecutable(bin / "scontrol", "#!/bin/bash\nexit 0\n");
-    writeExecutable(bin / "kubectl", "#!/bin/bash\nexit 0\n");
+    // kubectl: every call succeeds, except a wait for the chain's failure (the chain completed).
+    writeExecutable(bin / "kubectl", "#!/bin/bash\ncase \"$*\" in *condition=failed*) exit 1;; esac\nexit 0\n");
     // GNU parallel itself (tests/reliability needs it installed, as the shard test does): it runs
     // its command through a shell, which evaluated a job folder's $( ) before parallel.sh used -q.
     const std::vector<std::string> env = {"PATH=" + bin.string() + ":/usr/bin:/bin", "STUB_LOG=" + log.string(),
