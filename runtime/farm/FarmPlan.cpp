@@ -179,6 +179,11 @@ std::string k8sJob(const PlanRequest& r, const std::string& name, bool indexed, 
           << "  parallelism: " << (r.parallelism > 0 ? r.parallelism : r.shards) << "\n"
           << "  backoffLimitPerIndex: 2\n";
     s << "  backoffLimit: " << (indexed ? 2 * r.shards : 2) << "\n"
+      << "  # A pod evicted, preempted or lost with its node is not the shard's fault: no retry is used up.\n"
+      << "  podFailurePolicy:\n"
+      << "    rules:\n"
+      << "      - action: Ignore\n"
+      << "        onPodConditions: [{ type: DisruptionTarget }]\n"
       << "  template:\n"
       << "    spec:\n"
       << "      restartPolicy: Never\n"
