@@ -226,6 +226,7 @@ std::string k8sSubmit(const PlanRequest& r) {
           << "): the render Job is not applied\" >&2\n"
           << "    exit 1\n"
           << "  fi\n"
+          << "  code=0\n"
           << "  wait \"$complete\" || code=$?\n"
           << "else\n"
           << "  kill \"$failed\" 2>/dev/null || true\n"
