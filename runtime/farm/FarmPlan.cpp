@@ -4,12 +4,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
+#include <cstdio>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/JsonText.h"
+#include "farm/FarmSlurm.h"
 
 namespace toyhost::farm {
 
@@ -127,73 +130,40 @@ std::string chainScript(const PlanRequest& r, const std::vector<FrameSpan>& span
     return s.str();
 }
 
-// A value of an #SBATCH line as sbatch reads it (src/sbatch/opt.c, _get_argument, Slurm 22.05):
-// whitespace ends a word, ' and " group, an unquoted # starts a comment, and a backslash makes the
-// next byte literal, except whitespace outside quotes, which ends the word all the same (a job
-// folder "my\ job" was read as two words: "Invalid directive found in batch script: job's", seen
-// on Slurm 22.05.8). So a value that is not plain goes in double quotes, with \ and " escaped.
-std::string slurmDirectiveWord(const std::string& text) {
-    const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
-        return std::isalnum(static_cast<unsigned char>(c)) || std::string_view("_-+=./:,@%").find(c) != std::string_view::npos;
-    });
-    if (plain) return text;
-    std::string word = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') word += '\\';
-        word += c;
+// Slurm's --mem (MiB without a unit, K/M/G/T: powers of 1024) as a Kubernetes quantity.
+std::string k8sMemory(const std::string& mem) {
+    const char unit = static_cast<char>(std::toupper(static_cast<unsigned char>(mem.back())));
+    if (std::isdigit(static_cast<unsigned char>(unit))) return mem + "Mi";
+    return mem.substr(0, mem.size() - 1) + unit + "i";
+}
+
+// GPUs of a --gres gpu:N or gpu:TYPE:N, or nothing when it names another resource.
+std::optional<std::string> gresGpus(const std::string& gres) {
+    if (gres.rfind("gpu:", 0) != 0) return std::nullopt;
+    const std::string count = gres.substr(gres.rfind(':') + 1);
+    if (count.empty() || count.size() > 6 || count.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+    return count;
+}
+
+// requests (cpu, memory) and limits (memory, GPUs: Kubernetes takes these as limits only).
+std::string k8sResources(const PlanRequest& r) {
+    std::vector<std::string> requests, limits;
+    if (r.cpusPerTask > 0) requests.push_back("cpu: \"" + std::to_string(r.cpusPerTask) + "\"");
+    if (!r.mem.empty()) {
+        requests.push_back("memory: " + k8sMemory(r.mem));
+        limits.push_back("memory: " + k8sMemory(r.mem));
     }
-    return word + '"';
-}
-
-std::string sbatchHeader(const PlanRequest& r, const std::string& name) {
-    std::ostringstream s;
-    s << "#!/bin/bash\n"
-      << "#SBATCH --job-name=" << name << "\n"
-      << "#SBATCH --output=" << slurmDirectiveWord(r.jobDir + "/logs/%x-%A_%a.log") << "\n"
-      << "#SBATCH --open-mode=append\n";
-    if (!r.slurmTime.empty()) s << "#SBATCH --time=" << slurmDirectiveWord(r.slurmTime) << "\n";
-    if (r.cpusPerTask > 0) s << "#SBATCH --cpus-per-task=" << r.cpusPerTask << "\n";
-    return s.str();
-}
-
-std::string slurmArray(const PlanRequest& r) {
-    std::ostringstream s;
-    s << sbatchHeader(r, "toyhost")
-      << "#SBATCH --array=0-" << r.shards - 1;
-    if (r.parallelism > 0) s << '%' << r.parallelism;
-    s << "\n"
-      << "#SBATCH --requeue\n"
-      << "# One array task per shard. At its time limit Slurm sends SIGTERM: toyhost writes the shard's\n"
-      << "# checkpoint and exits 143, and the task asks to be requeued; the next attempt resumes.\n"
-      << "job=" << shellQuoted(r.jobDir) << "\n"
-      << "task=$SLURM_ARRAY_TASK_ID\n"
-      << "# Slurm signals every process of the task, toyhost included: this shell only outlives it.\n"
-      << "trap 'true' TERM\n"
-      << "\"$job/run-shard.sh\" \"$task\" \"$@\" &\n"
-      << "child=$!\n"
-      << "wait \"$child\"; code=$?\n"
-      << "while kill -0 \"$child\" 2>/dev/null; do wait \"$child\"; code=$?; done\n"
-      << "echo \"$code\" > \"$job/exit/shard-$task\"\n"
-      << "if [ \"$code\" -eq 143 ] && [ -s \"$job/checkpoints/shard-$task.ckpt\" ]; then\n"
-      << "  scontrol requeue \"${SLURM_ARRAY_JOB_ID}_${task}\"\n"
-      << "fi\n"
-      << "exit \"$code\"\n";
-    return s.str();
-}
-
-std::string slurmSubmit(const PlanRequest& r) {
-    std::ostringstream s;
-    s << "#!/bin/bash\n"
-      << "# Submits the job (the checkpoint chain first, for a stateful shadertoy); prints the array's job id.\n"
-      << "set -eu\n"
-      << "job=" << shellQuoted(r.jobDir) << "\n"
-      << "mkdir -p \"$job/logs\"\n";
-    if (r.stateful)
-        s << "chain=$(sbatch --parsable \"$job/checkpoints.sbatch\")\n"
-          << "sbatch --parsable --dependency=afterok:\"$chain\" \"$job/job.sbatch\"\n";
-    else
-        s << "sbatch --parsable \"$job/job.sbatch\"\n";
-    return s.str();
+    if (!r.gres.empty()) limits.push_back("nvidia.com/gpu: \"" + gresGpus(r.gres).value_or("") + "\"");
+    if (requests.empty() && limits.empty()) return "";
+    auto map = [](const std::vector<std::string>& entries) {
+        std::string text = "{ ";
+        for (std::size_t i = 0; i < entries.size(); ++i) text += (i ? ", " : "") + entries[i];
+        return text + " }";
+    };
+    std::string text = "          resources:\n";
+    if (!requests.empty()) text += "            requests: " + map(requests) + "\n";
+    if (!limits.empty()) text += "            limits: " + map(limits) + "\n";
+    return text;
 }
 
 std::string k8sJob(const PlanRequest& r, const std::string& name, bool indexed, const std::string& command) {
@@ -209,6 +179,11 @@ std::string k8sJob(const PlanRequest& r, const std::string& name, bool indexed, 
           << "  parallelism: " << (r.parallelism > 0 ? r.parallelism : r.shards) << "\n"
           << "  backoffLimitPerIndex: 2\n";
     s << "  backoffLimit: " << (indexed ? 2 * r.shards : 2) << "\n"
+      << "  # A pod evicted, preempted or lost with its node is not the shard's fault: no retry is used up.\n"
+      << "  podFailurePolicy:\n"
+      << "    rules:\n"
+      << "      - action: Ignore\n"
+      << "        onPodConditions: [{ type: DisruptionTarget }]\n"
       << "  template:\n"
       << "    spec:\n"
       << "      restartPolicy: Never\n"
@@ -216,8 +191,9 @@ std::string k8sJob(const PlanRequest& r, const std::string& name, bool indexed, 
       << "      containers:\n"
       << "        - name: toyhost\n"
       << "          image: " << yamlQuoted(r.image) << "\n"
+      << "          imagePullPolicy: IfNotPresent\n"
       << "          command: [\"bash\", \"-c\", " << yamlQuoted(command) << "]\n";
-    if (r.cpusPerTask > 0) s << "          resources: { requests: { cpu: \"" << r.cpusPerTask << "\" } }\n";
+    s << k8sResources(r);
     s << "          volumeMounts:\n"
       << "            - { name: job, mountPath: " << yamlQuoted(r.jobDir) << " }\n"
       << "      volumes:\n"
@@ -232,12 +208,36 @@ std::string k8sSubmit(const PlanRequest& r) {
       << "# Applies the Job (after the checkpoint chain's Job has completed, for a stateful shadertoy).\n"
       << "set -eu\n"
       << "job=" << shellQuoted(r.jobDir) << "\n";
-    if (r.stateful)
+    if (r.stateful) {
+        const std::string chain = "job/" + kubernetesJobName("checkpoints", r.jobDir);
+        // Whichever comes first: complete, or failed (then no render Job is applied; exit 1).
+        // wait -n -p: bash 5.1 or later.
         s << "kubectl apply -f \"$job/checkpoints.yaml\"\n"
-          << "kubectl wait --for=condition=complete --timeout=24h job/toyhost-checkpoints\n";
+          << "kubectl wait --for=condition=complete --timeout=24h " << chain << " >/dev/null &\n"
+          << "complete=$!\n"
+          << "kubectl wait --for=condition=failed --timeout=24h " << chain << " >/dev/null 2>&1 &\n"
+          << "failed=$!\n"
+          << "ended='' code=0\n"
+          << "wait -n -p ended \"$complete\" \"$failed\" || code=$?\n"
+          << "if [ \"$ended\" = \"$failed\" ]; then\n"
+          << "  if [ \"$code\" -eq 0 ]; then\n"
+          << "    kill \"$complete\" 2>/dev/null || true\n"
+          << "    echo \"submit.sh: the checkpoint chain " << chain << " failed (kubectl logs " << chain
+          << "): the render Job is not applied\" >&2\n"
+          << "    exit 1\n"
+          << "  fi\n"
+          << "  code=0\n"
+          << "  wait \"$complete\" || code=$?\n"
+          << "else\n"
+          << "  kill \"$failed\" 2>/dev/null || true\n"
+          << "fi\n"
+          << "if [ \"$code\" -ne 0 ]; then echo \"submit.sh: " << chain << " did not complete within 24 h\" >&2; exit 1; fi\n";
+    }
     s << "kubectl apply -f \"$job/job.yaml\"\n";
     return s.str();
 }
+
+constexpr int kParallelRetries = 3;  // GNU parallel's count: attempts in all
 
 std::string parallelScript(const PlanRequest& r) {
     std::ostringstream s;
@@ -249,7 +249,10 @@ std::string parallelScript(const PlanRequest& r) {
     if (r.stateful) s << "\"$job/checkpoints.sh\"\n";
     // -q: GNU parallel runs its command through a shell, which would evaluate a job folder's
     // quotes and $( ) (a folder named "x $(touch PWNED)" ran touch); -q quotes every word of it.
-    s << "parallel --will-cite -q --halt now,fail=1 -j " << (r.parallelism > 0 ? r.parallelism : r.shards)
+    // -j 1 unless --parallelism: each toyhost on llvmpipe already uses every core. No --halt: a
+    // failed shard leaves its siblings running; --retries: a shard that fails is run twice more
+    // (resuming from its checkpoint), and parallel's exit status counts the shards failed.
+    s << "parallel --will-cite -q --retries " << kParallelRetries << " -j " << (r.parallelism > 0 ? r.parallelism : 1)
       << " --joblog \"$job/logs/parallel.log\" \"$job/run-shard.sh\" {} ::: $(seq 0 " << r.shards - 1 << ")\n";
     return s.str();
 }
@@ -273,12 +276,38 @@ std::string runOptionName(const std::vector<std::string>& options, std::size_t i
     return number;
 }
 
+// The cluster options a scheduler has no place for: Kubernetes takes --mem and --gres gpu:N as
+// resources, GNU parallel none of them.
+std::optional<std::string> clusterOptionProblem(const PlanRequest& r) {
+    if (r.scheduler == Scheduler::Slurm) return std::nullopt;
+    const char* scheduler = r.scheduler == Scheduler::Kubernetes ? "Kubernetes" : "GNU parallel";
+    const std::pair<const char*, bool> given[] = {
+        {"--partition", !r.partition.empty()}, {"--account", !r.account.empty()}, {"--qos", !r.qos.empty()},
+        {"--scheduler-arg", !r.schedulerArgs.empty()}, {"--mem", !r.mem.empty()}, {"--gres", !r.gres.empty()}};
+    for (const auto& [name, isGiven] : given) {
+        if (!isGiven) continue;
+        const std::string option = name;
+        if (r.scheduler == Scheduler::Kubernetes && option == "--mem") continue;
+        if (r.scheduler == Scheduler::Kubernetes && option == "--gres") {
+            if (gresGpus(r.gres)) continue;
+            return "--gres " + r.gres + ": Kubernetes takes GPUs only (gpu:N or gpu:TYPE:N, an nvidia.com/gpu limit)";
+        }
+        return option + ": Slurm's, not " + scheduler + "'s" +
+               (r.scheduler == Scheduler::Kubernetes ? " (Kubernetes takes --mem, --gres gpu:N and --cpus-per-task)" : "");
+    }
+    return std::nullopt;
+}
+
 std::optional<std::string> requestProblem(const PlanRequest& r) {
     const std::pair<const char*, const std::string*> values[] = {
         {"--job", &r.jobDir},  {"the target", &r.target}, {"--toyhost", &r.toyhost},
-        {"--frame-name", &r.frameName}, {"--time", &r.slurmTime}, {"--image", &r.image}};
+        {"--frame-name", &r.frameName}, {"--time", &r.slurmTime}, {"--image", &r.image},
+        {"--partition", &r.partition}, {"--account", &r.account}, {"--qos", &r.qos}, {"--mem", &r.mem}, {"--gres", &r.gres}};
     for (const auto& [name, value] : values)
         if (std::optional<std::string> problem = writtenValueProblem(*value)) return std::string(name) + ": " + *problem;
+    for (const std::string& arg : r.schedulerArgs)
+        if (std::optional<std::string> problem = writtenValueProblem(arg)) return "--scheduler-arg: " + *problem;
+    if (std::optional<std::string> problem = clusterOptionProblem(r)) return problem;
     for (std::size_t i = 0; i < r.runOptions.size(); ++i)
         if (std::optional<std::string> problem = writtenValueProblem(r.runOptions[i]))
             return "run option " + runOptionName(r.runOptions, i) + ": " + *problem;
@@ -295,6 +324,8 @@ std::optional<std::string> requestProblem(const PlanRequest& r) {
         if (!r.slurmTime.empty())
             if (std::optional<std::string> problem = slurmTimeProblem(r.slurmTime)) return "--time " + r.slurmTime + ": " + *problem;
     }
+    if (r.scheduler != Scheduler::Parallel)
+        if (std::optional<std::string> problem = slurm::optionsProblem(r)) return problem;
     return std::nullopt;
 }
 
@@ -356,6 +387,39 @@ std::optional<std::string> frameNameProblem(const std::string& name) {
     return std::nullopt;
 }
 
+std::vector<std::string> planWarnings(const PlanRequest& r) {
+    std::vector<std::string> warnings;
+    const std::string inside = r.jobDir == "/" ? "/" : r.jobDir + "/";
+    if (r.scheduler == Scheduler::Kubernetes && r.target.rfind(inside, 0) != 0)
+        warnings.push_back("the target " + r.target + " lies outside the job folder " + r.jobDir +
+                           ", the only folder the pods mount: copy it into the job folder, or the image must hold it there");
+    return warnings;
+}
+
+std::string kubernetesJobName(const std::string& kind, const std::string& jobDir) {
+    std::uint32_t hash = 2166136261u;  // FNV-1a
+    for (char c : jobDir) hash = (hash ^ static_cast<unsigned char>(c)) * 16777619u;
+    char hex[9];
+    std::snprintf(hex, sizeof hex, "%08x", hash);
+    return "toyhost-" + kind + "-" + hex;
+}
+
+std::string redoCommand(Scheduler scheduler, const std::string& jobDir, int index, bool again) {
+    const std::string dir = shellQuoted(jobDir);
+    const std::string tail = again ? " again" : "";
+    switch (scheduler) {
+    case Scheduler::Slurm:
+        return "sbatch --array=" + std::to_string(index) + " " + dir + "/job.sbatch" + tail;
+    case Scheduler::Kubernetes:
+        // A finished Job cannot run again: a new one, whose complete shards find their work done.
+        return "kubectl delete --ignore-not-found job/" + kubernetesJobName("render", jobDir) + " && kubectl apply -f " +
+               dir + "/job.yaml" + (again ? "  # first: rm " + dir + "/checkpoints/shard-" + std::to_string(index) + ".ckpt" : "");
+    case Scheduler::Parallel:
+        break;
+    }
+    return dir + "/run-shard.sh " + std::to_string(index) + tail;
+}
+
 std::string shellQuoted(const std::string& text) {
     const bool plain = !text.empty() && text.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
                                                                 "0123456789_-+=./:,@%") == std::string::npos;
@@ -394,14 +458,13 @@ Result<std::vector<PlanFile>> planFarm(const PlanRequest& r) {
     if (c.stateful) files.push_back({"checkpoints.sh", chainScript(c, spans), true});
     switch (r.scheduler) {
     case Scheduler::Slurm:
-        files.push_back({"job.sbatch", slurmArray(c), true});
-        if (c.stateful)
-            files.push_back({"checkpoints.sbatch", sbatchHeader(c, "toyhost-checkpoints") + "exec " + dir + "/checkpoints.sh\n", true});
-        files.push_back({"submit.sh", slurmSubmit(c), true});
+        files.push_back({"job.sbatch", slurm::arrayFile(c), true});
+        if (c.stateful) files.push_back({"checkpoints.sbatch", slurm::chainFile(c), true});
+        files.push_back({"submit.sh", slurm::submitFile(c), true});
         break;
     case Scheduler::Kubernetes:
-        files.push_back({"job.yaml", k8sJob(c, "toyhost-render", true, "exec " + dir + "/run-shard.sh \"$JOB_COMPLETION_INDEX\""), false});
-        if (c.stateful) files.push_back({"checkpoints.yaml", k8sJob(c, "toyhost-checkpoints", false, "exec " + dir + "/checkpoints.sh"), false});
+        files.push_back({"job.yaml", k8sJob(c, kubernetesJobName("render", r.jobDir), true, "exec " + dir + "/run-shard.sh \"$JOB_COMPLETION_INDEX\""), false});
+        if (c.stateful) files.push_back({"checkpoints.yaml", k8sJob(c, kubernetesJobName("checkpoints", r.jobDir), false, "exec " + dir + "/checkpoints.sh"), false});
         files.push_back({"submit.sh", k8sSubmit(c), true});
         break;
     case Scheduler::Parallel:

@@ -34,6 +34,12 @@ struct PlanRequest {
     int cpusPerTask = 0;     // sbatch --cpus-per-task, Kubernetes cpu request; 0: not given
     int parallelism = 0;     // shards at once (GNU parallel -j, Job parallelism, array %); 0: all
     std::string image = "toyhost:latest";  // the container image of the Kubernetes Job
+    // A cluster's own: Slurm's --partition, --account, --qos, --mem, --gres as #SBATCH lines of
+    // every job file (Kubernetes: --mem and --gres gpu:N become requests and limits; the others are
+    // refused there, as all are for GNU parallel); schedulerArgs: any further sbatch option, one
+    // word each (--constraint=avx2).
+    std::string partition, account, qos, mem, gres;
+    std::vector<std::string> schedulerArgs;
 };
 
 struct PlanFile {
@@ -58,6 +64,19 @@ std::optional<std::string> frameNameProblem(const std::string& name);
 // Why `text` is not a time limit sbatch --time takes, or nothing: MINUTES, MINUTES:SECONDS,
 // HOURS:MINUTES:SECONDS, DAYS-HOURS, DAYS-HOURS:MINUTES, DAYS-HOURS:MINUTES:SECONDS, UNLIMITED.
 std::optional<std::string> slurmTimeProblem(const std::string& text);
+
+// What the plan should tell its user without refusing it: a Kubernetes target outside the job
+// folder (the pods mount only the job folder).
+std::vector<std::string> planWarnings(const PlanRequest& request);
+
+// The Kubernetes Jobs' names of the job folder `jobDir`: "toyhost-render-HASH" and
+// "toyhost-checkpoints-HASH", HASH 8 hex digits of the folder's path (two plans never collide).
+std::string kubernetesJobName(const std::string& kind, const std::string& jobDir);
+
+// The command that renders shard `index` of the plan in `jobDir` again, as its scheduler runs it:
+// sbatch --array=INDEX, run-shard.sh INDEX, or a Kubernetes Job re-applied. `again`: the shard's
+// frames are rendered anew (its checkpoint removed), else it resumes from its checkpoint.
+std::string redoCommand(Scheduler scheduler, const std::string& jobDir, int index, bool again);
 
 // `text` as one word for sh/bash: unchanged when it is plain, else in single quotes.
 std::string shellQuoted(const std::string& text);

@@ -148,6 +148,7 @@ Result<FrameLayout> layoutFromPlan(const std::string& json, const std::filesyste
     }
     try {
         layout.frameName = plan.at("frameName").get<std::string>();
+        if (plan.contains("scheduler")) layout.scheduler = schedulerNamed(plan.at("scheduler").get<std::string>());
         if (plan.contains("runOptions")) layout.runOptions = plan.at("runOptions").get<std::vector<std::string>>();
     } catch (const nlohmann::json::exception&) {
         return fileError(where, "expected \"frameName\" (a string) and \"runOptions\" (strings) as `toyhost farm plan` writes them",
@@ -161,6 +162,7 @@ Result<FrameLayout> layoutFromPlan(const std::string& json, const std::filesyste
     if (std::optional<std::string> problem = frameNameProblem(layout.frameName))
         return fileError(where, "\"frameName\": " + *problem, Code::Usage);
     layout.frameDir = jobDir / "frames";
+    layout.jobDir = jobDir;
     layout.exitDir = jobDir / "exit";
     layout.joblog = jobDir / "logs/parallel.log";
     layout.captureEvery = captureEveryOption(layout.runOptions);

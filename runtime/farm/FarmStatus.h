@@ -56,6 +56,8 @@ struct FrameLayout {
     std::vector<std::string> runOptions;
     std::filesystem::path exitDir;  // the shards' exit codes (job.sbatch writes them); empty: none
     std::filesystem::path joblog;   // GNU parallel's job log (parallel.sh); empty: none
+    std::filesystem::path jobDir;   // the plan's job folder; empty: a plain folder of frames
+    std::optional<Scheduler> scheduler;  // the plan's ("scheduler" of farm.json)
     // --capture-every K among the run options: frames n % K == 0 are written, and the last one of
     // each run, which for a planned shard (run with --frames at its end) is the shard's last.
     int captureEvery = 1;

@@ -180,7 +180,9 @@ GLSL
   log=$(cat "$work"/heavy/logs/*.log 2>/dev/null)
   restarts=$(scontrol show job "${id}_0" 2>/dev/null | grep -o 'Restarts=[0-9]*')
   echo "timeout: job ${id}_0: $restarts"
-  grep -q "TIME LIMIT" <<<"$log" || fail "timeout: the task was not stopped at its time limit"
+  # --signal=B:TERM@15 (a quarter of --time 1) stops it ahead of its limit; the limit itself
+  # (TIME LIMIT) when Slurm's timer comes late.
+  grep -qE "SIGTERM ahead of the time limit|TIME LIMIT" <<<"$log" || fail "timeout: the task was not stopped at its time limit"
   grep -q "resume $work/heavy/checkpoints/shard-0.ckpt" <<<"$log" ||
     fail "timeout: the requeued task did not resume from its checkpoint"
   [ -n "$restarts" ] && [ "$restarts" != "Restarts=0" ] || fail "timeout: the task was never requeued ('$restarts')"

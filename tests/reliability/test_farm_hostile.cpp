@@ -112,6 +112,11 @@ void writeExecutable(const fs::path& path, const std::string& text) {
                               fs::perms::others_exec);
 }
 
+std::string readFile(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
 const char* const kSchedulers[] = {"slurm", "k8s", "parallel"};
 
 // ---- injection --------------------------------------------------------------------------------
@@ -166,7 +171,8 @@ TEST(FarmHostile, PathsWithQuotesAndShellWordsReachToyhostExactlyFromEveryScript
     writeExecutable(bin / "toyhost-stub", "#!/bin/bash\nprintf '%s\\n' \"$2\" >> \"$STUB_LOG\"\n");
     writeExecutable(bin / "sbatch", "#!/bin/bash\necho 1\n");
     writeExecutable(bin / "scontrol", "#!/bin/bash\nexit 0\n");
-    writeExecutable(bin / "kubectl", "#!/bin/bash\nexit 0\n");
+    // kubectl: every call succeeds, except a wait for the chain's failure (the chain completed).
+    writeExecutable(bin / "kubectl", "#!/bin/bash\ncase \"$*\" in *condition=failed*) exit 1;; esac\nexit 0\n");
     // GNU parallel itself (tests/reliability needs it installed, as the shard test does): it runs
     // its command through a shell, which evaluated a job folder's $( ) before parallel.sh used -q.
     const std::vector<std::string> env = {"PATH=" + bin.string() + ":/usr/bin:/bin", "STUB_LOG=" + log.string(),
@@ -210,8 +216,55 @@ TEST(FarmHostile, PathsWithQuotesAndShellWordsReachToyhostExactlyFromEveryScript
             const CommandResult status = toyhost({"farm", "status", job.string()});
             EXPECT_NE(status.output.find("shard 1 (frames 2-3): 0/2 ok; missing 2-3; exit 0 (finished)"), std::string::npos)
                 << status.output;
+            // The shard finished without its frames: the command that renders it again, from its start.
+            EXPECT_NE(status.output.find("/run-shard.sh 1 again\n"), std::string::npos) << status.output;
+        }
+        if (std::string(scheduler) == "slurm") {
+            const CommandResult status = toyhost({"farm", "status", job.string()});
+            EXPECT_NE(status.output.find("  redo: sbatch --array=1 "), std::string::npos) << status.output;
         }
     }
+}
+
+TEST(FarmHostile, ClusterOptionsReachEveryJobFileAndSubmitPassesItsArgumentsOn) {
+    const fs::path dir = freshOutputDir("farm-hostile/cluster");
+    const fs::path toy = dir / "toy";
+    copyShadertoy(toy);
+    const fs::path bin = dir / "bin";
+    const fs::path log = dir / "sbatch.log";
+    // sbatch: records its arguments, one line per call.
+    writeExecutable(bin / "sbatch", "#!/bin/bash\nprintf '%s|' \"$@\" >> \"$STUB_LOG\"\necho >> \"$STUB_LOG\"\necho 7\n");
+    const fs::path job = dir / "my job's";
+    const CommandResult planned =
+        toyhost({"farm", "plan", toy.string(), "--frames", "4", "--shards", "2", "--scheduler", "slurm", "--job", job.string(),
+                 "--partition", "gpu nodes", "--account", "proj", "--qos", "normal", "--mem", "8G", "--gres", "gpu:1",
+                 "--scheduler-arg=--constraint=avx2", "--scheduler-arg=--exclusive", "--size", "64x36"});
+    ASSERT_EQ(planned.exitCode, 0) << planned.output;
+    for (const char* name : {"job.sbatch", "checkpoints.sbatch"}) {
+        const std::string text = readFile(job / name);
+        for (const char* line : {"#SBATCH --partition=\"gpu nodes\"\n", "#SBATCH --account=proj\n", "#SBATCH --qos=normal\n",
+                                 "#SBATCH --mem=8G\n", "#SBATCH --gres=gpu:1\n", "#SBATCH --constraint=avx2\n",
+                                 "#SBATCH --exclusive\n"})
+            EXPECT_NE(text.find(line), std::string::npos) << name << ": " << line << "\n" << text;
+    }
+    EXPECT_EQ(readFile(job / "farm.json").find("constraint"), std::string::npos) << "a scheduler argument became a run option";
+    const CommandResult submitted = runArgv({"/bin/bash", (job / "submit.sh").string(), "--account=other", "--hold"},
+                                            {"PATH=" + bin.string() + ":/usr/bin:/bin", "STUB_LOG=" + log.string()}, 60);
+    ASSERT_EQ(submitted.exitCode, 0) << submitted.output;
+    const std::string calls = readFile(log);
+    EXPECT_EQ(calls, "--parsable|--account=other|--hold|" + (job / "checkpoints.sbatch").string() +
+                         "|\n--parsable|--dependency=afterok:7|--kill-on-invalid-dep=yes|--account=other|--hold|" +
+                         (job / "job.sbatch").string() + "|\n");
+    // Slurm's own options are refused for Kubernetes (exit 2, naming the option), before anything is written.
+    const CommandResult k8s = toyhost({"farm", "plan", toy.string(), "--frames", "4", "--shards", "2", "--scheduler", "k8s",
+                                       "--job", (dir / "k8s").string(), "--partition", "gpu"});
+    expectOneError(k8s, 2, {"--partition"}, "k8s --partition");
+    EXPECT_FALSE(fs::exists(dir / "k8s"));
+    // A target outside the job folder: a warning (the pods mount only the job folder).
+    const CommandResult warned = toyhost({"farm", "plan", toy.string(), "--frames", "4", "--shards", "2", "--scheduler",
+                                          "k8s", "--job", (dir / "k8s").string(), "--mem", "1G"});
+    EXPECT_EQ(warned.exitCode, 0) << warned.output;
+    EXPECT_NE(warned.output.find("warning: the target"), std::string::npos) << warned.output;
 }
 
 // ---- crashes ----------------------------------------------------------------------------------

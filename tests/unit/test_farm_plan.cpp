@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <optional>
@@ -368,8 +369,8 @@ TEST(FarmPlan, SbatchDirectivesReadBackAsTheValuesGivenForSlurmsParser) {
         EXPECT_EQ(sbatchValue(sbatch->text, "output"),
                   std::optional<std::string>("/scratch/my job's \"best\" #1 $(touch PWNED)/logs/%x-%A_%a.log"))
             << sbatch->text;
-        EXPECT_EQ(sbatchValue(sbatch->text, "time"), std::optional<std::string>("1-02:03:04"));
     }
+    EXPECT_EQ(sbatchValue(fileNamed(*files, "job.sbatch")->text, "time"), std::optional<std::string>("1-02:03:04"));
     EXPECT_EQ(sbatchWords(R"( --output=/a/my\ job)"), (std::vector<std::string>{"--output=/a/my", "job"}))
         << "the rule the quoting follows: a backslash does not keep a space in the word";
     // A backslash turns off Slurm's %A/%a in --output: refused for Slurm, fine elsewhere.
@@ -483,4 +484,187 @@ TEST(FarmStatus, FrameListsOfRunsAndCountsWithoutWalkingEveryFrame) {
     EXPECT_EQ(layout.frameNumberOf("f_12345.png"), 12345);
     for (const char* other : {"f_7.png", "f_0007.exr", "g_0007.png", "f_-001.png", "f_99999999999.png", "f_.png"})
         EXPECT_FALSE(layout.frameNumberOf(other)) << other;
+}
+
+TEST(FarmPlan, ClusterOptionsAreSbatchLinesOfEveryJobFileQuotedAsTheOtherValues) {
+    PlanRequest r = request(Scheduler::Slurm, true);
+    r.partition = "gpu nodes";  // read back as one word, as the job folder is
+    r.account = "proj's";
+    r.qos = "normal";
+    r.mem = "16G";
+    r.gres = "gpu:a100:1";
+    r.schedulerArgs = {"--constraint=avx2&ib", "--exclusive", "--comment=a \"b\""};
+    auto files = planFarm(r);
+    ASSERT_TRUE(files) << files.error().text();
+    for (const char* name : {"job.sbatch", "checkpoints.sbatch"}) {
+        const std::string& text = fileNamed(*files, name)->text;
+        EXPECT_EQ(sbatchValue(text, "partition"), std::optional<std::string>("gpu nodes")) << text;
+        EXPECT_EQ(sbatchValue(text, "account"), std::optional<std::string>("proj's"));
+        EXPECT_EQ(sbatchValue(text, "qos"), std::optional<std::string>("normal"));
+        EXPECT_EQ(sbatchValue(text, "mem"), std::optional<std::string>("16G"));
+        EXPECT_EQ(sbatchValue(text, "gres"), std::optional<std::string>("gpu:a100:1"));
+        EXPECT_EQ(sbatchValue(text, "constraint"), std::optional<std::string>("avx2&ib"));
+        EXPECT_EQ(sbatchValue(text, "comment"), std::optional<std::string>("a \"b\""));
+        EXPECT_NE(text.find("#SBATCH --exclusive\n"), std::string::npos);
+    }
+    // The same refusals as every other value the plan writes.
+    for (std::string PlanRequest::*field : {&PlanRequest::partition, &PlanRequest::account, &PlanRequest::qos}) {
+        PlanRequest bad = request(Scheduler::Slurm, false);
+        bad.*field = "a\nb";
+        auto refused = planFarm(bad);
+        ASSERT_FALSE(refused);
+        EXPECT_NE(refused.error().text().find("line break"), std::string::npos) << refused.error().text();
+    }
+    PlanRequest bad = request(Scheduler::Slurm, false);
+    bad.schedulerArgs = {"--x=\n"};
+    EXPECT_FALSE(planFarm(bad));
+    // Not an option, or one the plan's own lines set.
+    for (const char* arg : {"constraint=avx2", "--array=0-3", "--time=5", "-o/tmp/x", "--dependency=afterok:1", "--output=x"}) {
+        bad.schedulerArgs = {arg};
+        auto refused = planFarm(bad);
+        ASSERT_FALSE(refused) << arg;
+        EXPECT_NE(refused.error().text().find("--scheduler-arg"), std::string::npos) << refused.error().text();
+    }
+    bad.schedulerArgs.clear();
+    for (const char* mem : {"16GB", "G", "lots", "1.5G"}) {
+        bad.mem = mem;
+        EXPECT_FALSE(planFarm(bad)) << mem;
+    }
+    for (const char* mem : {"16000", "16G", "512m"}) {
+        bad.mem = mem;
+        EXPECT_TRUE(planFarm(bad)) << mem;
+    }
+}
+
+TEST(FarmPlan, KubernetesTakesMemoryAndGpusAsResourcesAndRefusesSlurmsOwn) {
+    PlanRequest r = request(Scheduler::Kubernetes, true);
+    r.cpusPerTask = 4;
+    r.mem = "16G";
+    r.gres = "gpu:2";
+    auto files = planFarm(r);
+    ASSERT_TRUE(files) << files.error().text();
+    for (const char* name : {"job.yaml", "checkpoints.yaml"}) {
+        const std::string& yaml = fileNamed(*files, name)->text;
+        EXPECT_NE(yaml.find("requests: { cpu: \"4\", memory: 16Gi }"), std::string::npos) << yaml;
+        EXPECT_NE(yaml.find("limits: { memory: 16Gi, nvidia.com/gpu: \"2\" }"), std::string::npos) << yaml;
+    }
+    r.mem = "2048";  // sbatch's unit: MiB
+    r.gres.clear();
+    EXPECT_NE(fileNamed(*planFarm(r), "job.yaml")->text.find("memory: 2048Mi"), std::string::npos);
+    PlanRequest refused = request(Scheduler::Kubernetes, false);
+    refused.gres = "license:2";
+    ASSERT_FALSE(planFarm(refused));
+    EXPECT_NE(planFarm(refused).error().text().find("GPUs only"), std::string::npos);
+    for (Scheduler scheduler : {Scheduler::Kubernetes, Scheduler::Parallel}) {
+        PlanRequest other = request(scheduler, false);
+        other.partition = "gpu";
+        auto result = planFarm(other);
+        ASSERT_FALSE(result);
+        EXPECT_NE(result.error().text().find("--partition: Slurm's"), std::string::npos) << result.error().text();
+        other = request(scheduler, false);
+        other.schedulerArgs = {"--exclusive"};
+        EXPECT_FALSE(planFarm(other));
+    }
+    PlanRequest parallel = request(Scheduler::Parallel, false);
+    parallel.mem = "1G";
+    EXPECT_FALSE(planFarm(parallel));
+}
+
+TEST(FarmPlan, SubmitPassesItsOwnArgumentsToEverySbatch) {
+    for (bool stateful : {false, true}) {
+        auto files = planFarm(request(Scheduler::Slurm, stateful));
+        ASSERT_TRUE(files);
+        const std::string& submit = fileNamed(*files, "submit.sh")->text;
+        const std::size_t sbatches = count(submit, "sbatch --parsable");
+        EXPECT_EQ(sbatches, stateful ? 2u : 1u);
+        EXPECT_EQ(count(submit, "\"$@\""), sbatches) << submit;
+    }
+}
+
+TEST(FarmPlan, TheChainHasItsOwnTimeAndRequeueAndAFailedChainEndsTheArray) {
+    PlanRequest r = request(Scheduler::Slurm, true);
+    r.slurmTime = "1:30:00";  // 3 shards: the chain simulates 2 shards' frames
+    auto files = planFarm(r);
+    ASSERT_TRUE(files);
+    const std::string& chain = fileNamed(*files, "checkpoints.sbatch")->text;
+    EXPECT_EQ(sbatchValue(chain, "time"), std::optional<std::string>("0-03:00:00")) << chain;
+    EXPECT_NE(chain.find("#SBATCH --requeue\n"), std::string::npos);
+    EXPECT_NE(fileNamed(*files, "submit.sh")->text.find("--dependency=afterok:\"$chain\" --kill-on-invalid-dep=yes"),
+              std::string::npos);
+    const std::string& array = fileNamed(*files, "job.sbatch")->text;
+    EXPECT_EQ(sbatchValue(array, "signal"), std::optional<std::string>("B:TERM@120")) << array;
+    EXPECT_NE(array.find("kill -TERM \"$child\""), std::string::npos);
+    // Every format sbatch takes; a short limit gets a quarter of it as the lead.
+    for (const auto& [time, chainTime, lead] :
+         {std::tuple{"5", "0-00:10:00", "B:TERM@75"}, std::tuple{"1", "0-00:02:00", "B:TERM@15"},
+          std::tuple{"2-1", "4-02:00:00", "B:TERM@120"}, std::tuple{"10:30", "0-00:21:00", "B:TERM@120"},
+          std::tuple{"1-0:0:1", "2-00:00:02", "B:TERM@120"}, std::tuple{"UNLIMITED", "UNLIMITED", "B:TERM@120"}}) {
+        r.slurmTime = time;
+        auto timed = planFarm(r);
+        ASSERT_TRUE(timed) << time;
+        EXPECT_EQ(sbatchValue(fileNamed(*timed, "checkpoints.sbatch")->text, "time"), std::optional<std::string>(chainTime)) << time;
+        EXPECT_EQ(sbatchValue(fileNamed(*timed, "job.sbatch")->text, "signal"), std::optional<std::string>(lead)) << time;
+    }
+    r.slurmTime.clear();  // the partition's limit, for both
+    EXPECT_FALSE(sbatchValue(fileNamed(*planFarm(r), "checkpoints.sbatch")->text, "time"));
+}
+
+TEST(FarmPlan, RedoCommandsAreEachSchedulersOwnForOneShard) {
+    EXPECT_EQ(redoCommand(Scheduler::Slurm, "/scratch/my job", 4, false), "sbatch --array=4 '/scratch/my job'/job.sbatch");
+    EXPECT_EQ(redoCommand(Scheduler::Slurm, "/j", 0, true), "sbatch --array=0 /j/job.sbatch again");
+    EXPECT_EQ(redoCommand(Scheduler::Parallel, "/j", 2, false), "/j/run-shard.sh 2");
+    EXPECT_EQ(redoCommand(Scheduler::Parallel, "/j", 2, true), "/j/run-shard.sh 2 again");
+    const std::string k8s = redoCommand(Scheduler::Kubernetes, "/j", 1, false);
+    EXPECT_NE(k8s.find("kubectl delete --ignore-not-found job/" + kubernetesJobName("render", "/j")), std::string::npos) << k8s;
+    EXPECT_NE(k8s.find("kubectl apply -f /j/job.yaml"), std::string::npos);
+    // farm status finds the scheduler and the folder in farm.json.
+    for (Scheduler scheduler : {Scheduler::Slurm, Scheduler::Kubernetes, Scheduler::Parallel}) {
+        auto files = planFarm(request(scheduler, false));
+        ASSERT_TRUE(files);
+        auto layout = layoutFromPlan(fileNamed(*files, "farm.json")->text, "/scratch/job");
+        ASSERT_TRUE(layout);
+        EXPECT_EQ(layout->scheduler, std::optional<Scheduler>(scheduler));
+        EXPECT_EQ(layout->jobDir, std::filesystem::path("/scratch/job"));
+    }
+}
+
+TEST(FarmPlan, GnuParallelRunsOneShardAtATimeRetriesAndKeepsSiblingsRunning) {
+    PlanRequest r = request(Scheduler::Parallel, true);
+    const std::string text = fileNamed(*planFarm(r), "parallel.sh")->text;
+    EXPECT_NE(text.find(" -j 1 "), std::string::npos) << text;
+    EXPECT_NE(text.find("--retries 3 "), std::string::npos);
+    EXPECT_EQ(text.find("--halt"), std::string::npos);
+    r.parallelism = 2;
+    EXPECT_NE(fileNamed(*planFarm(r), "parallel.sh")->text.find(" -j 2 "), std::string::npos);
+}
+
+TEST(FarmPlan, KubernetesJobsAreNamedPerPlanIgnoreDisruptionsAndWarnOfATargetOutside) {
+    PlanRequest a = request(Scheduler::Kubernetes, true);
+    PlanRequest b = a;
+    b.jobDir = "/scratch/job2";
+    const std::string nameA = kubernetesJobName("render", a.jobDir), nameB = kubernetesJobName("render", b.jobDir);
+    EXPECT_NE(nameA, nameB);
+    EXPECT_EQ(nameA.size(), std::string("toyhost-render-").size() + 8);
+    auto files = planFarm(a);
+    ASSERT_TRUE(files);
+    const std::string& job = fileNamed(*files, "job.yaml")->text;
+    EXPECT_NE(job.find("  name: " + nameA + "\n"), std::string::npos) << job;
+    EXPECT_NE(fileNamed(*files, "checkpoints.yaml")->text.find("  name: " + kubernetesJobName("checkpoints", a.jobDir)),
+              std::string::npos);
+    EXPECT_NE(job.find("podFailurePolicy:"), std::string::npos);
+    EXPECT_NE(job.find("onPodConditions: [{ type: DisruptionTarget }]"), std::string::npos);
+    EXPECT_NE(job.find("imagePullPolicy: IfNotPresent"), std::string::npos);
+    // The chain's Job failing ends submit.sh's wait with a message, not after 24 h.
+    const std::string& submit = fileNamed(*files, "submit.sh")->text;
+    EXPECT_NE(submit.find("--for=condition=failed"), std::string::npos) << submit;
+    EXPECT_NE(submit.find("exit 1"), std::string::npos);
+    // The target (/srv/ports/my port) is outside /scratch/job: a warning; inside: none.
+    ASSERT_EQ(planWarnings(a).size(), 1u);
+    EXPECT_NE(planWarnings(a)[0].find("outside the job folder"), std::string::npos);
+    a.target = "/scratch/job/port";
+    EXPECT_TRUE(planWarnings(a).empty());
+    a.target = "/scratch/job2/port";  // a sibling folder sharing the prefix is outside
+    EXPECT_EQ(planWarnings(a).size(), 1u);
+    PlanRequest slurmPlan = request(Scheduler::Slurm, false);
+    EXPECT_TRUE(planWarnings(slurmPlan).empty());
 }

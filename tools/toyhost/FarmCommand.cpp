@@ -189,6 +189,14 @@ Status writePlan(const fs::path& dir, const std::vector<farm::PlanFile>& files) 
     return okStatus();
 }
 
+// Whether a shard is redone from its first frame (`again`): its frames are damaged, or it finished
+// (its checkpoint is at its end, so resuming would render nothing); else it resumes.
+bool redoAgain(const farm::ShardStatus& shard) {
+    for (const farm::FrameProblem& p : shard.problems)
+        if (p.state != farm::FrameState::Missing) return true;
+    return shard.exitCode == 0;
+}
+
 }  // namespace
 
 void FarmCommand::define(CLI::App& app) {
@@ -221,6 +229,16 @@ void FarmCommand::define(CLI::App& app) {
     plan_->add_option("--cpus-per-task", cpusPerTask_, "Slurm --cpus-per-task; Kubernetes cpu request")
         ->check(CLI::Range(1, 4096));
     plan_->add_option("--parallelism", parallelism_, "Shards running at once (default: all)")->check(CLI::Range(1, INT_MAX));
+    plan_->add_option("--partition", partition_, "Slurm: sbatch --partition of every job file");
+    plan_->add_option("--account", account_, "Slurm: sbatch --account of every job file");
+    plan_->add_option("--qos", qos_, "Slurm: sbatch --qos of every job file");
+    plan_->add_option("--mem", mem_, "Slurm --mem (16G); Kubernetes memory request and limit");
+    plan_->add_option("--gres", gres_, "Slurm --gres (gpu:1); Kubernetes: gpu:N, an nvidia.com/gpu limit");
+    plan_->add_option("--scheduler-arg", schedulerArgs_,
+                      "Slurm: any further sbatch option as one word, written as an #SBATCH line; repeatable: "
+                      "--scheduler-arg=--constraint=avx2")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     plan_->add_option("--image", image_, "Kubernetes: the container image (packaging/Containerfile)");
     plan_->add_flag("--force", force_, "Replace the plan files of an existing job folder");
 
@@ -290,6 +308,12 @@ int FarmCommand::plan() {
     request.cpusPerTask = cpusPerTask_;
     request.parallelism = parallelism_;
     request.image = image_;
+    request.partition = partition_;
+    request.account = account_;
+    request.qos = qos_;
+    request.mem = mem_;
+    request.gres = gres_;
+    request.schedulerArgs = schedulerArgs_;
     Result<std::vector<farm::PlanFile>> files = farm::planFarm(request);
     if (!files) return fail(files.error());
 
@@ -302,6 +326,7 @@ int FarmCommand::plan() {
         return fail(fileError((dir / "farm.json").string(), "a job is planned here already (--force replaces its files)",
                               Code::IoExists));
     if (Status written = writePlan(dir, *files); !written) return fail(written.error());
+    for (const std::string& warning : farm::planWarnings(request)) std::cerr << "toyhost farm: warning: " << warning << "\n";
     std::cout << "toyhost farm: " << request.shards << " shards of " << request.frames << " frames"
               << (request.stateful && request.shards > 1 ? ", starting from a checkpoint chain (checkpoints.sh)" : "")
               << ", in " << dir.string() << ":\n";
@@ -334,6 +359,9 @@ int FarmCommand::status() {
             if (!p.reason.empty())
                 std::cout << "  " << layout->frameFile(p.frame).string() << ": " << farm::frameStateName(p.state)
                           << ": " << p.reason << "\n";
+        if (layout->scheduler && shard.bad() > 0)
+            std::cout << "  redo: " << farm::redoCommand(*layout->scheduler, layout->jobDir.string(), shard.index, redoAgain(shard))
+                      << "\n";
     }
     std::cout << good << "/" << expected << " frames ok";
     if (!state.complete()) std::cout << "; to render again: " << farm::frameList(state.badSpans());

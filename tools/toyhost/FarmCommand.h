@@ -28,6 +28,8 @@ private:
     CLI::App* join_ = nullptr;
     // plan
     std::string target_, scheduler_, job_, frameName_ = "f_%06d.png", toyhost_, time_, image_ = "toyhost:latest";
+    std::string partition_, account_, qos_, mem_, gres_;
+    std::vector<std::string> schedulerArgs_;
     int frames_ = 0, shards_ = 0, cpusPerTask_ = 0, parallelism_ = 0;
     bool force_ = false;
     // status and join
