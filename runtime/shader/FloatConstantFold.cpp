@@ -395,17 +395,7 @@ public:
                 invocation(edits, i, *macro);
             }
         }
-        std::sort(edits.begin(), edits.end(), [](const ConstantFoldEdit& a, const ConstantFoldEdit& b) {
-            return a.offset != b.offset ? a.offset < b.offset : a.erase > b.erase;
-        });
-        std::vector<ConstantFoldEdit> kept;
-        std::size_t coveredTo = 0;
-        for (ConstantFoldEdit& e : edits) {
-            if (!kept.empty() && e.offset < coveredTo) continue;
-            coveredTo = e.offset + e.erase;
-            kept.push_back(std::move(e));
-        }
-        return kept;
+        return outermostEdits(std::move(edits));
     }
 
 private:

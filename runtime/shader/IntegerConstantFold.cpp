@@ -190,18 +190,7 @@ public:
             if (!folded || !folded->undefinedInGlsl) continue;
             edits.push_back(replace(*start, at, folded->value));
         }
-        // Nested edits: keep the outermost (it starts first, or at the same token and ends later).
-        std::sort(edits.begin(), edits.end(), [](const ConstantFoldEdit& a, const ConstantFoldEdit& b) {
-            return a.offset != b.offset ? a.offset < b.offset : a.erase > b.erase;
-        });
-        std::vector<ConstantFoldEdit> kept;
-        std::size_t coveredTo = 0;
-        for (ConstantFoldEdit& e : edits) {
-            if (!kept.empty() && e.offset < coveredTo) continue;
-            coveredTo = e.offset + e.erase;
-            kept.push_back(std::move(e));
-        }
-        return kept;
+        return outermostEdits(std::move(edits));
     }
 
 private:
@@ -460,6 +449,20 @@ private:
 };
 
 }  // namespace
+
+std::vector<ConstantFoldEdit> outermostEdits(std::vector<ConstantFoldEdit> edits) {
+    std::sort(edits.begin(), edits.end(), [](const ConstantFoldEdit& a, const ConstantFoldEdit& b) {
+        return a.offset != b.offset ? a.offset < b.offset : a.erase > b.erase;
+    });
+    std::vector<ConstantFoldEdit> kept;
+    std::size_t coveredTo = 0;
+    for (ConstantFoldEdit& e : edits) {
+        if (!kept.empty() && e.offset < coveredTo) continue;
+        coveredTo = e.offset + e.erase;
+        kept.push_back(std::move(e));
+    }
+    return kept;
+}
 
 std::map<std::string_view, int> countDeclarations(const std::vector<GlslToken>& tokens) {
     std::map<std::string_view, int> declarations;

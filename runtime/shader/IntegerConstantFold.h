@@ -20,6 +20,10 @@ struct ConstantFoldEdit {
     std::string text;        // ANGLE's value, with the replaced span's newlines after it
 };
 
+// The edits in text order, each one nested in another dropped (it starts first, or at the same
+// token and ends later: the outer one's value already has the inner one's). For the folders.
+std::vector<ConstantFoldEdit> outermostEdits(std::vector<ConstantFoldEdit> edits);
+
 // How many times each name is declared (`TYPE NAME`, also after a comma in the same statement): a
 // name declared `const` once and never again is a constant the folders may read (it cannot be
 // shadowed). For the constant folders of shader/.
