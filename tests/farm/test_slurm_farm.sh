@@ -142,10 +142,12 @@ done_releasing() {
 }
 
 if [[ " ${cases[*]} " == *" timeout "* ]]; then
-  # A shadertoy with state; the one array task draws its 3000 frames at --fps 20 in wall time
-  # (--paced), so it runs for at least 150 s whatever the machine's speed or load: past --time=1
-  # (Slurm checks limits every 30 s, so the SIGTERM comes 60 to 90 s in). --capture-every keeps the
-  # files few.
+  # A shadertoy with state; the one array task draws its 1500 frames at --fps 20 in wall time
+  # (--paced), so it runs for at least 75 s whatever the machine's speed or load: past its first
+  # SIGTERM (--signal=B:TERM@15 ahead of --time=1; Slurm checks every 30 s, so it comes about 30 to
+  # 45 s in). Each attempt draws some 600 frames, so two or three requeues finish it (3000 frames
+  # took five attempts and once ended the wait with the last 500 frames missing). --capture-every
+  # keeps the files few.
   heavy=$work/heavy-state
   mkdir -p "$heavy"
   cat > "$heavy/manifest.json" <<'JSON'
@@ -165,7 +167,7 @@ GLSL
 void mainImage(out vec4 c, in vec2 f) { vec4 a = texelFetch(iChannel0, ivec2(f), 0); c = vec4(a.x, fract(a.y / 64.0), a.z, 1.0); }
 GLSL
   options=(--size 32x18 "${date_option[@]}" --capture-every 500 --fps 20)
-  frames=3000
+  frames=1500
   echo "+ toyhost farm plan $heavy --frames $frames --shards 1 --scheduler slurm --time 1 --job $work/heavy ${options[*]} --paced"
   "$toyhost" farm plan "$heavy" --frames "$frames" --shards 1 --scheduler slurm --time 1 --job "$work/heavy" "${options[@]}" --paced >/dev/null ||
     fail "timeout: farm plan failed"
